@@ -1,0 +1,50 @@
+#include "sl_gl.h"
+
+#include <stdio.h>
+
+#define SL_GL_FUNC(type, name) type _sl_##name;
+#include "sl_gl_functions.h"
+#undef SL_GL_FUNC
+
+bool sl_gl_load(sl_gl_get_proc_fn get_proc, char *err, size_t err_size) {
+    /* Function pointers and data pointers differ in ISO C; the get-proc APIs
+     * return function pointers already, so only a same-kind cast is needed. */
+#define SL_GL_FUNC(type, name)                                                     \
+    _sl_##name = (type)get_proc(#name);                                            \
+    if (!_sl_##name) {                                                             \
+        if (err && err_size) snprintf(err, err_size, "OpenGL function %s is not available", #name); \
+        return false;                                                              \
+    }
+#include "sl_gl_functions.h"
+#undef SL_GL_FUNC
+    return true;
+}
+
+const char *sl_gl_enum_name(GLenum value) {
+    switch (value) {
+    case GL_NO_ERROR: return "GL_NO_ERROR";
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
+    case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    case GL_DEPTH_COMPONENT: return "GL_DEPTH_COMPONENT";
+    case GL_DEPTH_COMPONENT16: return "GL_DEPTH_COMPONENT16";
+    case GL_DEPTH_COMPONENT24: return "GL_DEPTH_COMPONENT24";
+    case GL_DEPTH_COMPONENT32: return "GL_DEPTH_COMPONENT32";
+    case GL_DEPTH_COMPONENT32F: return "GL_DEPTH_COMPONENT32F";
+    case GL_DEPTH24_STENCIL8: return "GL_DEPTH24_STENCIL8";
+    case GL_DEPTH32F_STENCIL8: return "GL_DEPTH32F_STENCIL8";
+    case GL_RGBA8: return "GL_RGBA8";
+    case GL_RGBA: return "GL_RGBA";
+    default: return "unknown GL enum";
+    }
+}

@@ -1,0 +1,42 @@
+/* sl_image: float images in memory, and their files (PNG for colour and
+ * visibility, OpenEXR for float buffers) through OpenImageIO.
+ *
+ * Pixels are floats, interleaved, row 0 is the TOP row (as in image files;
+ * GL read-backs are flipped on capture). */
+#ifndef SL_IMAGE_H
+#define SL_IMAGE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct sl_image {
+    int width, height, channels;
+    float *data; /* width * height * channels */
+} sl_image;
+
+/* Zero-filled image; data is NULL if the allocation failed. */
+sl_image sl_image_alloc(int width, int height, int channels);
+void sl_image_free(sl_image *image);
+static inline float *sl_image_pixel(const sl_image *image, int x, int y) {
+    return image->data + ((size_t)y * (size_t)image->width + (size_t)x) * (size_t)image->channels;
+}
+
+/* Writes by extension: .png (8 bits per channel, values clamped to [0,1]),
+ * .exr (32-bit float). On failure returns false with a message naming the file. */
+bool sl_image_write(const char *path, const sl_image *image, char *err, size_t err_size);
+
+/* Reads any format OpenImageIO reads, converted to float. A missing or corrupt
+ * file returns false with a message naming the file and the reason. */
+bool sl_image_read(const char *path, sl_image *out, char *err, size_t err_size);
+
+/* Reverses the row order in place (GL's bottom-up <-> files' top-down). */
+void sl_image_flip_rows(sl_image *image);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,349 @@
+#include "sl_renderer.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef SL_FRAMEWORK_DIR
+#define SL_FRAMEWORK_DIR "framework"
+#endif
+
+void (*sl_lab_call_hook)(const char *function);
+
+const char *sl_framework_dir(void) {
+    const char *env = getenv("SHADOWLAB_FRAMEWORK");
+    return env && *env ? env : SL_FRAMEWORK_DIR;
+}
+
+void sl_render_params_defaults(sl_render_params *p) {
+    *p = (sl_render_params){
+        .lab = 2,
+        .shadow_map_size = 1024,
+        .compare = SL_COMPARE_MANUAL,
+        .depth_bias = 0.005f,
+        .output = SL_OUTPUT_SHADED,
+    };
+}
+
+static void _sl_enter(const char *function) {
+    if (sl_lab_call_hook) sl_lab_call_hook(function);
+}
+
+/* Records the outcome of one lab call; true if the step may go on. */
+static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status status) {
+    if (sl_lab_call_hook) sl_lab_call_hook(NULL);
+    if (status == SL_OK) return true;
+    if (status == SL_NOT_IMPLEMENTED) {
+        sl_frame_info *info = &r->info;
+        for (int i = 0; i < info->not_implemented_count; i++)
+            if (strcmp(info->not_implemented[i], function) == 0) return false;
+        if (info->not_implemented_count < SL_MAX_NOT_IMPLEMENTED)
+            info->not_implemented[info->not_implemented_count++] = function;
+    } else if (!r->info.failed) {
+        r->info.failed = function;
+    }
+    return false;
+}
+
+#define _SL_CALL_LAB(r, fn, ...) (_sl_enter(#fn), _sl_lab_result((r), #fn, fn(__VA_ARGS__)))
+
+static bool _sl_build(sl_program *p, const sl_renderer *r, const char *vs, const char *fs, const char *defines,
+                      char *err, size_t err_size) {
+    sl_shader_desc desc = {
+        .vertex_path = vs,
+        .fragment_path = fs,
+        .search_dirs = {r->labs_dir, r->shaders_dir},
+        .defines = defines,
+    };
+    return sl_program_build(p, &desc, err, err_size);
+}
+
+bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, size_t err_size) {
+    memset(r, 0, sizeof *r);
+    const char *labs = desc && desc->labs_dir ? desc->labs_dir : getenv("SHADOWLAB_LABS");
+    if (!labs || !*labs) labs = sl_build_labs_dir;
+    snprintf(r->labs_dir, sizeof r->labs_dir, "%s", labs);
+    const char *fw = desc && desc->framework_dir ? desc->framework_dir : sl_framework_dir();
+    snprintf(r->shaders_dir, sizeof r->shaders_dir, "%s/shaders", fw);
+
+    char vs[SL_PATH_MAX * 2], fs[SL_PATH_MAX * 2];
+    snprintf(vs, sizeof vs, "%s/lab1_depth_fbo/shaders/depth.vert", r->labs_dir);
+    snprintf(fs, sizeof fs, "%s/lab1_depth_fbo/shaders/depth.frag", r->labs_dir);
+    if (!_sl_build(&r->depth_program, r, vs, fs, NULL, err, err_size)) return false;
+    snprintf(vs, sizeof vs, "%s/scene.vert", r->shaders_dir);
+    snprintf(fs, sizeof fs, "%s/scene.frag", r->shaders_dir);
+    if (!_sl_build(&r->scene_programs[SL_COMPARE_MANUAL], r, vs, fs, NULL, err, err_size)) return false;
+    if (!_sl_build(&r->scene_programs[SL_COMPARE_HARDWARE], r, vs, fs, "#define SL_HARDWARE_COMPARE 1", err,
+                   err_size))
+        return false;
+    snprintf(vs, sizeof vs, "%s/debug_quad.vert", r->shaders_dir);
+    snprintf(fs, sizeof fs, "%s/debug_quad.frag", r->shaders_dir);
+    if (!_sl_build(&r->debug_program, r, vs, fs, NULL, err, err_size)) return false;
+    glGenVertexArrays(1, &r->empty_vao);
+    return true;
+}
+
+bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
+    sl_program *programs[] = {&r->depth_program, &r->scene_programs[0], &r->scene_programs[1], &r->debug_program};
+    bool ok = true;
+    *reloaded = false;
+    for (size_t i = 0; i < sizeof programs / sizeof programs[0]; i++) {
+        char e[8192];
+        if (sl_program_reload_if_changed(programs[i], e, sizeof e)) {
+            *reloaded = true;
+        } else if (e[0] && ok) {
+            snprintf(err, err_size, "%s", e);
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+static void _sl_destroy_meshes(sl_renderer *r) {
+    for (int i = 0; i < r->mesh_count; i++) sl_mesh_destroy(&r->meshes[i]);
+    r->mesh_count = 0;
+}
+
+void sl_renderer_destroy(sl_renderer *r) {
+    _sl_destroy_meshes(r);
+    if (r->shadow_map_attempted && r->shadow_map_status == SL_OK) {
+        _sl_enter("lab1_destroy_shadow_map");
+        lab1_destroy_shadow_map(&r->shadow_map);
+        if (sl_lab_call_hook) sl_lab_call_hook(NULL);
+    }
+    sl_program_destroy(&r->depth_program);
+    sl_program_destroy(&r->scene_programs[0]);
+    sl_program_destroy(&r->scene_programs[1]);
+    sl_program_destroy(&r->debug_program);
+    if (r->empty_vao) glDeleteVertexArrays(1, &r->empty_vao);
+    memset(r, 0, sizeof *r);
+}
+
+bool sl_renderer_set_scene(sl_renderer *r, const sl_scene *scene, char *err, size_t err_size) {
+    _sl_destroy_meshes(r);
+    for (int i = 0; i < scene->object_count; i++) {
+        const sl_object *o = &scene->objects[i];
+        sl_mesh_data data;
+        switch (o->shape) {
+        case SL_SHAPE_PLANE: data = sl_mesh_plane(o->size[0], o->size[1], 8); break;
+        case SL_SHAPE_BOX: data = sl_mesh_box(o->size[0], o->size[1], o->size[2]); break;
+        case SL_SHAPE_SPHERE: data = sl_mesh_sphere(o->size[0], 48, 24); break;
+        case SL_SHAPE_CYLINDER: data = sl_mesh_cylinder(o->size[0], o->size[1], 48); break;
+        case SL_SHAPE_TORUS: data = sl_mesh_torus(o->size[0], o->size[1], 48, 24); break;
+        default: data = (sl_mesh_data){0}; break;
+        }
+        bool ok = sl_mesh_upload(&r->meshes[i], &data);
+        sl_mesh_data_free(&data);
+        if (!ok) {
+            snprintf(err, err_size, "%s: could not build the mesh of object %d", scene->name, i);
+            return false;
+        }
+        r->mesh_count = i + 1;
+    }
+    return true;
+}
+
+const sl_frame_info *sl_renderer_info(const sl_renderer *r) { return &r->info; }
+
+/* GL state the labs may change, put back so one pass cannot leak into the next. */
+static void _sl_reset_state(GLuint target, int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0, 0);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
+    sl_frame_info *info = &r->info;
+    sl_light light = scene->light;
+    sl_aabb bounds = scene->bounds;
+    info->lab2_ready = false;
+    if (p->lab >= 2) {
+        mat4 view, proj, shadow;
+        glm_mat4_identity(view);
+        glm_mat4_identity(proj);
+        glm_mat4_identity(shadow);
+        bool ok = _SL_CALL_LAB(r, lab2_light_view, &light, &bounds, view) &&
+                  _SL_CALL_LAB(r, lab2_light_projection, &light, &bounds, view, proj) &&
+                  _SL_CALL_LAB(r, lab2_shadow_matrix, proj, view, shadow);
+        if (ok) {
+            glm_mat4_copy(view, info->light_view);
+            glm_mat4_copy(proj, info->light_projection);
+            glm_mat4_copy(shadow, info->shadow_matrix);
+            info->lab2_ready = true;
+            return;
+        }
+    }
+    /* Lab 1 alone (or lab 2 not done yet): a loose light camera so the depth map can be seen. */
+    sl_light_default_matrices(&light, &bounds, info->light_view, info->light_projection);
+    glm_mat4_identity(info->shadow_matrix);
+}
+
+static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const sl_program *prog, bool colours) {
+    GLint u_model = sl_program_uniform(prog, "u_model");
+    GLint u_normal = sl_program_uniform(prog, "u_normal_matrix");
+    GLint u_color = sl_program_uniform(prog, "u_albedo");
+    for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
+        const sl_object *o = &scene->objects[i];
+        glUniformMatrix4fv(u_model, 1, GL_FALSE, (const float *)o->model);
+        if (colours) {
+            mat3 normal;
+            mat4 inv;
+            glm_mat4_inv((vec4 *)o->model, inv);
+            glm_mat4_transpose(inv);
+            glm_mat4_pick3(inv, normal);
+            glUniformMatrix3fv(u_normal, 1, GL_FALSE, (const float *)normal);
+            glUniform3fv(u_color, 1, o->color);
+        }
+        sl_mesh_draw(&r->meshes[i]);
+    }
+}
+
+static void _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
+    sl_frame_info *info = &r->info;
+    int size = p->shadow_map_size > 0 ? p->shadow_map_size : 1024;
+    if (r->shadow_map_attempted && r->shadow_map_status == SL_OK && r->shadow_map.size != size) {
+        _sl_enter("lab1_destroy_shadow_map");
+        lab1_destroy_shadow_map(&r->shadow_map);
+        r->shadow_map_attempted = false;
+    }
+    if (!r->shadow_map_attempted) {
+        memset(&r->shadow_map, 0, sizeof r->shadow_map);
+        _sl_enter("lab1_create_shadow_map");
+        r->shadow_map_status = lab1_create_shadow_map(size, &r->shadow_map);
+        r->shadow_map_attempted = true;
+    }
+    if (!_sl_lab_result(r, "lab1_create_shadow_map", r->shadow_map_status)) return;
+    info->shadow_map = r->shadow_map;
+    if (!_SL_CALL_LAB(r, lab1_begin_depth_pass, &r->shadow_map)) return;
+    mat4 view_proj;
+    glm_mat4_mul(info->light_projection, info->light_view, view_proj);
+    glUseProgram(r->depth_program.id);
+    glUniformMatrix4fv(sl_program_uniform(&r->depth_program, "u_light_view_projection"), 1, GL_FALSE,
+                       (const float *)view_proj);
+    _sl_draw_objects(r, scene, &r->depth_program, false);
+    info->shadow_map_ready = true;
+}
+
+static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int width, int height) {
+    const sl_frame_info *info = &r->info;
+    const sl_program *prog = &r->scene_programs[p->compare == SL_COMPARE_HARDWARE];
+    bool shadows = info->shadow_map_ready && info->lab2_ready;
+    glClearColor(0.55f, 0.62f, 0.70f, 1);
+    if (p->output == SL_OUTPUT_VISIBILITY) glClearColor(1, 1, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glUseProgram(prog->id);
+    mat4 view, proj;
+    sl_camera_view(&scene->camera, view);
+    sl_camera_projection(&scene->camera, height > 0 ? (float)width / (float)height : 1, proj);
+    glUniformMatrix4fv(sl_program_uniform(prog, "u_view"), 1, GL_FALSE, (const float *)view);
+    glUniformMatrix4fv(sl_program_uniform(prog, "u_projection"), 1, GL_FALSE, (const float *)proj);
+    glUniformMatrix4fv(sl_program_uniform(prog, "u_shadow_matrix"), 1, GL_FALSE, (const float *)info->shadow_matrix);
+    const sl_light *l = &scene->light;
+    glUniform1i(sl_program_uniform(prog, "u_light_type"), (int)l->type);
+    glUniform3fv(sl_program_uniform(prog, "u_light_position"), 1, l->position);
+    glUniform3fv(sl_program_uniform(prog, "u_light_direction"), 1, l->direction);
+    vec3 radiance;
+    glm_vec3_scale((float *)l->color, l->intensity, radiance);
+    glUniform3fv(sl_program_uniform(prog, "u_light_radiance"), 1, radiance);
+    glUniform1f(sl_program_uniform(prog, "u_spot_cos"), cosf(glm_rad(l->spot_angle_deg)));
+    glUniform1i(sl_program_uniform(prog, "u_shadows"), shadows ? 1 : 0);
+    glUniform1f(sl_program_uniform(prog, "u_depth_bias"), p->depth_bias);
+    glUniform1i(sl_program_uniform(prog, "u_output"), (int)p->output);
+    glUniform1i(sl_program_uniform(prog, "u_shadow_map"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    if (shadows) {
+        glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
+        /* Compare mode is texture state: set it for the sampler type this program declares. */
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE,
+                        p->compare == SL_COMPARE_HARDWARE ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    } else {
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    _sl_draw_objects(r, scene, prog, true);
+}
+
+static void _sl_debug_view(sl_renderer *r, int width, int height) {
+    if (!r->info.shadow_map_ready) return;
+    int side = (width < height ? width : height) / 3;
+    glViewport(width - side - 8, 8, side, side);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(r->debug_program.id);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glUniform1i(sl_program_uniform(&r->debug_program, "u_texture"), 0);
+    glBindVertexArray(r->empty_vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+}
+
+void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
+                      int width, int height) {
+    sl_frame_info *info = &r->info;
+    info->not_implemented_count = 0;
+    info->failed = NULL;
+    info->shadow_map_ready = false;
+    _sl_light_matrices(r, scene, params);
+    _sl_reset_state(0, width, height);
+    _sl_depth_pass(r, scene, params);
+    _sl_reset_state(target, width, height);
+    _sl_scene_pass(r, scene, params, width, height);
+    if (params->show_shadow_map) _sl_debug_view(r, width, height);
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out) {
+    static const GLenum formats[5] = {0, GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    if (channels < 1 || channels > 4) return false;
+    *out = sl_image_alloc(width, height, channels);
+    if (!out->data) return false;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, formats[channels], GL_FLOAT, out->data);
+    sl_image_flip_rows(out);
+    return true;
+}
+
+bool sl_capture_depth_texture(GLuint texture, sl_image *out, char *err, size_t err_size) {
+    *out = (sl_image){0};
+    if (!texture || !glIsTexture(texture)) {
+        snprintf(err, err_size, "depth_texture (%u) is not a texture name", texture);
+        return false;
+    }
+    GLint w = 0, h = 0, fmt = 0;
+    glBindTexture(GL_TEXTURE_2D, texture);
+    while (glGetError() != GL_NO_ERROR) {}
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
+    if (glGetError() != GL_NO_ERROR || w <= 0 || h <= 0) {
+        snprintf(err, err_size, "depth_texture (%u) is not a 2D texture with storage", texture);
+        return false;
+    }
+    GLint depth_bits = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &depth_bits);
+    if (depth_bits == 0) {
+        snprintf(err, err_size, "depth_texture has internal format %s (0x%x), not a depth format",
+                 sl_gl_enum_name((GLenum)fmt), fmt);
+        return false;
+    }
+    *out = sl_image_alloc(w, h, 1);
+    if (!out->data) return false;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, out->data);
+    sl_image_flip_rows(out);
+    return true;
+}

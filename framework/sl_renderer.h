@@ -1,0 +1,99 @@
+/* sl_renderer: one frame of the shadow pipeline, built from the labs' code.
+ *
+ *   1. lab 1 creates the shadow map (once per size) and begins the depth pass;
+ *      the framework draws every object with lab 1's depth shaders
+ *   2. lab 2 builds the light's view, projection and shadow matrix
+ *      (lab 1 alone uses sl_light_default_matrices)
+ *   3. the camera pass shades each pixel with lab 2's lookup (scene.vert/frag)
+ *
+ * A lab function that returns SL_NOT_IMPLEMENTED switches its step off (no
+ * shadows) and is listed in sl_frame_info, which the grader turns into
+ * "not implemented". The viewer and the grader both draw through this module. */
+#ifndef SL_RENDERER_H
+#define SL_RENDERER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "sl_image.h"
+#include "sl_mesh.h"
+#include "sl_scene.h"
+#include "sl_shader.h"
+#include "shadowlab.h"
+
+typedef enum sl_compare_mode { SL_COMPARE_MANUAL = 0, SL_COMPARE_HARDWARE = 1 } sl_compare_mode;
+typedef enum sl_output { SL_OUTPUT_SHADED = 0, SL_OUTPUT_VISIBILITY = 1 } sl_output;
+
+typedef struct sl_render_params {
+    int lab;                 /* labs in use: 1 = depth pass only, 2 = lab 2's matrices and lookup */
+    int shadow_map_size;     /* texels; default 1024 */
+    sl_compare_mode compare; /* sampler2D + manual compare, or sampler2DShadow */
+    float depth_bias;        /* lab 2's constant bias in [0,1] depth units; default 0.005 */
+    sl_output output;
+    bool show_shadow_map;    /* debug view of the depth map in a corner */
+} sl_render_params;
+
+#define SL_MAX_NOT_IMPLEMENTED 16
+
+/* What the labs did in the last frame. */
+typedef struct sl_frame_info {
+    const char *not_implemented[SL_MAX_NOT_IMPLEMENTED]; /* names of stubs that returned SL_NOT_IMPLEMENTED */
+    int not_implemented_count;
+    const char *failed;          /* a lab function that returned SL_FAILED, or NULL */
+    bool shadow_map_ready;       /* lab 1 created a map and ran the depth pass */
+    bool lab2_ready;             /* lab 2's matrices are in use */
+    mat4 light_view, light_projection, shadow_matrix; /* the matrices used */
+    sl_shadow_map shadow_map;    /* lab 1's map, for inspection */
+} sl_frame_info;
+
+typedef struct sl_renderer_desc {
+    const char *labs_dir;      /* labs/ or solutions/ (default: the build's) */
+    const char *framework_dir; /* default: the source tree's framework/ */
+} sl_renderer_desc;
+
+typedef struct sl_renderer {
+    char labs_dir[SL_PATH_MAX];
+    char shaders_dir[SL_PATH_MAX];
+    sl_program depth_program;
+    sl_program scene_programs[2]; /* per sl_compare_mode */
+    sl_program debug_program;
+    GLuint empty_vao;
+    sl_mesh meshes[SL_SCENE_MAX_OBJECTS];
+    int mesh_count;
+    sl_shadow_map shadow_map;
+    sl_status shadow_map_status;
+    bool shadow_map_attempted;
+    sl_frame_info info;
+} sl_renderer;
+
+/* Called before each call into lab code with the function's name, so a crash
+ * can be pinned on it (the grader sets this). */
+extern void (*sl_lab_call_hook)(const char *function);
+
+/* Folder of the lab sources this binary was built with, and what they are
+ * ("student", "solutions" or a variant's name). Defined per build. */
+extern const char sl_build_labs_dir[];
+extern const char sl_build_labs_kind[];
+const char *sl_framework_dir(void);
+
+/* Compiles every shader; false with the compiler's message (file:line) in err. */
+bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, size_t err_size);
+void sl_renderer_destroy(sl_renderer *r);
+bool sl_renderer_set_scene(sl_renderer *r, const sl_scene *scene, char *err, size_t err_size);
+/* Rebuilds the shaders whose files changed; false with err set if one failed
+ * (the previous program stays). */
+bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size);
+
+/* Draws one frame into framebuffer `target` (0 = the window or OSMesa buffer). */
+void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
+                      int width, int height);
+const sl_frame_info *sl_renderer_info(const sl_renderer *r);
+
+/* Read-backs, as top-down images. */
+bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out);
+/* The depth texture's texels (1 channel); false if it is not a depth texture. */
+bool sl_capture_depth_texture(GLuint texture, sl_image *out, char *err, size_t err_size);
+
+void sl_render_params_defaults(sl_render_params *params);
+
+#endif

@@ -1,0 +1,272 @@
+#define _POSIX_C_SOURCE 200809L
+#include "sl_viewer.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_context.h"
+#include "sl_log.h"
+#include "sl_renderer.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+typedef struct _sl_viewer {
+    sl_context *ctx;
+    sl_renderer renderer;
+    sl_scene scene;
+    sl_render_params params;
+    bool dragging;
+    double last_x, last_y;
+    bool dirty_title;
+} _sl_viewer;
+
+static void _sl_usage(FILE *f) {
+    fprintf(f,
+            "usage: shadowlab [options]\n"
+            "  --lab N             labs in use: 1 (depth map) or 2 (shadows); default 2\n"
+            "  --scene NAME|FILE   a built-in scene (boxes_on_floor, curved_grazing, long_ground,\n"
+            "                      closed_room, spot_on_floor) or a scene .json; default boxes_on_floor\n"
+            "  --size WxH          window size; default 960x640\n"
+            "  --map-size N        shadow map size in texels; default 1024\n"
+            "  --compare MODE      manual (sampler2D) or hardware (sampler2DShadow)\n"
+            "  --bias X            lab 2's constant depth bias; default 0.005\n"
+            "  --visibility        show the visibility term alone (what the grader compares)\n"
+            "  --show-map          show the shadow map in a corner\n"
+            "  --frames K          render K frames, then exit (for scripts)\n"
+            "  --screenshot FILE   save the last frame as PNG (with --frames)\n"
+            "  --headless          render with OSMesa instead of a window (no display needed)\n"
+            "  --labs-dir DIR      lab sources to load shaders from; default this build's\n"
+            "keys: 1/2 lab, V visibility, M shadow map, C compare mode, [ ] bias, arrows move the light,\n"
+            "      mouse drag orbit, wheel zoom, Esc quit; shaders reload when their files change\n");
+}
+
+static void _sl_update_title(_sl_viewer *v) {
+    GLFWwindow *w = sl_context_window(v->ctx);
+    if (!w) return;
+    const sl_frame_info *info = sl_renderer_info(&v->renderer);
+    char title[512];
+    int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s compare, bias %.4f%s", v->params.lab,
+                     v->scene.name, v->params.compare == SL_COMPARE_HARDWARE ? "hardware" : "manual",
+                     v->params.depth_bias, v->params.output == SL_OUTPUT_VISIBILITY ? " — visibility" : "");
+    if (info->not_implemented_count > 0 && n > 0 && (size_t)n < sizeof title)
+        snprintf(title + n, sizeof title - (size_t)n, " — not implemented: %s%s", info->not_implemented[0],
+                 info->not_implemented_count > 1 ? ", ..." : "");
+    glfwSetWindowTitle(w, title);
+}
+
+static void _sl_move_light(sl_light *light, float yaw, float pitch) {
+    vec3 d;
+    glm_vec3_copy(light->direction, d);
+    float y = atan2f(d[0], d[2]) + yaw;
+    float p = asinf(glm_clamp(d[1], -1, 1)) + pitch;
+    p = glm_clamp(p, glm_rad(-89), glm_rad(-5));
+    light->direction[0] = cosf(p) * sinf(y);
+    light->direction[1] = sinf(p);
+    light->direction[2] = cosf(p) * cosf(y);
+}
+
+static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
+    (void)scancode;
+    (void)mods;
+    if (action == GLFW_RELEASE) return;
+    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    switch (key) {
+    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
+    case GLFW_KEY_1: v->params.lab = 1; break;
+    case GLFW_KEY_2: v->params.lab = 2; break;
+    case GLFW_KEY_V: v->params.output = v->params.output == SL_OUTPUT_SHADED ? SL_OUTPUT_VISIBILITY : SL_OUTPUT_SHADED; break;
+    case GLFW_KEY_M: v->params.show_shadow_map = !v->params.show_shadow_map; break;
+    case GLFW_KEY_C: v->params.compare = v->params.compare == SL_COMPARE_MANUAL ? SL_COMPARE_HARDWARE : SL_COMPARE_MANUAL; break;
+    case GLFW_KEY_LEFT_BRACKET: v->params.depth_bias *= 0.5f; break;
+    case GLFW_KEY_RIGHT_BRACKET: v->params.depth_bias = v->params.depth_bias > 0 ? v->params.depth_bias * 2 : 0.0005f; break;
+    case GLFW_KEY_LEFT: _sl_move_light(&v->scene.light, -0.05f, 0); break;
+    case GLFW_KEY_RIGHT: _sl_move_light(&v->scene.light, 0.05f, 0); break;
+    case GLFW_KEY_UP: _sl_move_light(&v->scene.light, 0, 0.05f); break;
+    case GLFW_KEY_DOWN: _sl_move_light(&v->scene.light, 0, -0.05f); break;
+    default: return;
+    }
+    v->dirty_title = true;
+}
+
+static void _sl_mouse_button(GLFWwindow *w, int button, int action, int mods) {
+    (void)mods;
+    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    if (button == GLFW_MOUSE_BUTTON_LEFT) {
+        v->dragging = action == GLFW_PRESS;
+        glfwGetCursorPos(w, &v->last_x, &v->last_y);
+    }
+}
+
+static void _sl_cursor(GLFWwindow *w, double x, double y) {
+    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    if (!v->dragging) return;
+    sl_camera_orbit(&v->scene.camera, (float)(v->last_x - x) * 0.01f, (float)(y - v->last_y) * 0.01f, 1);
+    v->last_x = x;
+    v->last_y = y;
+}
+
+static void _sl_scroll(GLFWwindow *w, double dx, double dy) {
+    (void)dx;
+    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    sl_camera_orbit(&v->scene.camera, 0, 0, powf(0.9f, (float)dy));
+}
+
+int sl_viewer_main(int argc, char **argv) {
+    _sl_viewer v = {0};
+    sl_render_params_defaults(&v.params);
+    const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL;
+    int frames = 0, width = 960, height = 640;
+    bool headless = false;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *next = i + 1 < argc ? argv[i + 1] : NULL;
+        bool takes_value = strcmp(a, "--lab") == 0 || strcmp(a, "--scene") == 0 || strcmp(a, "--size") == 0 ||
+                           strcmp(a, "--map-size") == 0 || strcmp(a, "--compare") == 0 ||
+                           strcmp(a, "--bias") == 0 || strcmp(a, "--frames") == 0 ||
+                           strcmp(a, "--screenshot") == 0 || strcmp(a, "--labs-dir") == 0;
+        if (takes_value && !next) {
+            fprintf(stderr, "shadowlab: %s needs a value\n", a);
+            return 2;
+        }
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            _sl_usage(stdout);
+            return 0;
+        } else if (strcmp(a, "--lab") == 0) {
+            v.params.lab = atoi(next);
+            if (v.params.lab < 1 || v.params.lab > 2) {
+                fprintf(stderr, "shadowlab: --lab must be 1 or 2 (labs 3-7 are not in this build yet)\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--scene") == 0) {
+            scene_name = next;
+        } else if (strcmp(a, "--size") == 0) {
+            if (sscanf(next, "%dx%d", &width, &height) != 2 || width < 16 || height < 16) {
+                fprintf(stderr, "shadowlab: --size expects WxH, e.g. 800x600\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--map-size") == 0) {
+            v.params.shadow_map_size = atoi(next);
+            if (v.params.shadow_map_size < 16 || v.params.shadow_map_size > 8192) {
+                fprintf(stderr, "shadowlab: --map-size must be 16..8192\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--compare") == 0) {
+            if (strcmp(next, "manual") == 0) v.params.compare = SL_COMPARE_MANUAL;
+            else if (strcmp(next, "hardware") == 0) v.params.compare = SL_COMPARE_HARDWARE;
+            else {
+                fprintf(stderr, "shadowlab: --compare is manual or hardware\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--bias") == 0) {
+            v.params.depth_bias = (float)atof(next);
+        } else if (strcmp(a, "--frames") == 0) {
+            frames = atoi(next);
+        } else if (strcmp(a, "--screenshot") == 0) {
+            screenshot = next;
+        } else if (strcmp(a, "--labs-dir") == 0) {
+            labs_dir = next;
+        } else if (strcmp(a, "--visibility") == 0) {
+            v.params.output = SL_OUTPUT_VISIBILITY;
+        } else if (strcmp(a, "--show-map") == 0) {
+            v.params.show_shadow_map = true;
+        } else if (strcmp(a, "--headless") == 0) {
+            headless = true;
+        } else {
+            fprintf(stderr, "shadowlab: unknown option %s\n", a);
+            _sl_usage(stderr);
+            return 2;
+        }
+        if (takes_value) i++;
+    }
+    if (screenshot && frames <= 0) frames = headless ? 1 : 3;
+    if (headless && frames <= 0) {
+        fprintf(stderr, "shadowlab: --headless needs --frames K (and usually --screenshot FILE)\n");
+        return 2;
+    }
+
+    char err[16384];
+    if (!sl_scene_load(&v.scene, scene_name, err, sizeof err)) {
+        fprintf(stderr, "shadowlab: %s\n", err);
+        return 1;
+    }
+    sl_context_desc cd = {
+        .backend = headless ? SL_BACKEND_OSMESA : SL_BACKEND_GLFW,
+        .width = width,
+        .height = height,
+        .title = "shadowlab",
+        .resizable = true,
+    };
+    v.ctx = sl_context_create(&cd, err, sizeof err);
+    if (!v.ctx) {
+        fprintf(stderr, "shadowlab: %s\n", err);
+        return 1;
+    }
+    sl_renderer_desc rd = {.labs_dir = labs_dir};
+    if (!sl_renderer_init(&v.renderer, &rd, err, sizeof err) ||
+        !sl_renderer_set_scene(&v.renderer, &v.scene, err, sizeof err)) {
+        fprintf(stderr, "shadowlab: %s\n", err);
+        sl_context_destroy(v.ctx);
+        return 1;
+    }
+    printf("shadowlab: %s, %s labs from %s\n", sl_context_renderer_name(), sl_build_labs_kind, v.renderer.labs_dir);
+
+    GLFWwindow *window = sl_context_window(v.ctx);
+    if (window) {
+        glfwSetWindowUserPointer(window, &v);
+        glfwSetKeyCallback(window, _sl_key);
+        glfwSetMouseButtonCallback(window, _sl_mouse_button);
+        glfwSetCursorPosCallback(window, _sl_cursor);
+        glfwSetScrollCallback(window, _sl_scroll);
+    }
+    int rendered = 0;
+    double last_reload_check = 0;
+    int reported_missing = -1;
+    int status = 0;
+    v.dirty_title = true;
+    while (!sl_context_should_close(v.ctx)) {
+        double now = window ? glfwGetTime() : 0;
+        if (window && now - last_reload_check > 0.25) {
+            last_reload_check = now;
+            bool reloaded = false;
+            if (!sl_renderer_reload_changed(&v.renderer, &reloaded, err, sizeof err))
+                fprintf(stderr, "shadowlab: shader reload failed, keeping the previous version:\n%s\n", err);
+            else if (reloaded)
+                printf("shadowlab: shaders reloaded\n");
+        }
+        int fw, fh;
+        sl_context_framebuffer_size(v.ctx, &fw, &fh);
+        sl_renderer_draw(&v.renderer, &v.scene, &v.params, 0, fw, fh);
+        const sl_frame_info *info = sl_renderer_info(&v.renderer);
+        if (info->not_implemented_count != reported_missing) {
+            reported_missing = info->not_implemented_count;
+            for (int i = 0; i < info->not_implemented_count; i++)
+                printf("shadowlab: not implemented yet: %s() (rendering without it)\n", info->not_implemented[i]);
+            v.dirty_title = true;
+        }
+        if (v.dirty_title) {
+            _sl_update_title(&v);
+            v.dirty_title = false;
+        }
+        rendered++;
+        if (frames > 0 && rendered >= frames) {
+            if (screenshot) {
+                sl_image shot;
+                glFinish();
+                if (!sl_capture_framebuffer(0, fw, fh, 3, &shot) || !sl_image_write(screenshot, &shot, err, sizeof err)) {
+                    fprintf(stderr, "shadowlab: cannot save the screenshot: %s\n", err);
+                    status = 1;
+                } else {
+                    printf("shadowlab: saved %s (%dx%d)\n", screenshot, fw, fh);
+                }
+                sl_image_free(&shot);
+            }
+            break;
+        }
+        sl_context_end_frame(v.ctx);
+    }
+    sl_renderer_destroy(&v.renderer);
+    sl_context_destroy(v.ctx);
+    return status;
+}
