@@ -1,1 +1,4 @@
-int main(void){return 0;}
+/* shadowlab-grade: the headless grader. All of it lives in grader/sl_grader.c. */
+#include "sl_grader.h"
+
+int main(int argc, char **argv) { return sl_grader_main(argc, argv); }

@@ -1,0 +1,191 @@
+#define _POSIX_C_SOURCE 200809L
+#include "sl_case.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const struct {
+    const char *name;
+    const char *reference;
+    double threshold, fail_fraction, epsilon;
+} _sl_kinds[SL_CHECK_KIND_COUNT] = {
+    [SL_CHECK_FBO] = {"fbo", NULL, 0, 0, 0},
+    /* depth in [0,1]; renderer noise moves silhouettes by a texel, absorbed by the neighbourhood */
+    [SL_CHECK_DEPTH_MAP] = {"depth_map", "depth_map.exr", 0.002, 0.005, 0},
+    [SL_CHECK_MATRICES] = {"matrices", "matrices.json", 0, 0, 1e-3},
+    [SL_CHECK_VISIBILITY] = {"visibility", "visibility.png", 0.1, 0.005, 0},
+    [SL_CHECK_IMAGE] = {"image", "image.png", 0.1, 0.01, 0},
+};
+
+const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
+const char *sl_check_reference_file(sl_check_kind kind) { return _sl_kinds[kind].reference; }
+
+static char *_sl_slurp(const char *path) {
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    long size = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *text = size >= 0 ? malloc((size_t)size + 1) : NULL;
+    if (text && fread(text, 1, (size_t)size, f) != (size_t)size) {
+        free(text);
+        text = NULL;
+    }
+    if (text) text[size] = '\0';
+    fclose(f);
+    return text;
+}
+
+static bool _sl_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path,
+                       char *err, size_t n) {
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!v) return true;
+    if (!cJSON_IsNumber(v) || v->valuedouble < lo || v->valuedouble > hi) {
+        snprintf(err, n, "%s: \"%s\" must be a number in [%g, %g]", path, key, lo, hi);
+        return false;
+    }
+    *out = v->valuedouble;
+    return true;
+}
+
+static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
+    sl_render_params_defaults(&c->params);
+    c->params.lab = c->lab;
+    c->params.output = SL_OUTPUT_VISIBILITY;
+    if (!json) return true;
+    if (!cJSON_IsObject(json)) {
+        snprintf(err, n, "%s: \"params\" must be an object", c->path);
+        return false;
+    }
+    double size = c->params.shadow_map_size, bias = c->params.depth_bias;
+    if (!_sl_number(json, "shadow_map_size", &size, 16, 4096, c->path, err, n) ||
+        !_sl_number(json, "depth_bias", &bias, 0, 1, c->path, err, n))
+        return false;
+    c->params.shadow_map_size = (int)size;
+    c->params.depth_bias = (float)bias;
+    const cJSON *compare = cJSON_GetObjectItemCaseSensitive(json, "compare");
+    if (compare) {
+        const char *s = cJSON_GetStringValue(compare);
+        if (s && strcmp(s, "manual") == 0) c->params.compare = SL_COMPARE_MANUAL;
+        else if (s && strcmp(s, "hardware") == 0) c->params.compare = SL_COMPARE_HARDWARE;
+        else {
+            snprintf(err, n, "%s: \"compare\" must be \"manual\" or \"hardware\"", c->path);
+            return false;
+        }
+    }
+    return true;
+}
+
+static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, char *err, size_t n) {
+    memset(k, 0, sizeof *k);
+    const char *kind = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "kind"));
+    int found = -1;
+    for (int i = 0; kind && i < SL_CHECK_KIND_COUNT; i++)
+        if (strcmp(kind, _sl_kinds[i].name) == 0) found = i;
+    if (found < 0) {
+        snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility or image", c->path,
+                 index);
+        return false;
+    }
+    k->kind = (sl_check_kind)found;
+    k->threshold = _sl_kinds[found].threshold;
+    k->fail_fraction = _sl_kinds[found].fail_fraction;
+    k->epsilon = _sl_kinds[found].epsilon;
+    const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "name"));
+    snprintf(k->name, sizeof k->name, "%s", name ? name : kind);
+    const char *hint = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "hint"));
+    if (hint) snprintf(k->hint, sizeof k->hint, "%s", hint);
+    k->points = -1;
+    double percent = k->fail_fraction * 100;
+    if (!_sl_number(json, "points", &k->points, 0, 1000, c->path, err, n) ||
+        !_sl_number(json, "threshold", &k->threshold, 0, 1e9, c->path, err, n) ||
+        !_sl_number(json, "fail_percent", &percent, 0, 100, c->path, err, n) ||
+        !_sl_number(json, "epsilon", &k->epsilon, 0, 1, c->path, err, n))
+        return false;
+    k->fail_fraction = percent / 100;
+    if (k->points < 0) {
+        snprintf(err, n, "%s: checks[%d] (%s) has no \"points\"", c->path, index, k->name);
+        return false;
+    }
+    return true;
+}
+
+bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
+    memset(c, 0, sizeof *c);
+    snprintf(c->path, sizeof c->path, "%s", path);
+    char *text = _sl_slurp(path);
+    if (!text) {
+        snprintf(err, n, "%s: cannot read case file", path);
+        return false;
+    }
+    cJSON *json = cJSON_Parse(text);
+    if (!json) {
+        const char *at = cJSON_GetErrorPtr();
+        int line = 1;
+        for (const char *p = text; at && p < at && *p; p++) line += *p == '\n';
+        snprintf(err, n, "%s:%d: invalid JSON", path, line);
+        free(text);
+        return false;
+    }
+    free(text);
+    bool ok = false;
+    const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "name"));
+    const char *title = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "title"));
+    const char *scene = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "scene"));
+    const cJSON *lab = cJSON_GetObjectItemCaseSensitive(json, "lab");
+    const cJSON *checks = cJSON_GetObjectItemCaseSensitive(json, "checks");
+    double width = 256, height = 256, timeout = 20;
+    if (!name || !*name) {
+        snprintf(err, n, "%s: missing \"name\"", path);
+    } else if (!cJSON_IsNumber(lab) || lab->valueint < 1 || lab->valueint > 7) {
+        snprintf(err, n, "%s: \"lab\" must be a number 1..7", path);
+    } else if (!scene) {
+        snprintf(err, n, "%s: missing \"scene\"", path);
+    } else if (!cJSON_IsArray(checks) || cJSON_GetArraySize(checks) < 1 ||
+               cJSON_GetArraySize(checks) > SL_CASE_MAX_CHECKS) {
+        snprintf(err, n, "%s: \"checks\" must be an array of 1..%d checks", path, SL_CASE_MAX_CHECKS);
+    } else if (_sl_number(json, "width", &width, 16, 2048, path, err, n) &&
+               _sl_number(json, "height", &height, 16, 2048, path, err, n) &&
+               _sl_number(json, "timeout", &timeout, 1, 3600, path, err, n)) {
+        snprintf(c->name, sizeof c->name, "%s", name);
+        snprintf(c->title, sizeof c->title, "%s", title ? title : name);
+        c->lab = lab->valueint;
+        c->width = (int)width;
+        c->height = (int)height;
+        c->timeout_seconds = timeout;
+        ok = sl_scene_load(&c->scene, scene, err, n);
+        const cJSON *light = cJSON_GetObjectItemCaseSensitive(json, "light");
+        if (ok && light) ok = sl_light_from_json(&c->scene.light, light, path, err, n);
+        const cJSON *camera = cJSON_GetObjectItemCaseSensitive(json, "camera");
+        if (ok && camera) ok = sl_camera_from_json(&c->scene.camera, camera, path, err, n);
+        if (ok) ok = _sl_params(c, cJSON_GetObjectItemCaseSensitive(json, "params"), err, n);
+        /* "light_path": per-frame changes to the light; the last frame is the one captured. */
+        const cJSON *frames = cJSON_GetObjectItemCaseSensitive(json, "light_path");
+        c->frame_lights[0] = c->scene.light;
+        c->frame_count = 1;
+        if (ok && frames) {
+            if (!cJSON_IsArray(frames) || cJSON_GetArraySize(frames) < 1 ||
+                cJSON_GetArraySize(frames) > SL_CASE_MAX_FRAMES) {
+                snprintf(err, n, "%s: \"light_path\" must be an array of 1..%d lights", path, SL_CASE_MAX_FRAMES);
+                ok = false;
+            } else {
+                c->frame_count = 0;
+                const cJSON *f;
+                cJSON_ArrayForEach(f, frames) {
+                    sl_light l = c->scene.light;
+                    if (!(ok = sl_light_from_json(&l, f, path, err, n))) break;
+                    c->frame_lights[c->frame_count++] = l;
+                }
+            }
+        }
+        const cJSON *item;
+        cJSON_ArrayForEach(item, checks) {
+            if (!ok) break;
+            ok = _sl_check(c, &c->checks[c->check_count], item, c->check_count, err, n);
+            c->check_count += ok;
+        }
+    }
+    cJSON_Delete(json);
+    return ok;
+}

@@ -1,0 +1,57 @@
+/* sl_case: a grading case is data: a JSON file under grader/cases/ naming the
+ * scene, light, camera, lab parameters, frames, and the checks with points and
+ * tolerances. See grader/cases/README.md for the format. */
+#ifndef SL_CASE_H
+#define SL_CASE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "sl_renderer.h"
+#include "sl_scene.h"
+
+#define SL_CASE_MAX_CHECKS 8
+#define SL_CASE_MAX_FRAMES 16
+
+typedef enum sl_check_kind {
+    SL_CHECK_FBO,        /* the shadow map's framebuffer and texture (no reference) */
+    SL_CHECK_DEPTH_MAP,  /* the depth texture vs reference (EXR) */
+    SL_CHECK_MATRICES,   /* lab 2's view, projection, shadow matrix vs reference (JSON) */
+    SL_CHECK_VISIBILITY, /* the visibility term vs reference (PNG) */
+    SL_CHECK_IMAGE,      /* the shaded image vs reference (PNG) */
+    SL_CHECK_KIND_COUNT
+} sl_check_kind;
+
+typedef struct sl_check {
+    char name[64];
+    sl_check_kind kind;
+    double points;
+    double threshold;     /* per pixel (images) */
+    double fail_fraction; /* of pixels (images) */
+    double epsilon;       /* per matrix element, relative to the largest (matrices) */
+    char hint[320];       /* added to the message when the check fails */
+} sl_check;
+
+typedef struct sl_case {
+    char name[96];
+    char path[1024];
+    int lab;
+    char title[160];
+    sl_scene scene;
+    sl_light frame_lights[SL_CASE_MAX_FRAMES]; /* the light of each frame; the last one is captured */
+    int frame_count;
+    sl_render_params params;
+    int width, height;
+    double timeout_seconds;
+    sl_check checks[SL_CASE_MAX_CHECKS];
+    int check_count;
+} sl_case;
+
+const char *sl_check_kind_name(sl_check_kind kind);
+/* The file a check's reference lives in, relative to the references folder. */
+const char *sl_check_reference_file(sl_check_kind kind); /* NULL: needs none */
+
+/* Reads and validates one case file; false with a message naming the file. */
+bool sl_case_load(sl_case *c, const char *path, char *err, size_t err_size);
+
+#endif

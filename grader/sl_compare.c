@@ -1,0 +1,116 @@
+#include "sl_compare.h"
+
+#include <math.h>
+#include <stddef.h>
+
+static bool _sl_close_to_neighbourhood(const sl_image *a, const sl_image *b, int x, int y, double t) {
+    const float *pa = sl_image_pixel(a, x, y);
+    for (int c = 0; c < a->channels; c++)
+        if (isnan(pa[c])) return false;
+    for (int dy = -1; dy <= 1; dy++) {
+        int yy = y + dy;
+        if (yy < 0 || yy >= b->height) continue;
+        for (int dx = -1; dx <= 1; dx++) {
+            int xx = x + dx;
+            if (xx < 0 || xx >= b->width) continue;
+            const float *pb = sl_image_pixel(b, xx, yy);
+            bool close = true;
+            for (int c = 0; c < a->channels && close; c++) close = fabs((double)pa[c] - (double)pb[c]) <= t;
+            if (close) return true;
+        }
+    }
+    return false;
+}
+
+sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *reference, double threshold,
+                                   sl_image *diff) {
+    sl_compare_stats s = {0};
+    if (diff) *diff = (sl_image){0};
+    if (!student->data || !reference->data || student->width != reference->width ||
+        student->height != reference->height || student->channels != reference->channels) {
+        s.size_mismatch = true;
+        s.failing_fraction = 1;
+        return s;
+    }
+    if (diff) *diff = sl_image_alloc(reference->width, reference->height, 3);
+    s.pixels = (long)reference->width * reference->height;
+    double sum_s = 0, sum_r = 0;
+    for (int y = 0; y < reference->height; y++) {
+        for (int x = 0; x < reference->width; x++) {
+            const float *ps = sl_image_pixel(student, x, y), *pr = sl_image_pixel(reference, x, y);
+            bool nan = false;
+            for (int c = 0; c < reference->channels; c++) {
+                if (isnan(ps[c])) {
+                    nan = true;
+                    continue;
+                }
+                double d = fabs((double)ps[c] - (double)pr[c]);
+                if (d > s.max_difference) s.max_difference = d;
+            }
+            s.nan_pixels += nan;
+            if (!nan) sum_s += ps[0];
+            sum_r += pr[0];
+            bool fail = nan || !_sl_close_to_neighbourhood(student, reference, x, y, threshold) ||
+                        !_sl_close_to_neighbourhood(reference, student, x, y, threshold);
+            s.failing += fail;
+            if (diff && diff->data) {
+                float *pd = sl_image_pixel(diff, x, y);
+                float grey = 0;
+                for (int c = 0; c < reference->channels && c < 3; c++) grey += pr[c];
+                grey = 0.35f * grey / (float)(reference->channels < 3 ? reference->channels : 3);
+                if (grey > 1) grey = 0.35f;
+                pd[0] = fail ? 1.0f : grey;
+                pd[1] = fail ? 0.0f : grey;
+                pd[2] = fail ? 0.0f : grey;
+            }
+        }
+    }
+    s.failing_fraction = s.pixels ? (double)s.failing / (double)s.pixels : 0;
+    s.mean_student = s.pixels ? sum_s / (double)s.pixels : 0;
+    s.mean_reference = s.pixels ? sum_r / (double)s.pixels : 0;
+    return s;
+}
+
+sl_visibility_stats sl_visibility_compare(const sl_image *student, const sl_image *reference) {
+    sl_visibility_stats v = {0};
+    if (!student->data || !reference->data || student->width != reference->width ||
+        student->height != reference->height)
+        return v;
+    long n = (long)reference->width * reference->height;
+    long ref_shadow = 0, stu_shadow = 0, missing = 0, extra = 0;
+    for (long i = 0; i < n; i++) {
+        float r = reference->data[i * reference->channels];
+        float s = student->data[i * student->channels];
+        bool rs = r < 0.5f, ss = !(s >= 0.5f); /* NaN counts as shadow */
+        ref_shadow += rs;
+        stu_shadow += ss;
+        missing += rs && !ss;
+        extra += !rs && ss;
+    }
+    v.reference_shadowed = n ? (double)ref_shadow / (double)n : 0;
+    v.student_shadowed = n ? (double)stu_shadow / (double)n : 0;
+    v.missing_shadow = ref_shadow ? (double)missing / (double)ref_shadow : 0;
+    v.extra_shadow = n - ref_shadow ? (double)extra / (double)(n - ref_shadow) : 0;
+    return v;
+}
+
+double sl_fraction_equal(const sl_image *image, float value, float tolerance) {
+    long n = (long)image->width * image->height, count = 0;
+    if (!image->data || n == 0) return 0;
+    for (long i = 0; i < n; i++) count += fabsf(image->data[i * image->channels] - value) <= tolerance;
+    return (double)count / (double)n;
+}
+
+bool sl_content_only_in_lower_left(const sl_image *image, float clear, int w, int h) {
+    if (!image->data || w >= image->width || h >= image->height) return false;
+    bool inside_content = false;
+    for (int y = 0; y < image->height; y++) {
+        bool lower = y >= image->height - h; /* rows are stored top first */
+        for (int x = 0; x < image->width; x++) {
+            bool content = fabsf(sl_image_pixel(image, x, y)[0] - clear) > 1e-6f;
+            if (content && !(lower && x < w)) return false;
+            inside_content |= content;
+        }
+    }
+    return inside_content;
+}

@@ -1,0 +1,45 @@
+/* sl_compare: image comparison that absorbs renderer noise but not mistakes,
+ * and the statistics the diagnostics are built from. No GL here.
+ *
+ * A pixel passes when it is within `threshold` (every channel) of SOME pixel in
+ * the other image's 3x3 neighbourhood, both ways (student -> reference and
+ * reference -> student); the check passes when the failing fraction is at most
+ * `fail_fraction`. Edges that moved by one pixel pass; a missing shadow does not. */
+#ifndef SL_COMPARE_H
+#define SL_COMPARE_H
+
+#include <stdbool.h>
+
+#include "sl_image.h"
+
+typedef struct sl_compare_stats {
+    bool size_mismatch;
+    long pixels, failing, nan_pixels;
+    double failing_fraction;
+    double max_difference;     /* largest plain per-pixel difference */
+    double mean_student, mean_reference; /* channel 0 */
+} sl_compare_stats;
+
+/* Compares channel by channel; `diff` (may be NULL) receives an RGB image:
+ * the reference darkened, failing pixels in red. */
+sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *reference, double threshold,
+                                   sl_image *diff);
+
+/* Two-valued terms (visibility): how student and reference disagree.
+ * "shadowed" = below 0.5. Fractions of all pixels unless said otherwise. */
+typedef struct sl_visibility_stats {
+    double reference_shadowed;        /* fraction of pixels in shadow in the reference */
+    double student_shadowed;
+    double missing_shadow;            /* reference shadowed, student lit: of the reference's shadowed pixels */
+    double extra_shadow;              /* reference lit, student shadowed: of the reference's lit pixels */
+} sl_visibility_stats;
+
+sl_visibility_stats sl_visibility_compare(const sl_image *student, const sl_image *reference);
+
+/* Depth maps: the fraction of texels at (about) `value`, and whether all
+ * texels different from `clear` lie inside the lower-left w x h rectangle
+ * (GL's origin; images are stored top row first). */
+double sl_fraction_equal(const sl_image *image, float value, float tolerance);
+bool sl_content_only_in_lower_left(const sl_image *image, float clear, int w, int h);
+
+#endif

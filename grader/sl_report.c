@@ -1,0 +1,207 @@
+#define _POSIX_C_SOURCE 200809L
+#include "sl_report.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include <cjson/cJSON.h>
+
+const char *sl_lab_title(int lab) {
+    static const char *titles[8] = {"", "depth FBO", "projective lookup", "bias & culling", "PCF & PCSS",
+                                    "variance shadow maps", "cascaded shadow maps", "cube-map shadows"};
+    return lab >= 1 && lab <= 7 ? titles[lab] : "?";
+}
+
+void sl_report_totals(const sl_grade_report *rep, double *score, double *max_score) {
+    *score = *max_score = 0;
+    for (int i = 0; i < rep->case_count; i++)
+        for (int k = 0; k < rep->cases[i].c->check_count; k++) {
+            *score += rep->cases[i].checks[k].points;
+            *max_score += rep->cases[i].checks[k].max_points;
+        }
+}
+
+static void _sl_print_message(FILE *out, const char *message) {
+    int lines = 0;
+    const char *p = message;
+    while (*p && lines < 10) {
+        const char *end = strchr(p, '\n');
+        int len = end ? (int)(end - p) : (int)strlen(p);
+        if (len > 0) fprintf(out, "          %.*s\n", len, p);
+        lines += len > 0;
+        p = end ? end + 1 : p + len;
+    }
+    if (*p) fprintf(out, "          ...\n");
+}
+
+void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
+    const char *red = color ? "\033[31m" : "", *green = color ? "\033[32m" : "", *bold = color ? "\033[1m" : "",
+               *reset = color ? "\033[0m" : "";
+    for (int lab = 1; lab <= 7; lab++) {
+        double score = 0, max = 0;
+        bool any = false;
+        for (int i = 0; i < rep->case_count; i++) {
+            const sl_graded_case *g = &rep->cases[i];
+            if (g->c->lab != lab) continue;
+            if (!any) fprintf(out, "%sLab %d: %s%s\n", bold, lab, sl_lab_title(lab), reset);
+            any = true;
+            for (int k = 0; k < g->c->check_count; k++) {
+                const sl_check_result *cr = &g->checks[k];
+                char label[200];
+                snprintf(label, sizeof label, "%s / %s", g->c->name, g->c->checks[k].name);
+                fprintf(out, "  %s%s%s %4.1f/%-4.1f %s\n", cr->passed ? green : red, cr->passed ? "PASS" : "FAIL", reset,
+                        cr->points, cr->max_points, label);
+                if (!cr->passed) _sl_print_message(out, cr->message);
+                score += cr->points;
+                max += cr->max_points;
+            }
+        }
+        if (any) fprintf(out, "  Lab %d: %g/%g\n", lab, score, max);
+    }
+    for (int i = 0; i < rep->problem_count; i++) fprintf(out, "%sPROBLEM%s %s\n", red, reset, rep->problems[i]);
+    double score, max;
+    sl_report_totals(rep, &score, &max);
+    fprintf(out, "Time: %.2f s (%d cases, %d jobs)\n", rep->seconds, rep->case_count, rep->jobs);
+    fprintf(out, "%sScore: %g/%g%s\n", bold, score, max, reset);
+}
+
+static bool _sl_write_json(cJSON *json, const char *path, char *err, size_t err_size) {
+    char *text = cJSON_Print(json);
+    FILE *f = text ? fopen(path, "w") : NULL;
+    bool ok = f && fputs(text, f) >= 0;
+    if (f) ok = fclose(f) == 0 && ok;
+    free(text);
+    if (!ok) snprintf(err, err_size, "%s: cannot write", path);
+    return ok;
+}
+
+bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err, size_t err_size) {
+    char images[1100];
+    snprintf(images, sizeof images, "%s/images", dir);
+    if (!sl_mkdirs(images)) {
+        snprintf(err, err_size, "%s: cannot create the report folder", images);
+        return false;
+    }
+    double score, max;
+    sl_report_totals(rep, &score, &max);
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddNumberToObject(root, "score", score);
+    cJSON_AddNumberToObject(root, "max_score", max);
+    cJSON_AddNumberToObject(root, "seconds", rep->seconds);
+    cJSON_AddStringToObject(root, "labs", rep->labs_kind);
+    cJSON *labs = cJSON_AddArrayToObject(root, "lab_scores");
+    for (int lab = 1; lab <= 7; lab++) {
+        double s = 0, m = 0;
+        bool any = false;
+        for (int i = 0; i < rep->case_count; i++)
+            if (rep->cases[i].c->lab == lab)
+                for (int k = 0; k < rep->cases[i].c->check_count; k++) {
+                    any = true;
+                    s += rep->cases[i].checks[k].points;
+                    m += rep->cases[i].checks[k].max_points;
+                }
+        if (!any) continue;
+        cJSON *l = cJSON_CreateObject();
+        cJSON_AddNumberToObject(l, "lab", lab);
+        cJSON_AddStringToObject(l, "title", sl_lab_title(lab));
+        cJSON_AddNumberToObject(l, "score", s);
+        cJSON_AddNumberToObject(l, "max_score", m);
+        cJSON_AddItemToArray(labs, l);
+    }
+    cJSON *cases = cJSON_AddArrayToObject(root, "cases");
+    bool ok = true;
+    for (int i = 0; i < rep->case_count; i++) {
+        const sl_graded_case *g = &rep->cases[i];
+        cJSON *jc = cJSON_CreateObject();
+        cJSON_AddStringToObject(jc, "name", g->c->name);
+        cJSON_AddStringToObject(jc, "title", g->c->title);
+        cJSON_AddNumberToObject(jc, "lab", g->c->lab);
+        cJSON_AddNumberToObject(jc, "seconds", g->result->seconds);
+        if (g->result->output_tail[0]) cJSON_AddStringToObject(jc, "output", g->result->output_tail);
+        cJSON *checks = cJSON_AddArrayToObject(jc, "checks");
+        for (int k = 0; k < g->c->check_count; k++) {
+            const sl_check *ck = &g->c->checks[k];
+            const sl_check_result *cr = &g->checks[k];
+            cJSON *j = cJSON_CreateObject();
+            cJSON_AddStringToObject(j, "name", ck->name);
+            cJSON_AddStringToObject(j, "kind", sl_check_kind_name(ck->kind));
+            cJSON_AddNumberToObject(j, "points", cr->points);
+            cJSON_AddNumberToObject(j, "max_points", cr->max_points);
+            cJSON_AddBoolToObject(j, "passed", cr->passed);
+            cJSON_AddStringToObject(j, "message", cr->message);
+            const char *capture = ck->kind == SL_CHECK_MATRICES ? NULL : sl_check_kind_name(ck->kind);
+            const sl_capture *cap = capture ? sl_result_capture(g->result, capture) : NULL;
+            if (!cr->passed && cap && cap->is_image) {
+                char path[1400], name[300];
+                cJSON *imgs = cJSON_AddObjectToObject(j, "images");
+                snprintf(name, sizeof name, "images/%s.%s.student.png", g->c->name, ck->name);
+                snprintf(path, sizeof path, "%s/%s", dir, name);
+                if (sl_image_write(path, &cap->image, err, err_size)) cJSON_AddStringToObject(imgs, "student", name);
+                if (cr->diff.data) {
+                    snprintf(name, sizeof name, "images/%s.%s.diff.png", g->c->name, ck->name);
+                    snprintf(path, sizeof path, "%s/%s", dir, name);
+                    if (sl_image_write(path, &cr->diff, err, err_size)) cJSON_AddStringToObject(imgs, "diff", name);
+                }
+            }
+            cJSON_AddItemToArray(checks, j);
+        }
+        cJSON_AddItemToArray(cases, jc);
+    }
+    cJSON *problems = cJSON_AddArrayToObject(root, "problems");
+    for (int i = 0; i < rep->problem_count; i++) cJSON_AddItemToArray(problems, cJSON_CreateString(rep->problems[i]));
+    char path[1100];
+    snprintf(path, sizeof path, "%s/results.json", dir);
+    ok = _sl_write_json(root, path, err, err_size) && ok;
+    cJSON_Delete(root);
+    return ok;
+}
+
+/* One test per check, as Gradescope and PrairieLearn list them. */
+static void _sl_add_tests(const sl_grade_report *rep, cJSON *tests, bool prairielearn) {
+    for (int i = 0; i < rep->case_count; i++) {
+        const sl_graded_case *g = &rep->cases[i];
+        for (int k = 0; k < g->c->check_count; k++) {
+            const sl_check_result *cr = &g->checks[k];
+            char name[300];
+            snprintf(name, sizeof name, "Lab %d (%s): %s / %s", g->c->lab, sl_lab_title(g->c->lab), g->c->name,
+                     g->c->checks[k].name);
+            cJSON *t = cJSON_CreateObject();
+            cJSON_AddStringToObject(t, "name", name);
+            cJSON_AddNumberToObject(t, prairielearn ? "points" : "score", cr->points);
+            cJSON_AddNumberToObject(t, prairielearn ? "max_points" : "max_score", cr->max_points);
+            cJSON_AddStringToObject(t, "output", cr->passed ? "passed" : cr->message);
+            if (!prairielearn) cJSON_AddStringToObject(t, "status", cr->passed ? "passed" : "failed");
+            cJSON_AddItemToArray(tests, t);
+        }
+    }
+}
+
+bool sl_report_write_gradescope(const sl_grade_report *rep, const char *path, char *err, size_t err_size) {
+    double score, max;
+    sl_report_totals(rep, &score, &max);
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddNumberToObject(root, "score", score);
+    cJSON_AddNumberToObject(root, "execution_time", rep->seconds);
+    if (rep->problem_count) {
+        char text[4096] = "";
+        for (int i = 0; i < rep->problem_count; i++)
+            snprintf(text + strlen(text), sizeof text - strlen(text), "%s\n", rep->problems[i]);
+        cJSON_AddStringToObject(root, "output", text);
+    }
+    _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), false);
+    bool ok = _sl_write_json(root, path, err, err_size);
+    cJSON_Delete(root);
+    return ok;
+}
+
+bool sl_report_write_prairielearn(const sl_grade_report *rep, const char *path, char *err, size_t err_size) {
+    double score, max;
+    sl_report_totals(rep, &score, &max);
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddBoolToObject(root, "gradable", rep->problem_count == 0);
+    cJSON_AddNumberToObject(root, "score", max > 0 ? score / max : 0);
+    _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), true);
+    bool ok = _sl_write_json(root, path, err, err_size);
+    cJSON_Delete(root);
+    return ok;
+}

@@ -1,0 +1,38 @@
+/* sl_report: the grade as people and course systems read it — the terminal
+ * table ending in "Score: X/Y", a JSON report with student/reference/diff
+ * images, and Gradescope / PrairieLearn results files. */
+#ifndef SL_REPORT_H
+#define SL_REPORT_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "sl_case.h"
+#include "sl_grade.h"
+#include "sl_run.h"
+
+typedef struct sl_graded_case {
+    const sl_case *c;
+    const sl_case_result *result;
+    sl_check_result checks[SL_CASE_MAX_CHECKS];
+} sl_graded_case;
+
+typedef struct sl_grade_report {
+    sl_graded_case *cases;
+    int case_count;
+    char problems[32][1200]; /* case files that could not be read, and the like */
+    int problem_count;
+    double seconds;
+    int jobs;
+    const char *labs_kind, *labs_dir;
+} sl_grade_report;
+
+const char *sl_lab_title(int lab);
+void sl_report_totals(const sl_grade_report *report, double *score, double *max_score);
+void sl_report_print(const sl_grade_report *report, FILE *out, bool color);
+/* DIR/results.json and DIR/images/<case>.<check>.{student,reference,diff}.png */
+bool sl_report_write_dir(const sl_grade_report *report, const char *dir, char *err, size_t err_size);
+bool sl_report_write_gradescope(const sl_grade_report *report, const char *path, char *err, size_t err_size);
+bool sl_report_write_prairielearn(const sl_grade_report *report, const char *path, char *err, size_t err_size);
+
+#endif
