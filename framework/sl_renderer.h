@@ -40,6 +40,8 @@ typedef struct sl_frame_info {
     const char *not_implemented[SL_MAX_NOT_IMPLEMENTED]; /* names of stubs that returned SL_NOT_IMPLEMENTED */
     int not_implemented_count;
     const char *failed;          /* a lab function that returned SL_FAILED, or NULL */
+    const char *shader_error;    /* compile error of a lab's shaders in use, or NULL */
+    int shader_error_lab;        /* whose shaders those are */
     bool shadow_map_ready;       /* lab 1 created a map and ran the depth pass */
     bool lab2_ready;             /* lab 2's matrices are in use */
     mat4 light_view, light_projection, shadow_matrix; /* the matrices used */
@@ -54,9 +56,11 @@ typedef struct sl_renderer_desc {
 typedef struct sl_renderer {
     char labs_dir[SL_PATH_MAX];
     char shaders_dir[SL_PATH_MAX];
-    sl_program depth_program;
-    sl_program scene_programs[2]; /* per sl_compare_mode */
+    sl_program depth_program;     /* lab 1's depth.vert/.frag */
+    sl_program scene_programs[2]; /* per sl_compare_mode; includes lab 2's GLSL */
+    sl_program plain_program;     /* no shadows: lab 1 alone, or lab 2's GLSL broken */
     sl_program debug_program;
+    char shader_errors[3][8192];  /* per lab: why its shaders do not compile */
     GLuint empty_vao;
     sl_mesh meshes[SL_SCENE_MAX_OBJECTS];
     int mesh_count;
@@ -76,12 +80,14 @@ extern const char sl_build_labs_dir[];
 extern const char sl_build_labs_kind[];
 const char *sl_framework_dir(void);
 
-/* Compiles every shader; false with the compiler's message (file:line) in err. */
+/* Compiles every shader. False (message in err) only when the framework's own
+ * shaders fail; a lab's broken shaders switch its step off and show up as
+ * sl_frame_info.shader_error, so the rest still runs. */
 bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, size_t err_size);
 void sl_renderer_destroy(sl_renderer *r);
 bool sl_renderer_set_scene(sl_renderer *r, const sl_scene *scene, char *err, size_t err_size);
 /* Rebuilds the shaders whose files changed; false with err set if one failed
- * (the previous program stays). */
+ * (a program that compiled before stays in use). */
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size);
 
 /* Draws one frame into framebuffer `target` (0 = the window or OSMesa buffer). */

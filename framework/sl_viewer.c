@@ -223,6 +223,7 @@ int sl_viewer_main(int argc, char **argv) {
     int rendered = 0;
     double last_reload_check = 0;
     int reported_missing = -1;
+    const char *reported_shader_error = NULL;
     int status = 0;
     v.dirty_title = true;
     while (!sl_context_should_close(v.ctx)) {
@@ -239,6 +240,12 @@ int sl_viewer_main(int argc, char **argv) {
         sl_context_framebuffer_size(v.ctx, &fw, &fh);
         sl_renderer_draw(&v.renderer, &v.scene, &v.params, 0, fw, fh);
         const sl_frame_info *info = sl_renderer_info(&v.renderer);
+        if (info->shader_error != reported_shader_error) {
+            reported_shader_error = info->shader_error;
+            if (info->shader_error)
+                fprintf(stderr, "shadowlab: lab %d's shaders do not compile, so it is switched off until you fix "
+                                "them (they reload when saved):\n%s\n", info->shader_error_lab, info->shader_error);
+        }
         if (info->not_implemented_count != reported_missing) {
             reported_missing = info->not_implemented_count;
             for (int i = 0; i < info->not_implemented_count; i++)

@@ -154,7 +154,9 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
         c->width = (int)width;
         c->height = (int)height;
         c->timeout_seconds = timeout;
-        ok = sl_scene_load(&c->scene, scene, err, n);
+        char scene_err[1024];
+        ok = sl_scene_load(&c->scene, scene, scene_err, sizeof scene_err);
+        if (!ok) snprintf(err, n, "%s: scene %s", path, scene_err);
         const cJSON *light = cJSON_GetObjectItemCaseSensitive(json, "light");
         if (ok && light) ok = sl_light_from_json(&c->scene.light, light, path, err, n);
         const cJSON *camera = cJSON_GetObjectItemCaseSensitive(json, "camera");

@@ -126,6 +126,11 @@ static int _sl_child_main(const sl_case *c, const sl_run_options *o) {
         glFinish();
     }
     const sl_frame_info *info = sl_renderer_info(&r);
+    if (info->shader_error && info->shader_error_lab <= c->lab) {
+        /* A lab's shaders this case needs do not compile: the case fails on that alone. */
+        _sl_send(_SL_MSG_ERROR, NULL, info->shader_error, strlen(info->shader_error));
+        return 1;
+    }
     sl_image img;
     if (_sl_case_has(c, SL_CHECK_VISIBILITY) && sl_capture_framebuffer(0, c->width, c->height, 1, &img)) {
         _sl_send_image("visibility", &img);

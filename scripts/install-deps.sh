@@ -4,15 +4,15 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git
+  build-essential cmake pkg-config
   libglfw3-dev          # viewer window (X11 build)
   libcglm-dev           # math (GLM for C)
-  libosmesa6-dev        # headless GL for the grader
-  libgl-dev             # GL headers (GL/gl.h, GL/glext.h)
+  libosmesa6-dev        # headless GL for the grader (OSMesa, llvmpipe)
+  libgl-dev             # GL headers: GL/glcorearb.h, KHR/khrplatform.h
   libopenimageio-dev    # PNG / OpenEXR capture and references
   libcjson-dev          # case files, reports
   xvfb xauth            # the viewer's tests run in a virtual X display
-  mesa-utils libgl1-mesa-dri libglx-mesa0   # llvmpipe for GLX (viewer under Xvfb)
+  libgl1-mesa-dri libglx-mesa0   # llvmpipe behind GLX: the viewer under Xvfb
 )
 
 missing=()

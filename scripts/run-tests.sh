@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The whole test suite in one command: installs what is missing (Debian 12),
+# builds every grader the tests need (student, solutions, wrong variants), and
+# runs ctest. CI runs exactly this (.ci/run).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+cmake -S . -B build -DSL_LABS="${SL_LABS:-student}"
+cmake --build build -j "$(nproc)"
+ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900

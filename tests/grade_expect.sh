@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Runs a grader build and checks what it reports.
+#   grade_expect.sh --exe GRADER --exit N [--loses LAB] [--full LAB]... [--expect REGEX]... [-- GRADER ARGS]
+#   --exit N     the exit status the grader must return
+#   --loses LAB  lab LAB must score below its maximum
+#   --full LAB   lab LAB must score its maximum
+#   --expect RE  the output must match RE (grep -E); --reject RE: must not
+set -u
+exe="" want_exit="" loses=() full=() expect=() reject=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --exe) exe=$2; shift 2 ;;
+    --exit) want_exit=$2; shift 2 ;;
+    --loses) loses+=("$2"); shift 2 ;;
+    --full) full+=("$2"); shift 2 ;;
+    --expect) expect+=("$2"); shift 2 ;;
+    --reject) reject+=("$2"); shift 2 ;;
+    --) shift; break ;;
+    *) echo "grade_expect: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+out=$(mktemp)
+trap 'rm -f "$out"' EXIT
+"$exe" "$@" >"$out" 2>&1
+status=$?
+cat "$out"
+fail=0
+problem() { echo "grade_expect: $*" >&2; fail=1; }
+[ -z "$want_exit" ] || [ "$status" = "$want_exit" ] || problem "exit status $status, expected $want_exit"
+last=$(tail -n 1 "$out")
+[[ "$last" =~ ^Score:\ [0-9.]+/[0-9.]+$ ]] || problem "the last line is not 'Score: X/Y': $last"
+lab_total() { grep -E "^  Lab $1: [0-9.]+/[0-9.]+$" "$out" | sed -E 's/.*: //'; }
+for lab in "${loses[@]+"${loses[@]}"}"; do
+  t=$(lab_total "$lab"); [ -n "$t" ] || { problem "no total for lab $lab"; continue; }
+  [ "${t%/*}" != "${t#*/}" ] || problem "lab $lab kept full marks ($t), expected it to lose points"
+done
+for lab in "${full[@]+"${full[@]}"}"; do
+  t=$(lab_total "$lab"); [ -n "$t" ] || { problem "no total for lab $lab"; continue; }
+  [ "${t%/*}" = "${t#*/}" ] || problem "lab $lab scored $t, expected full marks"
+done
+for re in "${expect[@]+"${expect[@]}"}"; do grep -qE -- "$re" "$out" || problem "output does not match: $re"; done
+for re in "${reject[@]+"${reject[@]}"}"; do ! grep -qE -- "$re" "$out" || problem "output matches what it must not: $re"; done
+exit $fail

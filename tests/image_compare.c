@@ -1,0 +1,25 @@
+/* image_compare A B [threshold] [max failing percent]: exit 0 when the two
+ * images match under the grader's neighbourhood compare. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "sl_compare.h"
+#include "sl_image.h"
+
+int main(int argc, char **argv) {
+    if (argc < 3) {
+        fprintf(stderr, "usage: image_compare A B [threshold 0.1] [max failing percent 0.5]\n");
+        return 2;
+    }
+    double threshold = argc > 3 ? atof(argv[3]) : 0.1, percent = argc > 4 ? atof(argv[4]) : 0.5;
+    sl_image a, b;
+    char err[1024];
+    if (!sl_image_read(argv[1], &a, err, sizeof err) || !sl_image_read(argv[2], &b, err, sizeof err)) {
+        fprintf(stderr, "image_compare: %s\n", err);
+        return 2;
+    }
+    sl_compare_stats s = sl_compare_images(&a, &b, threshold, NULL);
+    printf("image_compare: %s vs %s: %s%.3f%% of pixels differ (allowed %.3f%%), largest difference %.3f\n", argv[1],
+           argv[2], s.size_mismatch ? "sizes differ; " : "", 100 * s.failing_fraction, percent, s.max_difference);
+    return !s.size_mismatch && 100 * s.failing_fraction <= percent ? 0 : 1;
+}

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# references_reproduce.sh GRADER IMAGE_COMPARE GRADER_SOURCE_DIR WORK_DIR
+# Renders the references again from the solutions and checks that the shipped
+# ones match: a solution changed without its references would show up here.
+set -u
+grader=$1 compare=$2 src=$3 work=$4
+rm -rf "$work"; mkdir -p "$work"
+"$grader" --update-references --references "$work" || exit 1
+fail=0
+while IFS= read -r shipped; do
+  rel=${shipped#"$src/references/"}
+  fresh="$work/$rel"
+  [ -f "$fresh" ] || { echo "no fresh render of $rel" >&2; fail=1; continue; }
+  case "$rel" in
+    *.exr) "$compare" "$fresh" "$shipped" 0.002 0.5 || fail=1 ;;
+    *.png) "$compare" "$fresh" "$shipped" 0.1 0.5 || fail=1 ;;
+    *.json)
+      # matrices: every number within 1e-4
+      paste <(grep -oE -- '-?[0-9.]+(e-?[0-9]+)?' "$fresh") <(grep -oE -- '-?[0-9.]+(e-?[0-9]+)?' "$shipped") |
+        awk -v f="$rel" '{d=$1-$2; if (d<0) d=-d; if (d>1e-4) {print f ": " $1 " vs " $2; bad=1}} END {exit bad}' || fail=1 ;;
+  esac
+done < <(find "$src/references" -type f | sort)
+[ "$(find "$work" -type f | wc -l)" = "$(find "$src/references" -type f | wc -l)" ] ||
+  { echo "the cases need other references than the ones shipped" >&2; fail=1; }
+exit $fail

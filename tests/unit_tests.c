@@ -1,0 +1,234 @@
+/* Unit tests of the parts that need no GL: comparison, shader preprocessing
+ * and error mapping, case and scene files, meshes. Run one with its name:
+ *   sl_unit_tests compare_neighbourhood */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "sl_case.h"
+#include "sl_compare.h"
+#include "sl_mesh.h"
+#include "sl_scene.h"
+#include "sl_shader.h"
+
+static int failures;
+#define CHECK(cond)                                                                \
+    do {                                                                           \
+        if (!(cond)) {                                                             \
+            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
+            failures++;                                                            \
+        }                                                                          \
+    } while (0)
+
+static char tmp_dir[256];
+
+static void write_file(const char *name, const char *text) {
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+}
+
+static sl_image square(int w, int h, float inside, float outside, int x0, int y0, int x1, int y1) {
+    sl_image img = sl_image_alloc(w, h, 1);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) sl_image_pixel(&img, x, y)[0] = (x >= x0 && x < x1 && y >= y0 && y < y1) ? inside : outside;
+    return img;
+}
+
+static void test_compare_neighbourhood(void) {
+    sl_image ref = square(64, 64, 0, 1, 16, 16, 40, 40);
+    sl_image moved = square(64, 64, 0, 1, 17, 16, 41, 40);   /* edge one pixel over: renderer noise */
+    sl_image missing = square(64, 64, 1, 1, 0, 0, 0, 0);      /* no shadow at all: a mistake */
+    sl_image shifted = square(64, 64, 0, 1, 24, 16, 48, 40);  /* 8 pixels over: a mistake */
+    sl_image diff;
+    sl_compare_stats s = sl_compare_images(&ref, &ref, 0.1, NULL);
+    CHECK(s.failing == 0);
+    s = sl_compare_images(&moved, &ref, 0.1, &diff);
+    CHECK(s.failing == 0);
+    CHECK(diff.width == 64 && diff.channels == 3);
+    sl_image_free(&diff);
+    s = sl_compare_images(&missing, &ref, 0.1, NULL);
+    CHECK(s.failing == 24 * 24);
+    CHECK(fabs(s.failing_fraction - 576.0 / 4096) < 1e-9);
+    s = sl_compare_images(&shifted, &ref, 0.1, NULL);
+    CHECK(s.failing_fraction > 0.05);
+    sl_visibility_stats v = sl_visibility_compare(&missing, &ref);
+    CHECK(v.missing_shadow == 1.0 && v.extra_shadow == 0.0);
+    /* NaN never passes */
+    sl_image nan_img = square(64, 64, 0, 1, 16, 16, 40, 40);
+    nan_img.data[100] = NAN;
+    s = sl_compare_images(&nan_img, &ref, 0.1, NULL);
+    CHECK(s.nan_pixels == 1 && s.failing >= 1);
+    /* size mismatch */
+    sl_image small = sl_image_alloc(32, 32, 1);
+    s = sl_compare_images(&small, &ref, 0.1, NULL);
+    CHECK(s.size_mismatch);
+    sl_image_free(&ref);
+    sl_image_free(&moved);
+    sl_image_free(&missing);
+    sl_image_free(&shifted);
+    sl_image_free(&nan_img);
+    sl_image_free(&small);
+}
+
+static void test_compare_depth_patterns(void) {
+    /* depths only in the lower-left 16x16 of a 64x64 map (rows stored top first) */
+    sl_image img = square(64, 64, 0.5f, 1.0f, 0, 48, 16, 64);
+    CHECK(sl_content_only_in_lower_left(&img, 1.0f, 16, 16));
+    CHECK(!sl_content_only_in_lower_left(&img, 1.0f, 8, 8));
+    sl_image full = square(64, 64, 0.5f, 1.0f, 0, 0, 64, 64);
+    CHECK(!sl_content_only_in_lower_left(&full, 1.0f, 16, 16));
+    CHECK(sl_fraction_equal(&full, 0.5f, 1e-6f) == 1.0);
+    sl_image_free(&img);
+    sl_image_free(&full);
+}
+
+static void test_shader_includes_and_lines(void) {
+    write_file("main.frag", "#version 330 core\n#include \"lib.glsl\"\n#include \"lib.glsl\"\nvoid main() {\n  oops;\n}\n");
+    write_file("lib.glsl", "// shared\nfloat f() { return 1.0; }\n");
+    char path[512], files[SL_SHADER_MAX_FILES][SL_PATH_MAX], err[1024];
+    int count = 0;
+    snprintf(path, sizeof path, "%s/main.frag", tmp_dir);
+    const char *dirs[] = {NULL};
+    char *src = sl_shader_preprocess(path, dirs, "#define X 1", files, &count, err, sizeof err);
+    CHECK(src != NULL);
+    if (!src) return;
+    CHECK(count == 2);
+    CHECK(strncmp(src, "#version 330 core\n#define X 1\n", 30) == 0);
+    CHECK(strstr(src, "float f()") != NULL);
+    CHECK(strstr(strstr(src, "float f()") + 1, "float f()") == NULL); /* included once */
+    CHECK(strstr(src, "#line 4 0") != NULL); /* back in main.frag after the includes */
+    free(src);
+    /* A driver log in Mesa's format maps to file:line:column */
+    char out[2048];
+    sl_shader_map_log("0:5(3): error: `oops' undeclared\n1:2(1): warning: x\n", files, count, out, sizeof out);
+    char expect[1024];
+    snprintf(expect, sizeof expect, "%s/main.frag:5:3: error: `oops' undeclared", tmp_dir);
+    CHECK(strstr(out, expect) != NULL);
+    snprintf(expect, sizeof expect, "%s/lib.glsl:2:1: warning: x", tmp_dir);
+    CHECK(strstr(out, expect) != NULL);
+    /* NVIDIA's format too */
+    sl_shader_map_log("1(7) : error C0000: syntax error\n", files, count, out, sizeof out);
+    snprintf(expect, sizeof expect, "%s/lib.glsl:7: error C0000", tmp_dir);
+    CHECK(strstr(out, expect) != NULL);
+}
+
+static void test_shader_missing_include(void) {
+    write_file("bad.frag", "#version 330 core\n\n#include \"nowhere.glsl\"\n");
+    char path[512], files[SL_SHADER_MAX_FILES][SL_PATH_MAX], err[1024] = "";
+    int count = 0;
+    snprintf(path, sizeof path, "%s/bad.frag", tmp_dir);
+    const char *dirs[] = {NULL};
+    char *src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src == NULL);
+    CHECK(strstr(err, "bad.frag:3: error: cannot find included file \"nowhere.glsl\"") != NULL);
+    free(src);
+}
+
+static void test_case_files(void) {
+    char path[512], err[2048];
+    sl_case c;
+    write_file("ok.json", "{\"name\": \"t\", \"lab\": 2, \"scene\": \"boxes_on_floor\", \"params\": {\"compare\": \"hardware\"},"
+                          "\"checks\": [{\"kind\": \"visibility\", \"points\": 3, \"fail_percent\": 1}]}");
+    snprintf(path, sizeof path, "%s/ok.json", tmp_dir);
+    CHECK(sl_case_load(&c, path, err, sizeof err));
+    CHECK(c.lab == 2 && c.check_count == 1 && c.checks[0].points == 3);
+    CHECK(fabs(c.checks[0].fail_fraction - 0.01) < 1e-12 && c.checks[0].threshold == 0.1);
+    CHECK(c.params.compare == SL_COMPARE_HARDWARE && c.scene.object_count > 0);
+
+    write_file("broken.json", "{\"name\": \"t\",\n \"lab\": 2,\n oops}");
+    snprintf(path, sizeof path, "%s/broken.json", tmp_dir);
+    CHECK(!sl_case_load(&c, path, err, sizeof err));
+    CHECK(strstr(err, "broken.json:3: invalid JSON") != NULL);
+
+    write_file("nopoints.json", "{\"name\": \"t\", \"lab\": 1, \"scene\": \"boxes_on_floor\", \"checks\": [{\"kind\": \"fbo\"}]}");
+    snprintf(path, sizeof path, "%s/nopoints.json", tmp_dir);
+    CHECK(!sl_case_load(&c, path, err, sizeof err));
+    CHECK(strstr(err, "nopoints.json") && strstr(err, "no \"points\""));
+
+    write_file("noscene.json", "{\"name\": \"t\", \"lab\": 1, \"scene\": \"no_such_scene\", \"checks\": [{\"kind\": \"fbo\", \"points\": 1}]}");
+    snprintf(path, sizeof path, "%s/noscene.json", tmp_dir);
+    CHECK(!sl_case_load(&c, path, err, sizeof err));
+    CHECK(strstr(err, "no_such_scene.json") != NULL);
+
+    snprintf(path, sizeof path, "%s/absent.json", tmp_dir);
+    CHECK(!sl_case_load(&c, path, err, sizeof err));
+    CHECK(strstr(err, "absent.json: cannot read case file") != NULL);
+}
+
+static void test_scenes(void) {
+    static const char *builtins[] = {"boxes_on_floor", "curved_grazing", "long_ground", "closed_room", "spot_on_floor"};
+    char err[1024];
+    sl_scene s;
+    for (size_t i = 0; i < sizeof builtins / sizeof builtins[0]; i++) {
+        bool ok = sl_scene_load(&s, builtins[i], err, sizeof err);
+        if (!ok) fprintf(stderr, "%s\n", err);
+        CHECK(ok);
+        CHECK(s.bounds.max[0] > s.bounds.min[0] && s.bounds.max[2] > s.bounds.min[2]);
+        CHECK(fabsf(glm_vec3_norm(s.light.direction) - 1) < 1e-5f);
+    }
+    CHECK(sl_scene_load(&s, "boxes_on_floor", err, sizeof err));
+    CHECK(fabsf(s.bounds.min[1]) < 1e-5f); /* the floor is at y = 0 */
+    write_file("scene.json", "{\"objects\": [{\"shape\": \"cube\"}]}");
+    char path[512];
+    snprintf(path, sizeof path, "%s/scene.json", tmp_dir);
+    CHECK(!sl_scene_load(&s, path, err, sizeof err));
+    CHECK(strstr(err, "objects[0]: unknown shape \"cube\"") != NULL);
+}
+
+static void test_meshes(void) {
+    sl_mesh_data meshes[] = {sl_mesh_plane(4, 4, 3), sl_mesh_box(1, 2, 3), sl_mesh_sphere(1, 24, 12),
+                             sl_mesh_cylinder(0.5f, 2, 24), sl_mesh_torus(1, 0.25f, 24, 12)};
+    for (size_t m = 0; m < sizeof meshes / sizeof meshes[0]; m++) {
+        sl_mesh_data *d = &meshes[m];
+        CHECK(d->vertex_count > 0 && d->index_count % 3 == 0);
+        for (int i = 0; i < d->vertex_count; i++) {
+            const float *n = d->vertices + i * 6 + 3;
+            CHECK(fabsf(sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) - 1) < 1e-4f);
+        }
+        for (int t = 0; t < d->index_count; t += 3) {
+            const float *a = d->vertices + d->indices[t] * 6, *b = d->vertices + d->indices[t + 1] * 6,
+                        *c = d->vertices + d->indices[t + 2] * 6;
+            vec3 e1 = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2 = {c[0] - a[0], c[1] - a[1], c[2] - a[2]}, g;
+            glm_vec3_cross(e1, e2, g);
+            /* counter-clockwise seen from outside: the face normal agrees with the vertex normal */
+            CHECK(glm_vec3_dot(g, (float *)(a + 3)) > 0);
+        }
+        sl_mesh_data_free(d);
+    }
+}
+
+int main(int argc, char **argv) {
+    static const struct { const char *name; void (*fn)(void); } tests[] = {
+        {"compare_neighbourhood", test_compare_neighbourhood},
+        {"compare_depth_patterns", test_compare_depth_patterns},
+        {"shader_includes_and_lines", test_shader_includes_and_lines},
+        {"shader_missing_include", test_shader_missing_include},
+        {"case_files", test_case_files},
+        {"scenes", test_scenes},
+        {"meshes", test_meshes},
+    };
+    snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
+    if (!mkdtemp(tmp_dir)) return 2;
+    int ran = 0;
+    for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++) {
+        if (argc > 1 && strcmp(argv[1], tests[i].name) != 0) continue;
+        int before = failures;
+        tests[i].fn();
+        printf("%s %s\n", failures == before ? "ok  " : "FAIL", tests[i].name);
+        ran++;
+    }
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp_dir);
+    if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", tmp_dir);
+    if (ran == 0) {
+        fprintf(stderr, "no test named %s\n", argc > 1 ? argv[1] : "");
+        return 2;
+    }
+    return failures ? 1 : 0;
+}
