@@ -57,4 +57,49 @@ sl_status lab2_light_view(const sl_light *light, const sl_aabb *scene_bounds, ma
 sl_status lab2_light_projection(const sl_light *light, const sl_aabb *scene_bounds, mat4 light_view, mat4 dest);
 sl_status lab2_shadow_matrix(mat4 light_projection, mat4 light_view, mat4 dest);
 
+/* ---- Lab 3: bias & culling (labs/lab3_bias/lab3.c) ---------------------- */
+typedef enum sl_bias_mode {
+    SL_BIAS_NONE = 0,          /* no bias at all: acne everywhere, for comparison */
+    SL_BIAS_CONSTANT,          /* p.z - constant */
+    SL_BIAS_SLOPE_SCALED,      /* constant + slope * tan(angle between N and L), clamped */
+    SL_BIAS_POLYGON_OFFSET,    /* glPolygonOffset in the depth pass, no bias in the lookup */
+    SL_BIAS_FRONT_FACE_CULLING,/* only back faces reach the map (closed meshes only) */
+    SL_BIAS_NORMAL_OFFSET,     /* lookup moved along the normal by texels * (1 - N.L), plus constant */
+    SL_BIAS_MODE_COUNT
+} sl_bias_mode;
+
+typedef struct sl_bias_settings {
+    sl_bias_mode mode;
+    float constant;              /* depth units, [0,1] */
+    float slope;                 /* times tan(angle) */
+    float max_bias;              /* clamp of the slope-scaled bias */
+    float polygon_offset_factor; /* glPolygonOffset(factor, units) */
+    float polygon_offset_units;
+    float normal_offset;         /* in shadow-map texels */
+} sl_bias_settings;
+
+/* Called right after lab1_begin_depth_pass (the map's framebuffer is bound). */
+sl_status lab3_depth_pass_state(const sl_bias_settings *bias);
+
+/* ---- Lab 4: PCF & PCSS (labs/lab4_pcf/lab4.c) --------------------------- */
+typedef enum sl_filter_mode {
+    SL_FILTER_NONE = 0,     /* one comparison (lab 2) */
+    SL_FILTER_HARDWARE,     /* 2x2 PCF by the texture unit: sampler2DShadow + GL_LINEAR */
+    SL_FILTER_GRID,         /* (2r+1) x (2r+1) comparisons */
+    SL_FILTER_POISSON,      /* 16 comparisons on a rotated Poisson disk */
+    SL_FILTER_PCSS,         /* percentage-closer soft shadows (Fernando 2005) */
+    SL_FILTER_MODE_COUNT
+} sl_filter_mode;
+
+typedef struct sl_filter_settings {
+    sl_filter_mode mode;
+    int grid_radius;        /* grid: r, in texels */
+    float poisson_radius;   /* Poisson: disk radius in texels */
+    float light_size;       /* PCSS: the light's width in world units */
+} sl_filter_settings;
+
+/* Sets the depth texture's filtering for `mode` (the texture is bound to
+ * GL_TEXTURE_2D on texture unit 0 when this is called). */
+sl_status lab4_configure_shadow_texture(GLuint depth_texture, sl_filter_mode mode);
+
 #endif

@@ -18,12 +18,52 @@ const char *sl_framework_dir(void) {
 
 void sl_render_params_defaults(sl_render_params *p) {
     *p = (sl_render_params){
-        .lab = 2,
+        .lab = SL_RENDERER_MAX_LAB,
         .shadow_map_size = 1024,
         .compare = SL_COMPARE_MANUAL,
-        .depth_bias = 0.005f,
+        .bias = {
+            .mode = SL_BIAS_SLOPE_SCALED,
+            .constant = 0.005f,
+            .slope = 0.003f,
+            .max_bias = 0.03f,
+            .polygon_offset_factor = 2.0f,
+            .polygon_offset_units = 4.0f,
+            .normal_offset = 1.5f,
+        },
+        .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f, .light_size = 0.5f},
         .output = SL_OUTPUT_SHADED,
     };
+}
+
+static const char *const _sl_bias_names[SL_BIAS_MODE_COUNT] = {
+    "none", "constant", "slope", "polygon-offset", "front-culling", "normal-offset",
+};
+static const char *const _sl_filter_names[SL_FILTER_MODE_COUNT] = {"none", "hardware", "grid", "poisson", "pcss"};
+
+const char *sl_bias_mode_name(sl_bias_mode mode) {
+    return mode < SL_BIAS_MODE_COUNT ? _sl_bias_names[mode] : "?";
+}
+
+bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode) {
+    for (int i = 0; i < SL_BIAS_MODE_COUNT; i++)
+        if (strcmp(name, _sl_bias_names[i]) == 0) {
+            *mode = (sl_bias_mode)i;
+            return true;
+        }
+    return false;
+}
+
+const char *sl_filter_mode_name(sl_filter_mode mode) {
+    return mode < SL_FILTER_MODE_COUNT ? _sl_filter_names[mode] : "?";
+}
+
+bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
+    for (int i = 0; i < SL_FILTER_MODE_COUNT; i++)
+        if (strcmp(name, _sl_filter_names[i]) == 0) {
+            *mode = (sl_filter_mode)i;
+            return true;
+        }
+    return false;
 }
 
 static void _sl_enter(const char *function) {
@@ -61,17 +101,25 @@ static bool _sl_build(sl_program *p, const sl_renderer *r, const char *vs, const
 
 static void _sl_path(char *out, size_t n, const char *dir, const char *file) { snprintf(out, n, "%s/%s", dir, file); }
 
-/* Lab shaders: a failure is kept per lab instead of stopping everything. */
-static void _sl_build_lab_programs(sl_renderer *r) {
-    char vs[SL_PATH_MAX * 2], fs[SL_PATH_MAX * 2];
-    _sl_path(vs, sizeof vs, r->labs_dir, "lab1_depth_fbo/shaders/depth.vert");
-    _sl_path(fs, sizeof fs, r->labs_dir, "lab1_depth_fbo/shaders/depth.frag");
-    _sl_build(&r->depth_program, r, vs, fs, NULL, r->shader_errors[1], sizeof r->shader_errors[1]);
-    _sl_path(vs, sizeof vs, r->shaders_dir, "scene.vert");
-    _sl_path(fs, sizeof fs, r->shaders_dir, "scene.frag");
-    if (_sl_build(&r->scene_programs[SL_COMPARE_MANUAL], r, vs, fs, NULL, r->shader_errors[2], sizeof r->shader_errors[2]))
-        _sl_build(&r->scene_programs[SL_COMPARE_HARDWARE], r, vs, fs, "#define SL_HARDWARE_COMPARE 1",
-                  r->shader_errors[2], sizeof r->shader_errors[2]);
+/* The camera-pass fragment shader of each lab: it includes that lab's GLSL and the labs' before it. */
+static const char *const _sl_scene_fragment[SL_RENDERER_MAX_LAB + 1] = {
+    [2] = "scene.frag", [3] = "scene_bias.frag", [4] = "scene_filter.frag",
+};
+
+/* Builds lab `lab`'s camera-pass programs once; a failure is kept per lab
+ * instead of stopping everything. */
+static bool _sl_scene_ready(sl_renderer *r, int lab) {
+    if (!r->scene_built[lab]) {
+        r->scene_built[lab] = true;
+        char vs[SL_PATH_MAX * 2], fs[SL_PATH_MAX * 2];
+        _sl_path(vs, sizeof vs, r->shaders_dir, "scene.vert");
+        _sl_path(fs, sizeof fs, r->shaders_dir, _sl_scene_fragment[lab]);
+        char *err = r->shader_errors[lab];
+        if (_sl_build(&r->scene_programs[lab][0], r, vs, fs, NULL, err, sizeof r->shader_errors[lab]))
+            _sl_build(&r->scene_programs[lab][1], r, vs, fs, "#define SL_HARDWARE_COMPARE 1", err,
+                      sizeof r->shader_errors[lab]);
+    }
+    return r->scene_programs[lab][0].id && r->scene_programs[lab][1].id;
 }
 
 bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, size_t err_size) {
@@ -89,19 +137,25 @@ bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, s
     _sl_path(vs, sizeof vs, r->shaders_dir, "debug_quad.vert");
     _sl_path(fs, sizeof fs, r->shaders_dir, "debug_quad.frag");
     if (!_sl_build(&r->debug_program, r, vs, fs, NULL, err, err_size)) return false;
-    _sl_build_lab_programs(r);
+    _sl_path(vs, sizeof vs, r->labs_dir, "lab1_depth_fbo/shaders/depth.vert");
+    _sl_path(fs, sizeof fs, r->labs_dir, "lab1_depth_fbo/shaders/depth.frag");
+    _sl_build(&r->depth_program, r, vs, fs, NULL, r->shader_errors[1], sizeof r->shader_errors[1]);
     glGenVertexArrays(1, &r->empty_vao);
     return true;
 }
 
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
-    struct { sl_program *program; int lab; } programs[] = {
-        {&r->depth_program, 1}, {&r->scene_programs[0], 2}, {&r->scene_programs[1], 2},
-        {&r->plain_program, 0}, {&r->debug_program, 0},
-    };
+    typedef struct { sl_program *program; int lab; } watched;
+    watched programs[4 + 2 * SL_RENDERER_MAX_LAB];
+    int n = 0;
+    programs[n++] = (watched){&r->depth_program, 1};
+    programs[n++] = (watched){&r->plain_program, 0};
+    programs[n++] = (watched){&r->debug_program, 0};
+    for (int lab = 2; lab <= SL_RENDERER_MAX_LAB; lab++)
+        for (int v = 0; v < 2 && r->scene_built[lab]; v++) programs[n++] = (watched){&r->scene_programs[lab][v], lab};
     bool ok = true;
     *reloaded = false;
-    for (size_t i = 0; i < sizeof programs / sizeof programs[0]; i++) {
+    for (int i = 0; i < n; i++) {
         char e[8192];
         int lab = programs[i].lab;
         if (sl_program_reload_if_changed(programs[i].program, e, sizeof e)) {
@@ -129,8 +183,10 @@ void sl_renderer_destroy(sl_renderer *r) {
         if (sl_lab_call_hook) sl_lab_call_hook(NULL);
     }
     sl_program_destroy(&r->depth_program);
-    sl_program_destroy(&r->scene_programs[0]);
-    sl_program_destroy(&r->scene_programs[1]);
+    for (int lab = 0; lab <= SL_RENDERER_MAX_LAB; lab++) {
+        sl_program_destroy(&r->scene_programs[lab][0]);
+        sl_program_destroy(&r->scene_programs[lab][1]);
+    }
     sl_program_destroy(&r->plain_program);
     sl_program_destroy(&r->debug_program);
     if (r->empty_vao) glDeleteVertexArrays(1, &r->empty_vao);
@@ -225,7 +281,8 @@ static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const sl_pro
     }
 }
 
-static void _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
+/* Returns the highest lab the depth pass used (0: no map, 1, or 3 with lab 3's state). */
+static int _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
     sl_frame_info *info = &r->info;
     int size = p->shadow_map_size > 0 ? p->shadow_map_size : 1024;
     if (r->shadow_map_attempted && r->shadow_map_status == SL_OK && r->shadow_map.size != size) {
@@ -238,15 +295,22 @@ static void _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
         _sl_enter("lab1_create_shadow_map");
         r->shadow_map_status = lab1_create_shadow_map(size, &r->shadow_map);
         r->shadow_map_attempted = true;
+        if (r->shadow_map_status == SL_OK && glIsTexture(r->shadow_map.depth_texture)) {
+            glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
+            glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &r->lab1_min_filter);
+            glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &r->lab1_mag_filter);
+        }
     }
     info->shadow_map = r->shadow_map; /* even on failure: the grader inspects what was made */
-    if (!_sl_lab_result(r, "lab1_create_shadow_map", r->shadow_map_status)) return;
+    if (!_sl_lab_result(r, "lab1_create_shadow_map", r->shadow_map_status)) return 0;
     if (!r->depth_program.id) {
         info->shader_error = r->shader_errors[1];
         info->shader_error_lab = 1;
-        return;
+        return 0;
     }
-    if (!_SL_CALL_LAB(r, lab1_begin_depth_pass, &r->shadow_map)) return;
+    if (!_SL_CALL_LAB(r, lab1_begin_depth_pass, &r->shadow_map)) return 0;
+    int used = 1;
+    if (p->lab >= 3 && _SL_CALL_LAB(r, lab3_depth_pass_state, &p->bias)) used = 3;
     mat4 view_proj;
     glm_mat4_mul(info->light_projection, info->light_view, view_proj);
     glUseProgram(r->depth_program.id);
@@ -254,19 +318,51 @@ static void _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
                        (const float *)view_proj);
     _sl_draw_objects(r, scene, &r->depth_program, false);
     info->shadow_map_ready = true;
+    return used;
 }
 
-static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int width, int height) {
+/* The world size of one shadow-map texel: for a spot light, per unit of distance. */
+static float _sl_texel_size(const sl_frame_info *info, const sl_light *light, int map_size) {
+    float scale = light->type == SL_LIGHT_DIRECTIONAL ? 2.0f / info->light_projection[0][0]
+                                                        : 2.0f * tanf(glm_rad(light->spot_angle_deg));
+    return scale / (float)(map_size > 0 ? map_size : 1);
+}
+
+static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab, int width,
+                           int height) {
     sl_frame_info *info = &r->info;
-    const sl_program *prog = &r->scene_programs[p->compare == SL_COMPARE_HARDWARE];
-    if (p->lab >= 2 && !prog->id && !info->shader_error) {
-        info->shader_error = r->shader_errors[2];
-        info->shader_error_lab = 2;
+    /* The highest lab whose code can run this frame. */
+    int lab = 0;
+    if (info->shadow_map_ready && info->lab2_ready) {
+        lab = p->lab < SL_RENDERER_MAX_LAB ? p->lab : SL_RENDERER_MAX_LAB;
+        if (depth_lab < 3 && lab > 2) lab = 2;
     }
-    bool shadows = info->shadow_map_ready && info->lab2_ready && prog->id;
-    if (!shadows) prog = &r->plain_program;
-    glClearColor(0.55f, 0.62f, 0.70f, 1);
-    if (p->output == SL_OUTPUT_VISIBILITY) glClearColor(1, 1, 1, 1);
+    if (lab >= 4) {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
+        if (!_SL_CALL_LAB(r, lab4_configure_shadow_texture, r->shadow_map.depth_texture, p->filter.mode)) lab = 3;
+    } else if (info->shadow_map_ready && r->lab1_min_filter) {
+        /* lab 4 may have changed the filtering in an earlier frame: back to lab 1's */
+        glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, r->lab1_min_filter);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, r->lab1_mag_filter);
+    }
+    for (int l = 2; l <= lab; l++) {
+        if (_sl_scene_ready(r, l)) continue;
+        if (!info->shader_error) {
+            info->shader_error = r->shader_errors[l];
+            info->shader_error_lab = l;
+        }
+        lab = l - 1;
+    }
+    bool hardware = lab >= 4 ? p->filter.mode == SL_FILTER_HARDWARE : p->compare == SL_COMPARE_HARDWARE;
+    const sl_program *prog = lab >= 2 ? &r->scene_programs[lab][hardware] : &r->plain_program;
+    info->lab_in_use = lab >= 2 ? lab : (info->shadow_map_ready ? 1 : 0);
+
+    /* background: sky; lit in the visibility image; not a lit surface in the mask */
+    if (p->output == SL_OUTPUT_SHADED) glClearColor(0.55f, 0.62f, 0.70f, 1);
+    else if (p->output == SL_OUTPUT_VISIBILITY) glClearColor(1, 1, 1, 1);
+    else glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glUseProgram(prog->id);
     mat4 view, proj;
@@ -283,16 +379,30 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     glm_vec3_scale((float *)l->color, l->intensity, radiance);
     glUniform3fv(sl_program_uniform(prog, "u_light_radiance"), 1, radiance);
     glUniform1f(sl_program_uniform(prog, "u_spot_cos"), cosf(glm_rad(l->spot_angle_deg)));
-    glUniform1i(sl_program_uniform(prog, "u_shadows"), shadows ? 1 : 0);
-    glUniform1f(sl_program_uniform(prog, "u_depth_bias"), p->depth_bias);
+    glUniform1i(sl_program_uniform(prog, "u_shadows"), lab >= 2 ? 1 : 0);
     glUniform1i(sl_program_uniform(prog, "u_output"), (int)p->output);
+    /* lab 2: constant bias; lab 3: the chosen mode */
+    glUniform1f(sl_program_uniform(prog, "u_depth_bias"), p->bias.constant);
+    glUniform1i(sl_program_uniform(prog, "u_bias_mode"), (int)p->bias.mode);
+    glUniform1f(sl_program_uniform(prog, "u_slope_bias"), p->bias.slope);
+    glUniform1f(sl_program_uniform(prog, "u_max_bias"), p->bias.max_bias);
+    glUniform1f(sl_program_uniform(prog, "u_normal_offset"), p->bias.normal_offset);
+    glUniform1f(sl_program_uniform(prog, "u_texel_size"), _sl_texel_size(info, l, p->shadow_map_size));
+    /* lab 4 */
+    glUniform1i(sl_program_uniform(prog, "u_filter_mode"), (int)p->filter.mode);
+    glUniform1i(sl_program_uniform(prog, "u_grid_radius"), p->filter.grid_radius);
+    glUniform1f(sl_program_uniform(prog, "u_poisson_radius"), p->filter.poisson_radius);
+    float near_width = l->type == SL_LIGHT_DIRECTIONAL ? 2.0f / info->light_projection[0][0]
+                                                       : 2.0f * l->near * tanf(glm_rad(l->spot_angle_deg));
+    glUniform1f(sl_program_uniform(prog, "u_light_size_uv"), l->size / near_width);
+    glUniform1f(sl_program_uniform(prog, "u_light_near"), l->near);
+    glUniform1f(sl_program_uniform(prog, "u_light_far"), l->far);
     glUniform1i(sl_program_uniform(prog, "u_shadow_map"), 0);
     glActiveTexture(GL_TEXTURE0);
-    if (shadows) {
+    if (lab >= 2) {
         glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
         /* Compare mode is texture state: set it for the sampler type this program declares. */
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE,
-                        p->compare == SL_COMPARE_HARDWARE ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, hardware ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     } else {
         glBindTexture(GL_TEXTURE_2D, 0);
@@ -324,11 +434,12 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->shader_error = NULL;
     info->shader_error_lab = 0;
     info->shadow_map_ready = false;
+    info->lab_in_use = 0;
     _sl_light_matrices(r, scene, params);
     _sl_reset_state(0, width, height);
-    _sl_depth_pass(r, scene, params);
+    int depth_lab = _sl_depth_pass(r, scene, params);
     _sl_reset_state(target, width, height);
-    _sl_scene_pass(r, scene, params, width, height);
+    _sl_scene_pass(r, scene, params, depth_lab, width, height);
     if (params->show_shadow_map) _sl_debug_view(r, width, height);
     glBindVertexArray(0);
     glUseProgram(0);

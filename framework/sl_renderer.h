@@ -1,10 +1,13 @@
 /* sl_renderer: one frame of the shadow pipeline, built from the labs' code.
  *
- *   1. lab 1 creates the shadow map (once per size) and begins the depth pass;
- *      the framework draws every object with lab 1's depth shaders
- *   2. lab 2 builds the light's view, projection and shadow matrix
+ *   1. lab 2 builds the light's view, projection and shadow matrix
  *      (lab 1 alone uses sl_light_default_matrices)
- *   3. the camera pass shades each pixel with lab 2's lookup (scene.vert/frag)
+ *   2. lab 1 creates the shadow map (once per size) and begins the depth pass,
+ *      lab 3 adds its depth-pass state (polygon offset, culling); the
+ *      framework draws every object with lab 1's depth shaders
+ *   3. lab 4 sets the map's filtering; the camera pass shades each pixel with
+ *      the highest lab's lookup: lab 2 (scene.frag), lab 3's bias
+ *      (scene_bias.frag) or lab 4's filters (scene_filter.frag)
  *
  * A lab function that returns SL_NOT_IMPLEMENTED switches its step off (no
  * shadows) and is listed in sl_frame_info, which the grader turns into
@@ -22,13 +25,17 @@
 #include "shadowlab.h"
 
 typedef enum sl_compare_mode { SL_COMPARE_MANUAL = 0, SL_COMPARE_HARDWARE = 1 } sl_compare_mode;
-typedef enum sl_output { SL_OUTPUT_SHADED = 0, SL_OUTPUT_VISIBILITY = 1 } sl_output;
+/* SL_OUTPUT_LIT_MASK: white where a surface faces the light (the grader's "lit surfaces"). */
+typedef enum sl_output { SL_OUTPUT_SHADED = 0, SL_OUTPUT_VISIBILITY = 1, SL_OUTPUT_LIT_MASK = 2 } sl_output;
+
+#define SL_RENDERER_MAX_LAB 4
 
 typedef struct sl_render_params {
-    int lab;                 /* labs in use: 1 = depth pass only, 2 = lab 2's matrices and lookup */
+    int lab;                 /* labs in use, 1..SL_RENDERER_MAX_LAB: 1 = depth pass only */
     int shadow_map_size;     /* texels; default 1024 */
-    sl_compare_mode compare; /* sampler2D + manual compare, or sampler2DShadow */
-    float depth_bias;        /* lab 2's constant bias in [0,1] depth units; default 0.005 */
+    sl_compare_mode compare; /* labs 2-3: sampler2D + manual compare, or sampler2DShadow */
+    sl_bias_settings bias;   /* lab 2 uses bias.constant; lab 3 all of it */
+    sl_filter_settings filter; /* lab 4 */
     sl_output output;
     bool show_shadow_map;    /* debug view of the depth map in a corner */
 } sl_render_params;
@@ -44,6 +51,7 @@ typedef struct sl_frame_info {
     int shader_error_lab;        /* whose shaders those are */
     bool shadow_map_ready;       /* lab 1 created a map and ran the depth pass */
     bool lab2_ready;             /* lab 2's matrices are in use */
+    int lab_in_use;              /* the highest lab whose code this frame used (0: no shadows) */
     mat4 light_view, light_projection, shadow_matrix; /* the matrices used */
     sl_shadow_map shadow_map;    /* lab 1's map, for inspection */
 } sl_frame_info;
@@ -57,10 +65,13 @@ typedef struct sl_renderer {
     char labs_dir[SL_PATH_MAX];
     char shaders_dir[SL_PATH_MAX];
     sl_program depth_program;     /* lab 1's depth.vert/.frag */
-    sl_program scene_programs[2]; /* per sl_compare_mode; includes lab 2's GLSL */
+    /* camera pass per lab 2..4 and sampler type (0 sampler2D, 1 sampler2DShadow), built when first needed */
+    sl_program scene_programs[SL_RENDERER_MAX_LAB + 1][2];
+    bool scene_built[SL_RENDERER_MAX_LAB + 1];
     sl_program plain_program;     /* no shadows: lab 1 alone, or lab 2's GLSL broken */
     sl_program debug_program;
-    char shader_errors[3][8192];  /* per lab: why its shaders do not compile */
+    char shader_errors[SL_RENDERER_MAX_LAB + 1][8192]; /* per lab: why its shaders do not compile */
+    GLint lab1_min_filter, lab1_mag_filter; /* lab 1's choice, restored when lab 4 is off */
     GLuint empty_vao;
     sl_mesh meshes[SL_SCENE_MAX_OBJECTS];
     int mesh_count;
@@ -101,5 +112,11 @@ bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int chann
 bool sl_capture_depth_texture(GLuint texture, sl_image *out, char *err, size_t err_size);
 
 void sl_render_params_defaults(sl_render_params *params);
+
+/* Names as the command line and case files spell them ("slope", "pcss"). */
+const char *sl_bias_mode_name(sl_bias_mode mode);
+bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode);
+const char *sl_filter_mode_name(sl_filter_mode mode);
+bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode);
 
 #endif

@@ -25,31 +25,51 @@ typedef struct _sl_viewer {
 static void _sl_usage(FILE *f) {
     fprintf(f,
             "usage: shadowlab [options]\n"
-            "  --lab N             labs in use: 1 (depth map) or 2 (shadows); default 2\n"
+            "  --lab N             labs in use: 1 depth map, 2 shadows, 3 bias, 4 filtering; default 4\n"
             "  --scene NAME|FILE   a built-in scene (boxes_on_floor, curved_grazing, long_ground,\n"
             "                      closed_room, spot_on_floor) or a scene .json; default boxes_on_floor\n"
             "  --size WxH          window size; default 960x640\n"
             "  --map-size N        shadow map size in texels; default 1024\n"
             "  --compare MODE      manual (sampler2D) or hardware (sampler2DShadow)\n"
-            "  --bias X            lab 2's constant depth bias; default 0.005\n"
+            "  --bias X            constant depth bias; default 0.005\n"
+            "  --bias-mode MODE    lab 3: none, constant, slope, polygon-offset, front-culling,\n"
+            "                      normal-offset; default slope\n"
+            "  --filter MODE       lab 4: none, hardware, grid, poisson, pcss; default grid\n"
+            "  --kernel R          lab 4: grid radius in texels (1 = 3x3); default 1\n"
+            "  --light-size S      lab 4: the light's size in world units (PCSS)\n"
             "  --visibility        show the visibility term alone (what the grader compares)\n"
             "  --show-map          show the shadow map in a corner\n"
             "  --frames K          render K frames, then exit (for scripts)\n"
             "  --screenshot FILE   save the last frame as PNG (with --frames)\n"
             "  --headless          render with OSMesa instead of a window (no display needed)\n"
             "  --labs-dir DIR      lab sources to load shaders from; default this build's\n"
-            "keys: 1/2 lab, V visibility, M shadow map, C compare mode, [ ] bias, arrows move the light,\n"
-            "      mouse drag orbit, wheel zoom, Esc quit; shaders reload when their files change\n");
+            "keys: 1-4 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
+            "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
+            "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
+            "      shaders reload when their files change\n");
 }
 
 static void _sl_update_title(_sl_viewer *v) {
     GLFWwindow *w = sl_context_window(v->ctx);
     if (!w) return;
     const sl_frame_info *info = sl_renderer_info(&v->renderer);
-    char title[512];
-    int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s compare, bias %.4f%s", v->params.lab,
-                     v->scene.name, v->params.compare == SL_COMPARE_HARDWARE ? "hardware" : "manual",
-                     v->params.depth_bias, v->params.output == SL_OUTPUT_VISIBILITY ? " — visibility" : "");
+    char title[512], settings[160];
+    const sl_render_params *p = &v->params;
+    if (p->lab <= 2)
+        snprintf(settings, sizeof settings, "%s compare, bias %.4f", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual",
+                 p->bias.constant);
+    else
+        snprintf(settings, sizeof settings, "bias: %s %.4f%s%s", sl_bias_mode_name(p->bias.mode), p->bias.constant,
+                 p->lab >= 4 ? ", filter: " : "", p->lab >= 4 ? sl_filter_mode_name(p->filter.mode) : "");
+    if (p->lab >= 4 && p->filter.mode == SL_FILTER_GRID)
+        snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " %dx%d", 2 * p->filter.grid_radius + 1,
+                 2 * p->filter.grid_radius + 1);
+    if (p->lab >= 4 && p->filter.mode == SL_FILTER_POISSON)
+        snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " r=%.1f", p->filter.poisson_radius);
+    if (p->lab >= 4 && p->filter.mode == SL_FILTER_PCSS)
+        snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " light %.2f", v->scene.light.size);
+    int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s", p->lab, v->scene.name, settings,
+                     p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "");
     if (info->not_implemented_count > 0 && n > 0 && (size_t)n < sizeof title)
         snprintf(title + n, sizeof title - (size_t)n, " — not implemented: %s%s", info->not_implemented[0],
                  info->not_implemented_count > 1 ? ", ..." : "");
@@ -76,11 +96,24 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
     case GLFW_KEY_1: v->params.lab = 1; break;
     case GLFW_KEY_2: v->params.lab = 2; break;
+    case GLFW_KEY_3: v->params.lab = 3; break;
+    case GLFW_KEY_4: v->params.lab = 4; break;
+    case GLFW_KEY_B: v->params.bias.mode = (sl_bias_mode)((v->params.bias.mode + 1) % SL_BIAS_MODE_COUNT); break;
+    case GLFW_KEY_F: v->params.filter.mode = (sl_filter_mode)((v->params.filter.mode + 1) % SL_FILTER_MODE_COUNT); break;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_MINUS: {
+        int step = key == GLFW_KEY_EQUAL ? 1 : -1;
+        sl_filter_settings *f = &v->params.filter;
+        if (f->mode == SL_FILTER_GRID) f->grid_radius = f->grid_radius + step < 0 ? 0 : f->grid_radius + step;
+        else if (f->mode == SL_FILTER_POISSON) f->poisson_radius = glm_clamp(f->poisson_radius * (step > 0 ? 1.25f : 0.8f), 0.5f, 64);
+        else if (f->mode == SL_FILTER_PCSS) v->scene.light.size = glm_clamp(v->scene.light.size * (step > 0 ? 1.25f : 0.8f), 0.01f, 10);
+        break;
+    }
     case GLFW_KEY_V: v->params.output = v->params.output == SL_OUTPUT_SHADED ? SL_OUTPUT_VISIBILITY : SL_OUTPUT_SHADED; break;
     case GLFW_KEY_M: v->params.show_shadow_map = !v->params.show_shadow_map; break;
     case GLFW_KEY_C: v->params.compare = v->params.compare == SL_COMPARE_MANUAL ? SL_COMPARE_HARDWARE : SL_COMPARE_MANUAL; break;
-    case GLFW_KEY_LEFT_BRACKET: v->params.depth_bias *= 0.5f; break;
-    case GLFW_KEY_RIGHT_BRACKET: v->params.depth_bias = v->params.depth_bias > 0 ? v->params.depth_bias * 2 : 0.0005f; break;
+    case GLFW_KEY_LEFT_BRACKET: v->params.bias.constant *= 0.5f; break;
+    case GLFW_KEY_RIGHT_BRACKET: v->params.bias.constant = v->params.bias.constant > 0 ? v->params.bias.constant * 2 : 0.0005f; break;
     case GLFW_KEY_LEFT: _sl_move_light(&v->scene.light, -0.05f, 0); break;
     case GLFW_KEY_RIGHT: _sl_move_light(&v->scene.light, 0.05f, 0); break;
     case GLFW_KEY_UP: _sl_move_light(&v->scene.light, 0, 0.05f); break;
@@ -119,13 +152,16 @@ int sl_viewer_main(int argc, char **argv) {
     const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL;
     int frames = 0, width = 960, height = 640;
     bool headless = false;
+    float light_size = -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *next = i + 1 < argc ? argv[i + 1] : NULL;
         bool takes_value = strcmp(a, "--lab") == 0 || strcmp(a, "--scene") == 0 || strcmp(a, "--size") == 0 ||
                            strcmp(a, "--map-size") == 0 || strcmp(a, "--compare") == 0 ||
                            strcmp(a, "--bias") == 0 || strcmp(a, "--frames") == 0 ||
-                           strcmp(a, "--screenshot") == 0 || strcmp(a, "--labs-dir") == 0;
+                           strcmp(a, "--screenshot") == 0 || strcmp(a, "--labs-dir") == 0 ||
+                           strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
+                           strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -135,8 +171,9 @@ int sl_viewer_main(int argc, char **argv) {
             return 0;
         } else if (strcmp(a, "--lab") == 0) {
             v.params.lab = atoi(next);
-            if (v.params.lab < 1 || v.params.lab > 2) {
-                fprintf(stderr, "shadowlab: --lab must be 1 or 2 (labs 3-7 are not in this build yet)\n");
+            if (v.params.lab < 1 || v.params.lab > SL_RENDERER_MAX_LAB) {
+                fprintf(stderr, "shadowlab: --lab must be 1..%d (labs %d-7 are not in this build yet)\n",
+                        SL_RENDERER_MAX_LAB, SL_RENDERER_MAX_LAB + 1);
                 return 2;
             }
         } else if (strcmp(a, "--scene") == 0) {
@@ -160,7 +197,25 @@ int sl_viewer_main(int argc, char **argv) {
                 return 2;
             }
         } else if (strcmp(a, "--bias") == 0) {
-            v.params.depth_bias = (float)atof(next);
+            v.params.bias.constant = (float)atof(next);
+        } else if (strcmp(a, "--bias-mode") == 0) {
+            if (!sl_bias_mode_parse(next, &v.params.bias.mode)) {
+                fprintf(stderr, "shadowlab: --bias-mode is none, constant, slope, polygon-offset, front-culling or normal-offset\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--filter") == 0) {
+            if (!sl_filter_mode_parse(next, &v.params.filter.mode)) {
+                fprintf(stderr, "shadowlab: --filter is none, hardware, grid, poisson or pcss\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--kernel") == 0) {
+            v.params.filter.grid_radius = atoi(next);
+            if (v.params.filter.grid_radius < 0 || v.params.filter.grid_radius > 16) {
+                fprintf(stderr, "shadowlab: --kernel is a radius 0..16\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--light-size") == 0) {
+            light_size = (float)atof(next);
         } else if (strcmp(a, "--frames") == 0) {
             frames = atoi(next);
         } else if (strcmp(a, "--screenshot") == 0) {
@@ -191,6 +246,7 @@ int sl_viewer_main(int argc, char **argv) {
         fprintf(stderr, "shadowlab: %s\n", err);
         return 1;
     }
+    if (light_size > 0) v.scene.light.size = light_size;
     sl_context_desc cd = {
         .backend = headless ? SL_BACKEND_OSMESA : SL_BACKEND_GLFW,
         .width = width,

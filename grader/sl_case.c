@@ -53,17 +53,49 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     sl_render_params_defaults(&c->params);
     c->params.lab = c->lab;
     c->params.output = SL_OUTPUT_VISIBILITY;
+    if (c->lab < 3) c->params.bias.mode = SL_BIAS_CONSTANT;
+    if (c->lab < 4) c->params.filter.mode = SL_FILTER_NONE;
     if (!json) return true;
     if (!cJSON_IsObject(json)) {
         snprintf(err, n, "%s: \"params\" must be an object", c->path);
         return false;
     }
-    double size = c->params.shadow_map_size, bias = c->params.depth_bias;
+    sl_bias_settings *b = &c->params.bias;
+    sl_filter_settings *f = &c->params.filter;
+    double size = c->params.shadow_map_size, constant = b->constant, slope = b->slope, max_bias = b->max_bias;
+    double factor = b->polygon_offset_factor, units = b->polygon_offset_units, offset = b->normal_offset;
+    double radius = f->grid_radius, poisson = f->poisson_radius;
     if (!_sl_number(json, "shadow_map_size", &size, 16, 4096, c->path, err, n) ||
-        !_sl_number(json, "depth_bias", &bias, 0, 1, c->path, err, n))
+        !_sl_number(json, "depth_bias", &constant, 0, 1, c->path, err, n) ||
+        !_sl_number(json, "slope_bias", &slope, 0, 1, c->path, err, n) ||
+        !_sl_number(json, "max_bias", &max_bias, 0, 1, c->path, err, n) ||
+        !_sl_number(json, "polygon_offset_factor", &factor, -100, 100, c->path, err, n) ||
+        !_sl_number(json, "polygon_offset_units", &units, -10000, 10000, c->path, err, n) ||
+        !_sl_number(json, "normal_offset", &offset, 0, 100, c->path, err, n) ||
+        !_sl_number(json, "grid_radius", &radius, 0, 16, c->path, err, n) ||
+        !_sl_number(json, "poisson_radius", &poisson, 0, 256, c->path, err, n))
         return false;
     c->params.shadow_map_size = (int)size;
-    c->params.depth_bias = (float)bias;
+    b->constant = (float)constant;
+    b->slope = (float)slope;
+    b->max_bias = (float)max_bias;
+    b->polygon_offset_factor = (float)factor;
+    b->polygon_offset_units = (float)units;
+    b->normal_offset = (float)offset;
+    f->grid_radius = (int)radius;
+    f->poisson_radius = (float)poisson;
+    const char *mode = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "bias_mode"));
+    if (mode && !sl_bias_mode_parse(mode, &b->mode)) {
+        snprintf(err, n, "%s: \"bias_mode\" must be none, constant, slope, polygon-offset, front-culling or normal-offset", c->path);
+        return false;
+    }
+    if (!mode && c->lab < 3) b->mode = SL_BIAS_CONSTANT; /* labs 1-2: lab 2's constant bias */
+    mode = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "filter"));
+    if (mode && !sl_filter_mode_parse(mode, &f->mode)) {
+        snprintf(err, n, "%s: \"filter\" must be none, hardware, grid, poisson or pcss", c->path);
+        return false;
+    }
+    if (!mode && c->lab < 4) f->mode = SL_FILTER_NONE;
     const cJSON *compare = cJSON_GetObjectItemCaseSensitive(json, "compare");
     if (compare) {
         const char *s = cJSON_GetStringValue(compare);

@@ -7,16 +7,23 @@ uniform vec3 u_light_radiance;
 uniform float u_spot_cos;
 uniform vec3 u_albedo;
 
-// The colour of a surface point given the light's visibility there; with
-// u_output == 1, the visibility term alone (what the grader compares).
+// Unit vector from a surface point towards the light.
+vec3 sl_direction_to_light(vec3 world_position) {
+    return u_light_type == 0 ? -u_light_direction : normalize(u_light_position - world_position);
+}
+
+// The colour of a surface point given the light's visibility there.
+// u_output 1: the visibility term alone (what the grader compares);
+// u_output 2: white where a surface faces the light (the "lit surfaces" mask).
 vec4 sl_shade(vec3 world_position, vec3 world_normal, float visibility) {
     vec3 n = normalize(world_normal);
-    vec3 to_light = u_light_type == 0 ? -u_light_direction : normalize(u_light_position - world_position);
+    vec3 to_light = sl_direction_to_light(world_position);
     float n_dot_l = max(dot(n, to_light), 0.0);
     if (u_output == 1) {
         // Surfaces turned away from the light get no light whatever the map says.
         return vec4(vec3(n_dot_l > 0.0 ? visibility : 0.0), 1.0);
     }
+    if (u_output == 2) return vec4(vec3(n_dot_l > 0.0 ? 1.0 : 0.0), 1.0);
     float cone = 1.0;
     if (u_light_type == 1) {
         // soft edge over the outer 10% of the cone
