@@ -16,10 +16,15 @@ static const struct {
     [SL_CHECK_MATRICES] = {"matrices", "matrices.json", 0, 0, 1e-3},
     [SL_CHECK_VISIBILITY] = {"visibility", "visibility.png", 0.1, 0.005, 0},
     [SL_CHECK_IMAGE] = {"image", "image.png", 0.1, 0.01, 0},
+    /* threshold here: the allowed width difference, as a fraction of the reference's (at least 2 px) */
+    [SL_CHECK_PENUMBRA] = {"penumbra", "visibility.png", 0.35, 0, 0},
 };
 
 const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
 const char *sl_check_reference_file(sl_check_kind kind) { return _sl_kinds[kind].reference; }
+const char *sl_check_capture_name(sl_check_kind kind) {
+    return kind == SL_CHECK_PENUMBRA ? "visibility" : _sl_kinds[kind].name;
+}
 
 static char *_sl_slurp(const char *path) {
     FILE *f = fopen(path, "rb");
@@ -116,8 +121,8 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
     for (int i = 0; kind && i < SL_CHECK_KIND_COUNT; i++)
         if (strcmp(kind, _sl_kinds[i].name) == 0) found = i;
     if (found < 0) {
-        snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility or image", c->path,
-                 index);
+        snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility, image or penumbra",
+                 c->path, index);
         return false;
     }
     k->kind = (sl_check_kind)found;
@@ -139,6 +144,34 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
     if (k->points < 0) {
         snprintf(err, n, "%s: checks[%d] (%s) has no \"points\"", c->path, index, k->name);
         return false;
+    }
+    const cJSON *probes = cJSON_GetObjectItemCaseSensitive(json, "probes"), *p;
+    if (k->kind == SL_CHECK_PENUMBRA &&
+        (!cJSON_IsArray(probes) || cJSON_GetArraySize(probes) < 1 || cJSON_GetArraySize(probes) > SL_CHECK_MAX_PROBES)) {
+        snprintf(err, n, "%s: checks[%d] (%s) needs \"probes\": 1..%d lines {\"name\", \"from\": [x, y], \"to\": [x, y]}",
+                 c->path, index, k->name, SL_CHECK_MAX_PROBES);
+        return false;
+    }
+    const cJSON *probe_list = k->kind == SL_CHECK_PENUMBRA ? probes : NULL;
+    cJSON_ArrayForEach(p, probe_list) {
+        sl_probe *probe = &k->probes[k->probe_count];
+        const char *pname = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(p, "name"));
+        snprintf(probe->name, sizeof probe->name, "%s", pname ? pname : "probe");
+        const cJSON *from = cJSON_GetObjectItemCaseSensitive(p, "from"), *to = cJSON_GetObjectItemCaseSensitive(p, "to");
+        bool ok = cJSON_GetArraySize(from) == 2 && cJSON_GetArraySize(to) == 2;
+        for (int i = 0; ok && i < 2; i++) {
+            ok = cJSON_IsNumber(cJSON_GetArrayItem(from, i)) && cJSON_IsNumber(cJSON_GetArrayItem(to, i));
+            if (ok) {
+                probe->from[i] = (float)cJSON_GetArrayItem(from, i)->valuedouble;
+                probe->to[i] = (float)cJSON_GetArrayItem(to, i)->valuedouble;
+            }
+        }
+        if (!ok) {
+            snprintf(err, n, "%s: checks[%d] (%s): probes[%d] needs \"from\": [x, y] and \"to\": [x, y]", c->path, index,
+                     k->name, k->probe_count);
+            return false;
+        }
+        k->probe_count++;
     }
     return true;
 }

@@ -19,8 +19,17 @@ typedef enum sl_check_kind {
     SL_CHECK_MATRICES,   /* lab 2's view, projection, shadow matrix vs reference (JSON) */
     SL_CHECK_VISIBILITY, /* the visibility term vs reference (PNG) */
     SL_CHECK_IMAGE,      /* the shaded image vs reference (PNG) */
+    SL_CHECK_PENUMBRA,   /* penumbra widths along probe lines, vs the reference visibility */
     SL_CHECK_KIND_COUNT
 } sl_check_kind;
+
+#define SL_CHECK_MAX_PROBES 4
+
+/* A line across a shadow edge, in pixels of the camera image (x right, y down). */
+typedef struct sl_probe {
+    char name[32];
+    float from[2], to[2];
+} sl_probe;
 
 typedef struct sl_check {
     char name[64];
@@ -30,6 +39,8 @@ typedef struct sl_check {
     double fail_fraction; /* of pixels (images) */
     double epsilon;       /* per matrix element, relative to the largest (matrices) */
     char hint[320];       /* added to the message when the check fails */
+    sl_probe probes[SL_CHECK_MAX_PROBES]; /* penumbra: the first is nearest to the contact */
+    int probe_count;
 } sl_check;
 
 typedef struct sl_case {
@@ -48,6 +59,8 @@ typedef struct sl_case {
 } sl_case;
 
 const char *sl_check_kind_name(sl_check_kind kind);
+/* The capture a check compares ("visibility", "depth_map", ...). */
+const char *sl_check_capture_name(sl_check_kind kind);
 /* The file a check's reference lives in, relative to the references folder. */
 const char *sl_check_reference_file(sl_check_kind kind); /* NULL: needs none */
 

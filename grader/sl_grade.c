@@ -20,6 +20,8 @@ static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
     {"lab2_light_view", "TODO(lab2.1)", "labs/lab2_projective/lab2.c"},
     {"lab2_light_projection", "TODO(lab2.2)", "labs/lab2_projective/lab2.c"},
     {"lab2_shadow_matrix", "TODO(lab2.3)", "labs/lab2_projective/lab2.c"},
+    {"lab3_depth_pass_state", "TODO(lab3.1)", "labs/lab3_bias/lab3.c"},
+    {"lab4_configure_shadow_texture", "TODO(lab4.1)", "labs/lab4_pcf/lab4.c"},
 };
 
 static void _sl_say(sl_check_result *out, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -130,7 +132,7 @@ void sl_reference_load(sl_reference *ref, const char *dir, const sl_case *c, con
             snprintf(ref->error, sizeof ref->error, "reference corrupt: %s", err);
             return;
         }
-        if (k->kind == SL_CHECK_VISIBILITY && ref->image.channels != 1) {
+        if ((k->kind == SL_CHECK_VISIBILITY || k->kind == SL_CHECK_PENUMBRA) && ref->image.channels != 1) {
             snprintf(ref->error, sizeof ref->error, "reference corrupt: %s has %d channels, expected 1", ref->path, ref->image.channels);
             sl_image_free(&ref->image);
             return;
@@ -165,7 +167,7 @@ bool sl_reference_write(const char *dir, const sl_case *c, const sl_check *k, co
         return false;
     }
     snprintf(path, sizeof path, "%s/%s", folder, file);
-    const char *capture = k->kind == SL_CHECK_MATRICES ? "matrices" : sl_check_kind_name(k->kind);
+    const char *capture = sl_check_capture_name(k->kind);
     const sl_capture *cap = sl_result_capture(r, capture);
     if (!cap) {
         snprintf(err, err_size, "%s: the solutions captured no %s (%s)", c->name, capture,
@@ -351,9 +353,196 @@ static void _sl_check_matrices(const sl_case *c, const sl_check *k, const sl_cas
     }
 }
 
+/* The GLSL function that computes visibility for this case, and its TODO. */
+static void _sl_lookup_function(const sl_case *c, const char **function, const char **todo) {
+    static const char *const filters[SL_FILTER_MODE_COUNT][2] = {
+        {"shadow_compare_manual() (lab 2)", "lab2.5"}, {"pcf_hardware()", "lab4.2"}, {"pcf_grid()", "lab4.3"},
+        {"pcf_poisson()", "lab4.4"}, {"pcss()", "lab4.5"},
+    };
+    if (c->lab >= 4) {
+        *function = filters[c->params.filter.mode][0];
+        *todo = filters[c->params.filter.mode][1];
+    } else if (c->params.compare == SL_COMPARE_HARDWARE) {
+        *function = "shadow_compare_hardware()";
+        *todo = "lab2.6";
+    } else {
+        *function = "shadow_compare_manual()";
+        *todo = "lab2.5";
+    }
+}
+
+/* Chamfer distance (in pixels) from every pixel to the nearest pixel where `seed` is set. */
+static float *_sl_distance_to(const bool *seed, int w, int h) {
+    float *d = malloc(sizeof(float) * (size_t)w * (size_t)h);
+    if (!d) return NULL;
+    for (int i = 0; i < w * h; i++) d[i] = seed[i] ? 0.0f : 1e9f;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            float *v = &d[y * w + x];
+            if (x > 0) *v = fminf(*v, d[y * w + x - 1] + 1);
+            if (y > 0) *v = fminf(*v, d[(y - 1) * w + x] + 1);
+            if (x > 0 && y > 0) *v = fminf(*v, d[(y - 1) * w + x - 1] + 1.4142f);
+            if (x + 1 < w && y > 0) *v = fminf(*v, d[(y - 1) * w + x + 1] + 1.4142f);
+        }
+    for (int y = h - 1; y >= 0; y--)
+        for (int x = w - 1; x >= 0; x--) {
+            float *v = &d[y * w + x];
+            if (x + 1 < w) *v = fminf(*v, d[y * w + x + 1] + 1);
+            if (y + 1 < h) *v = fminf(*v, d[(y + 1) * w + x] + 1);
+            if (x + 1 < w && y + 1 < h) *v = fminf(*v, d[(y + 1) * w + x + 1] + 1.4142f);
+            if (x > 0 && y + 1 < h) *v = fminf(*v, d[(y + 1) * w + x - 1] + 1.4142f);
+        }
+    return d;
+}
+
+static int _sl_compare_floats(const void *a, const void *b) {
+    float x = *(const float *)a, y = *(const float *)b;
+    return (x > y) - (x < y);
+}
+
+/* Lab 3's artifacts, measured on surfaces that face the light (the mask):
+ * acne = lit in the reference but shadowed here, as a fraction of those lit
+ * surfaces; detachment = the reference's shadow missing here, and how far
+ * (90th percentile) those pixels are from shadow both images agree on. */
+typedef struct _sl_artifacts {
+    double acne, missing;
+    float gap_px;
+} _sl_artifacts;
+
+static _sl_artifacts _sl_measure_artifacts(const sl_image *s, const sl_image *t, const sl_image *mask) {
+    _sl_artifacts a = {0};
+    int w = t->width, h = t->height, n = w * h;
+    long lit = 0, acne = 0, shadow = 0, missing = 0;
+    bool *agreed = calloc((size_t)n, 1);
+    float *gaps = malloc(sizeof(float) * (size_t)n);
+    if (!agreed || !gaps) goto done;
+    for (int i = 0; i < n; i++) {
+        bool surface = mask->data[i] > 0.5f, ref_lit = t->data[i] >= 0.5f, lit_here = s->data[i] >= 0.5f;
+        agreed[i] = !ref_lit && !lit_here;
+        if (!surface) continue;
+        lit += ref_lit;
+        acne += ref_lit && !lit_here;
+        shadow += !ref_lit;
+        missing += !ref_lit && lit_here;
+    }
+    a.acne = lit ? (double)acne / (double)lit : 0;
+    a.missing = shadow ? (double)missing / (double)shadow : 0;
+    float *dist = _sl_distance_to(agreed, w, h);
+    int count = 0;
+    for (int i = 0; dist && i < n; i++)
+        if (mask->data[i] > 0.5f && t->data[i] < 0.5f && s->data[i] >= 0.5f) gaps[count++] = fminf(dist[i], 200);
+    if (count) {
+        qsort(gaps, (size_t)count, sizeof(float), _sl_compare_floats);
+        a.gap_px = gaps[(int)(0.9 * (count - 1))];
+    }
+    free(dist);
+done:
+    free(agreed);
+    free(gaps);
+    return a;
+}
+
+static bool _sl_explain_lab3(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
+                             sl_check_result *out) {
+    _sl_artifacts a = _sl_measure_artifacts(s, t, mask);
+    sl_bias_mode mode = c->params.bias.mode;
+    if (a.acne > 0.01 && a.acne >= a.missing) {
+        static const char *const tips[SL_BIAS_MODE_COUNT] = {
+            [SL_BIAS_CONSTANT] = "is the constant bias subtracted in the comparison?",
+            [SL_BIAS_SLOPE_SCALED] = "slope_scaled_bias() gives too little (still returns 0? TODO lab3.2)",
+            [SL_BIAS_POLYGON_OFFSET] = "is GL_POLYGON_OFFSET_FILL enabled with glPolygonOffset(factor, units) in lab3_depth_pass_state (TODO lab3.1)?",
+            [SL_BIAS_FRONT_FACE_CULLING] = "are front faces culled in the depth pass (glEnable(GL_CULL_FACE), glCullFace(GL_FRONT), TODO lab3.1)?",
+            [SL_BIAS_NORMAL_OFFSET] = "normal_offset_position() moves the point too little (still returns it unchanged? TODO lab3.3)",
+        };
+        _sl_say(out, "shadow acne on %.0f%% of lit surfaces: bias too small or missing — %s", 100 * a.acne,
+                tips[mode] ? tips[mode] : "compare with a bias");
+        return true;
+    }
+    if (a.missing > 0.02 && a.gap_px >= 1.5f) {
+        static const char *const tips[SL_BIAS_MODE_COUNT] = {
+            [SL_BIAS_SLOPE_SCALED] = "is the slope term clamped to max_bias?",
+            [SL_BIAS_POLYGON_OFFSET] = "are factor and units passed in the right order?",
+            [SL_BIAS_NORMAL_OFFSET] = "the offset is texels * texel size * (1 - N.L), along the normal",
+            [SL_BIAS_FRONT_FACE_CULLING] = "with culling on, the lookup needs no extra bias",
+        };
+        _sl_say(out, "shadows detached from their casters by about %.0f px (%.0f%% of the reference's shadow missing): "
+                     "bias too large (Peter Panning)%s%s",
+                a.gap_px, 100 * a.missing, tips[mode] ? " — " : "", tips[mode] ? tips[mode] : "");
+        return true;
+    }
+    return false;
+}
+
+static bool _sl_explain_lab4(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
+                             sl_check_result *out) {
+    long n = (long)t->width * t->height, soft_ref = 0, soft_stu = 0, lit = 0, lit_exact = 0, penumbra = 0;
+    long histogram[256] = {0}, core = 0, core_kept = 0;
+    double lit_sum = 0, pen_s = 0, pen_t = 0;
+    for (long i = 0; i < n; i++) {
+        if (mask && mask->data[i] < 0.5f) continue;
+        float vs = s->data[i], vt = t->data[i];
+        soft_ref += vt > 0.1f && vt < 0.9f;
+        soft_stu += vs > 0.1f && vs < 0.9f;
+        if (vt >= 0.99f) {
+            lit++;
+            lit_sum += vs;
+            lit_exact += vs >= 0.99f;
+            histogram[(int)(glm_clamp(vs, 0, 1) * 255.0f + 0.5f)]++;
+        }
+        if (vt <= 0.01f) {
+            core++;
+            core_kept += vs <= 0.01f;
+        }
+        if (vt > 0.1f && vt < 0.9f) {
+            penumbra++;
+            pen_s += vs;
+            pen_t += vt;
+        }
+    }
+    double lit_mean = lit ? lit_sum / (double)lit : 1;
+    long mode_count = 0;
+    int mode = 255;
+    for (int i = 0; i < 256; i++)
+        if (histogram[i] > mode_count) {
+            mode_count = histogram[i];
+            mode = i;
+        }
+    const char *fn, *todo;
+    _sl_lookup_function(c, &fn, &todo);
+    /* Weights summing to less than 1 scale every lit pixel to one value; a
+     * kernel reaching too far darkens them unevenly (it compares the receiver
+     * with depths of the surface far away: self-shadowing). */
+    bool cores_intact = core_kept >= core * 9 / 10; /* too few weights keep 0 at 0; a wide kernel does not */
+    if (lit_mean < 0.93 && lit_exact < lit / 5 && mode_count > lit * 7 / 10 && cores_intact) {
+        _sl_say(out, "lit surfaces are too dark (visibility %.2f where the reference is fully lit): the kernel's "
+                     "weights sum to less than 1 — divide by the number of samples in %s", mode / 255.0, fn);
+    } else if (lit_mean < 0.93) {
+        _sl_say(out, "lit surfaces are darkened (mean visibility %.2f where the reference is fully lit): the "
+                     "kernel reaches too far and compares with distant depths — are the sample offsets scaled by the "
+                     "texel size, 1.0 / textureSize(map, 0)?", lit_mean);
+    } else if (c->params.filter.mode == SL_FILTER_HARDWARE && soft_ref > n / 500 && soft_stu < soft_ref / 4) {
+        _sl_say(out, "hard edges where the 2x2 hardware filter blends: the depth texture needs GL_LINEAR filtering "
+                     "with compare mode on (lab4_configure_shadow_texture, TODO lab4.1)");
+    } else if (penumbra > n / 1000 && pen_s - pen_t > 0.12 * (double)penumbra) {
+        _sl_say(out, "penumbrae too bright (mean %.2f, reference %.2f): the kernel's weights sum to more than 1 — "
+                     "divide by the number of samples in %s", pen_s / (double)penumbra, pen_t / (double)penumbra, fn);
+    } else if (soft_ref > n / 200 && soft_stu < soft_ref / 4) {
+        _sl_say(out, "hard edges where soft ones are expected (%.1f%% of pixels in penumbra, reference %.1f%%): are "
+                     "you filtering depths instead of comparison results (Reeves 1987)? Average the 0/1 results of "
+                     "the comparisons in %s", 100.0 * (double)soft_stu / (double)n, 100.0 * (double)soft_ref / (double)n, fn);
+    } else if (soft_stu > 3 * soft_ref && soft_stu > n / 50) {
+        _sl_say(out, "the kernel is far too wide (%.1f%% of pixels in penumbra, reference %.1f%%): are the sample "
+                     "offsets scaled by the texel size, 1.0 / textureSize(map, 0)?",
+                100.0 * (double)soft_stu / (double)n, 100.0 * (double)soft_ref / (double)n);
+    } else {
+        return false;
+    }
+    return true;
+}
+
 static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                             sl_check_result *out) {
-    const char *capture = sl_check_kind_name(k->kind);
+    const char *capture = sl_check_capture_name(k->kind);
     const sl_capture *cap = sl_result_capture(r, capture);
     if (!cap) {
         if (!_sl_explain_missing(c, r, out)) _sl_say(out, "no %s image was captured", capture);
@@ -370,17 +559,20 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
         out->passed = true;
         return;
     }
+    if (_sl_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
     bool said = false;
-    if (_sl_explain_missing(c, r, out)) {
-        return; /* the hint is about a mistake, not a missing stub */
-    } else if (k->kind == SL_CHECK_VISIBILITY) {
+    if (k->kind == SL_CHECK_VISIBILITY) {
         sl_visibility_stats v = sl_visibility_compare(s, t);
+        const sl_capture *mask = sl_result_capture(r, "lit_mask");
         bool has_shadows = v.reference_shadowed > 0.005;
+        const char *fn, *todo;
+        _sl_lookup_function(c, &fn, &todo);
         said = true;
         if (has_shadows && v.student_shadowed < 0.1 * v.reference_shadowed) {
-            _sl_say(out, "no shadows at all: %s in shadow_lookup.glsl returns 1.0 everywhere — not implemented "
-                         "(TODO lab2.5/lab2.6), or every point taken for outside the light's frustum?",
-                    c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware()" : "shadow_compare_manual()");
+            _sl_say(out, "no shadows at all: %s returns 1.0 everywhere — not implemented (TODO %s), or every point "
+                         "taken for outside the light's frustum?", fn, todo);
+        } else if (c->lab == 3 && mask && _sl_explain_lab3(c, s, t, &mask->image, out)) {
+        } else if (c->lab >= 4 && _sl_explain_lab4(c, s, t, mask ? &mask->image : NULL, out)) {
         } else if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
             _sl_say(out, "lit and shadowed are swapped (%.0f%% of shadows lit, %.0f%% of lit pixels shadowed): is the "
                          "comparison inverted?", 100 * v.missing_shadow, 100 * v.extra_shadow);
@@ -397,6 +589,74 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
         _sl_say(out, "the image differs from the reference on %.1f%% of pixels (allowed %.1f%%)",
                 100 * st.failing_fraction, 100 * k->fail_fraction);
     if (st.nan_pixels) _sl_append(out, "; %ld pixels are NaN (a division by zero?)", st.nan_pixels);
+    if (k->hint[0]) _sl_append(out, ". Hint: %s", k->hint);
+}
+
+/* Width in pixels of the soft part (0.1 < v < 0.9) along a probe line. */
+static float _sl_penumbra_width(const sl_image *img, const sl_probe *p) {
+    float dx = p->to[0] - p->from[0], dy = p->to[1] - p->from[1];
+    float length = sqrtf(dx * dx + dy * dy);
+    int steps = (int)ceilf(length * 4);
+    int soft = 0;
+    for (int i = 0; i <= steps; i++) {
+        float f = steps ? (float)i / (float)steps : 0;
+        int x = (int)lroundf(p->from[0] + f * dx), y = (int)lroundf(p->from[1] + f * dy);
+        if (x < 0 || y < 0 || x >= img->width || y >= img->height) continue;
+        float v = sl_image_pixel(img, x, y)[0];
+        soft += v > 0.1f && v < 0.9f;
+    }
+    return steps ? (float)soft * length / (float)steps : 0;
+}
+
+static void _sl_check_penumbra(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                               sl_check_result *out) {
+    const sl_capture *cap = sl_result_capture(r, "visibility");
+    if (!cap) {
+        if (!_sl_explain_missing(c, r, out)) _sl_say(out, "no visibility image was captured");
+        return;
+    }
+    const sl_image *s = &cap->image, *t = &ref->image;
+    if (s->width != t->width || s->height != t->height) {
+        _sl_say(out, "the image is %dx%d, the reference %dx%d", s->width, s->height, t->width, t->height);
+        return;
+    }
+    float ws[SL_CHECK_MAX_PROBES], wt[SL_CHECK_MAX_PROBES];
+    bool ok = true;
+    char widths[512] = "";
+    for (int i = 0; i < k->probe_count; i++) {
+        ws[i] = _sl_penumbra_width(s, &k->probes[i]);
+        wt[i] = _sl_penumbra_width(t, &k->probes[i]);
+        ok &= fabsf(ws[i] - wt[i]) <= fmaxf(2.0f, (float)k->threshold * wt[i]);
+        snprintf(widths + strlen(widths), sizeof widths - strlen(widths), "%s%s %.0f px (reference %.0f)",
+                 i ? ", " : "", k->probes[i].name, ws[i], wt[i]);
+    }
+    if (ok) {
+        out->passed = true;
+        return;
+    }
+    if (_sl_explain_missing(c, r, out)) return;
+    int last = k->probe_count - 1;
+    float most = 0, least = 1e9f;
+    for (int i = 0; i < k->probe_count; i++) {
+        most = fmaxf(most, ws[i] / fmaxf(wt[i], 1));
+        least = fminf(least, ws[i]);
+    }
+    const char *fn, *todo;
+    _sl_lookup_function(c, &fn, &todo);
+    if (last > 0 && wt[0] < wt[last] && ws[0] > ws[last] + 1)
+        _sl_say(out, "penumbra formula inverted: wide at the contact, narrow far from it (%s) — w = (d_receiver - "
+                     "d_blocker) * w_light / d_blocker (TODO %s)", widths, todo);
+    else if (least <= 1 && wt[last] >= 3)
+        _sl_say(out, "hard edges where soft ones are expected (%s): %s filters depths instead of comparison results, "
+                     "or finds no blockers?", widths, fn);
+    else if (most > 2.5f)
+        _sl_say(out, "penumbrae far too wide (%s): are the offsets scaled by the texel size, and the penumbra projected "
+                     "onto the map (* near / d_receiver)?", widths);
+    else if (last > 0 && wt[last] > 1.5f * wt[0] && ws[last] <= 1.2f * ws[0])
+        _sl_say(out, "no contact hardening: the penumbra does not widen away from the contact (%s) — does the filter "
+                     "radius come from the blocker search (TODO %s)?", widths, todo);
+    else
+        _sl_say(out, "penumbra widths differ from the reference: %s", widths);
     if (k->hint[0]) _sl_append(out, ". Hint: %s", k->hint);
 }
 
@@ -419,6 +679,7 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     case SL_CHECK_MATRICES: _sl_check_matrices(c, k, r, ref, out); break;
     case SL_CHECK_VISIBILITY:
     case SL_CHECK_IMAGE: _sl_check_image(c, k, r, ref, out); break;
+    case SL_CHECK_PENUMBRA: _sl_check_penumbra(c, k, r, ref, out); break;
     default: _sl_say(out, "unknown check kind"); break;
     }
     if (out->passed) {

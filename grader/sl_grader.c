@@ -27,6 +27,7 @@ static void _sl_usage(FILE *f) {
             "Grades this build's labs headless (OSMesa) against the reference renders.\n"
             "  --lab N              grade lab N only\n"
             "  --case PATTERN       cases whose name matches PATTERN (shell glob, or a substring)\n"
+            "  --exclude PATTERN    leave out the cases whose name matches PATTERN\n"
             "  -j N, --jobs N       cases run at once (default: the number of CPUs)\n"
             "  --report DIR         write DIR/results.json and student/diff images of failed checks\n"
             "  --gradescope FILE    write Gradescope's results.json\n"
@@ -56,13 +57,13 @@ static bool _sl_matches(const char *name, const char *pattern) {
 
 int sl_grader_main(int argc, char **argv) {
     const char *cases_dir = SL_GRADER_DIR "/cases", *refs_dir = SL_GRADER_DIR "/references";
-    const char *pattern = NULL, *report_dir = NULL, *gradescope = NULL, *prairielearn = NULL;
+    const char *pattern = NULL, *exclude = NULL, *report_dir = NULL, *gradescope = NULL, *prairielearn = NULL;
     sl_run_options opts = {.jobs = (int)sysconf(_SC_NPROCESSORS_ONLN)};
     int only_lab = 0;
     bool update = false, list = false;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        bool value = strcmp(a, "--lab") == 0 || strcmp(a, "--case") == 0 || strcmp(a, "-j") == 0 ||
+        bool value = strcmp(a, "--lab") == 0 || strcmp(a, "--case") == 0 || strcmp(a, "--exclude") == 0 || strcmp(a, "-j") == 0 ||
                      strcmp(a, "--jobs") == 0 || strcmp(a, "--report") == 0 || strcmp(a, "--gradescope") == 0 ||
                      strcmp(a, "--prairielearn") == 0 || strcmp(a, "--timeout") == 0 ||
                      strcmp(a, "--cases") == 0 || strcmp(a, "--references") == 0 || strcmp(a, "--labs-dir") == 0;
@@ -80,6 +81,7 @@ int sl_grader_main(int argc, char **argv) {
                 return SL_EXIT_ERROR;
             }
         } else if (strcmp(a, "--case") == 0) pattern = v;
+        else if (strcmp(a, "--exclude") == 0) exclude = v;
         else if (strcmp(a, "-j") == 0 || strcmp(a, "--jobs") == 0) opts.jobs = atoi(v);
         else if (strcmp(a, "--report") == 0) report_dir = v;
         else if (strcmp(a, "--gradescope") == 0) gradescope = v;
@@ -136,6 +138,7 @@ int sl_grader_main(int argc, char **argv) {
         }
         if (only_lab && c->lab != only_lab) continue;
         if (!_sl_matches(c->name, pattern)) continue;
+        if (exclude && _sl_matches(c->name, exclude)) continue;
         count++;
     }
     if (list) {

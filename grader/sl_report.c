@@ -129,8 +129,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
             cJSON_AddNumberToObject(j, "max_points", cr->max_points);
             cJSON_AddBoolToObject(j, "passed", cr->passed);
             cJSON_AddStringToObject(j, "message", cr->message);
-            const char *capture = ck->kind == SL_CHECK_MATRICES ? NULL : sl_check_kind_name(ck->kind);
-            const sl_capture *cap = capture ? sl_result_capture(g->result, capture) : NULL;
+            const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(ck->kind));
             if (!cr->passed && cap && cap->is_image) {
                 char path[1400], name[300];
                 cJSON *imgs = cJSON_AddObjectToObject(j, "images");

@@ -132,9 +132,19 @@ static int _sl_child_main(const sl_case *c, const sl_run_options *o) {
         return 1;
     }
     sl_image img;
-    if (_sl_case_has(c, SL_CHECK_VISIBILITY) && sl_capture_framebuffer(0, c->width, c->height, 1, &img)) {
+    if ((_sl_case_has(c, SL_CHECK_VISIBILITY) || _sl_case_has(c, SL_CHECK_PENUMBRA)) &&
+        sl_capture_framebuffer(0, c->width, c->height, 1, &img)) {
         _sl_send_image("visibility", &img);
         sl_image_free(&img);
+    }
+    if (_sl_case_has(c, SL_CHECK_VISIBILITY) && c->lab >= 3) {
+        /* which pixels are surfaces facing the light: where acne can be told from shadow */
+        p.output = SL_OUTPUT_LIT_MASK;
+        sl_renderer_draw(&r, &scene, &p, 0, c->width, c->height);
+        if (sl_capture_framebuffer(0, c->width, c->height, 1, &img)) {
+            _sl_send_image("lit_mask", &img);
+            sl_image_free(&img);
+        }
     }
     if (_sl_case_has(c, SL_CHECK_IMAGE)) {
         p.output = SL_OUTPUT_SHADED;
