@@ -132,7 +132,17 @@ static bool _sl_object_from_json(sl_object *o, const cJSON *json, const char *or
               _sl_json_vec(json, "color", o->color, 3, where, err, err_size);
     if (!ok) return false;
     switch (o->shape) {
-    case SL_SHAPE_PLANE: ok = _sl_json_vec(json, "size", o->size, 2, where, err, err_size); break;
+    case SL_SHAPE_PLANE: {
+        float subdivisions = 8;
+        ok = _sl_json_vec(json, "size", o->size, 2, where, err, err_size) &&
+             _sl_json_float(json, "subdivisions", &subdivisions, where, err, err_size);
+        if (ok && (subdivisions < 1 || subdivisions > 256)) {
+            snprintf(err, err_size, "%s: \"subdivisions\" must be 1..256", where);
+            return false;
+        }
+        o->subdivisions = (int)subdivisions;
+        break;
+    }
     case SL_SHAPE_BOX: ok = _sl_json_vec(json, "size", o->size, 3, where, err, err_size); break;
     case SL_SHAPE_SPHERE: ok = _sl_json_float(json, "radius", &o->size[0], where, err, err_size); break;
     case SL_SHAPE_CYLINDER:

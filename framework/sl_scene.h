@@ -17,6 +17,7 @@ typedef enum sl_shape { SL_SHAPE_PLANE, SL_SHAPE_BOX, SL_SHAPE_SPHERE, SL_SHAPE_
 typedef struct sl_object {
     sl_shape shape;
     vec3 size;       /* plane: x, z; box: x, y, z; sphere: radius; cylinder: radius, height; torus: radius, tube */
+    int subdivisions; /* plane: quads per side (default 8); 1 makes big triangles */
     vec3 position;
     vec3 rotation_deg; /* applied as Y, then X, then Z */
     vec3 color;

@@ -41,6 +41,14 @@ static void _sl_append(sl_check_result *out, const char *fmt, ...) {
     va_end(args);
 }
 
+/* Adds a case's hint after the message. */
+static void _sl_append_hint(sl_check_result *out, const char *hint) {
+    if (!hint[0]) return;
+    size_t n = strlen(out->message);
+    bool ends_sentence = n > 0 && strchr(".?!", out->message[n - 1]) != NULL;
+    _sl_append(out, "%s Hint: %s", ends_sentence ? "" : ".", hint);
+}
+
 static int _sl_function_lab(const char *function) {
     return strncmp(function, "lab", 3) == 0 ? atoi(function + 3) : 0;
 }
@@ -589,7 +597,7 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
         _sl_say(out, "the image differs from the reference on %.1f%% of pixels (allowed %.1f%%)",
                 100 * st.failing_fraction, 100 * k->fail_fraction);
     if (st.nan_pixels) _sl_append(out, "; %ld pixels are NaN (a division by zero?)", st.nan_pixels);
-    if (k->hint[0]) _sl_append(out, ". Hint: %s", k->hint);
+    _sl_append_hint(out, k->hint);
 }
 
 /* Width in pixels of the soft part (0.1 < v < 0.9) along a probe line. */
@@ -657,7 +665,7 @@ static void _sl_check_penumbra(const sl_case *c, const sl_check *k, const sl_cas
                      "radius come from the blocker search (TODO %s)?", widths, todo);
     else
         _sl_say(out, "penumbra widths differ from the reference: %s", widths);
-    if (k->hint[0]) _sl_append(out, ". Hint: %s", k->hint);
+    _sl_append_hint(out, k->hint);
 }
 
 void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,

@@ -8,8 +8,11 @@
 #include <string.h>
 #include <unistd.h>
 
+#include <signal.h>
+
 #include "sl_case.h"
 #include "sl_compare.h"
+#include "sl_grade.h"
 #include "sl_mesh.h"
 #include "sl_scene.h"
 #include "sl_shader.h"
@@ -162,7 +165,8 @@ static void test_case_files(void) {
 }
 
 static void test_scenes(void) {
-    static const char *builtins[] = {"boxes_on_floor", "curved_grazing", "long_ground", "closed_room", "spot_on_floor"};
+    static const char *builtins[] = {"boxes_on_floor", "curved_grazing", "long_ground", "closed_room",
+                                     "spot_on_floor", "pole_on_floor", "thin_caster"};
     char err[1024];
     sl_scene s;
     for (size_t i = 0; i < sizeof builtins / sizeof builtins[0]; i++) {
@@ -203,6 +207,139 @@ static void test_meshes(void) {
     }
 }
 
+/* A case of lab `lab` with one check, and a result holding `captures`. */
+static sl_case grade_case(int lab, sl_check_kind kind) {
+    sl_case c;
+    memset(&c, 0, sizeof c);
+    snprintf(c.name, sizeof c.name, "synthetic");
+    c.lab = lab;
+    c.width = c.height = 64;
+    sl_render_params_defaults(&c.params);
+    c.params.lab = lab;
+    c.check_count = 1;
+    c.checks[0].kind = kind;
+    c.checks[0].points = 1;
+    c.checks[0].threshold = kind == SL_CHECK_PENUMBRA ? 0.35 : 0.1;
+    c.checks[0].fail_fraction = 0.005;
+    return c;
+}
+
+static void add_capture(sl_case_result *r, const char *name, sl_image image) {
+    sl_capture *cap = &r->captures[r->capture_count++];
+    snprintf(cap->name, sizeof cap->name, "%s", name);
+    cap->is_image = true;
+    cap->image = image;
+}
+
+static sl_reference image_reference(sl_image image) {
+    sl_reference ref;
+    memset(&ref, 0, sizeof ref);
+    ref.needed = ref.loaded = true;
+    ref.image = image;
+    return ref;
+}
+
+static void test_grade_names_acne(void) {
+    sl_case c = grade_case(3, SL_CHECK_VISIBILITY);
+    c.params.bias.mode = SL_BIAS_SLOPE_SCALED;
+    sl_case_result r = {.finished = true};
+    sl_image acne = square(64, 64, 0, 1, 20, 20, 40, 40);
+    for (int i = 0; i < 64 * 64; i += 3) acne.data[i] = 0; /* speckles of self-shadowing */
+    add_capture(&r, "visibility", acne);
+    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
+    sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    CHECK(!out.passed && out.points == 0);
+    CHECK(strstr(out.message, "shadow acne on 3") != NULL); /* a third of the lit surface */
+    CHECK(strstr(out.message, "slope_scaled_bias") != NULL);
+    sl_image_free(&out.diff);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+}
+
+static void test_grade_names_peter_panning(void) {
+    sl_case c = grade_case(3, SL_CHECK_VISIBILITY);
+    c.params.bias.mode = SL_BIAS_CONSTANT;
+    sl_case_result r = {.finished = true};
+    /* caster's dark side at x 4..10 in both; the shadow starts at 10 in the reference, 18 here */
+    sl_image detached = square(64, 64, 0, 1, 18, 10, 50, 50);
+    sl_image reference = square(64, 64, 0, 1, 10, 10, 50, 50);
+    for (int y = 10; y < 50; y++)
+        for (int x = 4; x < 10; x++) detached.data[y * 64 + x] = 0;
+    for (int y = 10; y < 50; y++)
+        for (int x = 4; x < 10; x++) reference.data[y * 64 + x] = 0;
+    add_capture(&r, "visibility", detached);
+    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
+    sl_reference ref = image_reference(reference);
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    CHECK(!out.passed);
+    CHECK(strstr(out.message, "detached from their casters by about") != NULL);
+    CHECK(strstr(out.message, "Peter Panning") != NULL);
+    sl_image_free(&out.diff);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+}
+
+/* A vertical shadow edge whose soft ramp is `near` px wide in the top half and `far` px in the bottom. */
+static sl_image ramp(int near, int far) {
+    sl_image img = sl_image_alloc(64, 64, 1);
+    for (int y = 0; y < 64; y++) {
+        int w = y < 32 ? near : far;
+        for (int x = 0; x < 64; x++) {
+            float v = (float)(x - (32 - w / 2)) / (float)(w > 0 ? w : 1);
+            img.data[y * 64 + x] = v < 0 ? 0 : v > 1 ? 1 : v;
+        }
+    }
+    return img;
+}
+
+static void test_grade_penumbra_inverted(void) {
+    sl_case c = grade_case(4, SL_CHECK_PENUMBRA);
+    c.params.filter.mode = SL_FILTER_PCSS;
+    c.checks[0].probe_count = 2;
+    c.checks[0].probes[0] = (sl_probe){"near", {0, 10}, {63, 10}};
+    c.checks[0].probes[1] = (sl_probe){"far", {0, 50}, {63, 50}};
+    sl_case_result r = {.finished = true};
+    add_capture(&r, "visibility", ramp(20, 3));
+    sl_reference ref = image_reference(ramp(3, 20));
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    CHECK(!out.passed);
+    CHECK(strstr(out.message, "penumbra formula inverted") != NULL);
+    sl_case_result_free(&r);
+    /* the same widths pass */
+    r = (sl_case_result){.finished = true};
+    add_capture(&r, "visibility", ramp(3, 20));
+    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    CHECK(out.passed && out.points == 1);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+}
+
+static void test_grade_run_failures(void) {
+    sl_case c = grade_case(2, SL_CHECK_MATRICES);
+    sl_reference ref = {.needed = true, .loaded = true, .number_count = 48};
+    sl_check_result out;
+    sl_case_result crashed = {.signal = SIGSEGV};
+    snprintf(crashed.crashed_in, sizeof crashed.crashed_in, "lab2_light_view");
+    sl_grade_check(&c, &c.checks[0], &crashed, &ref, &out);
+    CHECK(strstr(out.message, "crashed (Segmentation fault) in lab2_light_view()") != NULL);
+    sl_case_result hung = {.timed_out = true, .seconds = 20};
+    snprintf(hung.crashed_in, sizeof hung.crashed_in, "lab2_shadow_matrix");
+    sl_grade_check(&c, &c.checks[0], &hung, &ref, &out);
+    CHECK(strstr(out.message, "timed out after 20 s in lab2_shadow_matrix()") != NULL);
+    sl_case_result stub = {.finished = true, .not_implemented_count = 1};
+    snprintf(stub.not_implemented[0], 64, "lab2_light_view");
+    sl_grade_check(&c, &c.checks[0], &stub, &ref, &out);
+    CHECK(strstr(out.message, "not implemented: lab2_light_view() still returns SL_NOT_IMPLEMENTED (TODO(lab2.1)") != NULL);
+    sl_reference missing = {.needed = true};
+    snprintf(missing.error, sizeof missing.error, "reference missing: x/matrices.json");
+    sl_grade_check(&c, &c.checks[0], &stub, &missing, &out);
+    CHECK(out.reference_problem && strstr(out.message, "reference missing") != NULL);
+}
+
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
@@ -212,6 +349,10 @@ int main(int argc, char **argv) {
         {"case_files", test_case_files},
         {"scenes", test_scenes},
         {"meshes", test_meshes},
+        {"grade_names_acne", test_grade_names_acne},
+        {"grade_names_peter_panning", test_grade_names_peter_panning},
+        {"grade_penumbra_inverted", test_grade_penumbra_inverted},
+        {"grade_run_failures", test_grade_run_failures},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
