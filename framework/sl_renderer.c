@@ -427,7 +427,7 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     _sl_draw_objects(r, scene, prog, true);
 }
 
-static void _sl_debug_view(sl_renderer *r, int width, int height) {
+static void _sl_debug_view(sl_renderer *r, const sl_light *light, int width, int height) {
     if (!r->info.shadow_map_ready) return;
     int side = (width < height ? width : height) / 3;
     glViewport(width - side - 8, 8, side, side);
@@ -437,6 +437,9 @@ static void _sl_debug_view(sl_renderer *r, int width, int height) {
     glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     glUniform1i(sl_program_uniform(&r->debug_program, "u_texture"), 0);
+    glUniform1i(sl_program_uniform(&r->debug_program, "u_perspective"), light->type != SL_LIGHT_DIRECTIONAL);
+    glUniform1f(sl_program_uniform(&r->debug_program, "u_near"), light->near);
+    glUniform1f(sl_program_uniform(&r->debug_program, "u_far"), light->far);
     glBindVertexArray(r->empty_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glViewport(0, 0, width, height);
@@ -457,7 +460,7 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     int depth_lab = _sl_depth_pass(r, scene, params);
     _sl_reset_state(target, width, height);
     _sl_scene_pass(r, scene, params, depth_lab, width, height);
-    if (params->show_shadow_map) _sl_debug_view(r, width, height);
+    if (params->show_shadow_map) _sl_debug_view(r, &scene->light, width, height);
     glBindVertexArray(0);
     glUseProgram(0);
 }
