@@ -65,6 +65,7 @@ typedef enum sl_bias_mode {
     SL_BIAS_POLYGON_OFFSET,    /* glPolygonOffset in the depth pass, no bias in the lookup */
     SL_BIAS_FRONT_FACE_CULLING,/* only back faces reach the map (closed meshes only) */
     SL_BIAS_NORMAL_OFFSET,     /* lookup moved along the normal by texels * (1 - N.L), plus constant */
+    SL_BIAS_MIDPOINT,          /* extension: compare with the midpoint of the first and second surface */
     SL_BIAS_MODE_COUNT
 } sl_bias_mode;
 
@@ -80,6 +81,10 @@ typedef struct sl_bias_settings {
 
 /* Called right after lab1_begin_depth_pass (the map's framebuffer is bound). */
 sl_status lab3_depth_pass_state(const sl_bias_settings *bias);
+/* Extension (optional): in SL_BIAS_MIDPOINT mode the framework runs a second
+ * depth pass into a second map; this sets that pass's state so the map keeps
+ * the SECOND surface along each light ray (Wang & Molnar 1994). */
+sl_status lab3_second_depth_state(void);
 
 /* ---- Lab 4: PCF & PCSS (labs/lab4_pcf/lab4.c) --------------------------- */
 typedef enum sl_filter_mode {

@@ -36,7 +36,7 @@ void sl_render_params_defaults(sl_render_params *p) {
 }
 
 static const char *const _sl_bias_names[SL_BIAS_MODE_COUNT] = {
-    "none", "constant", "slope", "polygon-offset", "front-culling", "normal-offset",
+    "none", "constant", "slope", "polygon-offset", "front-culling", "normal-offset", "midpoint",
 };
 static const char *const _sl_filter_names[SL_FILTER_MODE_COUNT] = {"none", "hardware", "grid", "poisson", "pcss"};
 
@@ -182,6 +182,11 @@ void sl_renderer_destroy(sl_renderer *r) {
         lab1_destroy_shadow_map(&r->shadow_map);
         if (sl_lab_call_hook) sl_lab_call_hook(NULL);
     }
+    if (r->second_map_attempted && r->second_map_status == SL_OK) {
+        _sl_enter("lab1_destroy_shadow_map");
+        lab1_destroy_shadow_map(&r->second_map);
+        if (sl_lab_call_hook) sl_lab_call_hook(NULL);
+    }
     sl_program_destroy(&r->depth_program);
     for (int lab = 0; lab <= SL_RENDERER_MAX_LAB; lab++) {
         sl_program_destroy(&r->scene_programs[lab][0]);
@@ -284,6 +289,27 @@ static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const sl_pro
 /* Returns the highest lab the depth pass used (0: no map, 1, or 3 with lab 3's state). */
 static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_render_params *p);
 
+/* Lab 3's extension: the second surface's depths, into a second map made with
+ * lab 1's own functions. The depth program is still bound. */
+static void _sl_second_depth_pass(sl_renderer *r, const sl_scene *scene, int size) {
+    if (r->second_map_attempted && r->second_map_status == SL_OK && r->second_map.size != size) {
+        _sl_enter("lab1_destroy_shadow_map");
+        lab1_destroy_shadow_map(&r->second_map);
+        r->second_map_attempted = false;
+    }
+    if (!r->second_map_attempted) {
+        memset(&r->second_map, 0, sizeof r->second_map);
+        _sl_enter("lab1_create_shadow_map");
+        r->second_map_status = lab1_create_shadow_map(size, &r->second_map);
+        r->second_map_attempted = true;
+    }
+    if (!_sl_lab_result(r, "lab1_create_shadow_map", r->second_map_status)) return;
+    if (!_SL_CALL_LAB(r, lab1_begin_depth_pass, &r->second_map)) return;
+    if (!_SL_CALL_LAB(r, lab3_second_depth_state)) return;
+    _sl_draw_objects(r, scene, &r->depth_program, false);
+    r->info.second_map_ready = true;
+}
+
 static int _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
     int used = _sl_depth_pass_labs(r, scene, p);
     /* Lab 3's stub is asked even when an earlier lab stops the pass, so the
@@ -331,6 +357,7 @@ static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_r
                        (const float *)view_proj);
     _sl_draw_objects(r, scene, &r->depth_program, false);
     info->shadow_map_ready = true;
+    if (used == 3 && p->bias.mode == SL_BIAS_MIDPOINT) _sl_second_depth_pass(r, scene, size);
     return used;
 }
 
@@ -373,6 +400,8 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
         lab = l - 1;
     }
     bool hardware = lab >= 4 ? p->filter.mode == SL_FILTER_HARDWARE : p->compare == SL_COMPARE_HARDWARE;
+    bool midpoint = lab == 3 && p->bias.mode == SL_BIAS_MIDPOINT && info->second_map_ready;
+    if (midpoint) hardware = false; /* the midpoint is compared by hand, on two sampler2Ds */
     const sl_program *prog = lab >= 2 ? &r->scene_programs[lab][hardware] : &r->plain_program;
     info->lab_in_use = lab >= 2 ? lab : (info->shadow_map_ready ? 1 : 0);
 
@@ -400,7 +429,14 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     glUniform1i(sl_program_uniform(prog, "u_output"), (int)p->output);
     /* lab 2: constant bias; lab 3: the chosen mode */
     glUniform1f(sl_program_uniform(prog, "u_depth_bias"), p->bias.constant);
-    glUniform1i(sl_program_uniform(prog, "u_bias_mode"), (int)p->bias.mode);
+    /* midpoint without its second map (not implemented): lab 2's constant bias instead */
+    sl_bias_mode mode = p->bias.mode == SL_BIAS_MIDPOINT && !midpoint ? SL_BIAS_CONSTANT : p->bias.mode;
+    glUniform1i(sl_program_uniform(prog, "u_bias_mode"), (int)mode);
+    glUniform1i(sl_program_uniform(prog, "u_second_map"), 1);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, midpoint ? r->second_map.depth_texture : 0);
+    if (midpoint) glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glActiveTexture(GL_TEXTURE0);
     glUniform1f(sl_program_uniform(prog, "u_slope_bias"), p->bias.slope);
     glUniform1f(sl_program_uniform(prog, "u_max_bias"), p->bias.max_bias);
     glUniform1f(sl_program_uniform(prog, "u_normal_offset"), p->bias.normal_offset);
@@ -454,6 +490,7 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->shader_error = NULL;
     info->shader_error_lab = 0;
     info->shadow_map_ready = false;
+    info->second_map_ready = false;
     info->lab_in_use = 0;
     _sl_light_matrices(r, scene, params);
     _sl_reset_state(0, width, height);

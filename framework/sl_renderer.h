@@ -50,6 +50,7 @@ typedef struct sl_frame_info {
     const char *shader_error;    /* compile error of a lab's shaders in use, or NULL */
     int shader_error_lab;        /* whose shaders those are */
     bool shadow_map_ready;       /* lab 1 created a map and ran the depth pass */
+    bool second_map_ready;       /* lab 3's extension: the second surface's map too */
     bool lab2_ready;             /* lab 2's matrices are in use */
     int lab_in_use;              /* the highest lab whose code this frame used (0: no shadows) */
     mat4 light_view, light_projection, shadow_matrix; /* the matrices used */
@@ -78,6 +79,9 @@ typedef struct sl_renderer {
     sl_shadow_map shadow_map;
     sl_status shadow_map_status;
     bool shadow_map_attempted;
+    sl_shadow_map second_map; /* lab 3's extension (midpoint shadow maps) */
+    sl_status second_map_status;
+    bool second_map_attempted;
     sl_frame_info info;
 } sl_renderer;
 

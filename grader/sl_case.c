@@ -131,6 +131,7 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
     k->epsilon = _sl_kinds[found].epsilon;
     const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "name"));
     snprintf(k->name, sizeof k->name, "%s", name ? name : kind);
+    k->bonus = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "bonus"));
     const char *hint = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "hint"));
     if (hint) snprintf(k->hint, sizeof k->hint, "%s", hint);
     k->points = -1;

@@ -35,6 +35,7 @@ typedef struct sl_check {
     char name[64];
     sl_check_kind kind;
     double points;
+    bool bonus;           /* extra credit: its points add to the score, not to the maximum */
     double threshold;     /* per pixel (images) */
     double fail_fraction; /* of pixels (images) */
     double epsilon;       /* per matrix element, relative to the largest (matrices) */

@@ -21,6 +21,7 @@ static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
     {"lab2_light_projection", "TODO(lab2.2)", "labs/lab2_projective/lab2.c"},
     {"lab2_shadow_matrix", "TODO(lab2.3)", "labs/lab2_projective/lab2.c"},
     {"lab3_depth_pass_state", "TODO(lab3.1)", "labs/lab3_bias/lab3.c"},
+    {"lab3_second_depth_state", "TODO(lab3.4), the optional extension,", "labs/lab3_bias/lab3.c"},
     {"lab4_configure_shadow_texture", "TODO(lab4.1)", "labs/lab4_pcf/lab4.c"},
 };
 
@@ -370,6 +371,9 @@ static void _sl_lookup_function(const sl_case *c, const char **function, const c
     if (c->lab >= 4) {
         *function = filters[c->params.filter.mode][0];
         *todo = filters[c->params.filter.mode][1];
+    } else if (c->lab == 3 && c->params.bias.mode == SL_BIAS_MIDPOINT) {
+        *function = "midpoint_compare()";
+        *todo = "lab3.5";
     } else if (c->params.compare == SL_COMPARE_HARDWARE) {
         *function = "shadow_compare_hardware()";
         *todo = "lab2.6";
@@ -672,6 +676,7 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
                     sl_check_result *out) {
     memset(out, 0, sizeof *out);
     out->max_points = k->points;
+    out->bonus = k->bonus;
     if (ref->needed && !ref->loaded) {
         out->reference_problem = true;
         _sl_say(out, "%s", ref->error);

@@ -20,6 +20,7 @@ typedef struct sl_reference {
 
 typedef struct sl_check_result {
     double points, max_points;
+    bool bonus;             /* max_points do not count towards the maximum score */
     bool passed;
     bool reference_problem; /* a missing or corrupt reference: staff must fix it */
     char message[2048];

@@ -145,7 +145,8 @@ int sl_grader_main(int argc, char **argv) {
         for (int i = 0; i < count; i++) {
             printf("lab %d  %-36s %s (", cases[i].lab, cases[i].name, cases[i].title);
             for (int k = 0; k < cases[i].check_count; k++)
-                printf("%s%s %gp", k ? ", " : "", cases[i].checks[k].name, cases[i].checks[k].points);
+                printf("%s%s %gp%s", k ? ", " : "", cases[i].checks[k].name, cases[i].checks[k].points,
+                       cases[i].checks[k].bonus ? " bonus" : "");
             printf(")\n");
         }
         for (int i = 0; i < rep.problem_count; i++) printf("PROBLEM %s\n", rep.problems[i]);
@@ -217,7 +218,7 @@ int sl_grader_main(int argc, char **argv) {
         double score, max;
         sl_report_totals(&rep, &score, &max);
         if (reference_problem || rep.problem_count) status = SL_EXIT_ERROR;
-        else if (score < max) status = SL_EXIT_FAILED;
+        else if (!sl_report_full_marks(&rep)) status = SL_EXIT_FAILED;
         for (int i = 0; i < count; i++)
             for (int k = 0; k < cases[i].check_count; k++) sl_image_free(&rep.cases[i].checks[k].diff);
         free(rep.cases);

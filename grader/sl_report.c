@@ -17,8 +17,15 @@ void sl_report_totals(const sl_grade_report *rep, double *score, double *max_sco
     for (int i = 0; i < rep->case_count; i++)
         for (int k = 0; k < rep->cases[i].c->check_count; k++) {
             *score += rep->cases[i].checks[k].points;
-            *max_score += rep->cases[i].checks[k].max_points;
+            if (!rep->cases[i].checks[k].bonus) *max_score += rep->cases[i].checks[k].max_points;
         }
+}
+
+bool sl_report_full_marks(const sl_grade_report *rep) {
+    for (int i = 0; i < rep->case_count; i++)
+        for (int k = 0; k < rep->cases[i].c->check_count; k++)
+            if (!rep->cases[i].checks[k].bonus && !rep->cases[i].checks[k].passed) return false;
+    return true;
 }
 
 static void _sl_print_message(FILE *out, const char *message) {
@@ -49,11 +56,11 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
                 const sl_check_result *cr = &g->checks[k];
                 char label[200];
                 snprintf(label, sizeof label, "%s / %s", g->c->name, g->c->checks[k].name);
-                fprintf(out, "  %s%s%s %4.1f/%-4.1f %s\n", cr->passed ? green : red, cr->passed ? "PASS" : "FAIL", reset,
-                        cr->points, cr->max_points, label);
+                fprintf(out, "  %s%s%s %4.1f/%-4.1f %s%s\n", cr->passed ? green : red, cr->passed ? "PASS" : "FAIL", reset,
+                        cr->points, cr->max_points, label, cr->bonus ? " (bonus)" : "");
                 if (!cr->passed) _sl_print_message(out, cr->message);
                 score += cr->points;
-                max += cr->max_points;
+                if (!cr->bonus) max += cr->max_points;
             }
         }
         if (any) fprintf(out, "  Lab %d: %g/%g\n", lab, score, max);
@@ -98,7 +105,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
                 for (int k = 0; k < rep->cases[i].c->check_count; k++) {
                     any = true;
                     s += rep->cases[i].checks[k].points;
-                    m += rep->cases[i].checks[k].max_points;
+                    if (!rep->cases[i].checks[k].bonus) m += rep->cases[i].checks[k].max_points;
                 }
         if (!any) continue;
         cJSON *l = cJSON_CreateObject();
@@ -128,6 +135,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
             cJSON_AddNumberToObject(j, "points", cr->points);
             cJSON_AddNumberToObject(j, "max_points", cr->max_points);
             cJSON_AddBoolToObject(j, "passed", cr->passed);
+            cJSON_AddBoolToObject(j, "bonus", cr->bonus);
             cJSON_AddStringToObject(j, "message", cr->message);
             const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(ck->kind));
             if (!cr->passed && cap && cap->is_image) {
@@ -167,7 +175,8 @@ static void _sl_add_tests(const sl_grade_report *rep, cJSON *tests, bool prairie
             cJSON *t = cJSON_CreateObject();
             cJSON_AddStringToObject(t, "name", name);
             cJSON_AddNumberToObject(t, prairielearn ? "points" : "score", cr->points);
-            cJSON_AddNumberToObject(t, prairielearn ? "max_points" : "max_score", cr->max_points);
+            /* extra credit: a test worth nothing that can still earn points */
+            cJSON_AddNumberToObject(t, prairielearn ? "max_points" : "max_score", cr->bonus ? 0 : cr->max_points);
             cJSON_AddStringToObject(t, "output", cr->passed ? "passed" : cr->message);
             if (!prairielearn) cJSON_AddStringToObject(t, "status", cr->passed ? "passed" : "failed");
             cJSON_AddItemToArray(tests, t);

@@ -28,7 +28,10 @@ typedef struct sl_grade_report {
 } sl_grade_report;
 
 const char *sl_lab_title(int lab);
+/* score counts bonus points; max_score does not. */
 void sl_report_totals(const sl_grade_report *report, double *score, double *max_score);
+/* Every check that is not a bonus passed. */
+bool sl_report_full_marks(const sl_grade_report *report);
 void sl_report_print(const sl_grade_report *report, FILE *out, bool color);
 /* DIR/results.json and DIR/images/<case>.<check>.{student,reference,diff}.png */
 bool sl_report_write_dir(const sl_grade_report *report, const char *dir, char *err, size_t err_size);

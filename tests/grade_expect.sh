@@ -2,8 +2,8 @@
 # Runs a grader build and checks what it reports.
 #   grade_expect.sh --exe GRADER --exit N [--loses LAB] [--full LAB]... [--expect REGEX]... [-- GRADER ARGS]
 #   --exit N     the exit status the grader must return
-#   --loses LAB  lab LAB must score below its maximum
-#   --full LAB   lab LAB must score its maximum
+#   --loses LAB  a check of lab LAB (not a bonus one) must fail
+#   --full LAB   every check of lab LAB but bonus ones must pass
 #   --expect RE  the output must match RE (grep -E); --reject RE: must not
 set -u
 exe="" want_exit="" loses=() full=() expect=() reject=()
@@ -29,14 +29,16 @@ problem() { echo "grade_expect: $*" >&2; fail=1; }
 [ -z "$want_exit" ] || [ "$status" = "$want_exit" ] || problem "exit status $status, expected $want_exit"
 last=$(tail -n 1 "$out")
 [[ "$last" =~ ^Score:\ [0-9.]+/[0-9.]+$ ]] || problem "the last line is not 'Score: X/Y': $last"
-lab_total() { grep -E "^  Lab $1: [0-9.]+/[0-9.]+$" "$out" | sed -E 's/.*: //'; }
+# The FAIL lines of lab N's section that are not bonus checks.
+lab_failures() { awk -v lab="$1" '/^Lab [0-9]+:/ {in_lab = ($2 == lab ":")} in_lab && /^  FAIL / && !/\(bonus\)$/' "$out"; }
+lab_present() { grep -qE "^Lab $1:" "$out"; }
 for lab in "${loses[@]+"${loses[@]}"}"; do
-  t=$(lab_total "$lab"); [ -n "$t" ] || { problem "no total for lab $lab"; continue; }
-  [ "${t%/*}" != "${t#*/}" ] || problem "lab $lab kept full marks ($t), expected it to lose points"
+  lab_present "$lab" || { problem "no section for lab $lab"; continue; }
+  [ -n "$(lab_failures "$lab")" ] || problem "lab $lab kept full marks, expected it to lose points"
 done
 for lab in "${full[@]+"${full[@]}"}"; do
-  t=$(lab_total "$lab"); [ -n "$t" ] || { problem "no total for lab $lab"; continue; }
-  [ "${t%/*}" = "${t#*/}" ] || problem "lab $lab scored $t, expected full marks"
+  lab_present "$lab" || { problem "no section for lab $lab"; continue; }
+  [ -z "$(lab_failures "$lab")" ] || problem "lab $lab lost points, expected full marks"
 done
 for re in "${expect[@]+"${expect[@]}"}"; do grep -qE -- "$re" "$out" || problem "output does not match: $re"; done
 for re in "${reject[@]+"${reject[@]}"}"; do ! grep -qE -- "$re" "$out" || problem "output matches what it must not: $re"; done

@@ -2,7 +2,8 @@
 # make_variant.sh SPEC SOLUTIONS_DIR OUT_DIR
 # Copies the solutions to OUT_DIR and puts in the one mistake SPEC describes:
 # each "find:" line is replaced by the "replace:" line after it, in "file:".
-# Fails when a find line is no longer in the solution, so variants cannot rot.
+# Fails when a find line is no longer in the solution, or is there more than
+# once, so variants cannot rot or hit the wrong place.
 set -euo pipefail
 spec=$1 solutions=$2 out=$3
 file="" finds=() replaces=()
@@ -25,7 +26,11 @@ for i in "${!finds[@]}"; do
     *"${finds[$i]}"*) ;;
     *) echo "$spec: '${finds[$i]}' is not in $file any more: update the variant" >&2; rm -rf "$out.tmp"; exit 1 ;;
   esac
-  content=${content//"${finds[$i]}"/"${replaces[$i]}"}
+  rest=${content#*"${finds[$i]}"}
+  case "$rest" in
+    *"${finds[$i]}"*) echo "$spec: '${finds[$i]}' is in $file more than once: make it unique" >&2; rm -rf "$out.tmp"; exit 1 ;;
+  esac
+  content=${content/"${finds[$i]}"/"${replaces[$i]}"}
 done
 printf '%s' "$content" >"$target"
 rm -rf "$out"

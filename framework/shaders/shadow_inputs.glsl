@@ -25,6 +25,7 @@ const int SL_BIAS_SLOPE_SCALED = 2;
 const int SL_BIAS_POLYGON_OFFSET = 3;
 const int SL_BIAS_FRONT_FACE_CULLING = 4;
 const int SL_BIAS_NORMAL_OFFSET = 5;
+const int SL_BIAS_MIDPOINT = 6;
 
 // Lab 3: where to look the point up, and with what bias, for the chosen mode.
 void sl_biased_lookup(out vec4 shadow_coord, out float bias) {
@@ -36,6 +37,8 @@ void sl_biased_lookup(out vec4 shadow_coord, out float bias) {
         bias = u_depth_bias;
     } else if (u_bias_mode == SL_BIAS_SLOPE_SCALED) {
         bias = slope_scaled_bias(clamp(n_dot_l, 0.0, 1.0), u_depth_bias, u_slope_bias, u_max_bias);
+    } else if (u_bias_mode == SL_BIAS_MIDPOINT) {
+        bias = 0.0; // handled by midpoint_compare (scene_bias.frag)
     } else if (u_bias_mode == SL_BIAS_NORMAL_OFFSET) {
         float texel = u_light_type == 0 ? u_texel_size : u_texel_size * distance(u_light_position, v_world_position);
         vec3 moved = normal_offset_position(v_world_position, n, clamp(n_dot_l, 0.0, 1.0), texel, u_normal_offset);

@@ -7,6 +7,9 @@
  *   1. lab3_depth_pass_state      polygon offset or culling, per mode  (TODO lab3.1)
  *   2. shaders/bias.glsl          slope_scaled_bias                    (TODO lab3.2)
  *   3. shaders/bias.glsl          normal_offset_position               (TODO lab3.3)
+ *   Extension (optional, bonus points): midpoint shadow maps
+ *   4. lab3_second_depth_state    state of the second-depth pass       (TODO lab3.4)
+ *   5. shaders/midpoint.glsl      midpoint_compare                     (TODO lab3.5)
  */
 #include "shadowlab.h"
 
@@ -22,5 +25,14 @@ sl_status lab3_depth_pass_state(const sl_bias_settings *bias) {
      *   - SL_BIAS_FRONT_FACE_CULLING: enable GL_CULL_FACE, cull GL_FRONT faces
      *   - every other mode: nothing more (their bias is in the lookup) */
     (void)bias;
+    return SL_NOT_IMPLEMENTED;
+}
+
+/* Extension (optional, bonus) ----------------------------------------------- */
+sl_status lab3_second_depth_state(void) {
+    /* TODO(lab3.4, extension): the framework runs a second depth pass into a
+     * second map (made with your lab 1 functions) and calls this right after
+     * lab1_begin_depth_pass. Set the state that makes the map keep the SECOND
+     * surface along each light ray instead of the first. README.md, "Extension". */
     return SL_NOT_IMPLEMENTED;
 }

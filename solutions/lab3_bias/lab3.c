@@ -7,6 +7,9 @@
  *   1. lab3_depth_pass_state      polygon offset or culling, per mode  (TODO lab3.1)
  *   2. shaders/bias.glsl          slope_scaled_bias                    (TODO lab3.2)
  *   3. shaders/bias.glsl          normal_offset_position               (TODO lab3.3)
+ *   Extension (optional, bonus points): midpoint shadow maps
+ *   4. lab3_second_depth_state    state of the second-depth pass       (TODO lab3.4)
+ *   5. shaders/midpoint.glsl      midpoint_compare                     (TODO lab3.5)
  */
 #include "shadowlab.h"
 
@@ -24,5 +27,14 @@ sl_status lab3_depth_pass_state(const sl_bias_settings *bias) {
         glEnable(GL_CULL_FACE);
         glCullFace(GL_FRONT);
     }
+    return SL_OK;
+}
+
+/* Extension ----------------------------------------------------------------- */
+sl_status lab3_second_depth_state(void) {
+    /* With front faces culled, the first surface a ray meets in this pass is
+     * the far side of the object it entered: the second depth. */
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT); /* keep the far side */
     return SL_OK;
 }

@@ -10,7 +10,7 @@ bool outside_light_frustum(vec4 shadow_coord, vec3 p) {
 // With a sampler2D: read the stored depth, compare it yourself.
 float shadow_compare_manual(sampler2D shadow_map, vec4 shadow_coord, float bias) {
     vec3 p = shadow_coord.xyz / shadow_coord.w;   // perspective divide (w = 1 for ortho)
-    if (outside_light_frustum(shadow_coord, p)) return 1.0;
+    if (outside_light_frustum(shadow_coord, p)) return 1.0; // nothing there casts a shadow
     float closest = texture(shadow_map, p.xy).r;  // depth of the nearest occluder
     return p.z - bias > closest ? 0.0 : 1.0;
 }
