@@ -30,6 +30,7 @@ static void _sl_usage(FILE *f) {
             "  --exclude PATTERN    leave out the cases whose name matches PATTERN\n"
             "  -j N, --jobs N       cases run at once (default: the number of CPUs)\n"
             "  --report DIR         write DIR/results.json and student/diff images of failed checks\n"
+            "  --junit FILE         write JUnit XML (one suite per lab, one test per check)\n"
             "  --gradescope FILE    write Gradescope's results.json\n"
             "  --prairielearn FILE  write PrairieLearn's results.json\n"
             "  --timeout SECONDS    time limit per case (default: each case's own, 20 s)\n"
@@ -58,6 +59,7 @@ static bool _sl_matches(const char *name, const char *pattern) {
 int sl_grader_main(int argc, char **argv) {
     const char *cases_dir = SL_GRADER_DIR "/cases", *refs_dir = SL_GRADER_DIR "/references";
     const char *pattern = NULL, *exclude = NULL, *report_dir = NULL, *gradescope = NULL, *prairielearn = NULL;
+    const char *junit = NULL;
     sl_run_options opts = {.jobs = (int)sysconf(_SC_NPROCESSORS_ONLN)};
     int only_lab = 0;
     bool update = false, list = false;
@@ -65,7 +67,7 @@ int sl_grader_main(int argc, char **argv) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         bool value = strcmp(a, "--lab") == 0 || strcmp(a, "--case") == 0 || strcmp(a, "--exclude") == 0 || strcmp(a, "-j") == 0 ||
                      strcmp(a, "--jobs") == 0 || strcmp(a, "--report") == 0 || strcmp(a, "--gradescope") == 0 ||
-                     strcmp(a, "--prairielearn") == 0 || strcmp(a, "--timeout") == 0 ||
+                     strcmp(a, "--prairielearn") == 0 || strcmp(a, "--junit") == 0 || strcmp(a, "--timeout") == 0 ||
                      strcmp(a, "--cases") == 0 || strcmp(a, "--references") == 0 || strcmp(a, "--labs-dir") == 0;
         if (value && !v) {
             fprintf(stderr, "shadowlab-grade: %s needs a value\n", a);
@@ -86,6 +88,7 @@ int sl_grader_main(int argc, char **argv) {
         else if (strcmp(a, "--report") == 0) report_dir = v;
         else if (strcmp(a, "--gradescope") == 0) gradescope = v;
         else if (strcmp(a, "--prairielearn") == 0) prairielearn = v;
+        else if (strcmp(a, "--junit") == 0) junit = v;
         else if (strcmp(a, "--timeout") == 0) opts.timeout = atof(v);
         else if (strcmp(a, "--cases") == 0) cases_dir = v;
         else if (strcmp(a, "--references") == 0) refs_dir = v;
@@ -199,6 +202,7 @@ int sl_grader_main(int argc, char **argv) {
         for (int i = 0; i < count; i++) {
             rep.cases[i].c = &cases[i];
             rep.cases[i].result = &results[i];
+            rep.cases[i].references = &refs[i * SL_CASE_MAX_CHECKS];
             for (int k = 0; k < cases[i].check_count; k++) {
                 sl_check_result *cr = &rep.cases[i].checks[k];
                 sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k], cr);
@@ -210,6 +214,8 @@ int sl_grader_main(int argc, char **argv) {
         sl_report_print(&rep, stdout, isatty(1));
         char err[1200];
         if (report_dir && !sl_report_write_dir(&rep, report_dir, err, sizeof err))
+            fprintf(stderr, "shadowlab-grade: %s\n", err);
+        if (junit && !sl_report_write_junit(&rep, junit, err, sizeof err))
             fprintf(stderr, "shadowlab-grade: %s\n", err);
         if (gradescope && !sl_report_write_gradescope(&rep, gradescope, err, sizeof err))
             fprintf(stderr, "shadowlab-grade: %s\n", err);

@@ -82,6 +82,117 @@ static bool _sl_write_json(cJSON *json, const char *path, char *err, size_t err_
     return ok;
 }
 
+static void _sl_html_text(FILE *f, const char *text) {
+    for (const char *p = text; *p; p++) {
+        switch (*p) {
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '&': fputs("&amp;", f); break;
+        case '"': fputs("&quot;", f); break;
+        default: fputc(*p, f);
+        }
+    }
+}
+
+/* A page a TA can open: the score per lab, every check, and the images of the failed ones. */
+static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const char *path, char *err, size_t err_size) {
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, err_size, "%s: cannot write", path);
+        return false;
+    }
+    double score, max;
+    sl_report_totals(rep, &score, &max);
+    fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>shadowlab grade: %g/%g</title>\n"
+               "<style>body{font-family:sans-serif;margin:2em}td,th{padding:.2em .6em;text-align:left;vertical-align:top}"
+               ".pass{color:#070}.fail{color:#b00}img{width:256px;image-rendering:pixelated;border:1px solid #ccc}"
+               "figure{display:inline-block;margin:.3em}</style></head><body>\n",
+            score, max);
+    fprintf(f, "<h1>Score: %g/%g</h1>\n<p>%s labs, %d cases, %.2f s</p>\n", score, max, rep->labs_kind,
+            rep->case_count, rep->seconds);
+    for (int i = 0; i < rep->problem_count; i++) {
+        fputs("<p class=\"fail\">PROBLEM ", f);
+        _sl_html_text(f, rep->problems[i]);
+        fputs("</p>\n", f);
+    }
+    const cJSON *cases = cJSON_GetObjectItemCaseSensitive(root, "cases"), *jc;
+    fputs("<table>\n<tr><th>lab</th><th>case / check</th><th>points</th><th>result</th></tr>\n", f);
+    cJSON_ArrayForEach(jc, cases) {
+        const cJSON *jk;
+        cJSON_ArrayForEach(jk, cJSON_GetObjectItemCaseSensitive(jc, "checks")) {
+            bool passed = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(jk, "passed"));
+            fprintf(f, "<tr><td>%d</td><td>", cJSON_GetObjectItemCaseSensitive(jc, "lab")->valueint);
+            _sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jc, "name")));
+            fputs(" / ", f);
+            _sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "name")));
+            fprintf(f, "%s</td><td>%g/%g</td><td class=\"%s\">%s", cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(jk, "bonus")) ? " (bonus)" : "",
+                    cJSON_GetObjectItemCaseSensitive(jk, "points")->valuedouble,
+                    cJSON_GetObjectItemCaseSensitive(jk, "max_points")->valuedouble, passed ? "pass" : "fail",
+                    passed ? "PASS" : "FAIL ");
+            if (!passed) _sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "message")));
+            const cJSON *imgs = cJSON_GetObjectItemCaseSensitive(jk, "images"), *img;
+            if (imgs) fputs("<br>", f);
+            cJSON_ArrayForEach(img, imgs) {
+                fputs("<figure><img src=\"", f);
+                _sl_html_text(f, img->valuestring);
+                fprintf(f, "\"><figcaption>%s</figcaption></figure>", img->string);
+            }
+            fputs("</td></tr>\n", f);
+        }
+    }
+    fputs("</table>\n</body></html>\n", f);
+    if (fclose(f) != 0) {
+        snprintf(err, err_size, "%s: cannot write", path);
+        return false;
+    }
+    return true;
+}
+
+bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *err, size_t err_size) {
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, err_size, "%s: cannot write", path);
+        return false;
+    }
+    fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadowlab\">\n", f);
+    for (int lab = 1; lab <= 7; lab++) {
+        int tests = 0, failures = 0;
+        for (int i = 0; i < rep->case_count; i++)
+            if (rep->cases[i].c->lab == lab)
+                for (int k = 0; k < rep->cases[i].c->check_count; k++) {
+                    tests++;
+                    failures += !rep->cases[i].checks[k].passed;
+                }
+        if (!tests) continue;
+        fprintf(f, "  <testsuite name=\"lab%d %s\" tests=\"%d\" failures=\"%d\">\n", lab, sl_lab_title(lab), tests, failures);
+        for (int i = 0; i < rep->case_count; i++) {
+            const sl_graded_case *g = &rep->cases[i];
+            if (g->c->lab != lab) continue;
+            for (int k = 0; k < g->c->check_count; k++) {
+                const sl_check_result *cr = &g->checks[k];
+                fputs("    <testcase classname=\"", f);
+                _sl_html_text(f, g->c->name);
+                fputs("\" name=\"", f);
+                _sl_html_text(f, g->c->checks[k].name);
+                fprintf(f, "\" time=\"%.3f\">", g->result->seconds);
+                if (!cr->passed) {
+                    fprintf(f, "<failure message=\"%g/%g points\">", cr->points, cr->max_points);
+                    _sl_html_text(f, cr->message);
+                    fputs("</failure>", f);
+                }
+                fputs("</testcase>\n", f);
+            }
+        }
+        fputs("  </testsuite>\n", f);
+    }
+    fputs("</testsuites>\n", f);
+    if (fclose(f) != 0) {
+        snprintf(err, err_size, "%s: cannot write", path);
+        return false;
+    }
+    return true;
+}
+
 bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err, size_t err_size) {
     char images[1100];
     snprintf(images, sizeof images, "%s/images", dir);
@@ -139,15 +250,16 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
             cJSON_AddStringToObject(j, "message", cr->message);
             const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(ck->kind));
             if (!cr->passed && cap && cap->is_image) {
-                char path[1400], name[300];
+                const sl_image *shown[3] = {&cap->image, &g->references[k].image, &cr->diff};
+                static const char *const roles[3] = {"student", "reference", "diff"};
                 cJSON *imgs = cJSON_AddObjectToObject(j, "images");
-                snprintf(name, sizeof name, "images/%s.%s.student.png", g->c->name, ck->name);
-                snprintf(path, sizeof path, "%s/%s", dir, name);
-                if (sl_image_write(path, &cap->image, err, err_size)) cJSON_AddStringToObject(imgs, "student", name);
-                if (cr->diff.data) {
-                    snprintf(name, sizeof name, "images/%s.%s.diff.png", g->c->name, ck->name);
+                for (int m = 0; m < 3; m++) {
+                    char path[1400], name[300];
+                    if (!shown[m]->data) continue;
+                    snprintf(name, sizeof name, "images/%s.%s.%s.png", g->c->name, ck->name, roles[m]);
                     snprintf(path, sizeof path, "%s/%s", dir, name);
-                    if (sl_image_write(path, &cr->diff, err, err_size)) cJSON_AddStringToObject(imgs, "diff", name);
+                    if (sl_image_write(path, shown[m], err, err_size)) cJSON_AddStringToObject(imgs, roles[m], name);
+                    else ok = false;
                 }
             }
             cJSON_AddItemToArray(checks, j);
@@ -159,6 +271,8 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     char path[1100];
     snprintf(path, sizeof path, "%s/results.json", dir);
     ok = _sl_write_json(root, path, err, err_size) && ok;
+    snprintf(path, sizeof path, "%s/report.html", dir);
+    ok = _sl_write_html(rep, root, path, err, err_size) && ok;
     cJSON_Delete(root);
     return ok;
 }

@@ -14,6 +14,7 @@
 typedef struct sl_graded_case {
     const sl_case *c;
     const sl_case_result *result;
+    const sl_reference *references; /* one per check */
     sl_check_result checks[SL_CASE_MAX_CHECKS];
 } sl_graded_case;
 
@@ -33,8 +34,11 @@ void sl_report_totals(const sl_grade_report *report, double *score, double *max_
 /* Every check that is not a bonus passed. */
 bool sl_report_full_marks(const sl_grade_report *report);
 void sl_report_print(const sl_grade_report *report, FILE *out, bool color);
-/* DIR/results.json and DIR/images/<case>.<check>.{student,reference,diff}.png */
+/* DIR/results.json, DIR/report.html (student | reference | diff for every
+ * failed image check) and DIR/images/<case>.<check>.{student,reference,diff}.png */
 bool sl_report_write_dir(const sl_grade_report *report, const char *dir, char *err, size_t err_size);
+/* JUnit XML: one test suite per lab, one test case per check. */
+bool sl_report_write_junit(const sl_grade_report *report, const char *path, char *err, size_t err_size);
 bool sl_report_write_gradescope(const sl_grade_report *report, const char *path, char *err, size_t err_size);
 bool sl_report_write_prairielearn(const sl_grade_report *report, const char *path, char *err, size_t err_size);
 
