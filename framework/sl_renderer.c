@@ -86,7 +86,8 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
     return false;
 }
 
-#define _SL_CALL_LAB(r, fn, ...) (_sl_enter(#fn), _sl_lab_result((r), #fn, fn(__VA_ARGS__)))
+/* Calls lab N's function fn through the renderer's table, recording what it returned. */
+#define _SL_CALL_LAB(r, N, fn, ...) (_sl_enter(#fn), _sl_lab_result((r), #fn, (r)->fns[N]->fn(__VA_ARGS__)))
 
 static bool _sl_build(sl_program *p, const sl_renderer *r, const char *vs, const char *fs, const char *defines,
                       char *err, size_t err_size) {
@@ -124,6 +125,8 @@ static bool _sl_scene_ready(sl_renderer *r, int lab) {
 
 bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, size_t err_size) {
     memset(r, 0, sizeof *r);
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++)
+        r->fns[lab] = desc && desc->lab_functions[lab] ? desc->lab_functions[lab] : &sl_build_lab_functions;
     const char *labs = desc && desc->labs_dir ? desc->labs_dir : getenv("SHADOWLAB_LABS");
     if (!labs || !*labs) labs = sl_build_labs_dir;
     snprintf(r->labs_dir, sizeof r->labs_dir, "%s", labs);
@@ -179,12 +182,12 @@ void sl_renderer_destroy(sl_renderer *r) {
     _sl_destroy_meshes(r);
     if (r->shadow_map_attempted && r->shadow_map_status == SL_OK) {
         _sl_enter("lab1_destroy_shadow_map");
-        lab1_destroy_shadow_map(&r->shadow_map);
+        r->fns[1]->lab1_destroy_shadow_map(&r->shadow_map);
         if (sl_lab_call_hook) sl_lab_call_hook(NULL);
     }
     if (r->second_map_attempted && r->second_map_status == SL_OK) {
         _sl_enter("lab1_destroy_shadow_map");
-        lab1_destroy_shadow_map(&r->second_map);
+        r->fns[1]->lab1_destroy_shadow_map(&r->second_map);
         if (sl_lab_call_hook) sl_lab_call_hook(NULL);
     }
     sl_program_destroy(&r->depth_program);
@@ -250,9 +253,9 @@ static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_r
         glm_mat4_identity(view);
         glm_mat4_identity(proj);
         glm_mat4_identity(shadow);
-        bool ok = _SL_CALL_LAB(r, lab2_light_view, &light, &bounds, view) &&
-                  _SL_CALL_LAB(r, lab2_light_projection, &light, &bounds, view, proj) &&
-                  _SL_CALL_LAB(r, lab2_shadow_matrix, proj, view, shadow);
+        bool ok = _SL_CALL_LAB(r, 2, lab2_light_view, &light, &bounds, view) &&
+                  _SL_CALL_LAB(r, 2, lab2_light_projection, &light, &bounds, view, proj) &&
+                  _SL_CALL_LAB(r, 2, lab2_shadow_matrix, proj, view, shadow);
         if (ok) {
             glm_mat4_copy(view, info->light_view);
             glm_mat4_copy(proj, info->light_projection);
@@ -294,18 +297,18 @@ static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_r
 static void _sl_second_depth_pass(sl_renderer *r, const sl_scene *scene, int size) {
     if (r->second_map_attempted && r->second_map_status == SL_OK && r->second_map.size != size) {
         _sl_enter("lab1_destroy_shadow_map");
-        lab1_destroy_shadow_map(&r->second_map);
+        r->fns[1]->lab1_destroy_shadow_map(&r->second_map);
         r->second_map_attempted = false;
     }
     if (!r->second_map_attempted) {
         memset(&r->second_map, 0, sizeof r->second_map);
         _sl_enter("lab1_create_shadow_map");
-        r->second_map_status = lab1_create_shadow_map(size, &r->second_map);
+        r->second_map_status = r->fns[1]->lab1_create_shadow_map(size, &r->second_map);
         r->second_map_attempted = true;
     }
     if (!_sl_lab_result(r, "lab1_create_shadow_map", r->second_map_status)) return;
-    if (!_SL_CALL_LAB(r, lab1_begin_depth_pass, &r->second_map)) return;
-    if (!_SL_CALL_LAB(r, lab3_second_depth_state)) return;
+    if (!_SL_CALL_LAB(r, 1, lab1_begin_depth_pass, &r->second_map)) return;
+    if (!_SL_CALL_LAB(r, 3, lab3_second_depth_state)) return;
     _sl_draw_objects(r, scene, &r->depth_program, false);
     r->info.second_map_ready = true;
 }
@@ -315,7 +318,7 @@ static int _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_render
     /* Lab 3's stub is asked even when an earlier lab stops the pass, so the
      * grader can say which of a lab's own functions are not done yet. */
     if (used == 0 && p->lab >= 3) {
-        _SL_CALL_LAB(r, lab3_depth_pass_state, &p->bias);
+        _SL_CALL_LAB(r, 3, lab3_depth_pass_state, &p->bias);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
     return used;
@@ -326,13 +329,13 @@ static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_r
     int size = p->shadow_map_size > 0 ? p->shadow_map_size : 1024;
     if (r->shadow_map_attempted && r->shadow_map_status == SL_OK && r->shadow_map.size != size) {
         _sl_enter("lab1_destroy_shadow_map");
-        lab1_destroy_shadow_map(&r->shadow_map);
+        r->fns[1]->lab1_destroy_shadow_map(&r->shadow_map);
         r->shadow_map_attempted = false;
     }
     if (!r->shadow_map_attempted) {
         memset(&r->shadow_map, 0, sizeof r->shadow_map);
         _sl_enter("lab1_create_shadow_map");
-        r->shadow_map_status = lab1_create_shadow_map(size, &r->shadow_map);
+        r->shadow_map_status = r->fns[1]->lab1_create_shadow_map(size, &r->shadow_map);
         r->shadow_map_attempted = true;
         if (r->shadow_map_status == SL_OK && glIsTexture(r->shadow_map.depth_texture)) {
             glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
@@ -347,9 +350,9 @@ static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_r
         info->shader_error_lab = 1;
         return 0;
     }
-    if (!_SL_CALL_LAB(r, lab1_begin_depth_pass, &r->shadow_map)) return 0;
+    if (!_SL_CALL_LAB(r, 1, lab1_begin_depth_pass, &r->shadow_map)) return 0;
     int used = 1;
-    if (p->lab >= 3 && _SL_CALL_LAB(r, lab3_depth_pass_state, &p->bias)) used = 3;
+    if (p->lab >= 3 && _SL_CALL_LAB(r, 3, lab3_depth_pass_state, &p->bias)) used = 3;
     mat4 view_proj;
     glm_mat4_mul(info->light_projection, info->light_view, view_proj);
     glUseProgram(r->depth_program.id);
@@ -380,11 +383,11 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     if (lab >= 4) {
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
-        if (!_SL_CALL_LAB(r, lab4_configure_shadow_texture, r->shadow_map.depth_texture, p->filter.mode)) lab = 3;
+        if (!_SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, r->shadow_map.depth_texture, p->filter.mode)) lab = 3;
     } else if (p->lab >= 4 && !(info->shadow_map_ready && info->lab2_ready)) {
         /* asked anyway, on no texture, to learn whether it is still a stub (see _sl_depth_pass) */
         glBindTexture(GL_TEXTURE_2D, 0);
-        _SL_CALL_LAB(r, lab4_configure_shadow_texture, 0, p->filter.mode);
+        _SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, 0, p->filter.mode);
     } else if (info->shadow_map_ready && r->lab1_min_filter) {
         /* lab 4 may have changed the filtering in an earlier frame: back to lab 1's */
         glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);

@@ -19,6 +19,7 @@
 #include <stddef.h>
 
 #include "sl_image.h"
+#include "sl_labs.h"
 #include "sl_mesh.h"
 #include "sl_scene.h"
 #include "sl_shader.h"
@@ -60,9 +61,11 @@ typedef struct sl_frame_info {
 typedef struct sl_renderer_desc {
     const char *labs_dir;      /* labs/ or solutions/ (default: the build's) */
     const char *framework_dir; /* default: the source tree's framework/ */
+    const sl_lab_functions *lab_functions[SL_LAB_COUNT + 1]; /* per lab; NULL: this build's */
 } sl_renderer_desc;
 
 typedef struct sl_renderer {
+    const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab */
     char labs_dir[SL_PATH_MAX];
     char shaders_dir[SL_PATH_MAX];
     sl_program depth_program;     /* lab 1's depth.vert/.frag */

@@ -1,7 +1,8 @@
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700
 #include "sl_shader.h"
 
 #include <ctype.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -112,6 +113,9 @@ static bool _sl_resolve_include(_sl_pp *pp, const char *from, const char *name, 
 }
 
 static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth) {
+    /* Messages name the real file, also when a labs tree is assembled from links (--isolate). */
+    char real[4096];
+    if (realpath(path, real)) path = real;
     bool already;
     int id = _sl_register_file(pp, path, &already);
     if (already) return true; /* included once */

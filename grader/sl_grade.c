@@ -686,6 +686,10 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
         _sl_explain_run_failure(r, out);
         return;
     }
+    /* A stub of this lab (or an earlier one) fails the check even if the picture
+     * happens to match: the framework's stand-in must never earn the points. */
+    for (int i = 0; i < r->not_implemented_count; i++)
+        if (_sl_function_lab(r->not_implemented[i]) <= c->lab && _sl_explain_missing(c, r, out)) return;
     switch (k->kind) {
     case SL_CHECK_FBO: _sl_check_fbo(c, r, out); break;
     case SL_CHECK_DEPTH_MAP: _sl_check_depth(c, k, r, ref, out); break;

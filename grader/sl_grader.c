@@ -1,4 +1,4 @@
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700
 #include "sl_grader.h"
 
 #include <dirent.h>
@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -37,6 +38,8 @@ static void _sl_usage(FILE *f) {
             "  --cases DIR          case files (default: this source tree's grader/cases)\n"
             "  --references DIR     reference files (default: grader/references)\n"
             "  --labs-dir DIR       lab sources whose shaders are loaded (default: this build's)\n"
+            "  --isolate            grade each lab with the solutions standing in for the others, so one\n"
+            "                       lab's mistake costs that lab only (needs a copy with solutions/)\n"
             "  --list               list the cases and exit\n"
             "  --update-references  render the references from this build (solutions builds only)\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly.\n");
@@ -54,6 +57,45 @@ static double _sl_now(void) {
 
 static bool _sl_matches(const char *name, const char *pattern) {
     return !pattern || fnmatch(pattern, name, 0) == 0 || strstr(name, pattern) != NULL;
+}
+
+/* For --isolate: ROOT/labN/ holds, for every lab, a link to its folder: lab N's
+ * from the graded tree, the others' from the solutions. */
+static bool _sl_make_isolation_dirs(sl_run_options *o, const char *graded, char *root, size_t root_size) {
+    static char dirs[SL_LAB_COUNT + 1][96];
+    snprintf(root, root_size, "/tmp/shadowlab-isolate-XXXXXX");
+    if (!mkdtemp(root)) {
+        fprintf(stderr, "shadowlab-grade: cannot create a folder under /tmp for --isolate\n");
+        return false;
+    }
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        snprintf(dirs[lab], sizeof dirs[lab], "%s/lab%d", root, lab);
+        if (mkdir(dirs[lab], 0755) != 0) return false;
+        for (int other = 1; other <= SL_LAB_COUNT; other++) {
+            char target[2048], link_path[256];
+            snprintf(target, sizeof target, "%s/%s", other == lab ? graded : sl_isolation_labs_dir, sl_lab_folder(other));
+            snprintf(link_path, sizeof link_path, "%s/%s", dirs[lab], sl_lab_folder(other));
+            if (symlink(target, link_path) != 0) {
+                fprintf(stderr, "shadowlab-grade: cannot link %s for --isolate\n", target);
+                return false;
+            }
+        }
+        o->isolation_dirs[lab] = dirs[lab];
+    }
+    return true;
+}
+
+static void _sl_remove_isolation_dirs(const char *root) {
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        char path[256];
+        for (int other = 1; other <= SL_LAB_COUNT; other++) {
+            snprintf(path, sizeof path, "%s/lab%d/%s", root, lab, sl_lab_folder(other));
+            unlink(path);
+        }
+        snprintf(path, sizeof path, "%s/lab%d", root, lab);
+        rmdir(path);
+    }
+    rmdir(root);
 }
 
 int sl_grader_main(int argc, char **argv) {
@@ -94,6 +136,7 @@ int sl_grader_main(int argc, char **argv) {
         else if (strcmp(a, "--references") == 0) refs_dir = v;
         else if (strcmp(a, "--labs-dir") == 0) opts.labs_dir = v;
         else if (strcmp(a, "--update-references") == 0) update = true;
+        else if (strcmp(a, "--isolate") == 0) opts.isolate = true;
         else if (strcmp(a, "--list") == 0) list = true;
         else {
             fprintf(stderr, "shadowlab-grade: unknown option %s\n", a);
@@ -103,6 +146,18 @@ int sl_grader_main(int argc, char **argv) {
         if (value) i++;
     }
     if (opts.jobs < 1) opts.jobs = 1;
+    if (opts.isolate && !sl_isolation_lab_functions) {
+        fprintf(stderr, "shadowlab-grade: --isolate needs the solutions, and this copy was built without solutions/\n");
+        return SL_EXIT_ERROR;
+    }
+    if (opts.isolate && update) {
+        fprintf(stderr, "shadowlab-grade: --isolate and --update-references do not go together\n");
+        return SL_EXIT_ERROR;
+    }
+    char isolation_root[64] = "";
+    if (opts.isolate && !_sl_make_isolation_dirs(&opts, opts.labs_dir ? opts.labs_dir : sl_build_labs_dir,
+                                                 isolation_root, sizeof isolation_root))
+        return SL_EXIT_ERROR;
     if (update && (strcmp(sl_build_labs_kind, "solutions") != 0 || opts.labs_dir)) {
         fprintf(stderr, "shadowlab-grade: --update-references renders references from the solutions, but this build "
                         "uses the %s labs%s. Configure with -DSL_LABS=solutions.\n",
@@ -210,7 +265,8 @@ int sl_grader_main(int argc, char **argv) {
             }
         }
         rep.seconds = _sl_now() - start;
-        printf("shadowlab-grade: %s labs, %d cases\n", sl_build_labs_kind, count);
+        printf("shadowlab-grade: %s labs, %d cases%s\n", sl_build_labs_kind, count,
+               opts.isolate ? ", each lab isolated (the solutions stand in for the other labs)" : "");
         sl_report_print(&rep, stdout, isatty(1));
         char err[1200];
         if (report_dir && !sl_report_write_dir(&rep, report_dir, err, sizeof err))
@@ -236,5 +292,6 @@ int sl_grader_main(int argc, char **argv) {
     free(results);
     free(refs);
     free(cases);
+    if (isolation_root[0]) _sl_remove_isolation_dirs(isolation_root);
     return status;
 }

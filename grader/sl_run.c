@@ -112,6 +112,11 @@ static int _sl_child_main(const sl_case *c, const sl_run_options *o) {
     }
     sl_renderer r;
     sl_renderer_desc rd = {.labs_dir = o->labs_dir};
+    if (o->isolate) {
+        rd.labs_dir = o->isolation_dirs[c->lab];
+        for (int lab = 1; lab <= SL_LAB_COUNT; lab++)
+            if (lab != c->lab) rd.lab_functions[lab] = sl_isolation_lab_functions;
+    }
     sl_scene scene = c->scene;
     if (!sl_renderer_init(&r, &rd, err, sizeof err) || !sl_renderer_set_scene(&r, &scene, err, sizeof err)) {
         _sl_send(_SL_MSG_ERROR, NULL, err, strlen(err));

@@ -11,6 +11,7 @@
 
 #include "sl_case.h"
 #include "sl_image.h"
+#include "sl_labs.h"
 
 #define SL_RUN_MAX_CAPTURES 8
 #define SL_RUN_MAX_NUMBERS 64
@@ -44,6 +45,10 @@ typedef struct sl_run_options {
     int jobs;              /* children at once; default 2 */
     double timeout;        /* seconds, overrides each case's own; 0 = the case's */
     const char *labs_dir;  /* NULL = the build's */
+    /* --isolate: each case runs its own lab from this build and the other labs
+     * from the solutions, with shaders from isolation_dirs[case's lab] */
+    bool isolate;
+    const char *isolation_dirs[SL_LAB_COUNT + 1];
 } sl_run_options;
 
 void sl_run_cases(const sl_case *cases, int count, const sl_run_options *options, sl_case_result *results);

@@ -1,0 +1,16 @@
+#include "sl_labs.h"
+
+const sl_lab_functions sl_build_lab_functions = {
+    lab1_create_shadow_map, lab1_begin_depth_pass, lab1_destroy_shadow_map,
+    lab2_light_view,        lab2_light_projection, lab2_shadow_matrix,
+    lab3_depth_pass_state,  lab3_second_depth_state,
+    lab4_configure_shadow_texture,
+};
+
+const sl_lab_functions *sl_isolation_lab_functions;
+const char *sl_isolation_labs_dir;
+
+const char *sl_lab_folder(int lab) {
+    static const char *const folders[SL_LAB_COUNT + 1] = {NULL, "lab1_depth_fbo", "lab2_projective", "lab3_bias", "lab4_pcf"};
+    return lab >= 1 && lab <= SL_LAB_COUNT ? folders[lab] : NULL;
+}
