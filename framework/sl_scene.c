@@ -1,10 +1,14 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_scene.h"
 
+#include <sys/stat.h>
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "sl_json.h"
 
 #ifndef SL_SCENES_DIR
 #define SL_SCENES_DIR "framework/scenes"
@@ -257,33 +261,13 @@ bool sl_scene_load(sl_scene *scene, const char *name_or_path, char *err, size_t 
         snprintf(path, sizeof path, "%s", name_or_path);
     else
         snprintf(path, sizeof path, "%s/%s.json", sl_scenes_dir(), name_or_path);
-    FILE *f = fopen(path, "rb");
-    if (!f) {
+    struct stat st;
+    if (stat(path, &st) != 0) {
         snprintf(err, err_size, "%s: cannot open scene file (built-in scenes are in %s)", path, sl_scenes_dir());
         return false;
     }
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = malloc((size_t)size + 1);
-    size_t got = text ? fread(text, 1, (size_t)size, f) : 0;
-    fclose(f);
-    if (!text || got != (size_t)size) {
-        free(text);
-        snprintf(err, err_size, "%s: cannot read scene file", path);
-        return false;
-    }
-    text[size] = '\0';
-    cJSON *json = cJSON_Parse(text);
-    if (!json) {
-        const char *at = cJSON_GetErrorPtr();
-        int line = 1;
-        for (const char *p = text; at && p < at && *p; p++) line += *p == '\n';
-        snprintf(err, err_size, "%s:%d: invalid JSON", path, line);
-        free(text);
-        return false;
-    }
-    free(text);
+    cJSON *json = sl_json_load_file(path, "scene", err, err_size);
+    if (!json) return false;
     bool ok = sl_scene_from_json(scene, json, path, err, err_size);
     cJSON_Delete(json);
     return ok;

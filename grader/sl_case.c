@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_case.h"
 
+#include "sl_json.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,22 +26,6 @@ const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name
 const char *sl_check_reference_file(sl_check_kind kind) { return _sl_kinds[kind].reference; }
 const char *sl_check_capture_name(sl_check_kind kind) {
     return kind == SL_CHECK_PENUMBRA ? "visibility" : _sl_kinds[kind].name;
-}
-
-static char *_sl_slurp(const char *path) {
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = size >= 0 ? malloc((size_t)size + 1) : NULL;
-    if (text && fread(text, 1, (size_t)size, f) != (size_t)size) {
-        free(text);
-        text = NULL;
-    }
-    if (text) text[size] = '\0';
-    fclose(f);
-    return text;
 }
 
 static bool _sl_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path,
@@ -180,21 +166,8 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
 bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
     memset(c, 0, sizeof *c);
     snprintf(c->path, sizeof c->path, "%s", path);
-    char *text = _sl_slurp(path);
-    if (!text) {
-        snprintf(err, n, "%s: cannot read case file", path);
-        return false;
-    }
-    cJSON *json = cJSON_Parse(text);
-    if (!json) {
-        const char *at = cJSON_GetErrorPtr();
-        int line = 1;
-        for (const char *p = text; at && p < at && *p; p++) line += *p == '\n';
-        snprintf(err, n, "%s:%d: invalid JSON", path, line);
-        free(text);
-        return false;
-    }
-    free(text);
+    cJSON *json = sl_json_load_file(path, "case", err, n);
+    if (!json) return false;
     bool ok = false;
     const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "name"));
     const char *title = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "title"));

@@ -12,6 +12,7 @@
 #include <cjson/cJSON.h>
 
 #include "sl_compare.h"
+#include "sl_json.h"
 
 /* The TODO tags a stub's message points to. */
 static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
@@ -112,12 +113,8 @@ void sl_reference_load(sl_reference *ref, const char *dir, const sl_case *c, con
         return;
     }
     if (k->kind == SL_CHECK_MATRICES) {
-        FILE *f = fopen(ref->path, "rb");
-        char text[16384];
-        size_t n = f ? fread(text, 1, sizeof text - 1, f) : 0;
-        if (f) fclose(f);
-        text[n] = '\0';
-        cJSON *json = cJSON_Parse(text);
+        char json_err[600];
+        cJSON *json = sl_json_load_file(ref->path, "reference", json_err, sizeof json_err);
         static const char *keys[3] = {"light_view", "light_projection", "shadow_matrix"};
         bool ok = json != NULL;
         for (int m = 0; ok && m < 3; m++) {

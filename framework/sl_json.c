@@ -1,0 +1,36 @@
+#include "sl_json.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+static char *_sl_read_text(const char *path) {
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    char *text = NULL;
+    long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    if (size >= 0 && fseek(f, 0, SEEK_SET) == 0) text = malloc((size_t)size + 1);
+    if (text && fread(text, 1, (size_t)size, f) != (size_t)size) {
+        free(text);
+        text = NULL;
+    }
+    if (text) text[size] = '\0';
+    fclose(f);
+    return text;
+}
+
+cJSON *sl_json_load_file(const char *path, const char *what, char *err, size_t err_size) {
+    char *text = _sl_read_text(path);
+    if (!text) {
+        snprintf(err, err_size, "%s: cannot read %s file", path, what);
+        return NULL;
+    }
+    cJSON *json = cJSON_Parse(text);
+    if (!json) {
+        const char *at = cJSON_GetErrorPtr();
+        int line = 1;
+        for (const char *p = text; at && p < at && *p; p++) line += *p == '\n';
+        snprintf(err, err_size, "%s:%d: invalid JSON", path, line);
+    }
+    free(text);
+    return json;
+}
