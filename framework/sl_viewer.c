@@ -278,7 +278,7 @@ int sl_viewer_main(int argc, char **argv) {
     }
     int rendered = 0;
     double last_reload_check = 0;
-    int reported_missing = -1;
+    char reported_missing[512] = "-";
     const char *reported_shader_error = NULL;
     int status = 0;
     v.dirty_title = true;
@@ -302,8 +302,12 @@ int sl_viewer_main(int argc, char **argv) {
                 fprintf(stderr, "shadowlab: lab %d's shaders do not compile, so it is switched off until you fix "
                                 "them (they reload when saved):\n%s\n", info->shader_error_lab, info->shader_error);
         }
-        if (info->not_implemented_count != reported_missing) {
-            reported_missing = info->not_implemented_count;
+        /* Say which stubs are in the way whenever that list changes (another lab, a mode). */
+        char missing[512] = "";
+        for (int i = 0; i < info->not_implemented_count; i++)
+            snprintf(missing + strlen(missing), sizeof missing - strlen(missing), "%s ", info->not_implemented[i]);
+        if (strcmp(missing, reported_missing) != 0) {
+            snprintf(reported_missing, sizeof reported_missing, "%s", missing);
             for (int i = 0; i < info->not_implemented_count; i++)
                 printf("shadowlab: not implemented yet: %s() (rendering without it)\n", info->not_implemented[i]);
             v.dirty_title = true;
