@@ -100,8 +100,7 @@ typedef struct sl_filter_settings {
     sl_filter_mode mode;
     int grid_radius;        /* grid: r, in texels */
     float poisson_radius;   /* Poisson: disk radius in texels */
-    float light_size;       /* PCSS: the light's width in world units */
-} sl_filter_settings;
+} sl_filter_settings;       /* PCSS takes the light's width from sl_light.size */
 
 /* Sets the depth texture's filtering for `mode` (the texture is bound to
  * GL_TEXTURE_2D on texture unit 0 when this is called). */

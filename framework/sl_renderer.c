@@ -30,7 +30,7 @@ void sl_render_params_defaults(sl_render_params *p) {
             .polygon_offset_units = 4.0f,
             .normal_offset = 1.5f,
         },
-        .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f, .light_size = 0.5f},
+        .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f},
         .output = SL_OUTPUT_SHADED,
     };
 }

@@ -26,16 +26,18 @@ static void _sl_usage(FILE *f) {
     fprintf(f,
             "usage: shadowlab [options]\n"
             "  --lab N             labs in use: 1 depth map, 2 shadows, 3 bias, 4 filtering; default 4\n"
-            "  --scene NAME|FILE   a built-in scene (boxes_on_floor, curved_grazing, long_ground,\n"
-            "                      closed_room, spot_on_floor) or a scene .json; default boxes_on_floor\n"
+            "  --scene NAME|FILE   a built-in scene (boxes_on_floor, spot_on_floor, curved_grazing,\n"
+            "                      pole_on_floor, thin_caster, long_ground, closed_room) or a scene\n"
+            "                      .json; default boxes_on_floor\n"
             "  --size WxH          window size; default 960x640\n"
             "  --map-size N        shadow map size in texels; default 1024\n"
             "  --compare MODE      manual (sampler2D) or hardware (sampler2DShadow)\n"
             "  --bias X            constant depth bias; default 0.005\n"
             "  --bias-mode MODE    lab 3: none, constant, slope, polygon-offset, front-culling,\n"
-            "                      normal-offset; default slope\n"
+            "                      normal-offset, midpoint (the extension); default slope\n"
             "  --filter MODE       lab 4: none, hardware, grid, poisson, pcss; default grid\n"
             "  --kernel R          lab 4: grid radius in texels (1 = 3x3); default 1\n"
+            "  --poisson-radius R  lab 4: Poisson disk radius in texels; default 2.5\n"
             "  --light-size S      lab 4: the light's size in world units (PCSS)\n"
             "  --visibility        show the visibility term alone (what the grader compares)\n"
             "  --show-map          show the shadow map in a corner\n"
@@ -161,7 +163,8 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--bias") == 0 || strcmp(a, "--frames") == 0 ||
                            strcmp(a, "--screenshot") == 0 || strcmp(a, "--labs-dir") == 0 ||
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
-                           strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0;
+                           strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
+                           strcmp(a, "--poisson-radius") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -200,7 +203,8 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.bias.constant = (float)atof(next);
         } else if (strcmp(a, "--bias-mode") == 0) {
             if (!sl_bias_mode_parse(next, &v.params.bias.mode)) {
-                fprintf(stderr, "shadowlab: --bias-mode is none, constant, slope, polygon-offset, front-culling or normal-offset\n");
+                fprintf(stderr, "shadowlab: --bias-mode is none, constant, slope, polygon-offset, front-culling, "
+                                "normal-offset or midpoint\n");
                 return 2;
             }
         } else if (strcmp(a, "--filter") == 0) {
@@ -212,6 +216,12 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.filter.grid_radius = atoi(next);
             if (v.params.filter.grid_radius < 0 || v.params.filter.grid_radius > 16) {
                 fprintf(stderr, "shadowlab: --kernel is a radius 0..16\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--poisson-radius") == 0) {
+            v.params.filter.poisson_radius = (float)atof(next);
+            if (v.params.filter.poisson_radius <= 0 || v.params.filter.poisson_radius > 64) {
+                fprintf(stderr, "shadowlab: --poisson-radius is 0..64 texels\n");
                 return 2;
             }
         } else if (strcmp(a, "--light-size") == 0) {

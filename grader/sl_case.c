@@ -77,7 +77,7 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     f->poisson_radius = (float)poisson;
     const char *mode = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "bias_mode"));
     if (mode && !sl_bias_mode_parse(mode, &b->mode)) {
-        snprintf(err, n, "%s: \"bias_mode\" must be none, constant, slope, polygon-offset, front-culling or normal-offset", c->path);
+        snprintf(err, n, "%s: \"bias_mode\" must be none, constant, slope, polygon-offset, front-culling, normal-offset or midpoint", c->path);
         return false;
     }
     if (!mode && c->lab < 3) b->mode = SL_BIAS_CONSTANT; /* labs 1-2: lab 2's constant bias */

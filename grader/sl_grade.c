@@ -462,6 +462,8 @@ static bool _sl_explain_lab3(const sl_case *c, const sl_image *s, const sl_image
             [SL_BIAS_POLYGON_OFFSET] = "is GL_POLYGON_OFFSET_FILL enabled with glPolygonOffset(factor, units) in lab3_depth_pass_state (TODO lab3.1)?",
             [SL_BIAS_FRONT_FACE_CULLING] = "are front faces culled in the depth pass (glEnable(GL_CULL_FACE), glCullFace(GL_FRONT), TODO lab3.1)?",
             [SL_BIAS_NORMAL_OFFSET] = "normal_offset_position() moves the point too little (still returns it unchanged? TODO lab3.3)",
+            [SL_BIAS_MIDPOINT] = "the second map must hold each object's far side: cull the front faces in "
+                                 "lab3_second_depth_state (TODO lab3.4), and compare with the midpoint of the two depths",
         };
         _sl_say(out, "shadow acne on %.0f%% of lit surfaces: bias too small or missing — %s", 100 * a.acne,
                 tips[mode] ? tips[mode] : "compare with a bias");
@@ -535,6 +537,10 @@ static bool _sl_explain_lab4(const sl_case *c, const sl_image *s, const sl_image
     } else if (penumbra > n / 1000 && pen_s - pen_t > 0.12 * (double)penumbra) {
         _sl_say(out, "penumbrae too bright (mean %.2f, reference %.2f): the kernel's weights sum to more than 1 — "
                      "divide by the number of samples in %s", pen_s / (double)penumbra, pen_t / (double)penumbra, fn);
+    } else if (c->params.filter.mode == SL_FILTER_PCSS && soft_ref > n / 200 && soft_stu < soft_ref / 2) {
+        _sl_say(out, "penumbrae too narrow for this light (%.1f%% of pixels in penumbra, reference %.1f%%): does pcss() "
+                     "filter with the width from the blocker search, w = (d_receiver - d_blocker) * w_light / d_blocker "
+                     "(TODO lab4.5)?", 100.0 * (double)soft_stu / (double)n, 100.0 * (double)soft_ref / (double)n);
     } else if (soft_ref > n / 200 && soft_stu < soft_ref / 4) {
         _sl_say(out, "hard edges where soft ones are expected (%.1f%% of pixels in penumbra, reference %.1f%%): are "
                      "you filtering depths instead of comparison results (Reeves 1987)? Average the 0/1 results of "
@@ -577,7 +583,22 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
         const char *fn, *todo;
         _sl_lookup_function(c, &fn, &todo);
         said = true;
-        if (has_shadows && v.student_shadowed < 0.1 * v.reference_shadowed) {
+        /* On surfaces facing the light when the mask is there: surfaces facing
+         * away are dark in both images and would hide a missing shadow. */
+        double ref_shadowed = v.reference_shadowed, stu_shadowed = v.student_shadowed;
+        if (mask) {
+            long facing = 0, ref_dark = 0, stu_dark = 0;
+            for (long i = 0; i < (long)t->width * t->height; i++) {
+                if (mask->image.data[i] < 0.5f) continue;
+                facing++;
+                ref_dark += t->data[i] < 0.5f;
+                stu_dark += !(s->data[i] >= 0.5f);
+            }
+            ref_shadowed = facing ? (double)ref_dark / (double)facing : 0;
+            stu_shadowed = facing ? (double)stu_dark / (double)facing : 0;
+            has_shadows = ref_shadowed > 0.005;
+        }
+        if (has_shadows && stu_shadowed < 0.1 * ref_shadowed) {
             _sl_say(out, "no shadows at all: %s returns 1.0 everywhere — not implemented (TODO %s), or every point "
                          "taken for outside the light's frustum?", fn, todo);
         } else if (c->lab == 3 && mask && _sl_explain_lab3(c, s, t, &mask->image, out)) {
