@@ -30,7 +30,8 @@ static void _sl_usage(FILE *f) {
             "  --case PATTERN       cases whose name matches PATTERN (shell glob, or a substring)\n"
             "  --exclude PATTERN    leave out the cases whose name matches PATTERN\n"
             "  -j N, --jobs N       cases run at once (default: the number of CPUs)\n"
-            "  --report DIR         write DIR/results.json and student/diff images of failed checks\n"
+            "  --report DIR         write DIR/report.html, DIR/results.json, and student, reference and\n"
+            "                       diff images of failed image checks\n"
             "  --junit FILE         write JUnit XML (one suite per lab, one test per check)\n"
             "  --gradescope FILE    write Gradescope's results.json\n"
             "  --prairielearn FILE  write PrairieLearn's results.json\n"
@@ -127,6 +128,7 @@ int sl_grader_main(int argc, char **argv) {
         } else if (strcmp(a, "--case") == 0) pattern = v;
         else if (strcmp(a, "--exclude") == 0) exclude = v;
         else if (strcmp(a, "-j") == 0 || strcmp(a, "--jobs") == 0) opts.jobs = atoi(v);
+        else if (strncmp(a, "-j", 2) == 0 && a[2] >= '0' && a[2] <= '9') opts.jobs = atoi(a + 2); /* make's -j4 */
         else if (strcmp(a, "--report") == 0) report_dir = v;
         else if (strcmp(a, "--gradescope") == 0) gradescope = v;
         else if (strcmp(a, "--prairielearn") == 0) prairielearn = v;

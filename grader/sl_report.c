@@ -68,7 +68,7 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
     for (int i = 0; i < rep->problem_count; i++) fprintf(out, "%sPROBLEM%s %s\n", red, reset, rep->problems[i]);
     double score, max;
     sl_report_totals(rep, &score, &max);
-    fprintf(out, "Time: %.2f s (%d cases, %d jobs)\n", rep->seconds, rep->case_count, rep->jobs);
+    fprintf(out, "Time: %.2f s (%d cases, %d at a time)\n", rep->seconds, rep->case_count, rep->jobs);
     fprintf(out, "%sScore: %g/%g%s\n", bold, score, max, reset);
 }
 
