@@ -307,6 +307,10 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
         setrlimit(RLIMIT_CPU, &cpu);
         struct rlimit fsize = {64 << 20, 64 << 20};
         setrlimit(RLIMIT_FSIZE, &fsize);
+        /* Runaway allocations fail in the case, not on the grading machine
+         * (llvmpipe needs well under 1 GiB of address space here). */
+        struct rlimit memory = {(rlim_t)4 << 30, (rlim_t)4 << 30};
+        setrlimit(RLIMIT_AS, &memory);
         signal(SIGPIPE, SIG_DFL);
         _sl_child_fd = fds[1];
         _exit(_sl_child_main(c, o));
