@@ -40,17 +40,24 @@ static const char *const _sl_bias_names[SL_BIAS_MODE_COUNT] = {
 };
 static const char *const _sl_filter_names[SL_FILTER_MODE_COUNT] = {"none", "hardware", "grid", "poisson", "pcss"};
 
+static bool _sl_find_name(const char *const *names, int count, const char *name, int *index) {
+    for (int i = 0; i < count; i++)
+        if (strcmp(name, names[i]) == 0) {
+            *index = i;
+            return true;
+        }
+    return false;
+}
+
 const char *sl_bias_mode_name(sl_bias_mode mode) {
     return mode < SL_BIAS_MODE_COUNT ? _sl_bias_names[mode] : "?";
 }
 
 bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode) {
-    for (int i = 0; i < SL_BIAS_MODE_COUNT; i++)
-        if (strcmp(name, _sl_bias_names[i]) == 0) {
-            *mode = (sl_bias_mode)i;
-            return true;
-        }
-    return false;
+    int i;
+    if (!_sl_find_name(_sl_bias_names, SL_BIAS_MODE_COUNT, name, &i)) return false;
+    *mode = (sl_bias_mode)i;
+    return true;
 }
 
 const char *sl_filter_mode_name(sl_filter_mode mode) {
@@ -58,12 +65,10 @@ const char *sl_filter_mode_name(sl_filter_mode mode) {
 }
 
 bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
-    for (int i = 0; i < SL_FILTER_MODE_COUNT; i++)
-        if (strcmp(name, _sl_filter_names[i]) == 0) {
-            *mode = (sl_filter_mode)i;
-            return true;
-        }
-    return false;
+    int i;
+    if (!_sl_find_name(_sl_filter_names, SL_FILTER_MODE_COUNT, name, &i)) return false;
+    *mode = (sl_filter_mode)i;
+    return true;
 }
 
 static void _sl_enter(const char *function) {
