@@ -113,7 +113,7 @@ void sl_reference_load(sl_reference *ref, const char *dir, const sl_case *c, con
         return;
     }
     if (k->kind == SL_CHECK_MATRICES) {
-        char json_err[600];
+        char json_err[600] = "";
         cJSON *json = sl_json_load_file(ref->path, "reference", json_err, sizeof json_err);
         static const char *keys[3] = {"light_view", "light_projection", "shadow_matrix"};
         bool ok = json != NULL;
@@ -127,8 +127,10 @@ void sl_reference_load(sl_reference *ref, const char *dir, const sl_case *c, con
             }
         }
         cJSON_Delete(json);
+        if (!ok && !json_err[0])
+            snprintf(json_err, sizeof json_err, "%s: expected light_view, light_projection, shadow_matrix: 16 numbers each", ref->path);
         if (!ok) {
-            snprintf(ref->error, sizeof ref->error, "reference corrupt: %s (expected light_view, light_projection, shadow_matrix: 16 numbers each)", ref->path);
+            snprintf(ref->error, sizeof ref->error, "reference corrupt: %s", json_err);
             return;
         }
         ref->number_count = 48;

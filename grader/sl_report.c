@@ -82,6 +82,19 @@ static bool _sl_write_json(cJSON *json, const char *path, char *err, size_t err_
     return ok;
 }
 
+/* Report files: a failure to open or finish one names the file. */
+static FILE *_sl_open(const char *path, char *err, size_t err_size) {
+    FILE *f = fopen(path, "w");
+    if (!f) snprintf(err, err_size, "%s: cannot write", path);
+    return f;
+}
+
+static bool _sl_close(FILE *f, const char *path, char *err, size_t err_size) {
+    if (fclose(f) == 0) return true;
+    snprintf(err, err_size, "%s: cannot write", path);
+    return false;
+}
+
 static void _sl_html_text(FILE *f, const char *text) {
     for (const char *p = text; *p; p++) {
         switch (*p) {
@@ -96,11 +109,8 @@ static void _sl_html_text(FILE *f, const char *text) {
 
 /* A page a TA can open: the score per lab, every check, and the images of the failed ones. */
 static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const char *path, char *err, size_t err_size) {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, err_size, "%s: cannot write", path);
-        return false;
-    }
+    FILE *f = _sl_open(path, err, err_size);
+    if (!f) return false;
     double score, max;
     sl_report_totals(rep, &score, &max);
     fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>shadowlab grade: %g/%g</title>\n"
@@ -141,19 +151,12 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
         }
     }
     fputs("</table>\n</body></html>\n", f);
-    if (fclose(f) != 0) {
-        snprintf(err, err_size, "%s: cannot write", path);
-        return false;
-    }
-    return true;
+    return _sl_close(f, path, err, err_size);
 }
 
 bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *err, size_t err_size) {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, err_size, "%s: cannot write", path);
-        return false;
-    }
+    FILE *f = _sl_open(path, err, err_size);
+    if (!f) return false;
     fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadowlab\">\n", f);
     for (int lab = 1; lab <= 7; lab++) {
         int tests = 0, failures = 0;
@@ -186,11 +189,7 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
         fputs("  </testsuite>\n", f);
     }
     fputs("</testsuites>\n", f);
-    if (fclose(f) != 0) {
-        snprintf(err, err_size, "%s: cannot write", path);
-        return false;
-    }
-    return true;
+    return _sl_close(f, path, err, err_size);
 }
 
 bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err, size_t err_size) {
