@@ -203,6 +203,7 @@ void sl_renderer_destroy(sl_renderer *r) {
     sl_program_destroy(&r->plain_program);
     sl_program_destroy(&r->debug_program);
     if (r->empty_vao) glDeleteVertexArrays(1, &r->empty_vao);
+    if (r->timer_queries[0]) glDeleteQueries(SL_MAX_PASSES + 1, r->timer_queries);
     memset(r, 0, sizeof *r);
 }
 
@@ -231,6 +232,37 @@ bool sl_renderer_set_scene(sl_renderer *r, const sl_scene *scene, char *err, siz
 }
 
 const sl_frame_info *sl_renderer_info(const sl_renderer *r) { return &r->info; }
+
+void sl_renderer_set_timing(sl_renderer *r, bool enabled) {
+    if (enabled && !r->timer_queries[0]) glGenQueries(SL_MAX_PASSES + 1, r->timer_queries);
+    r->timing = enabled;
+    r->timer_count = 0;
+}
+
+/* A timestamp after the pass just drawn; the first one of a frame (name NULL) marks its start. */
+static void _sl_timer_mark(sl_renderer *r, const char *finished_pass) {
+    if (!r->timing) return;
+    if (!finished_pass) {
+        r->timer_count = 0;
+        glQueryCounter(r->timer_queries[0], GL_TIMESTAMP);
+    } else if (r->timer_count < SL_MAX_PASSES) {
+        r->timer_names[r->timer_count++] = finished_pass;
+        glQueryCounter(r->timer_queries[r->timer_count], GL_TIMESTAMP);
+    }
+}
+
+bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out) {
+    *out = (sl_frame_timing){0};
+    if (!r->timing || r->timer_count == 0) return false;
+    GLuint64 stamps[SL_MAX_PASSES + 1];
+    for (int i = 0; i <= r->timer_count; i++) glGetQueryObjectui64v(r->timer_queries[i], GL_QUERY_RESULT, &stamps[i]);
+    for (int i = 0; i < r->timer_count; i++) {
+        /* timestamps from different rasteriser threads can be a hair out of order */
+        double ms = stamps[i + 1] > stamps[i] ? (double)(stamps[i + 1] - stamps[i]) * 1e-6 : 0.0;
+        out->passes[out->pass_count++] = (sl_pass_time){r->timer_names[i], ms};
+    }
+    return true;
+}
 
 /* GL state the labs may change, put back so one pass cannot leak into the next. */
 static void _sl_reset_state(GLuint target, int width, int height) {
@@ -316,6 +348,7 @@ static void _sl_second_depth_pass(sl_renderer *r, const sl_scene *scene, int siz
     if (!_SL_CALL_LAB(r, 3, lab3_second_depth_state)) return;
     _sl_draw_objects(r, scene, &r->depth_program, false);
     r->info.second_map_ready = true;
+    _sl_timer_mark(r, "second depth");
 }
 
 static int _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
@@ -365,6 +398,7 @@ static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_r
                        (const float *)view_proj);
     _sl_draw_objects(r, scene, &r->depth_program, false);
     info->shadow_map_ready = true;
+    _sl_timer_mark(r, "depth");
     if (used == 3 && p->bias.mode == SL_BIAS_MIDPOINT) _sl_second_depth_pass(r, scene, size);
     return used;
 }
@@ -469,6 +503,7 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     _sl_draw_objects(r, scene, prog, true);
+    _sl_timer_mark(r, "camera");
 }
 
 static void _sl_debug_view(sl_renderer *r, const sl_light *light, int width, int height) {
@@ -488,6 +523,7 @@ static void _sl_debug_view(sl_renderer *r, const sl_light *light, int width, int
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glViewport(0, 0, width, height);
     glEnable(GL_DEPTH_TEST);
+    _sl_timer_mark(r, "debug view");
 }
 
 void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
@@ -500,6 +536,7 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->shadow_map_ready = false;
     info->second_map_ready = false;
     info->lab_in_use = 0;
+    _sl_timer_mark(r, NULL);
     _sl_light_matrices(r, scene, params);
     _sl_reset_state(0, width, height);
     int depth_lab = _sl_depth_pass(r, scene, params);

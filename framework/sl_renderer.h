@@ -58,6 +58,21 @@ typedef struct sl_frame_info {
     sl_shadow_map shadow_map;    /* lab 1's map, for inspection */
 } sl_frame_info;
 
+/* Per-pass times of one frame, from GL timer queries (glQueryCounter, GL 3.3).
+ * On a GPU they are GPU time. On llvmpipe a timestamp is taken when the
+ * rasteriser threads reach it, so a pass's time is the rasteriser's CPU time
+ * for that pass (vertex work and draw calls on the calling thread overlap it). */
+#define SL_MAX_PASSES 8
+typedef struct sl_pass_time {
+    const char *name; /* "depth", "second depth", "camera", "debug view" */
+    double ms;
+} sl_pass_time;
+
+typedef struct sl_frame_timing {
+    sl_pass_time passes[SL_MAX_PASSES]; /* in the order they ran */
+    int pass_count;
+} sl_frame_timing;
+
 typedef struct sl_renderer_desc {
     const char *labs_dir;      /* labs/ or solutions/ (default: the build's) */
     const char *framework_dir; /* default: the source tree's framework/ */
@@ -86,6 +101,11 @@ typedef struct sl_renderer {
     sl_status second_map_status;
     bool second_map_attempted;
     sl_frame_info info;
+    /* timing (sl_renderer_set_timing): one timestamp before the frame and one after each pass */
+    bool timing;
+    GLuint timer_queries[SL_MAX_PASSES + 1];
+    const char *timer_names[SL_MAX_PASSES];
+    int timer_count;
 } sl_renderer;
 
 /* Called before each call into lab code with the function's name, so a crash
@@ -112,6 +132,12 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
 void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
                       int width, int height);
 const sl_frame_info *sl_renderer_info(const sl_renderer *r);
+
+/* Times the passes of every frame from now on (or stops). Off by default. */
+void sl_renderer_set_timing(sl_renderer *r, bool enabled);
+/* The pass times of the last frame drawn with timing on; waits until the GL
+ * has finished that frame. False if no such frame was drawn. */
+bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
 
 /* Read-backs, as top-down images. */
 bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sl_bench.h"
 #include "sl_context.h"
 #include "sl_log.h"
 #include "sl_renderer.h"
@@ -49,6 +50,7 @@ static void _sl_usage(FILE *f) {
             "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
             "      shaders reload when their files change\n");
+    sl_bench_usage(f);
 }
 
 static void _sl_update_title(_sl_viewer *v) {
@@ -149,6 +151,8 @@ static void _sl_scroll(GLFWwindow *w, double dx, double dy) {
 }
 
 int sl_viewer_main(int argc, char **argv) {
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--bench") == 0) return sl_bench_main(argc, argv);
     _sl_viewer v = {0};
     sl_render_params_defaults(&v.params);
     const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL;
