@@ -79,17 +79,24 @@ typedef struct sl_renderer_desc {
     const sl_lab_functions *lab_functions[SL_LAB_COUNT + 1]; /* per lab; NULL: this build's */
 } sl_renderer_desc;
 
+/* How many GLSL programs a renderer has built (compiled and linked), and the
+ * time that took: a frame builds only the programs it uses, once each. */
+typedef struct sl_program_stats {
+    int builds;      /* builds and rebuilds (hot reload), failed ones included */
+    double build_ms; /* wall-clock time spent in them */
+    int cached;      /* programs held now */
+} sl_program_stats;
+
+struct _sl_programs; /* the program cache (sl_renderer.c) */
+
 typedef struct sl_renderer {
     const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab */
     char labs_dir[SL_PATH_MAX];
     char shaders_dir[SL_PATH_MAX];
-    sl_program depth_program;     /* lab 1's depth.vert/.frag */
-    /* camera pass per lab 2..4 and sampler type (0 sampler2D, 1 sampler2DShadow), built when first needed */
-    sl_program scene_programs[SL_RENDERER_MAX_LAB + 1][2];
-    bool scene_built[SL_RENDERER_MAX_LAB + 1];
-    sl_program plain_program;     /* no shadows: lab 1 alone, or lab 2's GLSL broken */
-    sl_program debug_program;
-    char shader_errors[SL_RENDERER_MAX_LAB + 1][8192]; /* per lab: why its shaders do not compile */
+    /* Every program (lab 1's depth pass, the camera pass per lab and setting,
+     * the unshadowed and debug views), built when a frame first needs it. */
+    struct _sl_programs *programs;
+    char shader_errors[SL_RENDERER_MAX_LAB + 1][8192]; /* per lab: why its shaders do not compile (0: framework) */
     GLint lab1_min_filter, lab1_mag_filter; /* lab 1's choice, restored when lab 4 is off */
     GLuint empty_vao;
     sl_mesh meshes[SL_SCENE_MAX_OBJECTS];
@@ -118,20 +125,24 @@ extern const char sl_build_labs_dir[];
 extern const char sl_build_labs_kind[];
 const char *sl_framework_dir(void);
 
-/* Compiles every shader. False (message in err) only when the framework's own
- * shaders fail; a lab's broken shaders switch its step off and show up as
+/* Prepares a renderer; programs are built by the first frame that uses them.
+ * False (message in err) when the framework's shaders cannot be found. A
+ * lab's broken shaders switch its step off and show up as
  * sl_frame_info.shader_error, so the rest still runs. */
 bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, size_t err_size);
 void sl_renderer_destroy(sl_renderer *r);
 bool sl_renderer_set_scene(sl_renderer *r, const sl_scene *scene, char *err, size_t err_size);
-/* Rebuilds the shaders whose files changed; false with err set if one failed
- * (a program that compiled before stays in use). */
+/* Rebuilds the programs the last frame used whose files changed; false with
+ * err set if one failed (a program that compiled before stays in use). Other
+ * programs whose files changed are rebuilt when a frame next uses them. */
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size);
 
 /* Draws one frame into framebuffer `target` (0 = the window or OSMesa buffer). */
 void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
                       int width, int height);
 const sl_frame_info *sl_renderer_info(const sl_renderer *r);
+
+void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out);
 
 /* Times the passes of every frame from now on (or stops). Off by default. */
 void sl_renderer_set_timing(sl_renderer *r, bool enabled);

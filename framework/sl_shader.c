@@ -352,15 +352,19 @@ bool sl_program_build(sl_program *program, const sl_shader_desc *desc, char *err
     return _sl_build_from_paths(program, err, err_size);
 }
 
+bool sl_program_files_changed(const sl_program *program) {
+    for (int i = 0; i < program->file_count; i++) {
+        struct stat st;
+        if (stat(program->files[i], &st) != 0) continue; /* mid-save: try again later */
+        if (st.st_mtim.tv_sec != program->mtimes[i].tv_sec || st.st_mtim.tv_nsec != program->mtimes[i].tv_nsec)
+            return true;
+    }
+    return false;
+}
+
 bool sl_program_reload_if_changed(sl_program *program, char *err, size_t err_size) {
     if (err && err_size) err[0] = '\0';
-    bool changed = false;
-    for (int i = 0; i < program->file_count && !changed; i++) {
-        struct stat st;
-        if (stat(program->files[i], &st) != 0) continue; /* mid-save: try again next frame */
-        changed = st.st_mtim.tv_sec != program->mtimes[i].tv_sec || st.st_mtim.tv_nsec != program->mtimes[i].tv_nsec;
-    }
-    if (!changed) return false;
+    if (!sl_program_files_changed(program)) return false;
     return _sl_build_from_paths(program, err, err_size);
 }
 

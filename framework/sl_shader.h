@@ -41,6 +41,8 @@ typedef struct sl_program {
 /* On failure returns false and writes the compiler's log, with file names and
  * lines, into err; the program is left empty. */
 bool sl_program_build(sl_program *program, const sl_shader_desc *desc, char *err, size_t err_size);
+/* True when a file the program was built from changed on disk since. */
+bool sl_program_files_changed(const sl_program *program);
 /* Returns true if it rebuilt successfully; false if unchanged or on failure
  * (err non-empty then, and the old program stays in use). */
 bool sl_program_reload_if_changed(sl_program *program, char *err, size_t err_size);

@@ -19,7 +19,7 @@ void main() {
 #ifdef SL_HARDWARE_COMPARE
         visibility = shadow_compare_hardware(u_shadow_map, coord, bias);
 #else
-        if (u_bias_mode == SL_BIAS_MIDPOINT)
+        if (sl_bias_mode == SL_BIAS_MIDPOINT)
             visibility = midpoint_compare(u_shadow_map, u_second_map, coord);
         else
             visibility = shadow_compare_manual(u_shadow_map, coord, bias);
