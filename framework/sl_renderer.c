@@ -236,12 +236,18 @@ static void _sl_variant_defines(const _sl_variant_key *k, char *out, size_t n) {
                  k->grid_radius);
 }
 
+/* Field by field: the padding of two equal keys may differ. */
+static bool _sl_same_variant(const _sl_variant_key *a, const _sl_variant_key *b) {
+    return a->lab == b->lab && a->hardware == b->hardware && a->bias_mode == b->bias_mode &&
+           a->filter_mode == b->filter_mode && a->grid_radius == b->grid_radius;
+}
+
 /* The camera-pass program for key, built on first use; NULL if it does not compile. */
 static _sl_slot *_sl_variant_program(sl_renderer *r, const _sl_variant_key *key) {
     struct _sl_programs *ps = r->programs;
     _sl_variant *v = NULL;
     for (int i = 0; i < ps->variant_count && !v; i++)
-        if (memcmp(&ps->variants[i].key, key, sizeof *key) == 0) v = &ps->variants[i];
+        if (_sl_same_variant(&ps->variants[i].key, key)) v = &ps->variants[i];
     if (v) {
         v->last_used = ps->frame;
         if (v->stale) {
