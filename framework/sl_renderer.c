@@ -107,7 +107,7 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
 /* Every uniform the framework sets, as u_<name> in the GLSL. */
 #define _SL_UNIFORMS(X)                                                                                            \
     X(model) X(normal_matrix) X(albedo) X(view) X(projection) X(shadow_matrix) X(light_view_projection)          \
-    X(light_type) X(light_position) X(light_direction) X(light_radiance) X(spot_cos) X(shadows) X(output)         \
+    X(light_position) X(light_direction) X(light_radiance) X(spot_cos) X(shadows) X(output)         \
     X(depth_bias) X(second_map) X(slope_bias) X(max_bias) X(normal_offset) X(texel_size) X(poisson_radius)        \
     X(light_size_uv) X(light_near) X(light_far) X(shadow_map) X(texture) X(perspective) X(near) X(far)
 
@@ -126,7 +126,8 @@ typedef struct _sl_slot {
 
 /* What a camera-pass program is built for: each field is a compile-time constant in its GLSL. */
 typedef struct _sl_variant_key {
-    int lab;         /* 2, 3 or 4: scene.frag, scene_bias.frag, scene_filter.frag */
+    int lab;         /* 0: no shadows (plain.frag); 2, 3 or 4: scene.frag, scene_bias.frag, scene_filter.frag */
+    int light_type;  /* SL_LIGHT_TYPE */
     bool hardware;   /* sampler2DShadow */
     int bias_mode;   /* labs 3-4: SL_BIAS_MODE */
     int filter_mode; /* lab 4: SL_FILTER_MODE */
@@ -145,7 +146,7 @@ typedef struct _sl_variant {
 #define _SL_MAX_VARIANTS 32
 
 struct _sl_programs {
-    _sl_slot depth, plain, debug;
+    _sl_slot depth, debug;
     _sl_variant variants[_SL_MAX_VARIANTS];
     int variant_count;
     unsigned long frame;
@@ -222,13 +223,16 @@ static _sl_slot *_sl_depth_program(sl_renderer *r) {
                              "lab1_depth_fbo/shaders/depth.frag", 1);
 }
 
-/* The camera-pass fragment shader of each lab: it includes that lab's GLSL and the labs' before it. */
+/* The camera-pass shaders of each lab: a lab's fragment shader includes its GLSL and the labs' before it. */
+static const char *const _sl_scene_vertex[SL_RENDERER_MAX_LAB + 1] = {
+    [0] = "plain.vert", [2] = "scene.vert", [3] = "scene.vert", [4] = "scene.vert",
+};
 static const char *const _sl_scene_fragment[SL_RENDERER_MAX_LAB + 1] = {
-    [2] = "scene.frag", [3] = "scene_bias.frag", [4] = "scene_filter.frag",
+    [0] = "plain.frag", [2] = "scene.frag", [3] = "scene_bias.frag", [4] = "scene_filter.frag",
 };
 
 static void _sl_variant_defines(const _sl_variant_key *k, char *out, size_t n) {
-    int len = snprintf(out, n, "#define SL_LAB %d\n", k->lab);
+    int len = snprintf(out, n, "#define SL_LAB %d\n#define SL_LIGHT_TYPE %d\n", k->lab, k->light_type);
     if (k->hardware) len += snprintf(out + len, n - (size_t)len, "#define SL_HARDWARE_COMPARE 1\n");
     if (k->lab >= 3) len += snprintf(out + len, n - (size_t)len, "#define SL_BIAS_MODE %d\n", k->bias_mode);
     if (k->lab >= 4)
@@ -238,8 +242,8 @@ static void _sl_variant_defines(const _sl_variant_key *k, char *out, size_t n) {
 
 /* Field by field: the padding of two equal keys may differ. */
 static bool _sl_same_variant(const _sl_variant_key *a, const _sl_variant_key *b) {
-    return a->lab == b->lab && a->hardware == b->hardware && a->bias_mode == b->bias_mode &&
-           a->filter_mode == b->filter_mode && a->grid_radius == b->grid_radius;
+    return a->lab == b->lab && a->light_type == b->light_type && a->hardware == b->hardware &&
+           a->bias_mode == b->bias_mode && a->filter_mode == b->filter_mode && a->grid_radius == b->grid_radius;
 }
 
 /* The camera-pass program for key, built on first use; NULL if it does not compile. */
@@ -267,8 +271,8 @@ static _sl_slot *_sl_variant_program(sl_renderer *r, const _sl_variant_key *key)
     *v = (_sl_variant){.key = *key, .last_used = ps->frame};
     char defines[256];
     _sl_variant_defines(key, defines, sizeof defines);
-    _sl_slot_build(r, &v->slot, r->shaders_dir, "scene.vert", r->shaders_dir, _sl_scene_fragment[key->lab], defines,
-                   key->lab);
+    _sl_slot_build(r, &v->slot, r->shaders_dir, _sl_scene_vertex[key->lab], r->shaders_dir,
+                   _sl_scene_fragment[key->lab], defines, key->lab);
     return v->slot.program.id ? &v->slot : NULL;
 }
 
@@ -305,7 +309,7 @@ void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out) {
     const struct _sl_programs *ps = r->programs;
     out->builds = ps->builds;
     out->build_ms = ps->build_ms;
-    out->cached = (ps->depth.program.id != 0) + (ps->plain.program.id != 0) + (ps->debug.program.id != 0);
+    out->cached = (ps->depth.program.id != 0) + (ps->debug.program.id != 0);
     for (int i = 0; i < ps->variant_count; i++) out->cached += ps->variants[i].slot.program.id != 0;
 }
 
@@ -316,10 +320,9 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
     bool ok = true;
     /* Rebuilt now: what the last frame drew with (so a save shows at once and its errors are
      * reported), and any program that never compiled (so a fix switches its lab back on). */
-    struct { _sl_slot *slot; int lab; } now[3 + _SL_MAX_VARIANTS];
+    struct { _sl_slot *slot; int lab; } now[2 + _SL_MAX_VARIANTS];
     int n = 0;
     now[n++].slot = &ps->depth, now[n - 1].lab = 1;
-    now[n++].slot = &ps->plain, now[n - 1].lab = 0;
     now[n++].slot = &ps->debug, now[n - 1].lab = 0;
     for (int i = 0; i < ps->variant_count; i++) {
         _sl_variant *v = &ps->variants[i];
@@ -354,7 +357,6 @@ void sl_renderer_destroy(sl_renderer *r) {
     if (r->programs) {
         struct _sl_programs *ps = r->programs;
         sl_program_destroy(&ps->depth.program);
-        sl_program_destroy(&ps->plain.program);
         sl_program_destroy(&ps->debug.program);
         for (int i = 0; i < ps->variant_count; i++) sl_program_destroy(&ps->variants[i].slot.program);
         free(ps);
@@ -566,9 +568,11 @@ static float _sl_texel_size(const sl_frame_info *info, const sl_light *light, in
 }
 
 /* What lab `lab`'s camera-pass program is compiled for, this frame. */
-static _sl_variant_key _sl_variant_for(const sl_renderer *r, const sl_render_params *p, int lab) {
+static _sl_variant_key _sl_variant_for(const sl_renderer *r, const sl_scene *scene, const sl_render_params *p,
+                                       int lab) {
     bool midpoint = lab == 3 && p->bias.mode == SL_BIAS_MIDPOINT && r->info.second_map_ready;
-    _sl_variant_key key = {.lab = lab};
+    _sl_variant_key key = {.lab = lab, .light_type = (int)scene->light.type};
+    if (lab < 2) return key; /* no shadows: plain.frag */
     key.hardware = lab >= 4 ? p->filter.mode == SL_FILTER_HARDWARE : p->compare == SL_COMPARE_HARDWARE && !midpoint;
     /* midpoint without its second map (not implemented): lab 2's constant bias instead */
     if (lab >= 3) key.bias_mode = p->bias.mode == SL_BIAS_MIDPOINT && !midpoint ? SL_BIAS_CONSTANT : p->bias.mode;
@@ -582,14 +586,14 @@ static _sl_variant_key _sl_variant_for(const sl_renderer *r, const sl_render_par
 /* The camera-pass program of the highest lab (at most *lab) whose GLSL compiles. A lab's
  * program includes the GLSL of the labs before it, so when it fails, the earliest lab that
  * fails on its own is named and the frame uses the lab before that, as the grader expects. */
-static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_render_params *p, int *lab) {
+static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int *lab) {
     while (*lab >= 2) {
-        _sl_variant_key key = _sl_variant_for(r, p, *lab);
+        _sl_variant_key key = _sl_variant_for(r, scene, p, *lab);
         _sl_slot *slot = _sl_variant_program(r, &key);
         if (slot) return slot;
         int failed = *lab;
         for (int l = 2; l < *lab && failed == *lab; l++) {
-            _sl_variant_key lower = _sl_variant_for(r, p, l);
+            _sl_variant_key lower = _sl_variant_for(r, scene, p, l);
             if (!_sl_variant_program(r, &lower)) failed = l;
         }
         if (!r->info.shader_error) {
@@ -624,9 +628,10 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, r->lab1_min_filter);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, r->lab1_mag_filter);
     }
-    _sl_slot *slot = lab >= 2 ? _sl_camera_program(r, p, &lab) : NULL;
+    _sl_slot *slot = lab >= 2 ? _sl_camera_program(r, scene, p, &lab) : NULL;
     if (!slot) {
-        slot = _sl_fixed_program(r, &r->programs->plain, r->shaders_dir, "plain.vert", "plain.frag", 0);
+        _sl_variant_key plain = _sl_variant_for(r, scene, p, 0);
+        slot = _sl_variant_program(r, &plain);
         if (!slot && !info->shader_error) {
             info->shader_error = r->shader_errors[0];
             info->shader_error_lab = 0;
@@ -652,7 +657,6 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     glUniformMatrix4fv(u->projection, 1, GL_FALSE, (const float *)proj);
     glUniformMatrix4fv(u->shadow_matrix, 1, GL_FALSE, (const float *)info->shadow_matrix);
     const sl_light *l = &scene->light;
-    glUniform1i(u->light_type, (int)l->type);
     glUniform3fv(u->light_position, 1, l->position);
     glUniform3fv(u->light_direction, 1, l->direction);
     vec3 radiance;

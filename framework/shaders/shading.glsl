@@ -1,6 +1,9 @@
 // Lambert shading shared by the camera-pass shaders (framework code).
 uniform int u_output;         // 0 shaded, 1 visibility
-uniform int u_light_type;     // 0 directional, 1 spot, 2 point
+// The light's type (0 directional, 1 spot, 2 point) is compiled in: the
+// framework builds the camera pass per type (#define SL_LIGHT_TYPE), so a
+// directional light's pixels do not also run the spot light's code.
+const int sl_light_type = SL_LIGHT_TYPE;
 uniform vec3 u_light_position;
 uniform vec3 u_light_direction;
 uniform vec3 u_light_radiance;
@@ -9,7 +12,7 @@ uniform vec3 u_albedo;
 
 // Unit vector from a surface point towards the light.
 vec3 sl_direction_to_light(vec3 world_position) {
-    return u_light_type == 0 ? -u_light_direction : normalize(u_light_position - world_position);
+    return sl_light_type == 0 ? -u_light_direction : normalize(u_light_position - world_position);
 }
 
 // The colour of a surface point given the light's visibility there.
@@ -25,7 +28,7 @@ vec4 sl_shade(vec3 world_position, vec3 world_normal, float visibility) {
     }
     if (u_output == 2) return vec4(vec3(n_dot_l > 0.0 ? 1.0 : 0.0), 1.0);
     float cone = 1.0;
-    if (u_light_type == 1) {
+    if (sl_light_type == 1) {
         // soft edge over the outer 10% of the cone
         float c = dot(-to_light, u_light_direction);
         cone = smoothstep(u_spot_cos, mix(u_spot_cos, 1.0, 0.1), c);

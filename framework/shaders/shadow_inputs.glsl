@@ -44,7 +44,7 @@ void sl_biased_lookup(out vec4 shadow_coord, out float bias) {
     } else if (sl_bias_mode == SL_BIAS_MIDPOINT) {
         bias = 0.0; // handled by midpoint_compare (scene_bias.frag)
     } else if (sl_bias_mode == SL_BIAS_NORMAL_OFFSET) {
-        float texel = u_light_type == 0 ? u_texel_size : u_texel_size * distance(u_light_position, v_world_position);
+        float texel = sl_light_type == 0 ? u_texel_size : u_texel_size * distance(u_light_position, v_world_position);
         vec3 moved = normal_offset_position(v_world_position, n, clamp(n_dot_l, 0.0, 1.0), texel, u_normal_offset);
         shadow_coord = u_shadow_matrix * vec4(moved, 1.0);
         bias = u_depth_bias;
