@@ -68,6 +68,7 @@ typedef struct _sl_result {
     bool ran;
     char problem[512];             /* why it did not draw what it says, if so */
     double first_ms;               /* the first frame: builds programs, llvmpipe compiles shaders */
+    int programs;                  /* programs the renderer built */
     double frame_median, frame_min;
     int pass_count;
     const char *pass_names[SL_MAX_PASSES];
@@ -234,6 +235,9 @@ static bool _sl_run_technique(sl_context *ctx, const _sl_bench_options *o, const
     for (int i = 0; i < res->pass_count; i++)
         _sl_median_min(passes + i * o->frames, o->frames, &res->pass_median[i], &res->pass_min[i]);
     _sl_describe_problem(sl_renderer_info(&renderer), t->lab, res->problem, sizeof res->problem);
+    sl_program_stats stats;
+    sl_renderer_program_stats(&renderer, &stats);
+    res->programs = stats.builds;
     res->ran = true;
     free(frames);
     free(passes);
@@ -254,7 +258,7 @@ static void _sl_print_table(const _sl_bench_options *o, const _sl_result *result
     printf("renderer: %s; backend: %s; labs: %s\n", sl_context_renderer_name(), _sl_backend_name(o),
            sl_build_labs_kind);
     printf("%s;\nframe: wall clock of sl_renderer_draw%s + glFinish, median and min; fps = 1000 / median;\n"
-           "first: the first frame, which builds the programs it uses (context: %.0f ms)\n\n",
+           "first: the first frame, which builds the programs it uses (progs: how many; context: %.0f ms)\n\n",
            _sl_timer_note, o->window ? " + swap" : "", context_ms);
     /* one column per pass name, in the order they first ran */
     const char *columns[SL_MAX_PASSES * 2];
@@ -267,7 +271,7 @@ static void _sl_print_table(const _sl_bench_options *o, const _sl_result *result
         }
     printf("%-20s %-15s", "technique", "scene");
     for (int c = 0; c < column_count; c++) printf(" %12s", columns[c]);
-    printf(" | %8s %8s %7s %8s\n", "frame ms", "min ms", "fps", "first ms");
+    printf(" | %8s %8s %7s %8s %5s\n", "frame ms", "min ms", "fps", "first ms", "progs");
     for (int r = 0; r < count; r++) {
         const _sl_result *res = &results[r];
         char name[64];
@@ -279,8 +283,8 @@ static void _sl_print_table(const _sl_bench_options *o, const _sl_result *result
             if (i < res->pass_count) printf(" %12.2f", res->pass_median[i]);
             else printf(" %12s", "-");
         }
-        printf(" | %8.2f %8.2f %7.1f %8.1f\n", res->frame_median, res->frame_min, 1000.0 / res->frame_median,
-               res->first_ms);
+        printf(" | %8.2f %8.2f %7.1f %8.1f %5d\n", res->frame_median, res->frame_min, 1000.0 / res->frame_median,
+               res->first_ms, res->programs);
     }
     printf("\n* the lab's default settings (shadowlab --lab N)\n");
     for (int r = 0; r < count; r++)
@@ -320,6 +324,7 @@ static void _sl_print_json(const _sl_bench_options *o, const _sl_result *results
         cJSON_AddNumberToObject(t, "frame_min_ms", res->frame_min);
         cJSON_AddNumberToObject(t, "fps_median", 1000.0 / res->frame_median);
         cJSON_AddNumberToObject(t, "first_frame_ms", res->first_ms);
+        cJSON_AddNumberToObject(t, "programs_built", res->programs);
         if (res->problem[0]) cJSON_AddStringToObject(t, "problem", res->problem);
         cJSON_AddItemToArray(list, t);
     }
