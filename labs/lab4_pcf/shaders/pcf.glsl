@@ -2,6 +2,10 @@
 // of lab 3 (homogeneous, not yet divided) and the bias, and returns the
 // fraction of the light that reaches the point, 0.0 .. 1.0.
 // Until a filter is written it returns 1.0: no shadow.
+// Speed: the framework builds one program per filter (and per grid radius), so
+// only the filter in use runs, and `radius` arrives as a constant. Work out what
+// is the same for every sample (the divide, p.z - bias, the texel size, the
+// rotation) once, before the loop, not inside it.
 
 // ---- Given: shared by the filters below (no TODO here) --------------------
 
