@@ -122,6 +122,7 @@ typedef struct _sl_slot {
     _sl_uniforms u;
     GLuint located; /* the program id u belongs to: a rebuild changes the id */
     bool attempted;
+    bool compiles;  /* the latest build succeeded (after a failed rebuild, the program is the one before) */
 } _sl_slot;
 
 /* What a camera-pass program is built for: each field is a compile-time constant in its GLSL. */
@@ -177,6 +178,7 @@ static bool _sl_slot_build(sl_renderer *r, _sl_slot *s, const char *vs_dir, cons
     double start = _sl_now_ms();
     s->attempted = true;
     bool ok = sl_program_build(&s->program, &desc, r->shader_errors[lab], sizeof r->shader_errors[lab]);
+    s->compiles = ok;
     r->programs->builds++;
     r->programs->build_ms += _sl_now_ms() - start;
     return ok;
@@ -193,9 +195,11 @@ static bool _sl_slot_reload(sl_renderer *r, _sl_slot *s, int lab, bool *reloaded
     }
     if (rebuilt) {
         r->shader_errors[lab][0] = '\0';
+        s->compiles = true;
         if (reloaded) *reloaded = true;
     } else if (e[0]) {
         snprintf(r->shader_errors[lab], sizeof r->shader_errors[lab], "%s", e);
+        s->compiles = false;
         return false;
     }
     return true;
@@ -583,24 +587,23 @@ static _sl_variant_key _sl_variant_for(const sl_renderer *r, const sl_scene *sce
     return key;
 }
 
-/* The camera-pass program of the highest lab (at most *lab) whose GLSL compiles. A lab's
- * program includes the GLSL of the labs before it, so when it fails, the earliest lab that
- * fails on its own is named and the frame uses the lab before that, as the grader expects. */
+/* The camera-pass program of the highest lab, at most *lab, that has one: built now, or the
+ * last version that compiled (hot reload). A lab's program includes the GLSL of the labs
+ * before it, so when one fails, the error names the earliest lab whose GLSL fails. */
 static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int *lab) {
-    while (*lab >= 2) {
+    for (; *lab >= 2; (*lab)--) {
         _sl_variant_key key = _sl_variant_for(r, scene, p, *lab);
         _sl_slot *slot = _sl_variant_program(r, &key);
         if (slot) return slot;
+        if (r->info.shader_error) continue;
         int failed = *lab;
         for (int l = 2; l < *lab && failed == *lab; l++) {
             _sl_variant_key lower = _sl_variant_for(r, scene, p, l);
-            if (!_sl_variant_program(r, &lower)) failed = l;
+            _sl_slot *lower_slot = _sl_variant_program(r, &lower);
+            if (!lower_slot || !lower_slot->compiles) failed = l;
         }
-        if (!r->info.shader_error) {
-            r->info.shader_error = r->shader_errors[failed];
-            r->info.shader_error_lab = failed;
-        }
-        *lab = failed - 1;
+        r->info.shader_error = r->shader_errors[failed];
+        r->info.shader_error_lab = failed;
     }
     return NULL;
 }
