@@ -174,8 +174,10 @@ static void _sl_params_for(const _sl_technique *t, int map_size, sl_render_param
 static void _sl_describe_problem(const sl_frame_info *info, int lab, char *out, size_t n) {
     out[0] = '\0';
     size_t len = 0;
-    if (info->lab_in_use < lab)
-        len += (size_t)snprintf(out + len, n - len, "drew with lab %d's code only", info->lab_in_use);
+    if (info->lab_in_use == 0)
+        len += (size_t)snprintf(out + len, n - len, "drew without shadows: no lab's code ran");
+    else if (info->lab_in_use < lab)
+        len += (size_t)snprintf(out + len, n - len, "drew with labs 1-%d only", info->lab_in_use);
     for (int i = 0; i < info->not_implemented_count && len < n; i++)
         len += (size_t)snprintf(out + len, n - len, "%s%s()", i ? ", " : "; not implemented: ",
                                 info->not_implemented[i]);
