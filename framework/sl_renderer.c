@@ -105,10 +105,10 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
  * constant bounds unroll. Uniform locations are looked up once per build. */
 
 /* Every uniform the framework sets, as u_<name> in the GLSL. */
-#define _SL_UNIFORMS(X)                                                                                            \
-    X(model) X(normal_matrix) X(albedo) X(view) X(projection) X(shadow_matrix) X(light_view_projection)          \
-    X(light_position) X(light_direction) X(light_radiance) X(spot_cos) X(shadows) X(output)         \
-    X(depth_bias) X(second_map) X(slope_bias) X(max_bias) X(normal_offset) X(texel_size) X(poisson_radius)        \
+#define _SL_UNIFORMS(X)                                                                                   \
+    X(model) X(normal_matrix) X(albedo) X(view) X(projection) X(shadow_matrix) X(light_view_projection)   \
+    X(light_position) X(light_direction) X(light_radiance) X(spot_cos) X(shadows) X(output) X(depth_bias) \
+    X(second_map) X(slope_bias) X(max_bias) X(normal_offset) X(texel_size) X(poisson_radius)              \
     X(light_size_uv) X(light_near) X(light_far) X(shadow_map) X(texture) X(perspective) X(near) X(far)
 
 typedef struct _sl_uniforms {
@@ -324,13 +324,12 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
     bool ok = true;
     /* Rebuilt now: what the last frame drew with (so a save shows at once and its errors are
      * reported), and any program that never compiled (so a fix switches its lab back on). */
-    struct { _sl_slot *slot; int lab; } now[2 + _SL_MAX_VARIANTS];
-    int n = 0;
-    now[n++].slot = &ps->depth, now[n - 1].lab = 1;
-    now[n++].slot = &ps->debug, now[n - 1].lab = 0;
+    typedef struct { _sl_slot *slot; int lab; } watched;
+    watched now[2 + _SL_MAX_VARIANTS] = {{&ps->depth, 1}, {&ps->debug, 0}};
+    int n = 2;
     for (int i = 0; i < ps->variant_count; i++) {
         _sl_variant *v = &ps->variants[i];
-        if (v->last_used == ps->frame || !v->slot.program.id) now[n].slot = &v->slot, now[n++].lab = v->key.lab;
+        if (v->last_used == ps->frame || !v->slot.program.id) now[n++] = (watched){&v->slot, v->key.lab};
         else if (!v->stale && sl_program_files_changed(&v->slot.program)) v->stale = true;
     }
     for (int i = 0; i < n; i++) {
