@@ -76,6 +76,11 @@ static void _sl_dirname(const char *path, char *out, size_t n) {
 
 typedef struct _sl_pp {
     const char *const *search_dirs;
+    /* Included files must lie in one of these (real paths): the search
+     * folders and the main file's folder, so lab code cannot pull in files
+     * from elsewhere on the machine (other labs' solutions, references). */
+    char roots[SL_SHADER_MAX_DIRS + 1][SL_PATH_MAX];
+    int root_count;
     char (*files)[SL_PATH_MAX];
     int file_count;
     char *err;
@@ -99,17 +104,41 @@ static int _sl_register_file(_sl_pp *pp, const char *path, bool *already) {
 
 static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth);
 
-/* Resolves an #include name: the including file's folder first, then the search folders. */
-static bool _sl_resolve_include(_sl_pp *pp, const char *from, const char *name, char *out, size_t n) {
-    char dir[SL_PATH_MAX];
-    _sl_dirname(from, dir, sizeof dir);
-    snprintf(out, n, "%s/%s", dir, name);
-    if (_sl_file_exists(out)) return true;
-    for (int i = 0; pp->search_dirs && i < SL_SHADER_MAX_DIRS && pp->search_dirs[i]; i++) {
-        snprintf(out, n, "%s/%s", pp->search_dirs[i], name);
-        if (_sl_file_exists(out)) return true;
+static void _sl_add_root(_sl_pp *pp, const char *dir) {
+    char real[PATH_MAX];
+    if (pp->root_count <= SL_SHADER_MAX_DIRS && realpath(dir, real))
+        snprintf(pp->roots[pp->root_count++], SL_PATH_MAX, "%s", real);
+}
+
+static bool _sl_inside_roots(const _sl_pp *pp, const char *path) {
+    char real[PATH_MAX];
+    if (!realpath(path, real)) return false;
+    for (int i = 0; i < pp->root_count; i++) {
+        size_t n = strlen(pp->roots[i]);
+        if (strncmp(real, pp->roots[i], n) == 0 && (real[n] == '/' || (n == 1 && pp->roots[i][0] == '/'))) return true;
     }
     return false;
+}
+
+/* Resolves an #include name: the including file's folder first, then the
+ * search folders. 0: found; 1: not found; 2: found, but outside the roots. */
+static int _sl_resolve_include(_sl_pp *pp, const char *from, const char *name, char *out, size_t n) {
+    char dir[SL_PATH_MAX];
+    bool outside = false;
+    _sl_dirname(from, dir, sizeof dir);
+    snprintf(out, n, "%s/%s", dir, name);
+    if (_sl_file_exists(out)) {
+        if (_sl_inside_roots(pp, out)) return 0;
+        outside = true;
+    }
+    for (int i = 0; pp->search_dirs && i < SL_SHADER_MAX_DIRS && pp->search_dirs[i]; i++) {
+        snprintf(out, n, "%s/%s", pp->search_dirs[i], name);
+        if (_sl_file_exists(out)) {
+            if (_sl_inside_roots(pp, out)) return 0;
+            outside = true;
+        }
+    }
+    return outside ? 2 : 1;
 }
 
 static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth) {
@@ -169,7 +198,16 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
                 ok = false;
                 break;
             }
-            if (!_sl_resolve_include(pp, path, name, resolved, sizeof resolved)) {
+            int found = name[0] == '/' ? 2 : _sl_resolve_include(pp, path, name, resolved, sizeof resolved);
+            if (found == 2) {
+                snprintf(pp->err, pp->err_size,
+                         "%s:%d: error: #include \"%s\" reaches outside the shader folders (the labs folder and "
+                         "framework/shaders): include files from there only",
+                         path, line_no, name);
+                ok = false;
+                break;
+            }
+            if (found == 1) {
                 snprintf(pp->err, pp->err_size, "%s:%d: error: cannot find included file \"%s\"", path, line_no, name);
                 ok = false;
                 break;
@@ -201,6 +239,10 @@ char *sl_shader_preprocess(const char *path, const char *const *search_dirs, con
         .err_size = err ? err_size : sizeof dummy_err,
         .defines = defines,
     };
+    char main_dir[SL_PATH_MAX];
+    _sl_dirname(path, main_dir, sizeof main_dir);
+    _sl_add_root(&pp, main_dir);
+    for (int i = 0; search_dirs && i < SL_SHADER_MAX_DIRS && search_dirs[i]; i++) _sl_add_root(&pp, search_dirs[i]);
     _sl_strbuf out = {0};
     bool ok = _sl_expand(&pp, &out, path, 0);
     if (file_count) *file_count = pp.file_count;

@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sl_params.h"
+
 static const struct {
     const char *name;
     const char *reference;
@@ -26,6 +28,28 @@ const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name
 const char *sl_check_reference_file(sl_check_kind kind) { return _sl_kinds[kind].reference; }
 const char *sl_check_capture_name(sl_check_kind kind) {
     return kind == SL_CHECK_PENUMBRA ? "visibility" : _sl_kinds[kind].name;
+}
+
+uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
+    switch (k->kind) {
+    case SL_CHECK_FBO: return 1u << SL_CAPTURE_FBO;
+    case SL_CHECK_DEPTH_MAP: return 1u << SL_CAPTURE_DEPTH_MAP;
+    case SL_CHECK_MATRICES: return 1u << SL_CAPTURE_MATRICES;
+    case SL_CHECK_VISIBILITY:
+        /* from lab 3 on, acne is told from shadow on the surfaces that face the light */
+        return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 3 ? 1u << SL_CAPTURE_LIT_MASK : 0);
+    case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
+    case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
+    default: return 0;
+    }
+}
+
+bool sl_case_name_valid(const char *name) {
+    if (!*name) return false;
+    for (const char *p = name; *p; p++)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') || *p == '_' || *p == '-'))
+            return false;
+    return true;
 }
 
 static bool _sl_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path,
@@ -174,9 +198,12 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
     const char *scene = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "scene"));
     const cJSON *lab = cJSON_GetObjectItemCaseSensitive(json, "lab");
     const cJSON *checks = cJSON_GetObjectItemCaseSensitive(json, "checks");
-    double width = 256, height = 256, timeout = 20;
+    double width = 256, height = 256, timeout = 20, memory = 4096;
     if (!name || !*name) {
         snprintf(err, n, "%s: missing \"name\"", path);
+    } else if (!sl_case_name_valid(name) || strlen(name) >= sizeof c->name) {
+        snprintf(err, n, "%s: \"name\" must be letters, digits, '_' and '-' (at most %zu): it names folders and files",
+                 path, sizeof c->name - 1);
     } else if (!cJSON_IsNumber(lab) || lab->valueint < 1 || lab->valueint > 7) {
         snprintf(err, n, "%s: \"lab\" must be a number 1..7", path);
     } else if (!scene) {
@@ -186,13 +213,15 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
         snprintf(err, n, "%s: \"checks\" must be an array of 1..%d checks", path, SL_CASE_MAX_CHECKS);
     } else if (_sl_number(json, "width", &width, 16, 2048, path, err, n) &&
                _sl_number(json, "height", &height, 16, 2048, path, err, n) &&
-               _sl_number(json, "timeout", &timeout, 1, 3600, path, err, n)) {
+               _sl_number(json, "timeout", &timeout, 1, 3600, path, err, n) &&
+               _sl_number(json, "memory_mb", &memory, 256, 65536, path, err, n)) {
         snprintf(c->name, sizeof c->name, "%s", name);
         snprintf(c->title, sizeof c->title, "%s", title ? title : name);
         c->lab = lab->valueint;
         c->width = (int)width;
         c->height = (int)height;
         c->timeout_seconds = timeout;
+        c->memory_mb = memory;
         char scene_err[1024];
         ok = sl_scene_load(&c->scene, scene, scene_err, sizeof scene_err);
         if (!ok) snprintf(err, n, "%s: scene %s", path, scene_err);

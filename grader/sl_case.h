@@ -6,12 +6,14 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
-#include "sl_renderer.h"
+#include "sl_params.h"
+#include "sl_protocol.h"
 #include "sl_scene.h"
 
 #define SL_CASE_MAX_CHECKS 8
-#define SL_CASE_MAX_FRAMES 16
+#define SL_CASE_MAX_FRAMES SL_JOB_MAX_FRAMES
 
 typedef enum sl_check_kind {
     SL_CHECK_FBO,        /* the shadow map's framebuffer and texture (no reference) */
@@ -55,6 +57,8 @@ typedef struct sl_case {
     sl_render_params params;
     int width, height;
     double timeout_seconds;
+    double memory_mb;     /* the runner's address space (default 4096) */
+    double reference_cpu_seconds; /* what the solutions took (from the references' manifest); 0: unknown */
     sl_check checks[SL_CASE_MAX_CHECKS];
     int check_count;
 } sl_case;
@@ -62,6 +66,10 @@ typedef struct sl_case {
 const char *sl_check_kind_name(sl_check_kind kind);
 /* The capture a check compares ("visibility", "depth_map", ...). */
 const char *sl_check_capture_name(sl_check_kind kind);
+/* Every capture a check needs of the runner, as bits (1 << sl_capture_kind). */
+uint32_t sl_check_captures(const sl_case *c, const sl_check *k);
+/* Case names become folder and file names: letters, digits, '_' and '-' only. */
+bool sl_case_name_valid(const char *name);
 /* The file a check's reference lives in, relative to the references folder. */
 const char *sl_check_reference_file(sl_check_kind kind); /* NULL: needs none */
 

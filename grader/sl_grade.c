@@ -12,7 +12,14 @@
 #include <cjson/cJSON.h>
 
 #include "sl_compare.h"
+#include "sl_files.h"
 #include "sl_json.h"
+
+/* A case taking this many times the solutions' CPU time (and this many
+ * seconds more) is stuck in a loop: far beyond what another machine or a
+ * slower but correct implementation explains. */
+#define _SL_SLOW_FACTOR 20.0
+#define _SL_SLOW_MARGIN 10.0
 
 /* The TODO tags a stub's message points to. */
 static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
@@ -85,7 +92,12 @@ static bool _sl_explain_missing(const sl_case *c, const sl_case_result *r, sl_ch
 }
 
 static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *out) {
-    if (r->timed_out) {
+    if (r->interrupted) {
+        _sl_say(out, "not graded: the grader was stopped before this case finished");
+    } else if (r->protocol_error[0]) {
+        _sl_say(out, "the case's results broke the rules of the grader's channel (%s): nothing it sent counts. "
+                     "Lab code must not write to file descriptor 3 or replace the process", r->protocol_error);
+    } else if (r->timed_out) {
         _sl_say(out, "timed out after %.0f s%s%s%s", r->seconds, r->crashed_in[0] ? " in " : "",
                 r->crashed_in, r->crashed_in[0] ? "() (an endless loop?)" : "");
     } else if (r->signal) {
@@ -97,11 +109,32 @@ static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *ou
         _sl_say(out, "the case stopped early (exit status %d)%s%s%s", r->exit_code, r->crashed_in[0] ? " in " : "",
                 r->crashed_in, r->crashed_in[0] ? "()" : "");
     }
+    /* What the process printed last often says why (a library missing, an assertion). */
+    if (!r->interrupted && !r->protocol_error[0] && !r->error[0] && r->output_tail[0]) {
+        const char *end = r->output_tail + strlen(r->output_tail);
+        while (end > r->output_tail && end[-1] == '\n') end--;
+        const char *start = end;
+        while (start > r->output_tail && start[-1] != '\n') start--;
+        if (end > start) _sl_append(out, "; its output ended with: %.*s", (int)(end - start > 300 ? 300 : end - start), start);
+    }
 }
 
 /* ---- references ---- */
 
-void sl_reference_load(sl_reference *ref, const char *dir, const sl_case *c, const sl_check *k) {
+/* A reference must fit its case: an image of the camera's size, a depth map of the map's. */
+static bool _sl_reference_fits(sl_reference *ref, const sl_case *c, const sl_check *k) {
+    const sl_image *img = &ref->image;
+    int w = c->width, h = c->height, channels = k->kind == SL_CHECK_IMAGE ? 3 : 1;
+    if (k->kind == SL_CHECK_DEPTH_MAP) w = h = c->params.shadow_map_size;
+    if (img->width == w && img->height == h && img->channels == channels) return true;
+    snprintf(ref->error, sizeof ref->error, "reference does not fit its case: %s is %dx%dx%d, the case makes %dx%dx%d",
+             ref->path, img->width, img->height, img->channels, w, h, channels);
+    sl_image_free(&ref->image);
+    return false;
+}
+
+void sl_reference_load(sl_reference *ref, const char *dir, const sl_manifest *manifest, const char *manifest_error,
+                       const sl_case *c, const sl_check *k) {
     memset(ref, 0, sizeof *ref);
     const char *file = sl_check_reference_file(k->kind);
     if (!file) return;
@@ -140,32 +173,26 @@ void sl_reference_load(sl_reference *ref, const char *dir, const sl_case *c, con
             snprintf(ref->error, sizeof ref->error, "reference corrupt: %s", err);
             return;
         }
-        if ((k->kind == SL_CHECK_VISIBILITY || k->kind == SL_CHECK_PENUMBRA) && ref->image.channels != 1) {
-            snprintf(ref->error, sizeof ref->error, "reference corrupt: %s has %d channels, expected 1", ref->path, ref->image.channels);
-            sl_image_free(&ref->image);
-            return;
-        }
+        if (!_sl_reference_fits(ref, c, k)) return;
+    }
+    char why[1500];
+    if (!manifest) {
+        snprintf(ref->error, sizeof ref->error, "references cannot be verified: %s", manifest_error);
+        sl_image_free(&ref->image);
+        return;
+    }
+    if (!sl_manifest_verify(manifest, c->name, file, ref->path, why, sizeof why)) {
+        snprintf(ref->error, sizeof ref->error, "%s", why);
+        sl_image_free(&ref->image);
+        return;
     }
     ref->loaded = true;
 }
 
 void sl_reference_free(sl_reference *ref) { sl_image_free(&ref->image); }
 
-bool sl_mkdirs(const char *path) {
-    char tmp[1100];
-    snprintf(tmp, sizeof tmp, "%s", path);
-    for (char *p = tmp + 1; *p; p++) {
-        if (*p != '/') continue;
-        *p = '\0';
-        mkdir(tmp, 0755);
-        *p = '/';
-    }
-    struct stat st;
-    return mkdir(tmp, 0755) == 0 || (stat(tmp, &st) == 0 && S_ISDIR(st.st_mode));
-}
-
-bool sl_reference_write(const char *dir, const sl_case *c, const sl_check *k, const sl_case_result *r, char *err,
-                        size_t err_size) {
+bool sl_reference_write(const char *dir, sl_manifest *manifest, const sl_case *c, const sl_check *k,
+                        const sl_case_result *r, char *err, size_t err_size) {
     const char *file = sl_check_reference_file(k->kind);
     if (!file) return true;
     char folder[1100], path[1200];
@@ -182,23 +209,23 @@ bool sl_reference_write(const char *dir, const sl_case *c, const sl_check *k, co
                  r->not_implemented_count ? "a stub is not implemented" : r->error[0] ? r->error : "see the case");
         return false;
     }
+    bool ok;
     if (k->kind == SL_CHECK_MATRICES) {
         static const char *keys[3] = {"light_view", "light_projection", "shadow_matrix"};
-        FILE *f = fopen(path, "w");
-        if (!f) {
-            snprintf(err, err_size, "%s: cannot write", path);
-            return false;
-        }
-        fprintf(f, "{\n");
+        sl_atomic_file f;
+        if (!sl_atomic_open(&f, path, err, err_size)) return false;
+        fprintf(f.f, "{\n");
         for (int m = 0; m < 3; m++) {
-            fprintf(f, "  \"%s\": [", keys[m]);
-            for (int i = 0; i < 16; i++) fprintf(f, "%s%.9g", i ? ", " : "", cap->numbers[m * 16 + i]);
-            fprintf(f, "]%s\n", m < 2 ? "," : "");
+            fprintf(f.f, "  \"%s\": [", keys[m]);
+            for (int i = 0; i < 16; i++) fprintf(f.f, "%s%.9g", i ? ", " : "", cap->numbers[m * 16 + i]);
+            fprintf(f.f, "]%s\n", m < 2 ? "," : "");
         }
-        fprintf(f, "}\n");
-        return fclose(f) == 0;
+        fprintf(f.f, "}\n");
+        ok = sl_atomic_commit(&f, err, err_size);
+    } else {
+        ok = sl_atomic_write_image(path, &cap->image, err, err_size);
     }
-    return sl_image_write(path, &cap->image, err, err_size);
+    return ok && sl_manifest_record(manifest, c->name, file, path, r->cpu_seconds, err, err_size);
 }
 
 /* ---- checks ---- */
@@ -704,6 +731,14 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     }
     if (!r->finished && !(r->capture_count > 0 && !r->signal && !r->timed_out && !r->error[0])) {
         _sl_explain_run_failure(r, out);
+        return;
+    }
+    /* The software renderer cuts endlessly long shader loops short, so such a
+     * case can end with a plausible picture, only many times slower. */
+    double ref_cpu = c->reference_cpu_seconds;
+    if (ref_cpu > 0 && r->cpu_seconds > fmax(_SL_SLOW_FACTOR * ref_cpu, ref_cpu + _SL_SLOW_MARGIN)) {
+        _sl_say(out, "took %.1f s of CPU time where the solutions take %.1f s: an endless or far too long loop "
+                     "(in a shader, the renderer stops it and the picture may even look right)", r->cpu_seconds, ref_cpu);
         return;
     }
     /* A stub of this lab (or an earlier one) fails the check even if the picture
