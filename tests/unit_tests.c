@@ -1,7 +1,9 @@
 /* Unit tests of the parts that need no GL: comparison, shader preprocessing
  * and error mapping, case and scene files, meshes. Run one with its name:
  *   sl_unit_tests compare_neighbourhood */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE
+#include <stdint.h>
+#include <sys/stat.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,6 +17,9 @@
 #include "sl_grade.h"
 #include "sl_mesh.h"
 #include "sl_scene.h"
+#include "sl_protocol.h"
+#include "sl_run.h"
+#include "sl_sha256.h"
 #include "sl_shader.h"
 
 static int failures;
@@ -130,6 +135,41 @@ static void test_shader_missing_include(void) {
     char *src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
     CHECK(src == NULL);
     CHECK(strstr(err, "bad.frag:3: error: cannot find included file \"nowhere.glsl\"") != NULL);
+    free(src);
+}
+
+/* An #include that resolves outside the shader folders is refused, whether
+ * by a relative path climbing out or by an absolute one. */
+static void test_shader_include_stays_inside(void) {
+    char dir[300], outside[300], path[512], files[SL_SHADER_MAX_FILES][SL_PATH_MAX], err[1024] = "";
+    snprintf(dir, sizeof dir, "%s/inside", tmp_dir);
+    snprintf(outside, sizeof outside, "%s/secret.glsl", tmp_dir);
+    CHECK(mkdir(dir, 0755) == 0);
+    write_file("secret.glsl", "float answer() { return 42.0; }\n");
+    write_file("inside/ok.glsl", "float ok() { return 1.0; }\n");
+    write_file("inside/climb.frag", "#version 330 core\n#include \"ok.glsl\"\n#include \"../secret.glsl\"\n");
+    char absolute[700];
+    snprintf(absolute, sizeof absolute, "#version 330 core\n#include \"%s\"\n", outside);
+    write_file("inside/absolute.frag", absolute);
+    const char *dirs[] = {dir, NULL};
+    int count = 0;
+    snprintf(path, sizeof path, "%s/climb.frag", dir);
+    char *src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src == NULL);
+    CHECK(strstr(err, "climb.frag:3: error: #include \"../secret.glsl\" reaches outside the shader folders") != NULL);
+    free(src);
+    snprintf(path, sizeof path, "%s/absolute.frag", dir);
+    src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src == NULL && strstr(err, "absolute.frag:2: error: #include") && strstr(err, "reaches outside"));
+    free(src);
+    /* a link inside that points outside is outside too */
+    char link_path[400];
+    snprintf(link_path, sizeof link_path, "%s/link.glsl", dir);
+    CHECK(symlink(outside, link_path) == 0);
+    write_file("inside/via_link.frag", "#version 330 core\n#include \"link.glsl\"\n");
+    snprintf(path, sizeof path, "%s/via_link.frag", dir);
+    src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src == NULL && strstr(err, "reaches outside"));
     free(src);
 }
 
@@ -340,6 +380,129 @@ static void test_grade_run_failures(void) {
     CHECK(out.reference_problem && strstr(out.message, "reference missing") != NULL);
 }
 
+/* A stream as a runner (or lab code posing as one) would write it. */
+typedef struct stream {
+    char data[1 << 16];
+    size_t size;
+} stream;
+
+static void put(stream *s, uint32_t type, const char *name, const void *payload, uint64_t length, uint64_t claimed) {
+    sl_message_header h = {type, name ? (uint32_t)strlen(name) : 0, claimed};
+    memcpy(s->data + s->size, &h, sizeof h);
+    s->size += sizeof h;
+    if (h.name_length) memcpy(s->data + s->size, name, h.name_length);
+    s->size += h.name_length;
+    if (length) memcpy(s->data + s->size, payload, (size_t)length);
+    s->size += (size_t)length;
+}
+
+static void put_visibility(stream *s, int w, int h, int channels) {
+    static char buf[SL_IMAGE_HEADER_BYTES + 16 * 16 * 3 * sizeof(float)];
+    int32_t dims[3] = {w, h, channels};
+    memcpy(buf, dims, sizeof dims);
+    size_t n = SL_IMAGE_HEADER_BYTES + (size_t)w * (size_t)h * (size_t)channels * sizeof(float);
+    put(s, SL_MSG_IMAGE, "visibility", buf, n, n);
+}
+
+/* The grader's side of the channel refuses every lie about lengths and
+ * captures, and takes a well-formed stream. */
+static void test_channel_rejects_lies(void) {
+    sl_case c = grade_case(2, SL_CHECK_VISIBILITY);
+    c.width = c.height = 16;
+    sl_case_result r;
+    static stream s;
+    /* well-formed */
+    s.size = 0;
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nllvmpipe \033[2Jx", 23, 23);
+    put_visibility(&s, 16, 16, 1);
+    put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(r.finished && !r.protocol_error[0] && r.capture_count == 1);
+    CHECK(strcmp(r.backend, "osmesa") == 0 && strchr(r.renderer, '\033') == NULL); /* escapes removed */
+    sl_case_result_free(&r);
+    /* a payload length near 2^64: refused at the header, nothing allocated */
+    s.size = 0;
+    put(&s, SL_MSG_IMAGE, "visibility", NULL, 0, UINT64_MAX - 8);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(!r.finished && strstr(r.protocol_error, "bytes where at most") != NULL);
+    /* a name length of 2^32 - 1 */
+    s.size = 0;
+    sl_message_header h = {SL_MSG_STAGE, UINT32_MAX, 0};
+    memcpy(s.data, &h, sizeof h);
+    s.size = sizeof h;
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "malformed name") != NULL);
+    /* the same capture twice */
+    s.size = 0;
+    put_visibility(&s, 16, 16, 1);
+    put_visibility(&s, 16, 16, 1);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "\"visibility\" twice") != NULL);
+    sl_case_result_free(&r);
+    /* a capture the case did not ask for */
+    s.size = 0;
+    double numbers[SL_MATRICES_NUMBERS] = {0};
+    put(&s, SL_MSG_NUMBERS, "depth_map", numbers, sizeof numbers, sizeof numbers);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "did not ask for") != NULL);
+    /* an image whose size is not the case's */
+    s.size = 0;
+    put_visibility(&s, 8, 8, 1);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "does not add up") != NULL && r.capture_count == 0);
+    /* anything after DONE */
+    s.size = 0;
+    put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
+    put(&s, SL_MSG_STAGE, "lab1_create_shadow_map", NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(!r.finished && strstr(r.protocol_error, "after DONE") != NULL);
+    /* an unknown type, and a name with characters no function has */
+    s.size = 0;
+    put(&s, 99, NULL, NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "unknown message type") != NULL);
+    s.size = 0;
+    put(&s, SL_MSG_NOT_IMPLEMENTED, "../x", NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "malformed name") != NULL);
+    /* a stream cut off mid-message: not finished, no error (a crash) */
+    s.size = 0;
+    put(&s, SL_MSG_STAGE, "lab2_light_view", NULL, 0, 0);
+    put_visibility(&s, 16, 16, 1);
+    sl_run_parse_stream(&c, s.data, s.size - 10, &r);
+    CHECK(!r.finished && !r.protocol_error[0] && strcmp(r.crashed_in, "lab2_light_view") == 0);
+}
+
+static void test_sha256_known_answers(void) {
+    /* FIPS 180-4 examples */
+    sl_sha256 h;
+    char hex[65];
+    sl_sha256_init(&h);
+    sl_sha256_update(&h, "abc", 3);
+    sl_sha256_hex(&h, hex);
+    CHECK(strcmp(hex, "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad") == 0);
+    sl_sha256_init(&h);
+    const char *two = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";
+    sl_sha256_update(&h, two, strlen(two));
+    sl_sha256_hex(&h, hex);
+    CHECK(strcmp(hex, "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1") == 0);
+    sl_sha256_init(&h);
+    sl_sha256_hex(&h, hex);
+    CHECK(strcmp(hex, "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855") == 0);
+    /* a million 'a's, fed in uneven pieces */
+    sl_sha256_init(&h);
+    char chunk[997];
+    memset(chunk, 'a', sizeof chunk);
+    size_t left = 1000000;
+    while (left > 0) {
+        size_t n = left < sizeof chunk ? left : sizeof chunk;
+        sl_sha256_update(&h, chunk, n);
+        left -= n;
+    }
+    sl_sha256_hex(&h, hex);
+    CHECK(strcmp(hex, "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0") == 0);
+}
+
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
@@ -353,6 +516,9 @@ int main(int argc, char **argv) {
         {"grade_names_peter_panning", test_grade_names_peter_panning},
         {"grade_penumbra_inverted", test_grade_penumbra_inverted},
         {"grade_run_failures", test_grade_run_failures},
+        {"shader_include_stays_inside", test_shader_include_stays_inside},
+        {"channel_rejects_lies", test_channel_rejects_lies},
+        {"sha256_known_answers", test_sha256_known_answers},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
