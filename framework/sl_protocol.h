@@ -69,6 +69,7 @@ typedef enum sl_message_type {
     SL_MSG_CAPTURE_ERROR,   /* name: a capture; payload: why it could not be taken */
     SL_MSG_IMAGE,           /* name: a capture; payload: int32 width, height, channels, then floats */
     SL_MSG_NUMBERS,         /* name: a capture; payload: doubles */
+    SL_MSG_RENDER_TIME,     /* payload: one double, the CPU seconds the case's frames took */
     SL_MSG_DONE,            /* every capture was sent */
     SL_MSG_TYPE_END
 } sl_message_type;

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -317,6 +318,12 @@ static int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report 
     return count;
 }
 
+/* The same renderer family: the first word ("llvmpipe", "softpipe", a GPU's maker). */
+static bool _sl_same_renderer(const char *a, const char *b) {
+    size_t n = strcspn(a, " ");
+    return n > 0 && n == strcspn(b, " ") && strncmp(a, b, n) == 0;
+}
+
 static void _sl_list(const sl_case *cases, int count, const sl_grade_report *rep) {
     for (int i = 0; i < count; i++) {
         printf("lab %d  %-36s %s (", cases[i].lab, cases[i].name, cases[i].title);
@@ -341,6 +348,7 @@ static int _sl_update_references(const _sl_options *o, sl_case *cases, int count
         return SL_EXIT_ERROR;
     }
     for (int i = 0; i < count; i++) {
+        if (results[i].renderer[0]) sl_manifest_set_renderer(manifest, results[i].renderer);
         for (int k = 0; k < cases[i].check_count; k++) {
             if (!sl_check_reference_file(cases[i].checks[k].kind)) continue;
             if (!results[i].finished) {
@@ -496,6 +504,20 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         return SL_EXIT_ERROR;
     }
     sl_sandbox_describe(sandbox, rep.sandbox, sizeof rep.sandbox);
+    /* Below the namespaces level the runners see the real file system: say
+     * plainly when the answers are within their reach. */
+    const char *sensitive[3] = {o.refs_dir, o.cases_dir, sl_config_solutions_dir[0] ? sl_config_solutions_dir : NULL};
+    const char *what[3] = {"the references", "the case files", "the solutions"};
+    bool readable[3];
+    int sensitive_count = sensitive[2] ? 3 : 2;
+    if (sl_sandbox_readable(sandbox, sensitive, sensitive_count, readable) > 0) {
+        char list[200] = "";
+        for (int i = 0; i < sensitive_count; i++)
+            if (readable[i])
+                snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", list[0] ? ", " : "", what[i]);
+        snprintf(rep.sandbox + strlen(rep.sandbox), sizeof rep.sandbox - strlen(rep.sandbox),
+                 "; lab code can read %s: grade with --strict for a grade no submission can forge", list);
+    }
     if (o.strict && sandbox->level < SL_SANDBOX_NAMESPACES) {
         fprintf(stderr, "shadowlab-grade: --strict: the runners would get only the %s sandbox (%s). Grade as root, or "
                         "where unprivileged user namespaces are allowed (sysctl kernel.unprivileged_userns_clone=1; "
@@ -507,11 +529,13 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     /* Every reference is read and verified in this process, which runs no lab code. */
     static sl_reference refs[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
     sl_manifest *manifest = NULL;
+    char reference_renderer[160] = "";
     if (!o.update) {
         char manifest_error[1500] = "";
         manifest = sl_manifest_load(o.refs_dir, false, manifest_error, sizeof manifest_error);
         for (int i = 0; i < count; i++) {
-            if (manifest) cases[i].reference_cpu_seconds = sl_manifest_cpu_seconds(manifest, cases[i].name);
+            if (manifest) cases[i].reference_render_seconds = sl_manifest_render_seconds(manifest, cases[i].name);
+            if (manifest) snprintf(reference_renderer, sizeof reference_renderer, "%s", sl_manifest_renderer(manifest));
             for (int k = 0; k < cases[i].check_count; k++)
                 sl_reference_load(&refs[i * SL_CASE_MAX_CHECKS + k], o.refs_dir, manifest, manifest_error, &cases[i],
                                   &cases[i].checks[k]);
@@ -537,6 +561,8 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             graded[i].result = &results[i];
             graded[i].references = &refs[i * SL_CASE_MAX_CHECKS];
             rep.cases_finished += !results[i].interrupted;
+            /* Frame times compare only on the renderer the references were made with. */
+            if (!_sl_same_renderer(results[i].renderer, reference_renderer)) cases[i].reference_render_seconds = 0;
             if (!rep.backend[0] && results[i].backend[0]) {
                 snprintf(rep.backend, sizeof rep.backend, "%s", results[i].backend);
                 snprintf(rep.renderer, sizeof rep.renderer, "%s", results[i].renderer);
@@ -569,6 +595,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
 }
 
 int sl_grader_main(int argc, char **argv) {
+    /* Not dumpable: a process of the same uid (a runner in the basic sandbox)
+     * can then neither trace this one nor open its memory or fds in /proc. */
+    prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
     struct sigaction sa = {.sa_handler = _sl_on_signal};
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);

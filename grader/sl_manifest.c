@@ -1,6 +1,7 @@
 #include "sl_manifest.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -74,13 +75,13 @@ bool sl_manifest_verify(const sl_manifest *m, const char *case_name, const char 
     return true;
 }
 
-double sl_manifest_cpu_seconds(const sl_manifest *m, const char *case_name) {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(_sl_case_entry(m, case_name), "cpu_seconds");
+double sl_manifest_render_seconds(const sl_manifest *m, const char *case_name) {
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(_sl_case_entry(m, case_name), "render_seconds");
     return cJSON_IsNumber(v) && v->valuedouble > 0 ? v->valuedouble : 0;
 }
 
-bool sl_manifest_record(sl_manifest *m, const char *case_name, const char *file, const char *path, double cpu_seconds,
-                        char *err, size_t n) {
+bool sl_manifest_record(sl_manifest *m, const char *case_name, const char *file, const char *path,
+                        double render_seconds, char *err, size_t n) {
     char hash[65];
     if (!sl_sha256_file(path, hash)) {
         snprintf(err, n, "%s: cannot read it back (%s)", path, strerror(errno));
@@ -89,14 +90,24 @@ bool sl_manifest_record(sl_manifest *m, const char *case_name, const char *file,
     cJSON *cases = cJSON_GetObjectItemCaseSensitive(m->root, "cases");
     cJSON *entry = cJSON_GetObjectItemCaseSensitive(cases, case_name);
     if (!entry) entry = cJSON_AddObjectToObject(cases, case_name);
-    cJSON_DeleteItemFromObjectCaseSensitive(entry, "cpu_seconds");
-    /* rounded: the manifest should not change with every run's noise */
-    cJSON_AddNumberToObject(entry, "cpu_seconds", (double)(long)(cpu_seconds * 100 + 0.5) / 100);
+    cJSON_DeleteItemFromObjectCaseSensitive(entry, "render_seconds");
+    /* rounded up to a millisecond: noise below it does not matter */
+    cJSON_AddNumberToObject(entry, "render_seconds", ceil(render_seconds * 1000) / 1000);
     cJSON *files = cJSON_GetObjectItemCaseSensitive(entry, "files");
     if (!files) files = cJSON_AddObjectToObject(entry, "files");
     cJSON_DeleteItemFromObjectCaseSensitive(files, file);
     cJSON_AddStringToObject(files, file, hash);
     return true;
+}
+
+const char *sl_manifest_renderer(const sl_manifest *m) {
+    const char *r = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(m->root, "renderer"));
+    return r ? r : "";
+}
+
+void sl_manifest_set_renderer(sl_manifest *m, const char *renderer) {
+    cJSON_DeleteItemFromObjectCaseSensitive(m->root, "renderer");
+    cJSON_AddStringToObject(m->root, "renderer", renderer);
 }
 
 bool sl_manifest_save(const sl_manifest *m, const char *dir, char *err, size_t n) {

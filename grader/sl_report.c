@@ -268,6 +268,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
         cJSON_AddNumberToObject(jc, "seconds", g->result->seconds);
         if (g->result->output_tail[0]) cJSON_AddStringToObject(jc, "output", g->result->output_tail);
         cJSON_AddNumberToObject(jc, "cpu_seconds", g->result->cpu_seconds);
+        cJSON_AddNumberToObject(jc, "render_seconds", g->result->render_seconds);
         cJSON *checks = cJSON_AddArrayToObject(jc, "checks");
         for (int k = 0; k < g->c->check_count; k++) {
             const sl_check *ck = &g->c->checks[k];

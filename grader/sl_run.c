@@ -76,6 +76,7 @@ static uint64_t _sl_payload_limit(const _sl_stream *s, uint32_t type, int captur
     case SL_MSG_ERROR:
     case SL_MSG_CAPTURE_ERROR: return SL_MSG_TEXT_MAX;
     case SL_MSG_NUMBERS: return SL_MSG_NUMBERS_MAX * sizeof(double);
+    case SL_MSG_RENDER_TIME: return sizeof(double);
     case SL_MSG_IMAGE:
         if (capture == SL_CAPTURE_DEPTH_MAP)
             return SL_IMAGE_HEADER_BYTES + (uint64_t)SL_IMAGE_SIDE_MAX * SL_IMAGE_SIDE_MAX * sizeof(float);
@@ -198,6 +199,16 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
         *cap = (sl_capture){.number_count = expected};
         snprintf(cap->name, sizeof cap->name, "%s", name);
         memcpy(cap->numbers, payload, (size_t)h->payload_length);
+        break;
+    }
+    case SL_MSG_RENDER_TIME: {
+        double t;
+        if (h->payload_length != sizeof t) {
+            _sl_protocol_error(s, "a render time of the wrong size");
+            return;
+        }
+        memcpy(&t, payload, sizeof t);
+        r->render_seconds = t >= 0 && t < 1e6 ? t : 0;
         break;
     }
     case SL_MSG_DONE: s->done = true; break;

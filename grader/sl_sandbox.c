@@ -379,6 +379,8 @@ static void _sl_child(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, uid_
     if (sb->level == SL_SANDBOX_NAMESPACES) {
         if (sb->user_namespace) {
             char map[64];
+            /* the grader is not dumpable, and /proc/self then belongs to root */
+            prctl(PR_SET_DUMPABLE, 1, 0, 0, 0);
             _sl_write_file("/proc/self/setgroups", "deny");
             snprintf(map, sizeof map, "%d %u 1\n", _SL_INNER_ID, (unsigned)outer_uid);
             _sl_write_file("/proc/self/uid_map", map);
@@ -520,15 +522,16 @@ void sl_sandbox_close(sl_sandbox *sb) {
 void sl_sandbox_describe(const sl_sandbox *sb, char *out, size_t n) {
     switch (sb->level) {
     case SL_SANDBOX_NAMESPACES:
-        snprintf(out, n, "namespaces (%s uid %u, read-only view of the shaders under test, no network%s)",
-                 sb->user_namespace ? "user namespace," : "", (unsigned)sb->uid, sb->seccomp ? ", seccomp" : "");
+        snprintf(out, n, "namespaces (%suid %u, read-only view of the shaders under test, no network%s)",
+                 sb->user_namespace ? "user namespace, " : "", (unsigned)sb->uid, sb->seccomp ? ", seccomp" : "");
         break;
     case SL_SANDBOX_UID:
         snprintf(out, n, "uid (runs as uid %u%s; %s)", (unsigned)sb->uid, sb->seccomp ? ", seccomp" : "",
-                 sb->why_not_stronger);
+                 sb->why_not_stronger[0] ? sb->why_not_stronger : "by request");
         break;
     default:
-        snprintf(out, n, "basic (the grader's uid%s; %s)", sb->seccomp ? ", seccomp" : "", sb->why_not_stronger);
+        snprintf(out, n, "basic (the grader's uid%s; %s)", sb->seccomp ? ", seccomp" : "",
+                 sb->why_not_stronger[0] ? sb->why_not_stronger : "by request");
         break;
     }
 }
@@ -544,6 +547,44 @@ bool sl_sandbox_spawn(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, sl_s
         snprintf(out->framework_dir, sizeof out->framework_dir, "%s", d->framework_dir);
     }
     return _sl_start(sb, d, false, &out->pid, err, n);
+}
+
+static bool _sl_can_read(const char *path) {
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    close(fd);
+    return true;
+}
+
+int sl_sandbox_readable(const sl_sandbox *sb, const char *const *paths, int count, bool *readable) {
+    memset(readable, 0, sizeof *readable * (size_t)count);
+    if (sb->level == SL_SANDBOX_NAMESPACES || count > 32) return 0;
+    uint32_t bits = 0;
+    if (sb->level == SL_SANDBOX_UID) {
+        /* ask as the runner's uid, in a child */
+        int report[2];
+        if (pipe2(report, O_CLOEXEC) != 0) return 0;
+        pid_t pid = fork();
+        if (pid == 0) {
+            uint32_t found = 0;
+            gid_t gid = (gid_t)sb->uid;
+            if (setgroups(0, NULL) == 0 && setresgid(gid, gid, gid) == 0 && setresuid(sb->uid, sb->uid, sb->uid) == 0)
+                for (int i = 0; i < count; i++) found |= (uint32_t)_sl_can_read(paths[i]) << i;
+            ssize_t w = write(report[1], &found, sizeof found);
+            _exit(w == sizeof found ? 0 : 1);
+        }
+        close(report[1]);
+        if (pid > 0) {
+            if (read(report[0], &bits, sizeof bits) != sizeof bits) bits = 0;
+            while (waitpid(pid, NULL, 0) < 0 && errno == EINTR) {}
+        }
+        close(report[0]);
+    } else {
+        for (int i = 0; i < count; i++) bits |= (uint32_t)_sl_can_read(paths[i]) << i;
+    }
+    int n = 0;
+    for (int i = 0; i < count; i++) n += readable[i] = (bits >> i) & 1u;
+    return n;
 }
 
 void sl_sandbox_kill(const sl_sandbox *sb, pid_t pid) {

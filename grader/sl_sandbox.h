@@ -72,6 +72,11 @@ typedef struct sl_sandbox_process {
 /* Starts the runner; false with the reason in err (nothing is left running). */
 bool sl_sandbox_spawn(const sl_sandbox *sandbox, const sl_sandbox_spawn_desc *desc, sl_sandbox_process *out,
                       char *err, size_t err_size);
+/* Which of `paths` a runner could read (a folder: list it): none in the
+ * namespaces sandbox, whose view holds only copies of the shaders; below
+ * it, whatever the runner's uid may read. Returns how many. */
+int sl_sandbox_readable(const sl_sandbox *sandbox, const char *const *paths, int count, bool *readable);
+
 /* Kills the runner and everything it started. */
 void sl_sandbox_kill(const sl_sandbox *sandbox, pid_t pid);
 /* True when `pid` is still running the runner executable (not another program it exec'ed). */

@@ -11,25 +11,36 @@
 #include "sl_image.h"
 #include "sl_json.h"
 
-/* The job the runner read: a static object with a known magic number. */
+/* The job the runner read: a static object with a known magic number. It
+ * may straddle two mappings (a file's data and the zeroed pages after it),
+ * so adjacent writable mappings are searched as one. */
+static const sl_job *_search(unsigned long lo, unsigned long hi) {
+    for (unsigned long p = lo; p + sizeof(sl_job) <= hi; p += 4) {
+        const sl_job *j = (const sl_job *)p;
+        if (j->magic == SL_JOB_MAGIC && j->version == SL_PROTOCOL_VERSION && j->size == sizeof(sl_job) &&
+            j->frame_count > 0)
+            return j;
+    }
+    return NULL;
+}
+
 static const sl_job *_find_job(void) {
     FILE *maps = fopen("/proc/self/maps", "r");
     if (!maps) return NULL;
     char line[512];
     const sl_job *found = NULL;
+    unsigned long start = 0, end = 0;
     while (!found && fgets(line, sizeof line, maps)) {
         unsigned long lo, hi;
         char perms[8];
         if (sscanf(line, "%lx-%lx %7s", &lo, &hi, perms) != 3 || perms[0] != 'r' || perms[1] != 'w') continue;
-        for (unsigned long p = lo; p + sizeof(sl_job) <= hi; p += 4) {
-            const sl_job *j = (const sl_job *)p;
-            if (j->magic == SL_JOB_MAGIC && j->version == SL_PROTOCOL_VERSION && j->size == sizeof(sl_job) &&
-                j->frame_count > 0) {
-                found = j;
-                break;
-            }
+        if (lo != end) {
+            if (end > start) found = _search(start, end);
+            start = lo;
         }
+        end = hi;
     }
+    if (!found && end > start) found = _search(start, end);
     fclose(maps);
     return found;
 }
