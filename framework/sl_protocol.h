@@ -20,11 +20,13 @@
 #include <stdint.h>
 
 #include "sl_params.h"
+#include "sl_probe.h"
 #include "sl_scene.h"
 
 #define SL_JOB_MAGIC 0x424a4c53u /* "SLJB" */
 #define SL_PROTOCOL_VERSION 1
 #define SL_JOB_MAX_FRAMES 16
+#define SL_JOB_MAX_PROBES 8   /* a case's checks: each may be a probe */
 #define SL_CHANNEL_FD 3
 
 /* What a case can ask the runner to capture after its last frame. */
@@ -35,11 +37,14 @@ typedef enum sl_capture_kind {
     SL_CAPTURE_VISIBILITY, /* image, 1 channel: the visibility term, camera size */
     SL_CAPTURE_LIT_MASK,   /* image, 1 channel: surfaces facing the light, camera size */
     SL_CAPTURE_IMAGE,      /* image, 3 channels: the shaded picture, camera size */
-    SL_CAPTURE_KIND_COUNT
+    SL_CAPTURE_KIND_COUNT,
+    /* numbers: the outputs of probe table k, "probe_k"; rows x outputs */
+    SL_CAPTURE_PROBE = SL_CAPTURE_KIND_COUNT,
+    SL_CAPTURE_END = SL_CAPTURE_PROBE + SL_JOB_MAX_PROBES
 } sl_capture_kind;
 
-/* "fbo", "depth_map", ...: the names captures travel under. */
-const char *sl_capture_name(sl_capture_kind kind);
+/* "fbo", "depth_map", ..., "probe_3": the names captures travel under. */
+const char *sl_capture_name(int capture);
 /* -1 when the name is no capture's. */
 int sl_capture_parse(const char *name);
 
@@ -55,7 +60,8 @@ typedef struct sl_job {
     sl_light frame_lights[SL_JOB_MAX_FRAMES]; /* the light of each frame; the last frame is captured */
     int frame_count;
     sl_render_params params;
-    uint32_t captures;             /* bit (1 << sl_capture_kind) per capture wanted */
+    uint32_t captures;             /* bit (1 << capture) per capture wanted; probe k: SL_CAPTURE_PROBE + k */
+    sl_probe_table probes[SL_JOB_MAX_PROBES]; /* function -1: none */
     char labs_dir[512];            /* the labs tree's shaders, as the runner sees the file system */
     char framework_dir[512];       /* framework/ (its shaders/), likewise */
 } sl_job;
@@ -82,7 +88,7 @@ typedef struct sl_message_header {
 
 #define SL_MSG_NAME_MAX 63
 #define SL_MSG_TEXT_MAX 16384      /* ERROR, CAPTURE_ERROR and HELLO payloads */
-#define SL_MSG_NUMBERS_MAX 64
+#define SL_MSG_NUMBERS_MAX (SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS)
 #define SL_IMAGE_SIDE_MAX 4096     /* shadow maps and camera images */
 #define SL_IMAGE_HEADER_BYTES 12   /* int32 width, height, channels */
 

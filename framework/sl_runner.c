@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "sl_context.h"
+#include "sl_probe_pass.h"
 #include "sl_protocol.h"
 #include "sl_renderer.h"
 
@@ -38,7 +39,7 @@ static void _sl_send_text(sl_message_type type, const char *name, const char *te
     _sl_send(type, name, text, n < SL_MSG_TEXT_MAX ? n : SL_MSG_TEXT_MAX);
 }
 
-static void _sl_send_image(sl_capture_kind kind, const sl_image *img) {
+static void _sl_send_image(int kind, const sl_image *img) {
     size_t n = (size_t)img->width * (size_t)img->height * (size_t)img->channels;
     size_t bytes = SL_IMAGE_HEADER_BYTES + n * sizeof(float);
     char *buf = malloc(bytes);
@@ -53,7 +54,7 @@ static void _sl_send_image(sl_capture_kind kind, const sl_image *img) {
     free(buf);
 }
 
-static void _sl_send_numbers(sl_capture_kind kind, const double *v, int count) {
+static void _sl_send_numbers(int kind, const double *v, int count) {
     _sl_send(SL_MSG_NUMBERS, sl_capture_name(kind), v, (size_t)count * sizeof(double));
 }
 
@@ -96,7 +97,7 @@ static void _sl_capture_fbo(const sl_shadow_map *map, int requested_size) {
     _sl_send_numbers(SL_CAPTURE_FBO, v, SL_FBO_NUMBERS);
 }
 
-static bool _sl_wants(const sl_job *job, sl_capture_kind kind) { return (job->captures >> kind) & 1u; }
+static bool _sl_wants(const sl_job *job, int capture) { return (job->captures >> capture) & 1u; }
 
 /* Draws one more frame with `output` and sends it as capture `kind`. */
 static void _sl_capture_output(sl_renderer *r, const sl_job *job, sl_scene *scene, sl_render_params *p,
@@ -112,26 +113,28 @@ static void _sl_capture_output(sl_renderer *r, const sl_job *job, sl_scene *scen
     }
 }
 
-static int _sl_run_job(const sl_job *job) {
+/* Stubs that returned SL_NOT_IMPLEMENTED, each named once. */
+typedef struct _sl_missing {
+    const char *names[32];
+    int count;
+} _sl_missing;
+
+static void _sl_missing_add(_sl_missing *m, const char *name) {
+    for (int i = 0; i < m->count; i++)
+        if (strcmp(m->names[i], name) == 0) return;
+    if (m->count < 32) m->names[m->count++] = name;
+}
+
+/* The case's frames and their captures; false when the case must stop (said why). */
+static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     char err[8192];
-    sl_context_desc cd = {.backend = (sl_backend)job->backend, .width = job->width, .height = job->height};
-    sl_context *ctx = sl_context_create(&cd, err, sizeof err);
-    if (!ctx) {
-        _sl_send_text(SL_MSG_ERROR, NULL, err);
-        return 1;
-    }
-    char hello[512];
-    snprintf(hello, sizeof hello, "%s\n%s", job->backend == SL_BACKEND_OSMESA ? "osmesa" : "other",
-             sl_context_renderer_name());
-    _sl_send_text(SL_MSG_HELLO, NULL, hello);
     sl_renderer r;
     sl_renderer_desc rd = {.labs_dir = job->labs_dir, .framework_dir = job->framework_dir};
     sl_scene scene = job->scene;
     if (!sl_renderer_init(&r, &rd, err, sizeof err) || !sl_renderer_set_scene(&r, &scene, err, sizeof err)) {
         _sl_send_text(SL_MSG_ERROR, NULL, err);
-        return 1;
+        return false;
     }
-    sl_lab_call_hook = _sl_stage_hook;
     sl_render_params p = job->params;
     p.output = SL_OUTPUT_VISIBILITY;
     for (int f = 0; f < job->frame_count; f++) {
@@ -143,7 +146,7 @@ static int _sl_run_job(const sl_job *job) {
     if (info->shader_error && info->shader_error_lab <= job->lab) {
         /* A lab's shaders this case needs do not compile: the case fails on that alone. */
         _sl_send_text(SL_MSG_ERROR, NULL, info->shader_error);
-        return 1;
+        return false;
     }
     /* The visibility frame is the one just drawn; the others need a frame of their own. */
     if (_sl_wants(job, SL_CAPTURE_VISIBILITY))
@@ -152,8 +155,7 @@ static int _sl_run_job(const sl_job *job) {
         _sl_capture_output(&r, job, &scene, &p, SL_OUTPUT_LIT_MASK, SL_CAPTURE_LIT_MASK, 1, true);
     if (_sl_wants(job, SL_CAPTURE_IMAGE))
         _sl_capture_output(&r, job, &scene, &p, SL_OUTPUT_SHADED, SL_CAPTURE_IMAGE, 3, true);
-    for (int i = 0; i < info->not_implemented_count; i++)
-        _sl_send(SL_MSG_NOT_IMPLEMENTED, info->not_implemented[i], NULL, 0);
+    for (int i = 0; i < info->not_implemented_count; i++) _sl_missing_add(missing, info->not_implemented[i]);
     if (info->failed) _sl_send(SL_MSG_FAILED, info->failed, NULL, 0);
     if (_sl_wants(job, SL_CAPTURE_FBO) && info->shadow_map.framebuffer + info->shadow_map.depth_texture > 0)
         _sl_capture_fbo(&info->shadow_map, p.shadow_map_size);
@@ -185,8 +187,47 @@ static int _sl_run_job(const sl_job *job) {
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t1);
     double render_seconds = (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9;
     _sl_send(SL_MSG_RENDER_TIME, NULL, &render_seconds, sizeof render_seconds);
-    sl_lab_call_hook = NULL;
     sl_renderer_destroy(&r);
+    return true;
+}
+
+/* Each probe table: the function called on every row, the outputs sent as numbers. */
+static void _sl_run_probes(const sl_job *job, _sl_missing *missing) {
+    static double outputs[SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS];
+    for (int k = 0; k < SL_JOB_MAX_PROBES; k++) {
+        const sl_probe_table *t = &job->probes[k];
+        const sl_probe_function *f = sl_probe_at(t->function);
+        if (!f || !_sl_wants(job, (sl_capture_kind)(SL_CAPTURE_PROBE + k))) continue;
+        char err[8192];
+        bool not_implemented = false;
+        _sl_stage_hook(f->name);
+        bool ok = sl_probe_pass_run(t, job->labs_dir, job->framework_dir, outputs, &not_implemented, err, sizeof err);
+        _sl_stage_hook(NULL);
+        if (not_implemented) _sl_missing_add(missing, f->name);
+        if (ok) _sl_send(SL_MSG_NUMBERS, sl_capture_name(SL_CAPTURE_PROBE + k), outputs,
+                         (size_t)t->rows * (size_t)f->output_count * sizeof(double));
+        else _sl_send_text(SL_MSG_CAPTURE_ERROR, sl_capture_name(SL_CAPTURE_PROBE + k), err);
+    }
+}
+
+static int _sl_run_job(const sl_job *job) {
+    char err[8192];
+    sl_context_desc cd = {.backend = (sl_backend)job->backend, .width = job->width, .height = job->height};
+    sl_context *ctx = sl_context_create(&cd, err, sizeof err);
+    if (!ctx) {
+        _sl_send_text(SL_MSG_ERROR, NULL, err);
+        return 1;
+    }
+    char hello[512];
+    snprintf(hello, sizeof hello, "%s\n%s", job->backend == SL_BACKEND_OSMESA ? "osmesa" : "other",
+             sl_context_renderer_name());
+    _sl_send_text(SL_MSG_HELLO, NULL, hello);
+    sl_lab_call_hook = _sl_stage_hook;
+    _sl_missing missing = {0};
+    if (job->frame_count > 0 && !_sl_render_case(job, &missing)) return 1;
+    _sl_run_probes(job, &missing);
+    for (int i = 0; i < missing.count; i++) _sl_send(SL_MSG_NOT_IMPLEMENTED, missing.names[i], NULL, 0);
+    sl_lab_call_hook = NULL;
     sl_context_destroy(ctx);
     _sl_send(SL_MSG_DONE, NULL, NULL, 0);
     return 0;
@@ -209,7 +250,7 @@ static bool _sl_read_job(sl_job *job, char *err, size_t n) {
     }
     job->labs_dir[sizeof job->labs_dir - 1] = '\0';
     job->framework_dir[sizeof job->framework_dir - 1] = '\0';
-    if (job->frame_count < 1 || job->frame_count > SL_JOB_MAX_FRAMES || job->width < 1 || job->height < 1 ||
+    if (job->frame_count < 0 || job->frame_count > SL_JOB_MAX_FRAMES || job->width < 1 || job->height < 1 ||
         job->width > SL_IMAGE_SIDE_MAX || job->height > SL_IMAGE_SIDE_MAX) {
         snprintf(err, n, "the job is malformed");
         return false;

@@ -87,6 +87,7 @@ typedef struct _sl_pp {
     size_t err_size;
     bool version_seen;
     const char *defines;
+    const char *main_text; /* the main file's text, when it is not a file */
 } _sl_pp;
 
 static int _sl_register_file(_sl_pp *pp, const char *path, bool *already) {
@@ -144,7 +145,8 @@ static int _sl_resolve_include(_sl_pp *pp, const char *from, const char *name, c
 static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth) {
     /* Messages name the real file, also when a labs tree is assembled from links (--isolate). */
     char real[4096];
-    if (realpath(path, real)) path = real;
+    bool given = depth == 0 && pp->main_text;
+    if (!given && realpath(path, real)) path = real;
     bool already;
     int id = _sl_register_file(pp, path, &already);
     if (already) return true; /* included once */
@@ -152,7 +154,7 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
         snprintf(pp->err, pp->err_size, "%s: too many included files (at most %d)", path, SL_SHADER_MAX_FILES);
         return false;
     }
-    char *text = _sl_read_file(path);
+    char *text = given ? strdup(pp->main_text) : _sl_read_file(path);
     if (!text) {
         snprintf(pp->err, pp->err_size, "%s: cannot read shader file", path);
         return false;
@@ -231,6 +233,12 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
 
 char *sl_shader_preprocess(const char *path, const char *const *search_dirs, const char *defines,
                            char files[][SL_PATH_MAX], int *file_count, char *err, size_t err_size) {
+    return sl_shader_preprocess_text(path, NULL, search_dirs, defines, files, file_count, err, err_size);
+}
+
+char *sl_shader_preprocess_text(const char *path, const char *text, const char *const *search_dirs,
+                                const char *defines, char files[][SL_PATH_MAX], int *file_count, char *err,
+                                size_t err_size) {
     char dummy_err[8];
     _sl_pp pp = {
         .search_dirs = search_dirs,
@@ -238,6 +246,7 @@ char *sl_shader_preprocess(const char *path, const char *const *search_dirs, con
         .err = err ? err : dummy_err,
         .err_size = err ? err_size : sizeof dummy_err,
         .defines = defines,
+        .main_text = text,
     };
     char main_dir[SL_PATH_MAX];
     _sl_dirname(path, main_dir, sizeof main_dir);
@@ -297,7 +306,8 @@ static GLuint _sl_compile(GLenum stage, const char *path, const sl_program *prog
     for (int i = 0; i < SL_SHADER_MAX_DIRS && program->search_dirs[i][0]; i++) dirs[i] = program->search_dirs[i];
     char files[SL_SHADER_MAX_FILES][SL_PATH_MAX];
     int count = 0;
-    char *source = sl_shader_preprocess(path, dirs, program->defines, files, &count, err, err_size);
+    const char *text = stage == GL_FRAGMENT_SHADER ? program->fragment_source : NULL;
+    char *source = sl_shader_preprocess_text(path, text, dirs, program->defines, files, &count, err, err_size);
     if (!source) return 0;
     for (int i = 0; i < count && *total_files < SL_SHADER_MAX_FILES; i++)
         snprintf(all_files[(*total_files)++], SL_PATH_MAX, "%s", files[i]);
@@ -391,6 +401,7 @@ bool sl_program_build(sl_program *program, const sl_shader_desc *desc, char *err
     for (int i = 0; i < SL_SHADER_MAX_DIRS && desc->search_dirs[i]; i++)
         snprintf(program->search_dirs[i], SL_PATH_MAX, "%s", desc->search_dirs[i]);
     if (desc->defines) snprintf(program->defines, sizeof program->defines, "%s", desc->defines);
+    if (desc->fragment_source) program->fragment_source = strdup(desc->fragment_source);
     return _sl_build_from_paths(program, err, err_size);
 }
 
@@ -409,6 +420,8 @@ bool sl_program_reload_if_changed(sl_program *program, char *err, size_t err_siz
 void sl_program_destroy(sl_program *program) {
     if (program->id) glDeleteProgram(program->id);
     program->id = 0;
+    free(program->fragment_source);
+    program->fragment_source = NULL;
 }
 
 GLint sl_program_uniform(const sl_program *program, const char *name) {

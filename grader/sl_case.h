@@ -22,6 +22,7 @@ typedef enum sl_check_kind {
     SL_CHECK_VISIBILITY, /* the visibility term vs reference (PNG) */
     SL_CHECK_IMAGE,      /* the shaded image vs reference (PNG) */
     SL_CHECK_PENUMBRA,   /* penumbra widths along probe lines, vs the reference visibility */
+    SL_CHECK_PROBE,      /* a student function called on a table of inputs, vs the solution's outputs */
     SL_CHECK_KIND_COUNT
 } sl_check_kind;
 
@@ -44,6 +45,13 @@ typedef struct sl_check {
     char hint[320];       /* added to the message when the check fails */
     sl_probe probes[SL_CHECK_MAX_PROBES]; /* penumbra: the first is nearest to the contact */
     int probe_count;
+    /* probe: the function (sl_probe_at), its rows of inputs, and what each row tests */
+    int function;
+    int rows;
+    float inputs[SL_PROBE_MAX_ROWS][SL_PROBE_MAX_INPUTS];
+    char about[SL_PROBE_MAX_ROWS][128];
+    float row_tolerance[SL_PROBE_MAX_ROWS]; /* a row's own tolerance (0: the check's) */
+    double tolerance, relative; /* an output passes within tolerance + relative * |expected| */
 } sl_check;
 
 typedef struct sl_case {
@@ -64,14 +72,15 @@ typedef struct sl_case {
 } sl_case;
 
 const char *sl_check_kind_name(sl_check_kind kind);
-/* The capture a check compares ("visibility", "depth_map", ...). */
-const char *sl_check_capture_name(sl_check_kind kind);
+/* The capture a check compares ("visibility", "depth_map", "probe_2", ...). */
+const char *sl_check_capture_name(const sl_case *c, const sl_check *k);
 /* Every capture a check needs of the runner, as bits (1 << sl_capture_kind). */
 uint32_t sl_check_captures(const sl_case *c, const sl_check *k);
-/* Case names become folder and file names: letters, digits, '_' and '-' only. */
+/* Case and check names become folder and file names: letters, digits, '_' and '-' only. */
 bool sl_case_name_valid(const char *name);
-/* The file a check's reference lives in, relative to the references folder. */
-const char *sl_check_reference_file(sl_check_kind kind); /* NULL: needs none */
+/* The file a check's reference lives in, in its case's references folder
+ * ("visibility.png", "slope.probe.json"); false when it needs none. */
+bool sl_check_reference_file(const sl_check *k, char *out, size_t out_size);
 
 /* Reads and validates one case file; false with a message naming the file. */
 bool sl_case_load(sl_case *c, const char *path, char *err, size_t err_size);

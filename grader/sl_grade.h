@@ -15,7 +15,7 @@ typedef struct sl_reference {
     char path[1100];
     char error[600];
     sl_image image;
-    double numbers[48];
+    double numbers[SL_RUN_MAX_NUMBERS]; /* matrices (48), or a probe's rows x outputs */
     int number_count;
 } sl_reference;
 

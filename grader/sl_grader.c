@@ -350,7 +350,8 @@ static int _sl_update_references(const _sl_options *o, sl_case *cases, int count
     for (int i = 0; i < count; i++) {
         if (results[i].renderer[0]) sl_manifest_set_renderer(manifest, results[i].renderer);
         for (int k = 0; k < cases[i].check_count; k++) {
-            if (!sl_check_reference_file(cases[i].checks[k].kind)) continue;
+            char file[200];
+            if (!sl_check_reference_file(&cases[i].checks[k], file, sizeof file)) continue;
             if (!results[i].finished) {
                 fprintf(stderr, "shadowlab-grade: %s did not finish: %s%s%s\n", cases[i].name,
                         results[i].error[0] ? results[i].error : results[i].protocol_error[0] ? results[i].protocol_error : "crashed or timed out in ",

@@ -281,7 +281,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
             cJSON_AddBoolToObject(j, "passed", cr->passed);
             cJSON_AddBoolToObject(j, "bonus", cr->bonus);
             cJSON_AddStringToObject(j, "message", cr->message);
-            const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(ck->kind));
+            const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(g->c, ck));
             if (!cr->passed && cap && cap->is_image) {
                 const sl_image *shown[3] = {&cap->image, &g->references[k].image, &cr->diff};
                 static const char *const roles[3] = {"student", "reference", "diff"};

@@ -142,7 +142,7 @@ static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint
     if (r->capture_count >= SL_RUN_MAX_CAPTURES) return;
     sl_capture *cap = &r->captures[r->capture_count];
     *cap = (sl_capture){.is_image = true};
-    snprintf(cap->name, sizeof cap->name, "%s", sl_capture_name((sl_capture_kind)capture));
+    snprintf(cap->name, sizeof cap->name, "%s", sl_capture_name(capture));
     cap->image = sl_image_alloc(dims[0], dims[1], dims[2]);
     if (!cap->image.data) return;
     memcpy(cap->image.data, payload + SL_IMAGE_HEADER_BYTES, (size_t)(n - SL_IMAGE_HEADER_BYTES));
@@ -190,6 +190,11 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
     case SL_MSG_NUMBERS: {
         s->received |= 1u << capture;
         int expected = capture == SL_CAPTURE_FBO ? SL_FBO_NUMBERS : capture == SL_CAPTURE_MATRICES ? SL_MATRICES_NUMBERS : -1;
+        if (capture >= SL_CAPTURE_PROBE) {
+            const sl_check *k = &s->c->checks[capture - SL_CAPTURE_PROBE];
+            const sl_probe_function *f = sl_probe_at(k->function);
+            expected = f ? k->rows * f->output_count : -1;
+        }
         if ((uint64_t)expected * sizeof(double) != h->payload_length) {
             _sl_protocol_error(s, "the capture \"%s\" has the wrong count of numbers", name);
             return;
@@ -321,6 +326,14 @@ static void _sl_build_job(sl_job *job, const sl_case *c, const sl_run_options *o
     memcpy(job->frame_lights, c->frame_lights, sizeof c->frame_lights[0] * (size_t)c->frame_count);
     job->params = c->params;
     job->captures = _sl_wanted_captures(c);
+    for (int k = 0; k < SL_JOB_MAX_PROBES; k++) {
+        sl_probe_table *t = &job->probes[k];
+        t->function = -1;
+        if (k >= c->check_count || c->checks[k].kind != SL_CHECK_PROBE) continue;
+        t->function = c->checks[k].function;
+        t->rows = c->checks[k].rows;
+        memcpy(t->inputs, c->checks[k].inputs, sizeof t->inputs);
+    }
     snprintf(job->labs_dir, sizeof job->labs_dir, "%s", p->labs_dir);
     snprintf(job->framework_dir, sizeof job->framework_dir, "%s", p->framework_dir);
 }
@@ -390,8 +403,10 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
     r->started = true;
     static sl_job message; /* large: not on the stack */
     _sl_build_job(&message, c, o, &proc);
-    /* The job fits in the pipe's buffer: this does not wait for the runner. */
-    if (!_sl_write_all(job->job_fd, &message, sizeof message))
+    /* The job must fit in the pipe's buffer, so writing it never waits for a
+     * runner that does not read (lab code runs before the runner's main). */
+    if (fcntl(job->job_fd, F_SETPIPE_SZ, 1 << 20) < (int)sizeof message || fcntl(job->job_fd, F_SETFL, O_NONBLOCK) != 0 ||
+        !_sl_write_all(job->job_fd, &message, sizeof message))
         snprintf(r->error, sizeof r->error, "could not send the case to the runner: %s", strerror(errno));
     return true;
 fail_channel:

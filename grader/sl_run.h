@@ -14,8 +14,8 @@
 #include "sl_params.h"
 #include "sl_sandbox.h"
 
-#define SL_RUN_MAX_CAPTURES 8
-#define SL_RUN_MAX_NUMBERS 64
+#define SL_RUN_MAX_CAPTURES 16
+#define SL_RUN_MAX_NUMBERS (SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS)
 
 typedef struct sl_capture {
     char name[32];
