@@ -10,6 +10,11 @@
 #include <sys/stat.h>
 
 #define _SL_INCLUDE_DEPTH_MAX 16
+/* Every file's lines are numbered from (its source number * this): some
+ * drivers report a wrong source number for some errors (Mesa, for
+ * initializers in an included file) but always the right line, so the line
+ * alone says which file it was. */
+#define _SL_LINE_BASE 100000
 
 typedef struct _sl_strbuf {
     char *data;
@@ -169,7 +174,7 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
         const char *p = line;
         while (p < line + len && isspace((unsigned char)*p)) p++;
         if (need_marker && !(strncmp(p, "#version", 8) == 0)) {
-            _sl_appendf(out, "#line %d %d\n", line_no, id);
+            _sl_appendf(out, "#line %d %d\n", id * _SL_LINE_BASE + line_no, id);
             need_marker = false;
         }
         if (strncmp(p, "#version", 8) == 0) {
@@ -182,7 +187,7 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
                     _sl_append(out, pp->defines, strlen(pp->defines));
                     _sl_append(out, "\n", 1);
                 }
-                _sl_appendf(out, "#line %d %d\n", line_no + 1, id);
+                _sl_appendf(out, "#line %d %d\n", id * _SL_LINE_BASE + line_no + 1, id);
             }
             pp->version_seen = true;
         } else if (strncmp(p, "#include", 8) == 0) {
@@ -215,7 +220,7 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
                 break;
             }
             ok = _sl_expand(pp, out, resolved, depth + 1);
-            _sl_appendf(out, "#line %d %d\n", line_no + 1, id);
+            _sl_appendf(out, "#line %d %d\n", id * _SL_LINE_BASE + line_no + 1, id);
         } else {
             _sl_append(out, line, len);
             _sl_append(out, "\n", 1);
@@ -282,6 +287,10 @@ void sl_shader_map_log(const char *log, char files[][SL_PATH_MAX], int file_coun
         } else if (sscanf(p, "%d:%d: %n", &src, &ln, &consumed) == 2 && consumed > 0) {
             col = 0;
             mapped = true;
+        }
+        if (mapped && ln >= _SL_LINE_BASE) { /* the line names the file (see _SL_LINE_BASE) */
+            src = ln / _SL_LINE_BASE;
+            ln %= _SL_LINE_BASE;
         }
         if (mapped && src >= 0 && src < file_count) {
             if (col > 0)
