@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sl_case_view.h"
 #include "sl_context.h"
 #include "sl_log.h"
 #include "sl_renderer.h"
@@ -45,6 +46,9 @@ static void _sl_usage(FILE *f) {
             "  --screenshot FILE   save the last frame as PNG (with --frames)\n"
             "  --headless          render with OSMesa instead of a window (no display needed)\n"
             "  --labs-dir DIR      lab sources to load shaders from; default this build's\n"
+            "  --case NAME         render what the grader renders for case NAME (grader/cases/NAME.json),\n"
+            "                      beside the reference and their difference (red: a shadow missing,\n"
+            "                      blue: one too many); Tab, Space and D switch the view\n"
             "keys: 1-4 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
             "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
@@ -151,7 +155,7 @@ static void _sl_scroll(GLFWwindow *w, double dx, double dy) {
 int sl_viewer_main(int argc, char **argv) {
     _sl_viewer v = {0};
     sl_render_params_defaults(&v.params);
-    const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL;
+    const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL, *case_name = NULL;
     int frames = 0, width = 960, height = 640;
     bool headless = false;
     float light_size = -1;
@@ -164,7 +168,7 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--screenshot") == 0 || strcmp(a, "--labs-dir") == 0 ||
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
-                           strcmp(a, "--poisson-radius") == 0;
+                           strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -232,6 +236,8 @@ int sl_viewer_main(int argc, char **argv) {
             screenshot = next;
         } else if (strcmp(a, "--labs-dir") == 0) {
             labs_dir = next;
+        } else if (strcmp(a, "--case") == 0) {
+            case_name = next;
         } else if (strcmp(a, "--visibility") == 0) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--show-map") == 0) {
@@ -245,12 +251,18 @@ int sl_viewer_main(int argc, char **argv) {
         }
         if (takes_value) i++;
     }
-    if (screenshot && frames <= 0) frames = headless ? 1 : 3;
+    if ((screenshot || case_name) && headless && frames <= 0) frames = 1;
+    if (screenshot && frames <= 0) frames = 3;
     if (headless && frames <= 0) {
         fprintf(stderr, "shadowlab: --headless needs --frames K (and usually --screenshot FILE)\n");
         return 2;
     }
 
+    if (case_name) {
+        sl_case_view_desc cv = {.case_name = case_name, .labs_dir = labs_dir, .headless = headless,
+                                .backend = SL_BACKEND_OSMESA, .frames = frames, .screenshot = screenshot};
+        return sl_case_view_main(&cv);
+    }
     char err[16384];
     if (!sl_scene_load(&v.scene, scene_name, err, sizeof err)) {
         fprintf(stderr, "shadowlab: %s\n", err);

@@ -59,9 +59,13 @@ sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *refe
                 for (int c = 0; c < reference->channels && c < 3; c++) grey += pr[c];
                 grey = 0.35f * grey / (float)(reference->channels < 3 ? reference->channels : 3);
                 if (grey > 1) grey = 0.35f;
-                pd[0] = fail ? 1.0f : grey;
-                pd[1] = fail ? 0.0f : grey;
-                pd[2] = fail ? 0.0f : grey;
+                /* by kind: red where the student's is brighter (a missing
+                 * shadow), blue where darker (an extra one), magenta for NaN */
+                float brighter = nan ? 0 : ps[0] - pr[0];
+                static const float missing[3] = {1.0f, 0.15f, 0.1f}, extra[3] = {0.15f, 0.45f, 1.0f},
+                                   not_a_number[3] = {1.0f, 0.0f, 1.0f};
+                const float *colour = nan ? not_a_number : brighter > 0 ? missing : extra;
+                for (int c = 0; c < 3; c++) pd[c] = fail ? colour[c] : grey;
             }
         }
     }
