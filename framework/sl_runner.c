@@ -99,13 +99,44 @@ static void _sl_capture_fbo(const sl_shadow_map *map, int requested_size) {
 
 static bool _sl_wants(const sl_job *job, int capture) { return (job->captures >> capture) & 1u; }
 
+/* The camera's image is drawn into 32-bit floats, never 8-bit colour: NaN
+ * and small systematic errors reach the grader as they are. */
+typedef struct _sl_float_target {
+    GLuint framebuffer, colour, depth;
+} _sl_float_target;
+
+static bool _sl_float_target_make(_sl_float_target *t, int width, int height) {
+    glGenTextures(1, &t->colour);
+    glBindTexture(GL_TEXTURE_2D, t->colour);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, NULL);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenRenderbuffers(1, &t->depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, t->depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    glGenFramebuffers(1, &t->framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->colour, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, t->depth);
+    bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return complete;
+}
+
+static void _sl_float_target_free(_sl_float_target *t) {
+    glDeleteFramebuffers(1, &t->framebuffer);
+    glDeleteRenderbuffers(1, &t->depth);
+    glDeleteTextures(1, &t->colour);
+}
+
 /* Draws one more frame with `output` and sends it as capture `kind`. */
-static void _sl_capture_output(sl_renderer *r, const sl_job *job, sl_scene *scene, sl_render_params *p,
+static void _sl_capture_output(sl_renderer *r, const sl_job *job, sl_scene *scene, sl_render_params *p, GLuint target,
                                sl_output output, sl_capture_kind kind, int channels, bool redraw) {
     p->output = output;
-    if (redraw) sl_renderer_draw(r, scene, p, 0, job->width, job->height);
+    if (redraw) sl_renderer_draw(r, scene, p, target, job->width, job->height);
     sl_image img;
-    if (sl_capture_framebuffer(0, job->width, job->height, channels, &img)) {
+    if (sl_capture_framebuffer(target, job->width, job->height, channels, &img)) {
         _sl_send_image(kind, &img);
         sl_image_free(&img);
     } else {
@@ -131,6 +162,11 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     sl_renderer r;
     sl_renderer_desc rd = {.labs_dir = job->labs_dir, .framework_dir = job->framework_dir};
     sl_scene scene = job->scene;
+    _sl_float_target target = {0};
+    if (!_sl_float_target_make(&target, job->width, job->height)) {
+        _sl_send_text(SL_MSG_ERROR, NULL, "this GL cannot render into a 32-bit float framebuffer");
+        return false;
+    }
     if (!sl_renderer_init(&r, &rd, err, sizeof err) || !sl_renderer_set_scene(&r, &scene, err, sizeof err)) {
         _sl_send_text(SL_MSG_ERROR, NULL, err);
         return false;
@@ -139,7 +175,7 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     p.output = SL_OUTPUT_VISIBILITY;
     for (int f = 0; f < job->frame_count; f++) {
         scene.light = job->frame_lights[f];
-        sl_renderer_draw(&r, &scene, &p, 0, job->width, job->height);
+        sl_renderer_draw(&r, &scene, &p, target.framebuffer, job->width, job->height);
         glFinish();
     }
     const sl_frame_info *info = sl_renderer_info(&r);
@@ -149,12 +185,13 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
         return false;
     }
     /* The visibility frame is the one just drawn; the others need a frame of their own. */
+    GLuint fb = target.framebuffer;
     if (_sl_wants(job, SL_CAPTURE_VISIBILITY))
-        _sl_capture_output(&r, job, &scene, &p, SL_OUTPUT_VISIBILITY, SL_CAPTURE_VISIBILITY, 1, false);
+        _sl_capture_output(&r, job, &scene, &p, fb, SL_OUTPUT_VISIBILITY, SL_CAPTURE_VISIBILITY, 1, false);
     if (_sl_wants(job, SL_CAPTURE_LIT_MASK))
-        _sl_capture_output(&r, job, &scene, &p, SL_OUTPUT_LIT_MASK, SL_CAPTURE_LIT_MASK, 1, true);
+        _sl_capture_output(&r, job, &scene, &p, fb, SL_OUTPUT_LIT_MASK, SL_CAPTURE_LIT_MASK, 1, true);
     if (_sl_wants(job, SL_CAPTURE_IMAGE))
-        _sl_capture_output(&r, job, &scene, &p, SL_OUTPUT_SHADED, SL_CAPTURE_IMAGE, 3, true);
+        _sl_capture_output(&r, job, &scene, &p, fb, SL_OUTPUT_SHADED, SL_CAPTURE_IMAGE, 3, true);
     for (int i = 0; i < info->not_implemented_count; i++) _sl_missing_add(missing, info->not_implemented[i]);
     if (info->failed) _sl_send(SL_MSG_FAILED, info->failed, NULL, 0);
     if (_sl_wants(job, SL_CAPTURE_FBO) && info->shadow_map.framebuffer + info->shadow_map.depth_texture > 0)
@@ -182,12 +219,13 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     struct timespec t0, t1;
     p.output = SL_OUTPUT_VISIBILITY;
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t0); /* every thread's: llvmpipe renders on several */
-    sl_renderer_draw(&r, &scene, &p, 0, job->width, job->height);
+    sl_renderer_draw(&r, &scene, &p, fb, job->width, job->height);
     glFinish();
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t1);
     double render_seconds = (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9;
     _sl_send(SL_MSG_RENDER_TIME, NULL, &render_seconds, sizeof render_seconds);
     sl_renderer_destroy(&r);
+    _sl_float_target_free(&target);
     return true;
 }
 

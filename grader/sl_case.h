@@ -42,6 +42,7 @@ typedef struct sl_check {
     double threshold;     /* per pixel (images) */
     double fail_fraction; /* of pixels (images) */
     double epsilon;       /* per matrix element, relative to the largest (matrices) */
+    double mean_tolerance; /* of the mean per-pixel difference: systematic errors (images) */
     char hint[320];       /* added to the message when the check fails */
     sl_probe probes[SL_CHECK_MAX_PROBES]; /* penumbra: the first is nearest to the contact */
     int probe_count;

@@ -34,7 +34,7 @@ sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *refe
     }
     if (diff) *diff = sl_image_alloc(reference->width, reference->height, 3);
     s.pixels = (long)reference->width * reference->height;
-    double sum_s = 0, sum_r = 0;
+    double sum_s = 0, sum_r = 0, sum_d = 0;
     for (int y = 0; y < reference->height; y++) {
         for (int x = 0; x < reference->width; x++) {
             const float *ps = sl_image_pixel(student, x, y), *pr = sl_image_pixel(reference, x, y);
@@ -46,6 +46,7 @@ sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *refe
                 }
                 double d = fabs((double)ps[c] - (double)pr[c]);
                 if (d > s.max_difference) s.max_difference = d;
+                sum_d += d / reference->channels;
             }
             s.nan_pixels += nan;
             if (!nan) sum_s += ps[0];
@@ -71,6 +72,7 @@ sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *refe
     }
     s.failing_fraction = s.pixels ? (double)s.failing / (double)s.pixels : 0;
     s.mean_student = s.pixels ? sum_s / (double)s.pixels : 0;
+    s.mean_difference = s.pixels > s.nan_pixels ? sum_d / (double)(s.pixels - s.nan_pixels) : 0;
     s.mean_reference = s.pixels ? sum_r / (double)s.pixels : 0;
     return s;
 }

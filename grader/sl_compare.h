@@ -17,6 +17,7 @@ typedef struct sl_compare_stats {
     long pixels, failing, nan_pixels;
     double failing_fraction;
     double max_difference;     /* largest plain per-pixel difference */
+    double mean_difference;    /* mean plain per-pixel difference (NaN pixels left out): systematic errors */
     double mean_student, mean_reference; /* channel 0 */
 } sl_compare_stats;
 

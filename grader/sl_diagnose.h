@@ -9,6 +9,7 @@
 #include <stdbool.h>
 
 #include "sl_case.h"
+#include "sl_compare.h"
 #include "sl_grade.h"
 #include "sl_image.h"
 #include "sl_run.h"
@@ -22,6 +23,10 @@ void sl_diag_hint(sl_check_result *out, const char *hint);
 bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check_result *out);
 /* The GLSL function that computes visibility for this case, and its TODO. */
 void sl_diag_lookup_function(const sl_case *c, const char **function, const char **todo);
+/* An image check's verdict from its comparison: few enough pixels off, none
+ * NaN, and a mean difference within the check's mean tolerance. When only
+ * the mean is off, says so (a small error everywhere) and returns false. */
+bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const char *what, sl_check_result *out);
 /* The TODO tag and file of a lab function ("TODO(lab3.2)", "labs/lab3_bias/shaders/bias.glsl"). */
 bool sl_diag_stub_location(const char *function, const char **todo, const char **file);
 

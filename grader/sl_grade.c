@@ -58,6 +58,16 @@ void sl_diag_hint(sl_check_result *out, const char *hint) {
     sl_diag_append(out, "%s Hint: %s", ends_sentence ? "" : ".", hint);
 }
 
+bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const char *what, sl_check_result *out) {
+    bool pixels_ok = st->failing_fraction <= k->fail_fraction && st->nan_pixels == 0;
+    bool mean_ok = k->mean_tolerance <= 0 || st->mean_difference <= k->mean_tolerance;
+    if (pixels_ok && !mean_ok)
+        sl_diag_say(out, "the %s is off by %.4f on average (allowed %.4f), though hardly a pixel is far off: a small "
+                         "error everywhere (%s %.4f on average, the reference %.4f)",
+                    what, st->mean_difference, k->mean_tolerance, what, st->mean_student, st->mean_reference);
+    return pixels_ok && mean_ok;
+}
+
 bool sl_diag_stub_location(const char *function, const char **todo, const char **file) {
     static char todos[64][48], files[64][160];
     for (size_t s = 0; s < sizeof _sl_stubs / sizeof _sl_stubs[0]; s++)
@@ -288,11 +298,12 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
                 t->height, t->channels);
         return;
     }
-    if (st.failing_fraction <= k->fail_fraction && st.nan_pixels == 0) {
+    if (sl_diag_image_passes(k, &st, k->kind == SL_CHECK_VISIBILITY ? "visibility" : "image", out)) {
         out->passed = true;
         return;
     }
     if (sl_diag_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
+    if (out->message[0]) return;                      /* only the mean is off: said */
     bool said = false;
     if (k->kind == SL_CHECK_VISIBILITY) {
         sl_visibility_stats v = sl_visibility_compare(s, t);

@@ -349,6 +349,7 @@ static int _sl_update_references(const _sl_options *o, sl_case *cases, int count
     }
     for (int i = 0; i < count; i++) {
         if (results[i].renderer[0]) sl_manifest_set_renderer(manifest, results[i].renderer);
+        if (results[i].finished) sl_manifest_forget_case(manifest, cases[i].name);
         for (int k = 0; k < cases[i].check_count; k++) {
             char file[200];
             if (!sl_check_reference_file(&cases[i].checks[k], file, sizeof file)) continue;

@@ -80,6 +80,10 @@ double sl_manifest_render_seconds(const sl_manifest *m, const char *case_name) {
     return cJSON_IsNumber(v) && v->valuedouble > 0 ? v->valuedouble : 0;
 }
 
+void sl_manifest_forget_case(sl_manifest *m, const char *case_name) {
+    cJSON_DeleteItemFromObjectCaseSensitive(cJSON_GetObjectItemCaseSensitive(m->root, "cases"), case_name);
+}
+
 bool sl_manifest_record(sl_manifest *m, const char *case_name, const char *file, const char *path,
                         double render_seconds, char *err, size_t n) {
     char hash[65];

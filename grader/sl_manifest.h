@@ -23,6 +23,8 @@ bool sl_manifest_verify(const sl_manifest *m, const char *case_name, const char 
                         size_t why_size);
 /* The CPU seconds one of the solutions' frames took for the case, 0 when not recorded. */
 double sl_manifest_render_seconds(const sl_manifest *m, const char *case_name);
+/* Forgets what a case had: its references are about to be written anew. */
+void sl_manifest_forget_case(sl_manifest *m, const char *case_name);
 /* Records a freshly written reference (and the case's render time). */
 bool sl_manifest_record(sl_manifest *m, const char *case_name, const char *file, const char *path,
                         double render_seconds, char *err, size_t err_size);

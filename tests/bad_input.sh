@@ -15,10 +15,10 @@ printf '{"name": "corrupt", "lab": 1,\n  "scene": oops\n}\n' >"$work/cases/corru
 printf '{"name": "no_scene", "lab": 1, "scene": "no_such_scene", "checks": [{"kind": "fbo", "points": 1}]}\n' >"$work/cases/no_scene.json"
 printf '{"name": "../escape", "lab": 1, "scene": "boxes_on_floor", "checks": [{"kind": "fbo", "points": 1}]}\n' >"$work/cases/bad_name.json"
 sed 's/"title": "[^"]*"/"title": "a second case of that name"/' "$src/cases/lab1_depth_spot.json" >"$work/cases/zz_duplicate.json"
-rm "$work/references/lab2_spot_manual/visibility.png"
+rm "$work/references/lab2_spot_manual/visibility.exr"
 printf 'not an EXR file' >"$work/references/lab1_depth_boxes/depth_map.exr"
 # changed: a valid image, but not the one the manifest records
-cp "$src/references/lab3_contact/visibility.png" "$work/references/lab3_front_culling/visibility.png"
+cp "$src/references/lab3_contact/visibility.exr" "$work/references/lab3_front_culling/visibility.exr"
 # misfitting: the case renders 256x256 (it now asks for 128x128)
 sed 's/"lab": 2,/"lab": 2, "width": 128, "height": 128,/' "$src/cases/lab2_directional_hardware.json" \
   >"$work/cases/lab2_directional_hardware.json"
@@ -33,11 +33,11 @@ want "PROBLEM .*no_scene\.json: scene .*no_such_scene\.json: cannot open scene f
 want "PROBLEM .*bad_name\.json: \"name\" must be letters, digits"
 want "PROBLEM .*zz_duplicate\.json: the name \"lab1_depth_spot\" is taken by .*lab1_depth_spot\.json"
 want "FAIL .*lab2_spot_manual / visibility"
-want "reference missing: .*lab2_spot_manual/visibility\.png"
+want "reference missing: .*lab2_spot_manual/visibility\.exr"
 want "FAIL .*lab1_depth_boxes / depth"
 want "reference corrupt: .*lab1_depth_boxes/depth_map\.exr"
-want "reference changed since it was made: .*lab3_front_culling/visibility\.png"
-want "reference does not fit its case: .*lab2_directional_hardware/visibility\.png is 256x256x1, the case makes 128x128x1"
+want "reference changed since it was made: .*lab3_front_culling/visibility\.exr"
+want "reference does not fit its case: .*lab2_directional_hardware/visibility\.exr is 256x256x1, the case makes 128x128x1"
 want "PASS .*lab1_depth_boxes / framebuffer"
 want "PASS .*lab2_directional_manual / visibility"
 tail -n 1 <<<"$out" | grep -qE "^Score: [0-9.]+/[0-9.]+( \(\+[0-9.]+ bonus\))?$" || { echo "bad_input: no Score line at the end" >&2; fail=1; }
