@@ -181,7 +181,7 @@ static void test_case_files(void) {
     snprintf(path, sizeof path, "%s/ok.json", tmp_dir);
     CHECK(sl_case_load(&c, path, err, sizeof err));
     CHECK(c.lab == 2 && c.check_count == 1 && c.checks[0].points == 3);
-    CHECK(fabs(c.checks[0].fail_fraction - 0.01) < 1e-12 && c.checks[0].threshold == 0.1);
+    CHECK(fabs(c.checks[0].fail_fraction - 0.01) < 1e-12 && c.checks[0].threshold == 0.05); /* the visibility default */
     CHECK(c.params.compare == SL_COMPARE_HARDWARE && c.scene.object_count > 0);
 
     write_file("broken.json", "{\"name\": \"t\",\n \"lab\": 2,\n oops}");
