@@ -501,7 +501,8 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     }
 
     /* The sandbox, before any lab code runs. */
-    if (!sl_sandbox_open(sandbox, o.sandbox_level, err, sizeof err)) {
+    const char *probe_runner = run.setups[0].runner ? run.setups[0].runner : run.setups[cases[0].lab].runner;
+    if (!sl_sandbox_open(sandbox, o.sandbox_level, probe_runner, err, sizeof err)) {
         fprintf(stderr, "shadowlab-grade: %s\n", err);
         return SL_EXIT_ERROR;
     }

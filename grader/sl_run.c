@@ -519,7 +519,9 @@ bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_c
             if (running[i].deadline - now < wait) wait = running[i].deadline - now;
         }
         int ms = wait <= 0 ? 0 : wait > 1 ? 1000 : (int)(wait * 1000) + 1;
-        int n = poll(pfd, (nfds_t)(2 * active), ms);
+        nfds_t watched = (nfds_t)(2 * active);
+        if (watched > sizeof pfd / sizeof pfd[0]) watched = sizeof pfd / sizeof pfd[0];
+        int n = poll(pfd, watched, ms);
         if (n < 0 && errno != EINTR) break;
         now = _sl_now();
         for (int i = active - 1; i >= 0; i--) {

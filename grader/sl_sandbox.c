@@ -16,7 +16,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/fsuid.h>
 #include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -222,12 +221,14 @@ static void _sl_bind_file(const char *source, const char *target, bool required)
     _sl_bind_read_only(source, target);
 }
 
-/* Copies a folder of shaders: regular files only (links are not followed, a
- * file linked from elsewhere is skipped), bounded in size and depth. */
-static void _sl_copy_tree(const char *source, const char *target, int depth, size_t *budget) {
-    if (depth > _SL_COPY_DEPTH_MAX) return;
-    int dfd = open(source, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-    if (dfd < 0) return; /* a lab without shaders: the runner reports what it misses */
+/* Copies a folder of shaders: regular files only (no link is followed, a
+ * file linked from elsewhere is skipped), bounded in size and depth. `dfd`
+ * is the open folder (closed here). */
+static void _sl_copy_tree(int dfd, const char *target, int depth, size_t *budget) {
+    if (depth > _SL_COPY_DEPTH_MAX) {
+        close(dfd);
+        return;
+    }
     DIR *d = fdopendir(dfd);
     if (!d) {
         close(dfd);
@@ -237,13 +238,13 @@ static void _sl_copy_tree(const char *source, const char *target, int depth, siz
     struct dirent *e;
     while ((e = readdir(d))) {
         if (e->d_name[0] == '.' && (!e->d_name[1] || (e->d_name[1] == '.' && !e->d_name[2]))) continue;
-        char from[1100], to[1100];
-        _sl_path(from, sizeof from, source, e->d_name);
+        char to[1100];
         _sl_path(to, sizeof to, target, e->d_name);
         struct stat st;
         if (fstatat(dfd, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0) continue;
         if (S_ISDIR(st.st_mode)) {
-            _sl_copy_tree(from, to, depth + 1, budget);
+            int sub = openat(dfd, e->d_name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+            if (sub >= 0) _sl_copy_tree(sub, to, depth + 1, budget);
         } else if (S_ISREG(st.st_mode) && st.st_nlink == 1 && st.st_size <= _SL_COPY_FILE_MAX &&
                    (size_t)st.st_size <= *budget) {
             int in = openat(dfd, e->d_name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
@@ -263,11 +264,37 @@ static void _sl_copy_tree(const char *source, const char *target, int depth, siz
     closedir(d);
 }
 
-/* Builds the sandbox's file system on `root` and enters it. */
-static void _sl_enter_view(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, bool as_root) {
-    const char *root = sb->mount_point;
-    if (mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0)
-        _sl_fail("cannot make the mounts private: %s", strerror(errno));
+/* A lab's shaders folder, <tree>/<folder>/shaders, opened without following
+ * a link at either step: a submission's lab folder that links elsewhere (the
+ * solutions) brings nothing in. -1 when there is none. */
+static int _sl_open_shaders(const char *tree, const char *folder) {
+    int top = open(tree, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (top < 0) return -1;
+    int lab = openat(top, folder, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    close(top);
+    if (lab < 0) return -1;
+    int shaders = openat(lab, "shaders", O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    close(lab);
+    return shaders;
+}
+
+/* Where the sandbox's root is mounted, in this new mount namespace, so that
+ * nothing mounted there reaches another namespace. Normally every mount is
+ * made private and the grader's empty folder is used. Under a chroot, "/" is
+ * no mount point and the mount holding it cannot be reached: a mount point
+ * the chroot does show (/sys, /dev/pts) is made private and mounted over. */
+static const char *_sl_private_mount_point(const sl_sandbox *sb) {
+    if (mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) == 0) return sb->mount_point;
+    if (errno != EINVAL) _sl_fail("cannot make the mounts private: %s", strerror(errno));
+    static const char *const visible[] = {"/sys", "/dev/pts", "/dev/shm", "/run", "/proc"};
+    for (size_t i = 0; i < sizeof visible / sizeof visible[0]; i++)
+        if (mount(NULL, visible[i], NULL, MS_REC | MS_PRIVATE, NULL) == 0) return visible[i];
+    _sl_fail("cannot make the mounts private: \"/\" is no mount point (a chroot?) and no other mount is");
+}
+
+/* Builds the sandbox's file system and enters it. */
+static void _sl_enter_view(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d) {
+    const char *root = _sl_private_mount_point(sb);
     if (mount("tmpfs", root, "tmpfs", MS_NOSUID | MS_NODEV, "size=32m,mode=0755") != 0)
         _sl_fail("cannot mount a tmpfs on %s: %s", root, strerror(errno));
     static const char *const system[] = {"usr", "bin", "sbin", "lib", "lib32", "lib64", "libx32"};
@@ -312,40 +339,28 @@ static void _sl_enter_view(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d,
     _sl_path(path, sizeof path, root, "shadowlab-runner");
     _sl_bind_file(d->runner, path, true);
 
-    /* The shaders under test, copied with the rights of the runner's uid: a
-     * copy shows nothing the runner could not read, and cannot be changed. */
+    /* The shaders under test, copied: regular files of the lab folders only,
+     * no link followed, so the copy shows nothing from elsewhere and lab code
+     * cannot change what a later case reads. */
     _sl_path(path, sizeof path, root, "labs");
     _sl_mkdir(path, 0755);
     _sl_path(path, sizeof path, root, "framework");
     _sl_mkdir(path, 0755);
-    if (as_root) {
-        char dir[1100];
-        _sl_path(dir, sizeof dir, root, "labs");
-        if (chown(dir, _SL_SANDBOX_UID, _SL_SANDBOX_UID) != 0) _sl_fail("chown %s: %s", dir, strerror(errno));
-        _sl_path(dir, sizeof dir, root, "framework");
-        if (chown(dir, _SL_SANDBOX_UID, _SL_SANDBOX_UID) != 0) _sl_fail("chown %s: %s", dir, strerror(errno));
-        setfsgid(_SL_SANDBOX_UID);
-        setfsuid(_SL_SANDBOX_UID);
-    }
     size_t budget = _SL_COPY_TOTAL_MAX;
     for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
         if (!d->lab_dirs[lab]) continue;
-        char source[1100];
-        snprintf(source, sizeof source, "%s/%s/shaders", d->lab_dirs[lab], sl_lab_folder(lab));
         _sl_path(path, sizeof path, root, "labs");
         _sl_path(sub, sizeof sub, path, sl_lab_folder(lab));
         _sl_mkdir(sub, 0755);
         _sl_path(path, sizeof path, sub, "shaders");
-        _sl_copy_tree(source, path, 0, &budget);
+        int shaders = _sl_open_shaders(d->lab_dirs[lab], sl_lab_folder(lab));
+        if (shaders >= 0) _sl_copy_tree(shaders, path, 0, &budget);
     }
     char source[1100];
     _sl_path(source, sizeof source, d->framework_dir, "shaders");
     _sl_path(path, sizeof path, root, "framework/shaders");
-    _sl_copy_tree(source, path, 0, &budget);
-    if (as_root) {
-        setfsuid(0);
-        setfsgid(0);
-    }
+    int shaders = open(source, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (shaders >= 0) _sl_copy_tree(shaders, path, 0, &budget);
     /* The root itself read-only, then entered. */
     if (mount(NULL, root, NULL, MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV, NULL) != 0)
         _sl_fail("cannot make the sandbox read-only: %s", strerror(errno));
@@ -387,10 +402,15 @@ static void _sl_child(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, uid_
             snprintf(map, sizeof map, "%d %u 1\n", _SL_INNER_ID, (unsigned)outer_gid);
             _sl_write_file("/proc/self/gid_map", map);
         }
-        _sl_enter_view(sb, d, as_root);
+        _sl_enter_view(sb, d);
     }
-    if (as_root || sb->level == SL_SANDBOX_UID) _sl_drop_to_uid(_SL_SANDBOX_UID);
-    if (probe) _exit(0);
+    if ((as_root && sb->level == SL_SANDBOX_NAMESPACES) || sb->level == SL_SANDBOX_UID) _sl_drop_to_uid(_SL_SANDBOX_UID);
+    if (probe) {
+        /* the runner must be reachable for the uid it runs as */
+        const char *runner = sb->level == SL_SANDBOX_NAMESPACES ? "/shadowlab-runner" : d->runner;
+        if (access(runner, X_OK) != 0) _sl_fail("uid %u cannot run %s: %s", (unsigned)geteuid(), runner, strerror(errno));
+        _exit(0);
+    }
     if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) _sl_fail("PR_SET_PDEATHSIG: %s", strerror(errno));
     _sl_limits(d);
     /* fds: 0 the job, 1 and 2 the output, 3 the channel; nothing else survives exec */
@@ -467,19 +487,18 @@ static bool _sl_start(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, bool
     return true;
 }
 
-static bool _sl_try_level(sl_sandbox *sb, sl_sandbox_level level, bool user_namespace, char *why, size_t n) {
+/* Sets the sandbox up as a runner's would be, up to the exec, in a process
+ * that then only checks it could run the runner. */
+static bool _sl_try_level(sl_sandbox *sb, sl_sandbox_level level, bool user_namespace, const char *runner, char *why,
+                          size_t n) {
     sb->level = level;
     sb->user_namespace = user_namespace;
-    /* the grader's own executable stands in for a runner: the set-up is the same */
-    static char self[1024];
-    ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
-    self[len > 0 ? len : 0] = '\0';
-    sl_sandbox_spawn_desc probe = {.runner = self, .framework_dir = "/nonexistent"};
+    sl_sandbox_spawn_desc probe = {.runner = runner, .framework_dir = "/nonexistent"};
     pid_t pid;
     return _sl_start(sb, &probe, true, &pid, why, n);
 }
 
-bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, char *err, size_t n) {
+bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, const char *runner, char *err, size_t n) {
     memset(sb, 0, sizeof *sb);
     bool root = geteuid() == 0;
 #ifdef _SL_AUDIT_ARCH
@@ -492,21 +511,30 @@ bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, char *err, size_t
         if (!mkdtemp(sb->mount_point)) {
             snprintf(why, sizeof why, "cannot create a folder in /tmp: %s", strerror(errno));
             sb->mount_point[0] = '\0';
-        } else if (chmod(sb->mount_point, 0755) == 0 &&
-                   (_sl_try_level(sb, SL_SANDBOX_NAMESPACES, !root, why, sizeof why) ||
-                    (root && _sl_try_level(sb, SL_SANDBOX_NAMESPACES, true, why, sizeof why)))) {
-            sb->uid = root && !sb->user_namespace ? _SL_SANDBOX_UID : geteuid();
-            return true;
+        } else {
+            char second[256];
+            chmod(sb->mount_point, 0755);
+            /* as root: namespaces of its own, else a user namespace (as any user) */
+            if (_sl_try_level(sb, SL_SANDBOX_NAMESPACES, !root, runner, why, sizeof why) ||
+                (root && _sl_try_level(sb, SL_SANDBOX_NAMESPACES, true, runner, second, sizeof second))) {
+                sb->uid = root && !sb->user_namespace ? _SL_SANDBOX_UID : geteuid();
+                return true;
+            }
         }
         snprintf(sb->why_not_stronger, sizeof sb->why_not_stronger, "no namespaces: %s", why);
     }
-    if (at_most >= SL_SANDBOX_UID && root && _sl_try_level(sb, SL_SANDBOX_UID, false, why, sizeof why)) {
+    char uid_why[256] = "";
+    if (at_most >= SL_SANDBOX_UID && root && _sl_try_level(sb, SL_SANDBOX_UID, false, runner, uid_why, sizeof uid_why)) {
         sb->uid = _SL_SANDBOX_UID;
         return true;
     }
+    if (uid_why[0])
+        snprintf(sb->why_not_stronger + strlen(sb->why_not_stronger),
+                 sizeof sb->why_not_stronger - strlen(sb->why_not_stronger), "%sno other uid: %s",
+                 sb->why_not_stronger[0] ? "; " : "", uid_why);
     if (at_most >= SL_SANDBOX_UID && !root && !sb->why_not_stronger[0])
         snprintf(sb->why_not_stronger, sizeof sb->why_not_stronger, "not root: no other uid");
-    if (_sl_try_level(sb, SL_SANDBOX_BASIC, false, why, sizeof why)) {
+    if (_sl_try_level(sb, SL_SANDBOX_BASIC, false, runner, why, sizeof why)) {
         sb->uid = geteuid();
         return true;
     }

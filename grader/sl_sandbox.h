@@ -36,12 +36,13 @@ typedef struct sl_sandbox {
     bool seccomp;            /* the process filter could be installed */
     uid_t uid;               /* the runner's uid outside the sandbox */
     char mount_point[64];    /* an empty folder the sandbox's root is mounted on */
-    char why_not_stronger[256];
+    char why_not_stronger[512];
 } sl_sandbox;
 
-/* Finds the strongest level up to `at_most` that works here (it tries it).
- * False only when nothing at all can be started. */
-bool sl_sandbox_open(sl_sandbox *sandbox, sl_sandbox_level at_most, char *err, size_t err_size);
+/* Finds the strongest level up to `at_most` that works here: it sets each up
+ * as far as starting `runner` (an executable the cases will run). False
+ * only when nothing at all can be started. */
+bool sl_sandbox_open(sl_sandbox *sandbox, sl_sandbox_level at_most, const char *runner, char *err, size_t err_size);
 void sl_sandbox_close(sl_sandbox *sandbox);
 const char *sl_sandbox_level_name(sl_sandbox_level level);
 bool sl_sandbox_level_parse(const char *name, sl_sandbox_level *level);
