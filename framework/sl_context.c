@@ -237,9 +237,9 @@ static void _sl_egl_release(sl_context *ctx) {
 }
 
 /* Tries the displays in order of preference: GPU devices, software devices
- * (llvmpipe), then Mesa's surfaceless platform. LIBGL_ALWAYS_SOFTWARE (Mesa's
- * variable) skips GPUs, e.g. to render as the references were rendered. */
-static bool _sl_egl_open(sl_context *ctx, char *tried, size_t tried_size) {
+ * (llvmpipe), then Mesa's surfaceless platform. software_only, or Mesa's
+ * LIBGL_ALWAYS_SOFTWARE variable, skips GPU devices. */
+static bool _sl_egl_open(sl_context *ctx, bool software_only, char *tried, size_t tried_size) {
     const char *client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
         (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
@@ -248,8 +248,8 @@ static bool _sl_egl_open(sl_context *ctx, char *tried, size_t tried_size) {
         return false;
     }
     char why[256];
-    const char *software_only = getenv("LIBGL_ALWAYS_SOFTWARE");
-    bool skip_gpus = software_only && *software_only && strcmp(software_only, "0") != 0;
+    const char *always_software = getenv("LIBGL_ALWAYS_SOFTWARE");
+    bool skip_gpus = software_only || (always_software && *always_software && strcmp(always_software, "0") != 0);
     PFNEGLQUERYDEVICESEXTPROC query_devices = (PFNEGLQUERYDEVICESEXTPROC)eglGetProcAddress("eglQueryDevicesEXT");
     PFNEGLQUERYDEVICESTRINGEXTPROC query_device_string =
         (PFNEGLQUERYDEVICESTRINGEXTPROC)eglGetProcAddress("eglQueryDeviceStringEXT");
@@ -282,11 +282,11 @@ static bool _sl_egl_open(sl_context *ctx, char *tried, size_t tried_size) {
     return false;
 }
 
-static bool _sl_create_egl(sl_context *ctx, char *err, size_t n) {
+static bool _sl_create_egl(sl_context *ctx, bool software_only, char *err, size_t n) {
     ctx->egl_display = EGL_NO_DISPLAY;
     ctx->egl_context = EGL_NO_CONTEXT;
     char tried[1024] = "";
-    if (!_sl_egl_open(ctx, tried, sizeof tried)) {
+    if (!_sl_egl_open(ctx, software_only, tried, sizeof tried)) {
         if (err && n)
             snprintf(err, n, "EGL could not create a GL 3.3 core context without a display (%s). "
                              "Is Mesa's EGL driver installed (libegl-mesa0; scripts/install-deps.sh)?", tried);
@@ -401,7 +401,7 @@ sl_context *sl_context_create(const sl_context_desc *desc, char *err, size_t err
     case SL_BACKEND_OSMESA: ok = _sl_create_osmesa(ctx, err, err_size); break;
 #endif
 #ifdef SL_HAVE_EGL
-    case SL_BACKEND_EGL: ok = _sl_create_egl(ctx, err, err_size); break;
+    case SL_BACKEND_EGL: ok = _sl_create_egl(ctx, desc->software_only, err, err_size); break;
 #endif
     default: break;
     }

@@ -57,6 +57,10 @@ typedef struct sl_context_desc {
     int width, height;   /* default 512 x 512 */
     const char *title;   /* window title (GLFW) */
     bool resizable;      /* GLFW only */
+    /* EGL: only Mesa's software device (llvmpipe), even where a GPU is
+     * present, so pictures match references rendered in software. The
+     * surfaceless platform is tried only if that device fails. */
+    bool software_only;
 } sl_context_desc;
 
 typedef struct sl_context sl_context;
