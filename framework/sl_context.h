@@ -6,8 +6,8 @@
  *                      EGL_EXT_platform_device where there is one, else llvmpipe
  *                      (EGL_MESA_platform_surfaceless or Mesa's software device).
  *   SL_BACKEND_GLFW    a window (X11 on Linux); the viewer's default.
- * Which headless backends exist is decided at build time (SL_HAVE_OSMESA,
- * SL_HAVE_EGL): ask sl_backend_available().
+ * Which headless backends exist is decided at build time: ask
+ * sl_backend_available() (sl_backend.h).
  *
  * Framebuffer 0. Code draws into and reads from framebuffer 0 as "the
  * context's own picture" (the window, the OSMesa buffer). EGL without a surface
@@ -29,28 +29,11 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+#include "sl_backend.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-typedef enum sl_backend {
-    SL_BACKEND_DEFAULT_HEADLESS = 0, /* resolved by sl_backend_default_headless() */
-    SL_BACKEND_OSMESA,
-    SL_BACKEND_EGL,
-    SL_BACKEND_GLFW,
-} sl_backend;
-
-/* "osmesa", "egl", "glfw", or "default-headless". */
-const char *sl_backend_name(sl_backend backend);
-/* Parses a headless backend's name: "osmesa" or "egl". Returns false on
- * anything else and leaves *out alone. Availability is not checked here. */
-bool sl_backend_parse(const char *name, sl_backend *out);
-/* Whether this build has the backend compiled in (the library may still fail
- * at run time, e.g. no EGL driver: sl_context_create then says why). */
-bool sl_backend_available(sl_backend backend);
-/* OSMesa where this build has it (what the references were rendered with),
- * EGL otherwise. */
-sl_backend sl_backend_default_headless(void);
 
 typedef struct sl_context_desc {
     sl_backend backend;  /* default: sl_backend_default_headless() */
