@@ -1,7 +1,10 @@
-// sl_image: float images and their files through OpenImageIO.
+// sl_image_io: image files through OpenImageIO, built as the module that
+// sl_image.c loads on first use (see sl_image_io.h).
 // C++ only for OIIO; every entry point catches everything, because an exception
 // must not unwind through the C callers.
-#include "sl_image.h"
+// Written against the ImageInput/ImageOutput calls that OpenImageIO 2.4 to 3.x
+// all have (3.0 removed only APIs deprecated long before).
+#include "sl_image_io.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -74,7 +77,8 @@ static bool _sl_image_size(int width, int height, int channels, size_t *count) {
     return true;
 }
 
-extern "C" sl_image sl_image_alloc(int width, int height, int channels) {
+// The framework's sl_image_free() frees what is allocated here, hence calloc.
+static sl_image _sl_image_alloc(int width, int height, int channels) {
     sl_image image = {0, 0, 0, nullptr};
     size_t count = 0;
     if (!_sl_image_size(width, height, channels, &count))
@@ -86,13 +90,6 @@ extern "C" sl_image sl_image_alloc(int width, int height, int channels) {
         image.channels = channels;
     }
     return image;
-}
-
-extern "C" void sl_image_free(sl_image *image) {
-    if (!image)
-        return;
-    std::free(image->data);
-    *image = sl_image{0, 0, 0, nullptr};
 }
 
 static bool _sl_image_write(const char *path, const sl_image *image, char *err, size_t err_size) {
@@ -142,7 +139,7 @@ static bool _sl_image_write(const char *path, const sl_image *image, char *err, 
     return true;
 }
 
-extern "C" bool sl_image_write(const char *path, const sl_image *image, char *err, size_t err_size) {
+static bool _sl_image_io_write(const char *path, const sl_image *image, char *err, size_t err_size) {
     if (!path) {
         _sl_image_error(err, err_size, "(null): no path");
         return false;
@@ -170,7 +167,7 @@ static bool _sl_image_read(const char *path, sl_image *out, char *err, size_t er
                         spec.width, spec.height, spec.depth, spec.nchannels);
         return false;
     }
-    sl_image image = sl_image_alloc(spec.width, spec.height, spec.nchannels);
+    sl_image image = _sl_image_alloc(spec.width, spec.height, spec.nchannels);
     if (!image.data) {
         _sl_image_error(err, err_size, "%s: out of memory", path);
         return false;
@@ -178,7 +175,7 @@ static bool _sl_image_read(const char *path, sl_image *out, char *err, size_t er
     // Corrupt data often passes open() and only fails here.
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.data)) {
         std::string reason = _sl_image_reason(in->geterror());
-        sl_image_free(&image);
+        std::free(image.data);
         _sl_image_error(err, err_size, "%s: %s", path, reason.c_str());
         return false;
     }
@@ -187,7 +184,7 @@ static bool _sl_image_read(const char *path, sl_image *out, char *err, size_t er
     return true;
 }
 
-extern "C" bool sl_image_read(const char *path, sl_image *out, char *err, size_t err_size) {
+static bool _sl_image_io_read(const char *path, sl_image *out, char *err, size_t err_size) {
     if (!out) {
         _sl_image_error(err, err_size, "%s: no output image", path ? path : "(null)");
         return false;
@@ -208,18 +205,14 @@ extern "C" bool sl_image_read(const char *path, sl_image *out, char *err, size_t
     return false;
 }
 
-extern "C" void sl_image_flip_rows(sl_image *image) {
-    if (!image || !image->data || image->width <= 0 || image->height <= 1 || image->channels <= 0)
-        return;
-    size_t row = (size_t)image->width * (size_t)image->channels;
-    // Swap in place, element by element, so flipping needs no allocation.
-    for (int top = 0, bottom = image->height - 1; top < bottom; top++, bottom--) {
-        float *a = image->data + (size_t)top * row;
-        float *b = image->data + (size_t)bottom * row;
-        for (size_t i = 0; i < row; i++) {
-            float t = a[i];
-            a[i] = b[i];
-            b[i] = t;
-        }
-    }
+static const sl_image_io_api _sl_image_io_api = {
+    SL_IMAGE_IO_VERSION,
+    sizeof(sl_image_io_api),
+    _sl_image_io_write,
+    _sl_image_io_read,
+};
+
+// The module's only exported symbol (built with hidden visibility).
+extern "C" __attribute__((visibility("default"))) const sl_image_io_api *sl_image_io_module(void) {
+    return &_sl_image_io_api;
 }
