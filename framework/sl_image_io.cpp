@@ -126,6 +126,9 @@ static bool _sl_image_write(const char *path, const sl_image *image, char *err, 
         return false;
     }
     OIIO::ImageSpec spec(image->width, image->height, image->channels, type);
+    /* No date in the header: the same pixels make the same file, so a
+     * reference rendered again has the same SHA-256 (grader/sl_manifest.h). */
+    spec.attribute("DateTime", "");
     if (!out->open(path, spec) || !out->write_image(type, pixels)) {
         std::string reason = _sl_image_reason(out->geterror());
         out->close();

@@ -250,15 +250,16 @@ static void _sl_run_probes(const sl_job *job, _sl_missing *missing) {
 
 static int _sl_run_job(const sl_job *job) {
     char err[8192];
-    sl_context_desc cd = {.backend = (sl_backend)job->backend, .width = job->width, .height = job->height};
+    /* software_only: llvmpipe even where EGL finds a GPU, as the references were rendered */
+    sl_context_desc cd = {.backend = (sl_backend)job->backend, .width = job->width, .height = job->height,
+                          .software_only = true};
     sl_context *ctx = sl_context_create(&cd, err, sizeof err);
     if (!ctx) {
         _sl_send_text(SL_MSG_ERROR, NULL, err);
         return 1;
     }
     char hello[512];
-    snprintf(hello, sizeof hello, "%s\n%s", job->backend == SL_BACKEND_OSMESA ? "osmesa" : "other",
-             sl_context_renderer_name());
+    snprintf(hello, sizeof hello, "%s\n%s", sl_backend_name(sl_context_backend(ctx)), sl_context_renderer_name());
     _sl_send_text(SL_MSG_HELLO, NULL, hello);
     sl_lab_call_hook = _sl_stage_hook;
     _sl_missing missing = {0};

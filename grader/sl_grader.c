@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 #include "sl_case.h"
-#include "sl_context.h"
+#include "sl_backend.h"
 #include "sl_files.h"
 #include "sl_grade.h"
 #include "sl_manifest.h"
@@ -57,7 +57,8 @@ static void _sl_usage(FILE *f) {
             "  --labs-dir DIR       the labs tree whose shaders are graded (default: this build's)\n"
             "  --runners DIR        the folder with shadowlab-runner built from those labs' C files\n"
             "                       (default: this build's)\n"
-            "  --backend NAME       headless GL: osmesa or egl (default: the first built in)\n"
+            "  --backend NAME       headless GL: osmesa or egl (default: OSMesa where this build has it,\n"
+            "                       else EGL; both render with llvmpipe, as the references were)\n"
             "  --sandbox LEVEL      the strongest sandbox to try: namespaces, uid or basic\n"
             "                       (default namespaces; the report says which one was used)\n"
             "  --strict             refuse to grade unless the runners get the namespaces sandbox\n"
@@ -201,11 +202,6 @@ typedef struct _sl_options {
     sl_backend backend;
 } _sl_options;
 
-static bool _sl_parse_backend(const char *name, sl_backend *backend) {
-    if (strcmp(name, "osmesa") == 0) *backend = SL_BACKEND_OSMESA;
-    else return false;
-    return true;
-}
 
 /* 0: go on; otherwise the exit status. */
 static int _sl_parse(int argc, char **argv, _sl_options *o) {
@@ -256,8 +252,10 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--labs-dir") == 0) o->labs_dir = v;
         else if (strcmp(a, "--runners") == 0) o->runners_dir = v;
         else if (strcmp(a, "--backend") == 0) {
-            if (!_sl_parse_backend(v, &o->backend)) {
-                fprintf(stderr, "shadowlab-grade: --backend: '%s' is not a headless backend of this build\n", v);
+            if (!sl_backend_parse(v, &o->backend) || !sl_backend_available(o->backend)) {
+                fprintf(stderr, "shadowlab-grade: --backend: '%s' is not a headless backend of this build (it has:%s%s)\n",
+                        v, sl_backend_available(SL_BACKEND_OSMESA) ? " osmesa" : "",
+                        sl_backend_available(SL_BACKEND_EGL) ? " egl" : "");
                 return SL_EXIT_ERROR;
             }
         } else if (strcmp(a, "--sandbox") == 0) {
@@ -405,7 +403,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     _sl_options o = {
         .jobs = (int)sysconf(_SC_NPROCESSORS_ONLN),
         .sandbox_level = SL_SANDBOX_NAMESPACES,
-        .backend = SL_BACKEND_OSMESA,
+        .backend = SL_BACKEND_DEFAULT_HEADLESS,
     };
     int parsed = _sl_parse(argc, argv, &o);
     if (parsed) return parsed < 0 ? SL_EXIT_FULL : parsed;
