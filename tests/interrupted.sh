@@ -36,7 +36,7 @@ status=$?
 cat "$work/out.txt"
 problem() { echo "interrupted: $*" >&2; fail=1; }
 [ "$status" = 2 ] || problem "exit status $status, expected 2"
-tail -n 1 "$work/out.txt" | grep -qE "^Score: [0-9.]+/[0-9.]+ \(incomplete: the grader was stopped; [0-9]+ of [0-9]+ cases graded\)$" ||
+tail -n 1 "$work/out.txt" | grep -qE "^Score: [0-9.]+/[0-9.]+( \(\+[0-9.]+ bonus\))? \(incomplete: the grader was stopped; [0-9]+ of [0-9]+ cases graded\)$" ||
   problem "the last line is not an incomplete Score line"
 grep -qE "; [1-9][0-9]* of [0-9]+ cases graded" "$work/out.txt" || problem "no case was graded before the interruption"
 grep -q "not graded: the grader was stopped" "$work/out.txt" || problem "cases not run are not marked"
