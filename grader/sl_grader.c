@@ -13,6 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "sl_build_failure.h"
 #include "sl_case.h"
 #include "sl_backend.h"
 #include "sl_files.h"
@@ -71,6 +72,8 @@ static void _sl_usage(FILE *f) {
             "                       camera, objects, map size), with references rendered from the\n"
             "                       solutions for this run (needs a copy with solutions/)\n"
             "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
+            "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
+            "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
             "(a staff-side problem: missing or changed references, bad case files, unwritable reports).\n");
@@ -200,7 +203,7 @@ typedef struct _sl_options {
     const char *report_dir, *gradescope, *prairielearn, *junit;
     int only_lab;
     bool update, list, isolate, strict, hidden;
-    const char *seed;
+    const char *seed, *not_built;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
     int jobs;
@@ -215,7 +218,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         static const char *const with_value[] = {"--lab", "--case", "--exclude", "-j", "--jobs", "--report",
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
-                                                 "--sandbox", "--memory", "--seed"};
+                                                 "--sandbox", "--memory", "--seed", "--not-built"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -273,6 +276,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--isolate") == 0) o->isolate = true;
         else if (strcmp(a, "--hidden") == 0) o->hidden = true;
         else if (strcmp(a, "--seed") == 0) o->seed = v;
+        else if (strcmp(a, "--not-built") == 0) o->not_built = v;
         else if (strcmp(a, "--list") == 0) o->list = true;
         else {
             fprintf(stderr, "shadowlab-grade: unknown option %s\n", a);
@@ -407,6 +411,36 @@ static bool _sl_write_reports(const _sl_options *o, const sl_grade_report *rep) 
     return ok;
 }
 
+/* --not-built: no runner starts; every check fails with the compiler's first error. */
+static int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, sl_grade_report *rep) {
+    static char first_error[SL_BUILD_ERROR_MAX + 8];
+    char err[1500];
+    if (!sl_build_failure_first_error(o->not_built, o->labs_dir, first_error, sizeof first_error, err, sizeof err)) {
+        fprintf(stderr, "shadowlab-grade: %s\n", err);
+        return SL_EXIT_ERROR;
+    }
+    static const sl_case_result nothing_ran;
+    static const sl_reference no_references[SL_CASE_MAX_CHECKS];
+    static sl_graded_case graded[_SL_MAX_CASES];
+    rep->cases = graded;
+    rep->case_count = rep->cases_finished = count;
+    rep->not_built = first_error;
+    snprintf(rep->sandbox, sizeof rep->sandbox, "none (no lab code ran)");
+    for (int i = 0; i < count; i++) {
+        graded[i].c = &cases[i];
+        graded[i].result = &nothing_ran;
+        graded[i].references = no_references;
+        for (int k = 0; k < cases[i].check_count; k++)
+            sl_build_failure_grade(&cases[i].checks[k], first_error, &graded[i].checks[k]);
+    }
+    printf("shadowlab-grade: %s labs (%s), %d cases\n", rep->labs_kind, rep->labs_dir, count);
+    printf("shadowlab-grade: the submission did not build: %s\n", first_error);
+    fflush(stdout);
+    bool reports_ok = _sl_write_reports(o, rep);
+    sl_report_print(rep, stdout, isatty(1));
+    return reports_ok && !rep->problem_count ? SL_EXIT_FAILED : SL_EXIT_ERROR;
+}
+
 static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_root[64], sl_hidden *hidden) {
     _sl_options o = {
         .jobs = (int)sysconf(_SC_NPROCESSORS_ONLN),
@@ -433,6 +467,10 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     uint64_t seed = 0;
     if (o.hidden != (o.seed != NULL) || (o.seed && !sl_hidden_parse_seed(o.seed, &seed))) {
         fprintf(stderr, "shadowlab-grade: --hidden and --seed S go together (S: a whole number, 0 to 2^64 - 1)\n");
+        return SL_EXIT_ERROR;
+    }
+    if (o.not_built && o.update) {
+        fprintf(stderr, "shadowlab-grade: --not-built and --update-references do not go together\n");
         return SL_EXIT_ERROR;
     }
     if (o.hidden && o.update) {
@@ -510,6 +548,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         fprintf(stderr, "shadowlab-grade: no case matches in %s\n", o.cases_dir);
         return SL_EXIT_ERROR;
     }
+    if (o.not_built) return _sl_grade_not_built(&o, cases, count, &rep);
     for (int i = 0; i < count; i++) {
         const sl_runner_setup *s = run.setups[cases[i].lab].runner ? &run.setups[cases[i].lab] : &run.setups[0];
         if (cases[i].lab > SL_LAB_COUNT) {
@@ -634,6 +673,8 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         printf("shadowlab-grade: %s labs (%s), %d cases%s\n", rep.labs_kind, rep.labs_dir, count,
                o.isolate ? ", each lab isolated (the solutions stand in for the other labs)" : "");
         printf("shadowlab-grade: sandbox: %s\n", rep.sandbox);
+        if (o.hidden)
+            snprintf(rep.case_set, sizeof rep.case_set, "hidden variants of the public cases, seed %s", o.seed);
         if (o.hidden)
             printf("shadowlab-grade: hidden cases: variants of the public ones drawn from seed %s; references rendered "
                    "from the solutions for this run\n", o.seed);
