@@ -18,6 +18,7 @@
 #include "sl_backend.h"
 #include "sl_files.h"
 #include "sl_grade.h"
+#include "sl_gradebook.h"
 #include "sl_hidden.h"
 #include "sl_manifest.h"
 #include "sl_report.h"
@@ -74,6 +75,7 @@ static void _sl_usage(FILE *f) {
             "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
             "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
             "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
+            "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
             "(a staff-side problem: missing or changed references, bad case files, unwritable reports).\n");
@@ -203,7 +205,7 @@ typedef struct _sl_options {
     const char *report_dir, *gradescope, *prairielearn, *junit;
     int only_lab;
     bool update, list, isolate, strict, hidden;
-    const char *seed, *not_built;
+    const char *seed, *not_built, *gradebook;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
     int jobs;
@@ -218,7 +220,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         static const char *const with_value[] = {"--lab", "--case", "--exclude", "-j", "--jobs", "--report",
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
-                                                 "--sandbox", "--memory", "--seed", "--not-built"};
+                                                 "--sandbox", "--memory", "--seed", "--not-built", "--gradebook"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -277,6 +279,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--hidden") == 0) o->hidden = true;
         else if (strcmp(a, "--seed") == 0) o->seed = v;
         else if (strcmp(a, "--not-built") == 0) o->not_built = v;
+        else if (strcmp(a, "--gradebook") == 0) o->gradebook = v;
         else if (strcmp(a, "--list") == 0) o->list = true;
         else {
             fprintf(stderr, "shadowlab-grade: unknown option %s\n", a);
@@ -449,6 +452,16 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     };
     int parsed = _sl_parse(argc, argv, &o);
     if (parsed) return parsed < 0 ? SL_EXIT_FULL : parsed;
+    if (o.gradebook) {
+        char csv[1200], gradebook_err[1500];
+        snprintf(csv, sizeof csv, "%s/gradebook.csv", o.gradebook);
+        if (!sl_gradebook_write(o.gradebook, csv, gradebook_err, sizeof gradebook_err)) {
+            fprintf(stderr, "shadowlab-grade: %s\n", gradebook_err);
+            return SL_EXIT_ERROR;
+        }
+        printf("shadowlab-grade: wrote %s\n", csv);
+        return SL_EXIT_FULL;
+    }
     static char default_cases[1100], default_refs[1100];
     snprintf(default_cases, sizeof default_cases, "%s/cases", sl_config_grader_dir);
     snprintf(default_refs, sizeof default_refs, "%s/references", sl_config_grader_dir);
