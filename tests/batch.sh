@@ -28,7 +28,8 @@ find "$source/solutions" -type f -exec cp {} "$subs/does_not_build/" \;
 sed -i '0,/return SL_OK;/s//return SL_OK/' "$subs/does_not_build/lab3.c"
 
 # A case or two per lab: enough for each mistake to show, and a quicker batch.
-cases=(--case lab1_depth_boxes --case lab2_directional_manual --case lab3_contact --case lab4_pcss)
+# A generous time limit: the test machine may be busy.
+cases=(--case lab1_depth_boxes --case lab2_directional_manual --case lab3_contact --case lab4_pcss --timeout 120)
 batch=("$source/scripts/grade-batch" -j 2 --build "$build" --out "$out" "$subs" -- "${cases[@]}")
 
 # ---- 1. interrupted once a submission is graded ----

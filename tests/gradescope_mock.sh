@@ -19,7 +19,8 @@ problem() { echo "gradescope_mock: $*" >&2; fail=1; }
 nobody() { setpriv --reuid=65534 --regid=65534 --clear-groups -- "$@"; }
 
 # ---- the bundle ----
-"$source/scripts/make-gradescope-bundle" --out "$work/bundle" -- --sandbox uid --lab 2
+# (a generous time limit: the test machine may be busy)
+"$source/scripts/make-gradescope-bundle" --out "$work/bundle" -- --sandbox uid --lab 2 --timeout 120
 for f in setup.sh run_autograder run_prairielearn grader/references/MANIFEST.json solutions labs; do
   [ -e "$work/bundle/$f" ] || problem "the bundle has no $f"
 done

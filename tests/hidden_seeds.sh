@@ -17,6 +17,7 @@ problem() { echo "hidden_seeds: $*" >&2; fail=1; }
 # read -a splits on spaces: the test paths have none
 read -r -a solutions <<<"${groups[0]}"
 list() { "$grader" "${solutions[@]}" --hidden --seed "$1" --list; }
+limit=(--timeout 120)   # the test machine may be busy: pixels are checked here, not speed
 first=$(list "$seed")
 [ "$first" = "$(list "$seed")" ] || problem "seed $seed gave other cases the second time"
 [ "$first" != "$(list $((seed + 1000)))" ] || problem "seeds $seed and $((seed + 1000)) gave the same cases"
@@ -26,13 +27,13 @@ grep -q 'probe lines carried' <<<"$first" || problem "the penumbra case of seed 
 echo "== the solutions, seed $seed"
 "$expect" --exe "$grader" --exit 0 --full 1 --full 2 --full 3 --full 4 --reject FAIL \
   --expect "hidden cases: variants of the public ones drawn from seed $seed" \
-  -- "${solutions[@]}" --hidden --seed "$seed" || problem "the solutions lost points on seed $seed"
+  -- "${solutions[@]}" --hidden --seed "$seed" "${limit[@]}" || problem "the solutions lost points on seed $seed"
 
 for group in "${groups[@]:1}"; do
   read -r -a mistake <<<"$group"
   lab=${mistake[0]}
   echo "== ${mistake[*]:1}, seed $seed"
-  "$expect" --exe "$grader" --exit 1 --loses "$lab" -- "${mistake[@]:1}" --lab "$lab" --hidden --seed "$seed" \
+  "$expect" --exe "$grader" --exit 1 --loses "$lab" -- "${mistake[@]:1}" --lab "$lab" --hidden --seed "$seed" "${limit[@]}" \
     || problem "a known mistake in lab $lab was not caught on seed $seed"
 done
 exit $fail

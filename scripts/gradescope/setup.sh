@@ -14,9 +14,10 @@ cmake --build "$source_dir/build" -j "$(nproc)" --target shadowlab-grade
 
 # The shipped references were rendered elsewhere: the solutions must still get
 # full marks with this image's libraries and renderer, or the upload fails here
-# rather than every student's grade later.
+# rather than every student's grade later. (Pixels are checked, not speed: an
+# image build may run on a busy machine.)
 if ! "$source_dir/build/bin/shadowlab-grade" --runners "$source_dir/build/bin/solutions" \
-       --labs-dir "$source_dir/solutions" >"$source_dir/build/self-check.log" 2>&1; then
+       --labs-dir "$source_dir/solutions" --timeout 300 >"$source_dir/build/self-check.log" 2>&1; then
   cat "$source_dir/build/self-check.log"
   echo "setup.sh: the solutions do not get full marks on this image (see above)" >&2
   exit 1
