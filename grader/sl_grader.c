@@ -13,10 +13,13 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "sl_build_failure.h"
 #include "sl_case.h"
 #include "sl_backend.h"
 #include "sl_files.h"
 #include "sl_grade.h"
+#include "sl_gradebook.h"
+#include "sl_hidden.h"
 #include "sl_manifest.h"
 #include "sl_report.h"
 #include "sl_run.h"
@@ -66,7 +69,13 @@ static void _sl_usage(FILE *f) {
             "                       the grader's user can read)\n"
             "  --isolate            grade each lab with the solutions standing in for the others, so one\n"
             "                       lab's mistake costs that lab only (needs a copy with solutions/)\n"
-            "  --list               list the cases and exit\n"
+            "  --hidden --seed S    grade on hidden variants of the cases, drawn from the seed S (light,\n"
+            "                       camera, objects, map size), with references rendered from the\n"
+            "                       solutions for this run (needs a copy with solutions/)\n"
+            "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
+            "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
+            "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
+            "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
             "(a staff-side problem: missing or changed references, bad case files, unwritable reports).\n");
@@ -195,7 +204,8 @@ typedef struct _sl_options {
     int pattern_count, exclude_count;
     const char *report_dir, *gradescope, *prairielearn, *junit;
     int only_lab;
-    bool update, list, isolate, strict;
+    bool update, list, isolate, strict, hidden;
+    const char *seed, *not_built, *gradebook;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
     int jobs;
@@ -210,7 +220,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         static const char *const with_value[] = {"--lab", "--case", "--exclude", "-j", "--jobs", "--report",
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
-                                                 "--sandbox", "--memory"};
+                                                 "--sandbox", "--memory", "--seed", "--not-built", "--gradebook"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -266,6 +276,10 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         } else if (strcmp(a, "--strict") == 0) o->strict = true;
         else if (strcmp(a, "--update-references") == 0) o->update = true;
         else if (strcmp(a, "--isolate") == 0) o->isolate = true;
+        else if (strcmp(a, "--hidden") == 0) o->hidden = true;
+        else if (strcmp(a, "--seed") == 0) o->seed = v;
+        else if (strcmp(a, "--not-built") == 0) o->not_built = v;
+        else if (strcmp(a, "--gradebook") == 0) o->gradebook = v;
         else if (strcmp(a, "--list") == 0) o->list = true;
         else {
             fprintf(stderr, "shadowlab-grade: unknown option %s\n", a);
@@ -322,13 +336,14 @@ static bool _sl_same_renderer(const char *a, const char *b) {
     return n > 0 && n == strcspn(b, " ") && strncmp(a, b, n) == 0;
 }
 
-static void _sl_list(const sl_case *cases, int count, const sl_grade_report *rep) {
+static void _sl_list(const sl_case *cases, int count, const sl_grade_report *rep, const char (*hidden_notes)[400]) {
     for (int i = 0; i < count; i++) {
         printf("lab %d  %-36s %s (", cases[i].lab, cases[i].name, cases[i].title);
         for (int k = 0; k < cases[i].check_count; k++)
             printf("%s%s %gp%s", k ? ", " : "", cases[i].checks[k].name, cases[i].checks[k].points,
                    cases[i].checks[k].bonus ? " bonus" : "");
         printf(")\n");
+        if (hidden_notes) printf("       hidden: %s\n", hidden_notes[i]);
     }
     for (int i = 0; i < rep->problem_count; i++) printf("PROBLEM %s\n", rep->problems[i]);
 }
@@ -399,7 +414,37 @@ static bool _sl_write_reports(const _sl_options *o, const sl_grade_report *rep) 
     return ok;
 }
 
-static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_root[64]) {
+/* --not-built: no runner starts; every check fails with the compiler's first error. */
+static int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, sl_grade_report *rep) {
+    static char first_error[SL_BUILD_ERROR_MAX + 8];
+    char err[1500];
+    if (!sl_build_failure_first_error(o->not_built, o->labs_dir, first_error, sizeof first_error, err, sizeof err)) {
+        fprintf(stderr, "shadowlab-grade: %s\n", err);
+        return SL_EXIT_ERROR;
+    }
+    static const sl_case_result nothing_ran;
+    static const sl_reference no_references[SL_CASE_MAX_CHECKS];
+    static sl_graded_case graded[_SL_MAX_CASES];
+    rep->cases = graded;
+    rep->case_count = rep->cases_finished = count;
+    rep->not_built = first_error;
+    snprintf(rep->sandbox, sizeof rep->sandbox, "none (no lab code ran)");
+    for (int i = 0; i < count; i++) {
+        graded[i].c = &cases[i];
+        graded[i].result = &nothing_ran;
+        graded[i].references = no_references;
+        for (int k = 0; k < cases[i].check_count; k++)
+            sl_build_failure_grade(&cases[i].checks[k], first_error, &graded[i].checks[k]);
+    }
+    printf("shadowlab-grade: %s labs (%s), %d cases\n", rep->labs_kind, rep->labs_dir, count);
+    printf("shadowlab-grade: the submission did not build: %s\n", first_error);
+    fflush(stdout);
+    bool reports_ok = _sl_write_reports(o, rep);
+    sl_report_print(rep, stdout, isatty(1));
+    return reports_ok && !rep->problem_count ? SL_EXIT_FAILED : SL_EXIT_ERROR;
+}
+
+static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_root[64], sl_hidden *hidden) {
     _sl_options o = {
         .jobs = (int)sysconf(_SC_NPROCESSORS_ONLN),
         .sandbox_level = SL_SANDBOX_NAMESPACES,
@@ -407,6 +452,16 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     };
     int parsed = _sl_parse(argc, argv, &o);
     if (parsed) return parsed < 0 ? SL_EXIT_FULL : parsed;
+    if (o.gradebook) {
+        char csv[1200], gradebook_err[1500];
+        snprintf(csv, sizeof csv, "%s/gradebook.csv", o.gradebook);
+        if (!sl_gradebook_write(o.gradebook, csv, gradebook_err, sizeof gradebook_err)) {
+            fprintf(stderr, "shadowlab-grade: %s\n", gradebook_err);
+            return SL_EXIT_ERROR;
+        }
+        printf("shadowlab-grade: wrote %s\n", csv);
+        return SL_EXIT_FULL;
+    }
     static char default_cases[1100], default_refs[1100];
     snprintf(default_cases, sizeof default_cases, "%s/cases", sl_config_grader_dir);
     snprintf(default_refs, sizeof default_refs, "%s/references", sl_config_grader_dir);
@@ -420,6 +475,24 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
 
     if (o.isolate && o.update) {
         fprintf(stderr, "shadowlab-grade: --isolate and --update-references do not go together\n");
+        return SL_EXIT_ERROR;
+    }
+    uint64_t seed = 0;
+    if (o.hidden != (o.seed != NULL) || (o.seed && !sl_hidden_parse_seed(o.seed, &seed))) {
+        fprintf(stderr, "shadowlab-grade: --hidden and --seed S go together (S: a whole number, 0 to 2^64 - 1)\n");
+        return SL_EXIT_ERROR;
+    }
+    if (o.not_built && o.update) {
+        fprintf(stderr, "shadowlab-grade: --not-built and --update-references do not go together\n");
+        return SL_EXIT_ERROR;
+    }
+    if (o.hidden && o.update) {
+        fprintf(stderr, "shadowlab-grade: --hidden and --update-references do not go together\n");
+        return SL_EXIT_ERROR;
+    }
+    if (o.hidden && !have_solutions) {
+        fprintf(stderr, "shadowlab-grade: --hidden renders its references from the solutions, and this copy has no "
+                        "solutions/ (a student handout)\n");
         return SL_EXIT_ERROR;
     }
     if ((o.isolate || o.update) && !have_solutions) {
@@ -476,8 +549,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         fprintf(stderr, "shadowlab-grade: cannot open the cases folder %s\n", o.cases_dir);
         return SL_EXIT_ERROR;
     }
+    static char hidden_notes[_SL_MAX_CASES][400];
+    if (o.hidden)
+        for (int i = 0; i < count; i++) sl_hidden_derive(&cases[i], seed, hidden_notes[i], sizeof hidden_notes[i]);
     if (o.list) {
-        _sl_list(cases, count, &rep);
+        _sl_list(cases, count, &rep, o.hidden ? (const char(*)[400])hidden_notes : NULL);
         return rep.problem_count ? SL_EXIT_ERROR : SL_EXIT_FULL;
     }
     if (count == 0) {
@@ -485,6 +561,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         fprintf(stderr, "shadowlab-grade: no case matches in %s\n", o.cases_dir);
         return SL_EXIT_ERROR;
     }
+    if (o.not_built) return _sl_grade_not_built(&o, cases, count, &rep);
     for (int i = 0; i < count; i++) {
         const sl_runner_setup *s = run.setups[cases[i].lab].runner ? &run.setups[cases[i].lab] : &run.setups[0];
         if (cases[i].lab > SL_LAB_COUNT) {
@@ -497,6 +574,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             return SL_EXIT_ERROR;
         }
     }
+    if (o.hidden && !_sl_is_executable(sl_config_solutions_runner)) {
+        fprintf(stderr, "shadowlab-grade: the solutions' runner %s is missing (build it: cmake --build build)\n",
+                sl_config_solutions_runner);
+        return SL_EXIT_ERROR;
+    }
 
     /* The sandbox, before any lab code runs. */
     const char *probe_runner = run.setups[0].runner ? run.setups[0].runner : run.setups[cases[0].lab].runner;
@@ -505,6 +587,14 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         return SL_EXIT_ERROR;
     }
     sl_sandbox_describe(sandbox, rep.sandbox, sizeof rep.sandbox);
+    /* Hidden cases: the references are this run's, in a folder of the grader's own. */
+    if (o.hidden) {
+        if (!sl_hidden_open(hidden, seed, err, sizeof err)) {
+            fprintf(stderr, "shadowlab-grade: %s\n", err);
+            return SL_EXIT_ERROR;
+        }
+        o.refs_dir = hidden->references_dir;
+    }
     /* Below the namespaces level the runners see the real file system: say
      * plainly when the answers are within their reach. */
     const char *sensitive[3] = {o.refs_dir, o.cases_dir, sl_config_solutions_dir[0] ? sl_config_solutions_dir : NULL};
@@ -525,6 +615,24 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                         "in a container: CAP_SYS_ADMIN or a seccomp profile that allows unshare).\n",
                 sl_sandbox_level_name(sandbox->level), sandbox->why_not_stronger);
         return SL_EXIT_ERROR;
+    }
+
+    if (o.hidden) {
+        sl_run_options solutions_run = run;
+        /* limits set for lab code never go below the cases' own for the solutions */
+        for (int i = 0; i < count; i++) {
+            if (solutions_run.timeout > 0 && solutions_run.timeout < cases[i].timeout_seconds) solutions_run.timeout = 0;
+            if (solutions_run.memory_bytes > 0 && solutions_run.memory_bytes < cases[i].memory_mb * 1048576.0)
+                solutions_run.memory_bytes = 0;
+        }
+        memset(solutions_run.setups, 0, sizeof solutions_run.setups);
+        solutions_run.setups[0].runner = sl_config_solutions_runner;
+        solutions_run.setups[0].labs_tree = sl_config_solutions_dir;
+        for (int lab = 1; lab <= SL_LAB_COUNT; lab++) solutions_run.setups[0].lab_dirs[lab] = sl_config_solutions_dir;
+        if (!sl_hidden_render_references(hidden, cases, count, &solutions_run, &_sl_stop, err, sizeof err)) {
+            fprintf(stderr, "shadowlab-grade: %s\n", err);
+            return SL_EXIT_ERROR;
+        }
     }
 
     /* Every reference is read and verified in this process, which runs no lab code. */
@@ -578,6 +686,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         printf("shadowlab-grade: %s labs (%s), %d cases%s\n", rep.labs_kind, rep.labs_dir, count,
                o.isolate ? ", each lab isolated (the solutions stand in for the other labs)" : "");
         printf("shadowlab-grade: sandbox: %s\n", rep.sandbox);
+        if (o.hidden)
+            snprintf(rep.case_set, sizeof rep.case_set, "hidden variants of the public cases, seed %s", o.seed);
+        if (o.hidden)
+            printf("shadowlab-grade: hidden cases: variants of the public ones drawn from seed %s; references rendered "
+                   "from the solutions for this run\n", o.seed);
         printf("shadowlab-grade: rendered with %s: %s\n", rep.backend[0] ? rep.backend : "(no runner started)",
                rep.renderer[0] ? rep.renderer : "-");
         fflush(stdout);
@@ -606,8 +719,10 @@ int sl_grader_main(int argc, char **argv) {
     sigaction(SIGHUP, &sa, NULL);
     sl_sandbox sandbox = {0};
     char isolation_root[64] = "";
-    int status = _sl_grade(argc, argv, &sandbox, isolation_root);
+    sl_hidden hidden = {0};
+    int status = _sl_grade(argc, argv, &sandbox, isolation_root, &hidden);
     sl_sandbox_close(&sandbox);
     _sl_remove_isolation_trees(isolation_root);
+    sl_hidden_close(&hidden);
     return status;
 }

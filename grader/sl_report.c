@@ -139,7 +139,16 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
     _sl_html_text(f, rep->renderer);
     fputs("); sandbox: ", f);
     _sl_html_text(f, rep->sandbox);
+    if (rep->case_set[0]) {
+        fputs("; cases: ", f);
+        _sl_html_text(f, rep->case_set);
+    }
     fputs("</p>\n", f);
+    if (rep->not_built) {
+        fputs("<p class=\"fail\">The submission did not build: ", f);
+        _sl_html_text(f, rep->not_built);
+        fputs("</p>\n", f);
+    }
     for (int i = 0; i < rep->problem_count; i++) {
         fputs("<p class=\"fail\">PROBLEM ", f);
         _sl_html_text(f, rep->problems[i]);
@@ -232,6 +241,9 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     cJSON_AddStringToObject(root, "backend", rep->backend);
     cJSON_AddStringToObject(root, "renderer", rep->renderer);
     cJSON_AddStringToObject(root, "sandbox", rep->sandbox);
+    if (rep->case_set[0]) cJSON_AddStringToObject(root, "case_set", rep->case_set);
+    cJSON_AddBoolToObject(root, "built", rep->not_built == NULL);
+    if (rep->not_built) cJSON_AddStringToObject(root, "build_error", rep->not_built);
     cJSON *labs = cJSON_AddArrayToObject(root, "lab_scores");
     for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
         double s = 0, m = 0, b = 0;
@@ -337,9 +349,12 @@ bool sl_report_write_gradescope(const sl_grade_report *rep, const char *path, ch
     cJSON *root = cJSON_CreateObject();
     cJSON_AddNumberToObject(root, "score", score + bonus); /* extra credit counts on top */
     cJSON_AddNumberToObject(root, "execution_time", rep->seconds);
-    if (rep->problem_count || rep->interrupted) {
+    if (rep->problem_count || rep->interrupted || rep->not_built) {
         char text[4096] = "";
-        if (rep->interrupted) snprintf(text, sizeof text, "The grader was stopped before it finished: incomplete.\n");
+        if (rep->not_built) snprintf(text, sizeof text, "The submission did not build: %s\n", rep->not_built);
+        if (rep->interrupted)
+            snprintf(text + strlen(text), sizeof text - strlen(text),
+                     "The grader was stopped before it finished: incomplete.\n");
         for (int i = 0; i < rep->problem_count; i++)
             snprintf(text + strlen(text), sizeof text - strlen(text), "%s\n", rep->problems[i]);
         cJSON_AddStringToObject(root, "output", text);
@@ -354,7 +369,13 @@ bool sl_report_write_prairielearn(const sl_grade_report *rep, const char *path, 
     double score, max, bonus;
     sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
-    cJSON_AddBoolToObject(root, "gradable", rep->problem_count == 0 && !rep->interrupted);
+    /* A submission that does not build is "not gradable": it costs the student no attempt. */
+    cJSON_AddBoolToObject(root, "gradable", rep->problem_count == 0 && !rep->interrupted && !rep->not_built);
+    if (rep->not_built) {
+        char text[512];
+        snprintf(text, sizeof text, "The submission did not build: %s", rep->not_built);
+        cJSON_AddItemToArray(cJSON_AddArrayToObject(root, "format_errors"), cJSON_CreateString(text));
+    }
     cJSON_AddNumberToObject(root, "score", max > 0 ? (score + bonus) / max : 0);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), true);
     bool ok = _sl_write_json(root, path, err, err_size);

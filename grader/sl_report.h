@@ -30,6 +30,8 @@ typedef struct sl_grade_report {
     char backend[32], renderer[160]; /* what the runners rendered with (as the first runner said) */
     bool interrupted;        /* stopped early: the score is incomplete */
     int cases_finished;      /* cases that ran to their end */
+    char case_set[160];      /* which cases, when not the public ones ("hidden variants, seed 42") */
+    const char *not_built;   /* the compiler's first error, when the submission did not build */
 } sl_grade_report;
 
 /* score and max_score leave bonus checks out; bonus is what they earned. */
