@@ -51,6 +51,14 @@ const char *sl_gl_enum_name(GLenum value) {
     case GL_LINEAR_MIPMAP_NEAREST: return "GL_LINEAR_MIPMAP_NEAREST";
     case GL_NEAREST_MIPMAP_LINEAR: return "GL_NEAREST_MIPMAP_LINEAR";
     case GL_LINEAR_MIPMAP_LINEAR: return "GL_LINEAR_MIPMAP_LINEAR";
+    case GL_NEVER: return "GL_NEVER";
+    case GL_LESS: return "GL_LESS";
+    case GL_EQUAL: return "GL_EQUAL";
+    case GL_LEQUAL: return "GL_LEQUAL";
+    case GL_GREATER: return "GL_GREATER";
+    case GL_NOTEQUAL: return "GL_NOTEQUAL";
+    case GL_GEQUAL: return "GL_GEQUAL";
+    case GL_ALWAYS: return "GL_ALWAYS";
     case GL_FRONT: return "GL_FRONT";
     case GL_BACK: return "GL_BACK";
     case GL_FRONT_AND_BACK: return "GL_FRONT_AND_BACK";

@@ -16,6 +16,11 @@
 /* Every function the labs ask students to write, with its signature as the
  * stubs declare it. Outputs of matrices are column-major, as cglm and GLSL store them. */
 static const sl_probe_function _sl_functions[] = {
+    /* lab 1: the depth pass's state, on a map the probe makes (its depth texture filled with 0.5) */
+    {.name = "lab1_begin_depth_pass", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.3",
+     .outputs = "map's framebuffer bound,viewport width,viewport height,depth test,depth function,depth writes,"
+                "depth after the call",
+     .output_count = 7, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
     /* lab 2 */
     {.name = "lab2_light_view", .lab = 2, .file = "lab2_projective/lab2.c", .todo = "lab2.1",
      .outputs = _SL_MATRIX_OUT, .output_count = 16,

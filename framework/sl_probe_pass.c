@@ -266,12 +266,65 @@ static void _sl_neutral_depth_state(void) {
     glCullFace(GL_BACK);
 }
 
+/* lab1_begin_depth_pass on a map of `size` made here, from a state that is
+ * wrong in every way the function must fix: another framebuffer bound, a
+ * small viewport, the depth test off with GL_ALWAYS, depth writes off, and
+ * the map's depths at 0.5, so a clear shows as 1.0. */
+static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int size, double *out) {
+    sl_shadow_map map = {.size = size};
+    glGenTextures(1, &map.depth_texture);
+    glBindTexture(GL_TEXTURE_2D, map.depth_texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &map.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map.depth_texture, 0);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    glDepthMask(GL_TRUE);
+    glClearDepth(0.5);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glClearDepth(1.0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, 7, 5);
+    glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_FALSE);
+    sl_status status = labs->lab1_begin_depth_pass(&map);
+    GLint bound = 0, viewport[4] = {0}, func = 0;
+    GLboolean writes = GL_FALSE;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetIntegerv(GL_DEPTH_FUNC, &func);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &writes);
+    out[0] = (GLuint)bound == map.framebuffer;
+    out[1] = viewport[2];
+    out[2] = viewport[3];
+    out[3] = glIsEnabled(GL_DEPTH_TEST);
+    out[4] = func == GL_LEQUAL ? GL_LESS : func; /* both keep the nearest depth: equally right */
+    out[5] = writes;
+    float depth = -1;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, map.framebuffer);
+    glReadPixels(size / 2, size / 2, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+    out[6] = depth;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &map.framebuffer);
+    glDeleteTextures(1, &map.depth_texture);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    return status;
+}
+
 static sl_status _sl_call_c(const sl_probe_function *f, const float *in, double *out) {
     const sl_lab_functions *labs = &sl_build_lab_functions;
     mat4 m;
     glm_mat4_identity(m);
     sl_status status = SL_FAILED;
-    if (strcmp(f->name, "lab2_light_view") == 0) {
+    if (strcmp(f->name, "lab1_begin_depth_pass") == 0) {
+        status = _sl_call_begin_depth_pass(labs, (int)in[0], out);
+    } else if (strcmp(f->name, "lab2_light_view") == 0) {
         sl_light light = _sl_light((int)in[0], in + 1, in + 4);
         sl_aabb bounds;
         _sl_vec3(in + 7, bounds.min);

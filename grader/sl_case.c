@@ -31,6 +31,49 @@ static const struct {
 
 const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
 
+static const char *const _sl_symptom_names[SL_SYMPTOM_COUNT] = {
+    [SL_SYMPTOM_NO_SHADOWS] = "no_shadows",         [SL_SYMPTOM_MISSING_SHADOW] = "missing_shadow",
+    [SL_SYMPTOM_EXTRA_SHADOW] = "extra_shadow",     [SL_SYMPTOM_ACNE] = "acne",
+    [SL_SYMPTOM_DETACHED] = "detached",             [SL_SYMPTOM_SWAPPED] = "swapped",
+    [SL_SYMPTOM_HARD_EDGES] = "hard_edges",         [SL_SYMPTOM_STALE_DEPTH] = "stale_depth",
+};
+
+const char *sl_symptom_name(sl_symptom symptom) {
+    return (unsigned)symptom < SL_SYMPTOM_COUNT ? _sl_symptom_names[symptom] : "?";
+}
+
+/* "hint_when": one symptom's name, or an array of them. */
+static bool _sl_hint_when(const sl_case *c, sl_check *k, const cJSON *json, char *err, size_t n) {
+    const cJSON *when = cJSON_GetObjectItemCaseSensitive(json, "hint_when"), *item;
+    if (!when) return true;
+    bool ok = cJSON_IsString(when) || (cJSON_IsArray(when) && cJSON_GetArraySize(when) > 0);
+    if (cJSON_IsString(when)) {
+        ok = false;
+        for (int s = 0; s < SL_SYMPTOM_COUNT; s++)
+            if (strcmp(when->valuestring, _sl_symptom_names[s]) == 0) {
+                k->hint_when |= 1u << s;
+                ok = true;
+            }
+    } else {
+        cJSON_ArrayForEach(item, when) {
+            bool known = false;
+            for (int s = 0; cJSON_IsString(item) && s < SL_SYMPTOM_COUNT; s++)
+                if (strcmp(item->valuestring, _sl_symptom_names[s]) == 0) {
+                    k->hint_when |= 1u << s;
+                    known = true;
+                }
+            ok &= known;
+        }
+    }
+    if (!ok) {
+        char names[300] = "";
+        for (int s = 0; s < SL_SYMPTOM_COUNT; s++)
+            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", s ? ", " : "", _sl_symptom_names[s]);
+        snprintf(err, n, "%s: checks \"%s\": \"hint_when\" must name symptoms: %s", c->path, k->name, names);
+    }
+    return ok;
+}
+
 bool sl_check_reference_file(const sl_check *k, char *out, size_t n) {
     const char *file = _sl_kinds[k->kind].reference;
     if (!file) return false;
@@ -50,8 +93,8 @@ uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
     case SL_CHECK_DEPTH_MAP: return 1u << SL_CAPTURE_DEPTH_MAP;
     case SL_CHECK_MATRICES: return 1u << SL_CAPTURE_MATRICES;
     case SL_CHECK_VISIBILITY:
-        /* from lab 3 on, acne is told from shadow on the surfaces that face the light */
-        return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 3 ? 1u << SL_CAPTURE_LIT_MASK : 0);
+        /* from lab 2 on, acne is told from shadow on the surfaces that face the light */
+        return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0);
     case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
     case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
     default: return 0;
@@ -252,6 +295,7 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
     k->bonus = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "bonus"));
     const char *hint = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "hint"));
     if (hint) snprintf(k->hint, sizeof k->hint, "%s", hint);
+    if (!_sl_hint_when(c, k, json, err, n)) return false;
     k->points = -1;
     double percent = k->fail_fraction * 100;
     if (!_sl_number(json, "points", &k->points, 0, 1000, c->path, err, n) ||

@@ -28,6 +28,21 @@ typedef enum sl_check_kind {
 
 #define SL_CHECK_MAX_PROBES 4
 
+/* What a failed check's capture shows, as the grader measures it; a case's
+ * hint names the symptoms it is about ("hint_when"), and is shown only then. */
+typedef enum sl_symptom {
+    SL_SYMPTOM_NO_SHADOWS,     /* nothing shadowed where the reference has shadows */
+    SL_SYMPTOM_MISSING_SHADOW, /* part of the reference's shadow is lit here */
+    SL_SYMPTOM_EXTRA_SHADOW,   /* part of the reference's lit area is shadowed here */
+    SL_SYMPTOM_ACNE,           /* lit surfaces shadow themselves in a fine pattern */
+    SL_SYMPTOM_DETACHED,       /* shadows start away from their casters (Peter Panning) */
+    SL_SYMPTOM_SWAPPED,        /* lit and shadowed exchanged */
+    SL_SYMPTOM_HARD_EDGES,     /* hard edges where the reference's are soft */
+    SL_SYMPTOM_STALE_DEPTH,    /* a depth map with depths nearer than the scene's */
+    SL_SYMPTOM_COUNT
+} sl_symptom;
+const char *sl_symptom_name(sl_symptom symptom);
+
 /* A line across a shadow edge, in pixels of the camera image (x right, y down). */
 typedef struct sl_probe {
     char name[32];
@@ -43,14 +58,15 @@ typedef struct sl_check {
     double fail_fraction; /* of pixels (images) */
     double epsilon;       /* per matrix element, relative to the largest (matrices) */
     double mean_tolerance; /* of the mean per-pixel difference: systematic errors (images) */
-    char hint[320];       /* added to the message when the check fails */
+    char hint[320];       /* added to the message when the check fails with one of hint_when's symptoms */
+    uint32_t hint_when;   /* 1 << sl_symptom; 0: only when no more specific diagnosis was found */
     sl_probe probes[SL_CHECK_MAX_PROBES]; /* penumbra: the first is nearest to the contact */
     int probe_count;
     /* probe: the function (sl_probe_at), its rows of inputs, and what each row tests */
     int function;
     int rows;
     float inputs[SL_PROBE_MAX_ROWS][SL_PROBE_MAX_INPUTS];
-    char about[SL_PROBE_MAX_ROWS][128];
+    char about[SL_PROBE_MAX_ROWS][256];
     float row_tolerance[SL_PROBE_MAX_ROWS]; /* a row's own tolerance (0: the check's) */
     double tolerance, relative; /* an output passes within tolerance + relative * |expected| */
 } sl_check;

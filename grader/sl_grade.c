@@ -50,6 +50,13 @@ void sl_diag_append(sl_check_result *out, const char *fmt, ...) {
     va_end(args);
 }
 
+void sl_diag_cause(sl_check_result *out, const char *fmt, ...) {
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(out->cause, sizeof out->cause, fmt, args);
+    va_end(args);
+}
+
 /* Adds a case's hint after the message. */
 void sl_diag_hint(sl_check_result *out, const char *hint) {
     if (!hint[0]) return;
@@ -103,6 +110,8 @@ bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check
                 sl_diag_say(out, "not implemented: %s() still returns SL_NOT_IMPLEMENTED (%s in %s)", fn, todo, file);
             else
                 sl_diag_say(out, "not implemented: needs lab %d first, and %s() still returns SL_NOT_IMPLEMENTED", lab, fn);
+            out->cause[0] = '\0';
+            out->settled = true;
             return true;
         }
     }
@@ -110,6 +119,8 @@ bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check
         sl_diag_say(out, "%s() returned SL_FAILED", r->failed);
         if (strcmp(r->failed, "lab1_create_shadow_map") == 0)
             sl_diag_append(out, " (is the framebuffer complete? glCheckFramebufferStatus tells why not)");
+        out->cause[0] = '\0';
+        out->settled = true;
         return true;
     }
     return false;
@@ -283,12 +294,77 @@ bool sl_reference_write(const char *dir, sl_manifest *manifest, const sl_case *c
 
 /* ---- checks ---- */
 
+/* The shadowed fraction of the surfaces facing the light (every pixel without a mask). */
+static void _sl_shadowed(const sl_image *s, const sl_image *t, const sl_image *mask, double *student, double *reference) {
+    long facing = 0, ref_dark = 0, stu_dark = 0;
+    for (long i = 0; i < (long)t->width * t->height; i++) {
+        if (mask && mask->data[i] < 0.5f) continue;
+        facing++;
+        ref_dark += t->data[i] < 0.5f;
+        stu_dark += !(s->data[i] >= 0.5f);
+    }
+    *reference = facing ? (double)ref_dark / (double)facing : 0;
+    *student = facing ? (double)stu_dark / (double)facing : 0;
+}
+
+static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_image *s, const sl_image *t,
+                                 const sl_image *mask, const sl_compare_stats *st, sl_check_result *out) {
+    sl_visibility_stats v = sl_visibility_compare(s, t);
+    const char *fn, *todo;
+    sl_diag_lookup_function(c, &fn, &todo);
+    /* On surfaces facing the light when the mask is there: surfaces facing
+     * away are dark in both images and would hide a missing shadow. */
+    double ref_shadowed, stu_shadowed;
+    _sl_shadowed(s, t, mask, &stu_shadowed, &ref_shadowed);
+    bool has_shadows = ref_shadowed > 0.005;
+    if (v.missing_shadow > 0.02) out->symptoms |= 1u << SL_SYMPTOM_MISSING_SHADOW;
+    if (v.extra_shadow > 0.02) out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
+    /* Exactly 1.0 where the reference has shadow: the stub, or every point
+     * taken for outside; a filter whose samples mostly miss gives faint shadows instead. */
+    long ref_dark = 0, exactly_lit = 0;
+    for (long i = 0; i < (long)t->width * t->height; i++) {
+        if ((mask && mask->data[i] < 0.5f) || t->data[i] >= 0.5f) continue;
+        ref_dark++;
+        exactly_lit += s->data[i] >= 0.995f;
+    }
+    if (has_shadows && stu_shadowed < 0.1 * ref_shadowed) {
+        out->symptoms |= 1u << SL_SYMPTOM_NO_SHADOWS;
+        if (c->lab >= 4 && exactly_lit < ref_dark / 2) {
+            sl_diag_say(out, "shadows far too faint: where the reference is shadowed, %s leaves most pixels nearly lit", fn);
+            sl_diag_cause(out, "most samples land off the map, where the border counts as lit — are the offsets scaled "
+                               "by the texel size, 1.0 / textureSize(map, 0) (TODO %s)?", todo);
+        } else {
+            sl_diag_say(out, "no shadows at all");
+            sl_diag_cause(out, "%s returns 1.0 everywhere — not implemented (TODO %s), or every point taken for outside "
+                               "the light's frustum?", fn, todo);
+        }
+        return;
+    }
+    if (c->lab == 2 && sl_diagnose_lab2_visibility(c, s, t, mask, out)) return;
+    if (c->lab == 3 && mask && sl_diagnose_lab3_visibility(c, s, t, mask, out)) return;
+    if (c->lab >= 4 && sl_diagnose_lab4_visibility(c, s, t, mask, out)) return;
+    if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
+        out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
+        sl_diag_say(out, "lit and shadowed are swapped (%.0f%% of shadows lit, %.0f%% of lit pixels shadowed)",
+                    100 * v.missing_shadow, 100 * v.extra_shadow);
+        sl_diag_cause(out, "is the comparison inverted?");
+    } else if (v.extra_shadow > 0.5) {
+        sl_diag_say(out, "almost everything is in shadow (%.0f%% of lit pixels)", 100 * v.extra_shadow);
+        sl_diag_cause(out, "is the comparison inverted, the depth map empty, or the shadow coordinate wrong (W, divide)?");
+    } else {
+        sl_diag_say(out, "shadows differ from the reference on %.1f%% of pixels (allowed %.1f%%): %.0f%% of the "
+                         "reference's shadow is missing, %.1f%% of its lit area is shadowed",
+                    100 * st->failing_fraction, 100 * k->fail_fraction, 100 * v.missing_shadow, 100 * v.extra_shadow);
+    }
+}
+
 static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                             sl_check_result *out) {
     const char *capture = sl_check_capture_name(c, k);
     const sl_capture *cap = sl_result_capture(r, capture);
     if (!cap) {
         if (!sl_diag_explain_missing(c, r, out)) sl_diag_say(out, "no %s image was captured", capture);
+        out->settled = true;
         return;
     }
     const sl_image *s = &cap->image, *t = &ref->image;
@@ -296,6 +372,7 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
     if (st.size_mismatch) {
         sl_diag_say(out, "the image is %dx%dx%d, the reference %dx%dx%d", s->width, s->height, s->channels, t->width,
                 t->height, t->channels);
+        out->settled = true;
         return;
     }
     if (sl_diag_image_passes(k, &st, k->kind == SL_CHECK_VISIBILITY ? "visibility" : "image", out)) {
@@ -304,55 +381,160 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
     }
     if (sl_diag_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
     if (out->message[0]) return;                      /* only the mean is off: said */
-    bool said = false;
     if (k->kind == SL_CHECK_VISIBILITY) {
-        sl_visibility_stats v = sl_visibility_compare(s, t);
         const sl_capture *mask = sl_result_capture(r, "lit_mask");
-        bool has_shadows = v.reference_shadowed > 0.005;
-        const char *fn, *todo;
-        sl_diag_lookup_function(c, &fn, &todo);
-        said = true;
-        /* On surfaces facing the light when the mask is there: surfaces facing
-         * away are dark in both images and would hide a missing shadow. */
-        double ref_shadowed = v.reference_shadowed, stu_shadowed = v.student_shadowed;
-        if (mask) {
-            long facing = 0, ref_dark = 0, stu_dark = 0;
-            for (long i = 0; i < (long)t->width * t->height; i++) {
-                if (mask->image.data[i] < 0.5f) continue;
-                facing++;
-                ref_dark += t->data[i] < 0.5f;
-                stu_dark += !(s->data[i] >= 0.5f);
-            }
-            ref_shadowed = facing ? (double)ref_dark / (double)facing : 0;
-            stu_shadowed = facing ? (double)stu_dark / (double)facing : 0;
-            has_shadows = ref_shadowed > 0.005;
+        _sl_check_visibility(c, k, s, t, mask ? &mask->image : NULL, &st, out);
+    } else {
+        sl_diag_say(out, "the image differs from the reference on %.1f%% of pixels (allowed %.1f%%)",
+                    100 * st.failing_fraction, 100 * k->fail_fraction);
+    }
+    if (st.nan_pixels) sl_diag_append(out, "; %ld pixels are NaN (a division by zero?)", st.nan_pixels);
+}
+
+/* ---- what to fix first ---- */
+
+/* The probe function that computes a lab 4 filter mode's visibility. */
+static const char *_sl_filter_function(sl_filter_mode mode) {
+    static const char *const names[SL_FILTER_MODE_COUNT] = {"shadow_compare_manual", "pcf_hardware", "pcf_grid",
+                                                            "pcf_poisson", "pcss"};
+    return (unsigned)mode < SL_FILTER_MODE_COUNT ? names[mode] : "";
+}
+
+/* Does this check's case call the function that failed its probe, in a way
+ * that failed? Image checks of the function's own lab only: an earlier lab's
+ * failures have that lab's own cases to say so. */
+static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_failure *failure, bool isolated) {
+    const sl_probe_function *f = sl_probe_at(failure->function);
+    if (!f || f->lab > c->lab) return false;
+    if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE && k->kind != SL_CHECK_PENUMBRA &&
+        k->kind != SL_CHECK_DEPTH_MAP)
+        return false;
+    const char *name = f->name;
+    sl_bias_mode bias = c->params.bias.mode;
+    sl_filter_mode filter = c->params.filter.mode;
+    if (f->lab < c->lab) {
+        /* labs build on each other: an earlier lab's function draws this case too, unless the solutions stand in */
+        if (isolated) return false;
+        if (f->lab == 1 || (f->lab == 2 && !f->glsl) || strcmp(name, "shadow_coord") == 0) return true;
+        bool lab2_lookup = c->lab == 3 && bias != SL_BIAS_MIDPOINT;
+        if (strcmp(name, "shadow_compare_manual") == 0) return lab2_lookup && c->params.compare == SL_COMPARE_MANUAL;
+        if (strcmp(name, "shadow_compare_hardware") == 0) return lab2_lookup && c->params.compare == SL_COMPARE_HARDWARE;
+        if (strcmp(name, "lab3_depth_pass_state") == 0) return (failure->failing_modes >> bias) & 1u;
+        return false;
+    }
+    switch (c->lab) {
+    case 1: return k->kind == SL_CHECK_DEPTH_MAP && strcmp(name, "lab1_begin_depth_pass") == 0;
+    case 2:
+        if (strcmp(name, "shadow_compare_manual") == 0) return c->params.compare == SL_COMPARE_MANUAL;
+        if (strcmp(name, "shadow_compare_hardware") == 0) return c->params.compare == SL_COMPARE_HARDWARE;
+        return true;
+    case 3:
+        if (strcmp(name, "lab3_depth_pass_state") == 0) return (failure->failing_modes >> bias) & 1u;
+        if (strcmp(name, "slope_scaled_bias") == 0) return bias == SL_BIAS_SLOPE_SCALED;
+        if (strcmp(name, "normal_offset_position") == 0) return bias == SL_BIAS_NORMAL_OFFSET;
+        if (strcmp(name, "midpoint_compare") == 0) return bias == SL_BIAS_MIDPOINT;
+        return false;
+    case 4:
+        if (strcmp(name, "lab4_configure_shadow_texture") == 0) return (failure->failing_modes >> filter) & 1u;
+        return strcmp(name, _sl_filter_function(filter)) == 0;
+    default: return false;
+    }
+}
+
+/* A probe failure of `lab` whose function this check's case calls, or NULL. */
+static const sl_probe_failure *_sl_failed_probe_of(const sl_case *c, const sl_check *k,
+                                                   const sl_grade_context *context, int lab) {
+    for (int i = 0; i < context->probe_failure_count; i++) {
+        const sl_probe_failure *f = &context->probe_failures[i];
+        if (sl_probe_at(f->function)->lab == lab && _sl_case_calls(c, k, f, context->isolated)) return f;
+    }
+    return NULL;
+}
+
+/* What to fix before this check's own symptoms mean anything, as the lead
+ * of its message, from the root: an earlier lab this one builds on (a
+ * function of it that failed its probe, or else its first failed check),
+ * a failed earlier check of the case (the framebuffer, the matrices), a
+ * failed probe of a function of this lab that the case calls. False when
+ * nothing is known. */
+static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_context *context, char *lead,
+                           size_t n) {
+    if (!context || k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_FBO || k->kind == SL_CHECK_MATRICES) return false;
+    for (int lab = 1; lab < c->lab && !context->isolated; lab++) {
+        const sl_probe_failure *f = _sl_failed_probe_of(c, k, context, lab);
+        if (f) {
+            snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,
+                     sl_probe_at(f->function)->name, f->where, f->summary);
+            return true;
         }
-        if (has_shadows && stu_shadowed < 0.1 * ref_shadowed) {
-            sl_diag_say(out, "no shadows at all: %s returns 1.0 everywhere — not implemented (TODO %s), or every point "
-                         "taken for outside the light's frustum?", fn, todo);
-        } else if (c->lab == 3 && mask && sl_diagnose_lab3_visibility(c, s, t, &mask->image, out)) {
-        } else if (c->lab >= 4 && sl_diagnose_lab4_visibility(c, s, t, mask ? &mask->image : NULL, out)) {
-        } else if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
-            sl_diag_say(out, "lit and shadowed are swapped (%.0f%% of shadows lit, %.0f%% of lit pixels shadowed): is the "
-                         "comparison inverted?", 100 * v.missing_shadow, 100 * v.extra_shadow);
-        } else if (v.extra_shadow > 0.5) {
-            sl_diag_say(out, "almost everything is in shadow (%.0f%% of lit pixels): is the comparison inverted, the depth "
-                         "map empty, or the shadow coordinate wrong (W, divide)?", 100 * v.extra_shadow);
-        } else {
-            sl_diag_say(out, "shadows differ from the reference on %.1f%% of pixels (allowed %.1f%%): %.0f%% of the "
-                         "reference's shadow is missing, %.1f%% of its lit area is shadowed",
-                    100 * st.failing_fraction, 100 * k->fail_fraction, 100 * v.missing_shadow, 100 * v.extra_shadow);
+        const sl_lab_failure *lf = context->lab_failures ? &context->lab_failures[lab] : NULL;
+        if (lf && lf->failed) {
+            snprintf(lead, n, "needs lab %d first: its %s fails (%s)", lab, lf->where, lf->summary);
+            return true;
         }
     }
-    if (!said)
-        sl_diag_say(out, "the image differs from the reference on %.1f%% of pixels (allowed %.1f%%)",
-                100 * st.failing_fraction, 100 * k->fail_fraction);
-    if (st.nan_pixels) sl_diag_append(out, "; %ld pixels are NaN (a division by zero?)", st.nan_pixels);
-    sl_diag_hint(out, k->hint);
+    for (int i = 0; i < context->earlier_count && i < (int)(k - c->checks); i++) {
+        const sl_check *e = &c->checks[i];
+        const sl_check_result *er = &context->earlier[i];
+        if (er->passed || er->reference_problem || er->bonus) continue;
+        if (e->kind == SL_CHECK_MATRICES) {
+            snprintf(lead, n, "the light's matrices are wrong (%s / %s: %s): fix the matrices first", c->name, e->name,
+                     er->summary);
+            return true;
+        }
+        if (e->kind == SL_CHECK_FBO) {
+            snprintf(lead, n, "the shadow map's framebuffer is wrong (%s / %s: %s): fix the framebuffer first", c->name,
+                     e->name, er->summary);
+            return true;
+        }
+    }
+    const sl_probe_failure *f = _sl_failed_probe_of(c, k, context, c->lab);
+    if (!f) return false;
+    if (f->stub) snprintf(lead, n, "%s (%s)", f->summary, f->where);
+    else snprintf(lead, n, "%s() is wrong on its own (%s: %s): fix it first", sl_probe_at(f->function)->name, f->where,
+                  f->summary);
+    return true;
+}
+
+/* Joins the diagnosis: the known root cause and the symptom, or the symptom
+ * and its likely cause, then the case's hint if the symptom is its own. */
+static void _sl_compose(const sl_case *c, const sl_check *k, const sl_grade_context *context, sl_check_result *out) {
+    char symptom[sizeof out->message], lead[1200];
+    snprintf(symptom, sizeof symptom, "%s", out->message);
+    bool root = !out->settled && _sl_root_cause(c, k, context, lead, sizeof lead);
+    if (root) {
+        snprintf(out->message, sizeof out->message, "%s. Here: %s", lead, symptom);
+    } else if (out->cause[0]) {
+        snprintf(out->message, sizeof out->message, "%s: %s", symptom, out->cause);
+    }
+    if (!out->summary[0]) snprintf(out->summary, sizeof out->summary, "%s", out->cause[0] ? out->cause : symptom);
+    /* A hint is a guess: never over a known cause, and only for its own symptoms
+     * (without "hint_when": only when nothing more specific was found). */
+    bool hint_fits = k->hint_when ? (k->hint_when & out->symptoms) != 0 : !out->cause[0];
+    if (!root && !out->settled && hint_fits) sl_diag_hint(out, k->hint);
+    out->cause[0] = '\0';
+}
+
+bool sl_probe_failure_of(const sl_case *c, const sl_check *k, const sl_check_result *result, sl_probe_failure *out) {
+    if (k->kind != SL_CHECK_PROBE || result->passed || result->reference_problem) return false;
+    memset(out, 0, sizeof *out);
+    out->function = k->function;
+    snprintf(out->where, sizeof out->where, "%s / %s", c->name, k->name);
+    snprintf(out->summary, sizeof out->summary, "%s", result->summary[0] ? result->summary : result->message);
+    out->stub = result->stub;
+    const sl_probe_function *f = sl_probe_at(k->function);
+    bool by_mode = f && f->param_count > 0 && strcmp(f->params[0].name, "mode") == 0;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((result->failing_rows >> row) & 1u)) continue;
+        int mode = by_mode ? (int)k->inputs[row][0] : -1;
+        out->failing_modes |= mode >= 0 && mode < 32 ? 1u << mode : 0xffffffffu;
+    }
+    if (!result->failing_rows) out->failing_modes = 0xffffffffu; /* it failed as a whole (not called, not implemented) */
+    return true;
 }
 
 void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
-                    sl_check_result *out) {
+                    const sl_grade_context *context, sl_check_result *out) {
     memset(out, 0, sizeof *out);
     out->max_points = k->points;
     out->bonus = k->bonus;
@@ -363,6 +545,7 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     }
     if (!r->finished && !(r->capture_count > 0 && !r->signal && !r->timed_out && !r->error[0])) {
         _sl_explain_run_failure(r, out);
+        snprintf(out->summary, sizeof out->summary, "%s", out->message);
         return;
     }
     /* The software renderer cuts endless shader loops short, so such a case
@@ -373,13 +556,17 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
         sl_diag_say(out, "a frame took %.2f s of CPU time where the solutions' takes %.3f s (%.0fx): a shader loop that "
                      "does not end? The software renderer stops long loops, so the picture may even look right; a GPU "
                      "would hang", r->render_seconds, usual, r->render_seconds / usual);
+        snprintf(out->summary, sizeof out->summary, "a shader loop that does not end");
         return;
     }
     /* A stub of this lab (or an earlier one) fails the check even if the picture
      * happens to match: the framework's stand-in must never earn the points.
      * (A probe calls one function alone: only its own stub matters there.) */
     for (int i = 0; k->kind != SL_CHECK_PROBE && i < r->not_implemented_count; i++)
-        if (_sl_function_lab(r->not_implemented[i]) <= c->lab && sl_diag_explain_missing(c, r, out)) return;
+        if (_sl_function_lab(r->not_implemented[i]) <= c->lab && sl_diag_explain_missing(c, r, out)) {
+            snprintf(out->summary, sizeof out->summary, "%s", out->message);
+            return;
+        }
     switch (k->kind) {
     case SL_CHECK_FBO: sl_diagnose_fbo(c, r, out); break;
     case SL_CHECK_DEPTH_MAP: sl_diagnose_depth(c, k, r, ref, out); break;
@@ -393,5 +580,8 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     if (out->passed) {
         out->points = k->points;
         out->message[0] = '\0';
+        out->cause[0] = '\0';
+        return;
     }
+    _sl_compose(c, k, context, out);
 }

@@ -665,6 +665,18 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         rep.case_count = count;
         rep.interrupted = !complete;
         bool reference_problem = false;
+        /* Probes first: an image check whose case calls a function that
+         * failed its probe leads with that function. */
+        static sl_probe_failure probe_failures[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
+        int probe_failure_count = 0;
+        for (int i = 0; i < count; i++)
+            for (int k = 0; k < cases[i].check_count; k++) {
+                if (cases[i].checks[k].kind != SL_CHECK_PROBE) continue;
+                sl_check_result *cr = &graded[i].checks[k];
+                sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k], NULL, cr);
+                if (sl_probe_failure_of(&cases[i], &cases[i].checks[k], cr, &probe_failures[probe_failure_count]))
+                    probe_failure_count++;
+            }
         for (int i = 0; i < count; i++) {
             graded[i].c = &cases[i];
             graded[i].result = &results[i];
@@ -676,11 +688,40 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                 snprintf(rep.backend, sizeof rep.backend, "%s", results[i].backend);
                 snprintf(rep.renderer, sizeof rep.renderer, "%s", results[i].renderer);
             }
-            for (int k = 0; k < cases[i].check_count; k++) {
-                sl_check_result *cr = &graded[i].checks[k];
-                sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k], cr);
-                reference_problem |= cr->reference_problem;
+        }
+        /* Lab by lab, so that a later lab's check knows what failed in the labs it builds on. */
+        static sl_lab_failure lab_failures[SL_LAB_MAX + 1];
+        memset(lab_failures, 0, sizeof lab_failures);
+        for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+            for (int i = 0; i < count; i++) {
+                if (cases[i].lab != lab) continue;
+                for (int k = 0; k < cases[i].check_count; k++) {
+                    sl_check_result *cr = &graded[i].checks[k];
+                    if (cases[i].checks[k].kind != SL_CHECK_PROBE) {
+                        sl_grade_context context = {.earlier = graded[i].checks, .earlier_count = k,
+                                                    .probe_failures = probe_failures,
+                                                    .probe_failure_count = probe_failure_count,
+                                                    .lab_failures = lab_failures, .isolated = o.isolate};
+                        sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k],
+                                       &context, cr);
+                    }
+                    reference_problem |= cr->reference_problem;
+                }
             }
+            /* the lab's first failure: a picture's before a probe's (it says what a later lab will see) */
+            sl_lab_failure *lf = &lab_failures[lab];
+            for (int probe = 0; probe < 2 && !lf->failed; probe++)
+                for (int i = 0; i < count && !lf->failed; i++)
+                    for (int k = 0; k < cases[i].check_count && !lf->failed; k++) {
+                        const sl_check *ck = &cases[i].checks[k];
+                        const sl_check_result *cr = &graded[i].checks[k];
+                        if (cases[i].lab != lab || (ck->kind == SL_CHECK_PROBE) != (probe == 1) || cr->passed ||
+                            cr->bonus || cr->reference_problem)
+                            continue;
+                        lf->failed = true;
+                        snprintf(lf->where, sizeof lf->where, "%s / %s", cases[i].name, ck->name);
+                        snprintf(lf->summary, sizeof lf->summary, "%s", cr->summary[0] ? cr->summary : cr->message);
+                    }
         }
         rep.seconds = _sl_now() - start;
         printf("shadowlab-grade: %s labs (%s), %d cases%s\n", rep.labs_kind, rep.labs_dir, count,

@@ -289,7 +289,7 @@ static void test_grade_names_acne(void) {
     add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
     sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
     sl_check_result out;
-    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(!out.passed && out.points == 0);
     CHECK(strstr(out.message, "shadow acne on 3") != NULL); /* a third of the lit surface */
     CHECK(strstr(out.message, "slope_scaled_bias") != NULL);
@@ -313,13 +313,96 @@ static void test_grade_names_peter_panning(void) {
     add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
     sl_reference ref = image_reference(reference);
     sl_check_result out;
-    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(!out.passed);
     CHECK(strstr(out.message, "detached from their casters by about") != NULL);
     CHECK(strstr(out.message, "Peter Panning") != NULL);
     sl_image_free(&out.diff);
     sl_case_result_free(&r);
     sl_reference_free(&ref);
+}
+
+/* A failed check a later one builds on leads its message; a hint shows only with its own symptom, and
+ * never over a known cause. */
+static void test_grade_leads_with_root_cause(void) {
+    sl_case c = grade_case(2, SL_CHECK_VISIBILITY);
+    c.check_count = 2;
+    c.checks[1] = c.checks[0];
+    c.checks[0].kind = SL_CHECK_MATRICES;
+    snprintf(c.checks[1].hint, sizeof c.checks[1].hint, "look at the divide");
+    c.checks[1].hint_when = 1u << SL_SYMPTOM_MISSING_SHADOW;
+    sl_case_result r = {.finished = true};
+    add_capture(&r, "visibility", square(64, 64, 0, 1, 20, 20, 30, 30)); /* half the reference's shadow */
+    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
+    sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
+    sl_check_result earlier[1] = {{.max_points = 2}};
+    snprintf(earlier[0].summary, sizeof earlier[0].summary, "the shadow matrix multiplies Lv * Lp");
+    sl_grade_context context = {.earlier = earlier, .earlier_count = 1};
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[1], &r, &ref, &context, &out);
+    CHECK(!out.passed);
+    CHECK(strncmp(out.message, "the light's matrices are wrong (synthetic / ", 44) == 0);
+    CHECK(strstr(out.message, "the shadow matrix multiplies Lv * Lp): fix the matrices first. Here: ") != NULL);
+    CHECK(strstr(out.message, "Hint:") == NULL);
+    sl_image_free(&out.diff);
+    /* nothing known: the symptom, and the hint that is about it */
+    sl_grade_check(&c, &c.checks[1], &r, &ref, NULL, &out);
+    CHECK(strstr(out.message, "fix the matrices first") == NULL);
+    CHECK(strstr(out.message, "Hint: look at the divide") != NULL);
+    sl_image_free(&out.diff);
+    /* a hint about another symptom stays out */
+    c.checks[1].hint_when = 1u << SL_SYMPTOM_ACNE;
+    sl_grade_check(&c, &c.checks[1], &r, &ref, NULL, &out);
+    CHECK(strstr(out.message, "Hint:") == NULL);
+    sl_image_free(&out.diff);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+}
+
+/* A probe check of `function` over `rows` rows of inputs, with the student's and the solution's outputs. */
+static void grade_probe(const char *function, int rows, const float inputs[][SL_PROBE_MAX_INPUTS],
+                        const double *student, const double *expected, sl_check_result *out) {
+    sl_case c = grade_case(3, SL_CHECK_PROBE);
+    const sl_probe_function *f = sl_probe_find(function);
+    sl_check *k = &c.checks[0];
+    k->function = sl_probe_index(f);
+    k->rows = rows;
+    k->tolerance = 1e-6;
+    k->relative = 2e-3;
+    for (int i = 0; i < rows; i++) memcpy(k->inputs[i], inputs[i], sizeof k->inputs[i]);
+    sl_case_result r = {.finished = true};
+    sl_capture *cap = &r.captures[r.capture_count++];
+    snprintf(cap->name, sizeof cap->name, "%s", sl_check_capture_name(&c, k));
+    cap->number_count = rows * f->output_count;
+    memcpy(cap->numbers, student, sizeof(double) * (size_t)cap->number_count);
+    sl_reference ref = {.needed = true, .loaded = true, .number_count = cap->number_count};
+    memcpy(ref.numbers, expected, sizeof(double) * (size_t)ref.number_count);
+    sl_grade_check(&c, k, &r, &ref, NULL, out);
+}
+
+/* What a probe's rows say together: the slope term's function of the angle, a missing clamp, a constant. */
+static void test_grade_probe_verdicts(void) {
+    static const float rows[][SL_PROBE_MAX_INPUTS] = {
+        {1.0f, 0.0005f, 0.0015f, 0.01f}, {0.8f, 0.0005f, 0.0015f, 0.01f}, {0.5f, 0.0005f, 0.0015f, 0.01f},
+        {0.1f, 0.0005f, 0.0015f, 0.01f}};
+    double expected[4], with_sin[4], unclamped[4], constant[4];
+    for (int i = 0; i < 4; i++) {
+        double cos_t = rows[i][0], sin_t = sqrt(1 - cos_t * cos_t), tan_t = sin_t / cos_t;
+        expected[i] = fmin(rows[i][1] + rows[i][2] * tan_t, rows[i][3]);
+        with_sin[i] = fmin(rows[i][1] + rows[i][2] * sin_t, rows[i][3]);
+        unclamped[i] = rows[i][1] + rows[i][2] * tan_t;
+        constant[i] = 0.004;
+    }
+    sl_check_result out;
+    grade_probe("slope_scaled_bias", 4, rows, with_sin, expected, &out);
+    CHECK(!out.passed && strstr(out.message, "sin(theta) where tan(theta) belongs") != NULL);
+    CHECK(strstr(out.summary, "sin(theta)") == out.summary);
+    grade_probe("slope_scaled_bias", 4, rows, unclamped, expected, &out);
+    CHECK(strstr(out.message, "not clamped") != NULL);
+    grade_probe("slope_scaled_bias", 4, rows, constant, expected, &out);
+    CHECK(strstr(out.message, "a hand-tuned constant") != NULL);
+    grade_probe("slope_scaled_bias", 4, rows, expected, expected, &out);
+    CHECK(out.passed);
 }
 
 /* A vertical shadow edge whose soft ramp is `near` px wide in the top half and `far` px in the bottom. */
@@ -345,14 +428,14 @@ static void test_grade_penumbra_inverted(void) {
     add_capture(&r, "visibility", ramp(20, 3));
     sl_reference ref = image_reference(ramp(3, 20));
     sl_check_result out;
-    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(!out.passed);
     CHECK(strstr(out.message, "penumbra formula inverted") != NULL);
     sl_case_result_free(&r);
     /* the same widths pass */
     r = (sl_case_result){.finished = true};
     add_capture(&r, "visibility", ramp(3, 20));
-    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(out.passed && out.points == 1);
     sl_case_result_free(&r);
     sl_reference_free(&ref);
@@ -364,19 +447,19 @@ static void test_grade_run_failures(void) {
     sl_check_result out;
     sl_case_result crashed = {.signal = SIGSEGV};
     snprintf(crashed.crashed_in, sizeof crashed.crashed_in, "lab2_light_view");
-    sl_grade_check(&c, &c.checks[0], &crashed, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &crashed, &ref, NULL, &out);
     CHECK(strstr(out.message, "crashed (Segmentation fault) in lab2_light_view()") != NULL);
     sl_case_result hung = {.timed_out = true, .seconds = 20};
     snprintf(hung.crashed_in, sizeof hung.crashed_in, "lab2_shadow_matrix");
-    sl_grade_check(&c, &c.checks[0], &hung, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &hung, &ref, NULL, &out);
     CHECK(strstr(out.message, "timed out after 20 s in lab2_shadow_matrix()") != NULL);
     sl_case_result stub = {.finished = true, .not_implemented_count = 1};
     snprintf(stub.not_implemented[0], 64, "lab2_light_view");
-    sl_grade_check(&c, &c.checks[0], &stub, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &stub, &ref, NULL, &out);
     CHECK(strstr(out.message, "not implemented: lab2_light_view() still returns SL_NOT_IMPLEMENTED (TODO(lab2.1)") != NULL);
     sl_reference missing = {.needed = true};
     snprintf(missing.error, sizeof missing.error, "reference missing: x/matrices.json");
-    sl_grade_check(&c, &c.checks[0], &stub, &missing, &out);
+    sl_grade_check(&c, &c.checks[0], &stub, &missing, NULL, &out);
     CHECK(out.reference_problem && strstr(out.message, "reference missing") != NULL);
 }
 
@@ -515,6 +598,8 @@ int main(int argc, char **argv) {
         {"grade_names_acne", test_grade_names_acne},
         {"grade_names_peter_panning", test_grade_names_peter_panning},
         {"grade_penumbra_inverted", test_grade_penumbra_inverted},
+        {"grade_leads_with_root_cause", test_grade_leads_with_root_cause},
+        {"grade_probe_verdicts", test_grade_probe_verdicts},
         {"grade_run_failures", test_grade_run_failures},
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},

@@ -76,10 +76,41 @@ void sl_diagnose_matrices(const sl_case *c, const sl_check *k, const sl_case_res
     } else if (_sl_matrix_error(sm, wvp) <= k->epsilon) {
         sl_diag_say(out, "the shadow matrix multiplies Lv * Lp: the order is reversed, it must be W * Lp * Lv (TODO lab2.3)");
     } else {
+        static const double transposed[16] = {0.5, 0, 0, 0.5, 0, 0.5, 0, 0.5, 0, 0, 0.5, 0.5, 0, 0, 0, 1};
+        double twvp[16];
+        _sl_mul(transposed, pv, twvp);
         _sl_mul(pv, bias, tmp);
         if (_sl_matrix_error(sm, tmp) <= k->epsilon)
             sl_diag_say(out, "the shadow matrix is Lp * Lv * W: W must come first (leftmost), W * Lp * Lv (TODO lab2.3)");
+        else if (_sl_matrix_error(sm, twvp) <= k->epsilon)
+            sl_diag_say(out, "the bias matrix W is transposed: its translation (0.5, 0.5, 0.5) ends up in the bottom row. "
+                         "cglm's initialiser lists columns, so the translation is the last of the four {...} (TODO lab2.3)");
         else
             sl_diag_say(out, "the shadow matrix differs from W * Lp * Lv (largest error %.3g) (TODO lab2.3)", em);
     }
+}
+
+bool sl_diagnose_lab2_visibility(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
+                                 sl_check_result *out) {
+    if (!mask) return false;
+    const char *fn, *todo;
+    sl_diag_lookup_function(c, &fn, &todo);
+    sl_acne acne = sl_measure_acne(s, t, mask);
+    if (acne.fraction <= 0.02) return false;
+    if (sl_acne_is_pattern(&acne)) {
+        out->symptoms |= 1u << SL_SYMPTOM_ACNE;
+        sl_diag_say(out, "shadow acne on %.0f%% of lit surfaces: they shadow themselves in stripes", 100 * acne.fraction);
+        sl_diag_cause(out, "the bias is missing or added — a surface compared with its own stored depth needs "
+                           "p.z - bias > closest to be shadowed, in %s (TODO %s)", fn, todo);
+        return true;
+    }
+    if (c->scene.light.type == SL_LIGHT_SPOT) {
+        /* a solid region: the floor past the spot light's far plane */
+        out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
+        sl_diag_say(out, "%.0f%% of lit surfaces are shadowed in solid regions, not in the stripes of acne", 100 * acne.fraction);
+        sl_diag_cause(out, "points beyond the light's far plane (depth > 1) are outside the frustum, so lit: test "
+                           "p.z as well as x and y in %s (TODO %s)", fn, todo);
+        return true;
+    }
+    return false;
 }

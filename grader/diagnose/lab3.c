@@ -84,6 +84,14 @@ bool sl_diagnose_lab3_visibility(const sl_case *c, const sl_image *s, const sl_i
                              sl_check_result *out) {
     _sl_artifacts a = _sl_measure_artifacts(s, t, mask);
     sl_bias_mode mode = c->params.bias.mode;
+    sl_acne pattern = sl_measure_acne(s, t, mask);
+    if (a.acne > 0.5 && !sl_acne_is_pattern(&pattern)) {
+        /* not acne's stripes: lit surfaces shadowed as a whole */
+        out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
+        sl_diag_say(out, "%.0f%% of lit surfaces are shadowed, in solid regions rather than acne's stripes", 100 * a.acne);
+        sl_diag_cause(out, "is lab 2's comparison inverted, or the bias added instead of subtracted?");
+        return true;
+    }
     if (a.acne > 0.01 && a.acne >= a.missing) {
         static const char *const tips[SL_BIAS_MODE_COUNT] = {
             [SL_BIAS_CONSTANT] = "is the constant bias subtracted in the comparison?",
@@ -94,8 +102,9 @@ bool sl_diagnose_lab3_visibility(const sl_case *c, const sl_image *s, const sl_i
             [SL_BIAS_MIDPOINT] = "the second map must hold each object's far side: cull the front faces in "
                                  "lab3_second_depth_state (TODO lab3.4), and compare with the midpoint of the two depths",
         };
-        sl_diag_say(out, "shadow acne on %.0f%% of lit surfaces: bias too small or missing — %s", 100 * a.acne,
-                tips[mode] ? tips[mode] : "compare with a bias");
+        out->symptoms |= 1u << SL_SYMPTOM_ACNE;
+        sl_diag_say(out, "shadow acne on %.0f%% of lit surfaces", 100 * a.acne);
+        sl_diag_cause(out, "bias too small or missing — %s", tips[mode] ? tips[mode] : "compare with a bias");
         return true;
     }
     if (a.missing > 0.02 && a.gap_px >= 1.5f) {
@@ -105,9 +114,10 @@ bool sl_diagnose_lab3_visibility(const sl_case *c, const sl_image *s, const sl_i
             [SL_BIAS_NORMAL_OFFSET] = "the offset is texels * texel size * (1 - N.L), along the normal",
             [SL_BIAS_FRONT_FACE_CULLING] = "with culling on, the lookup needs no extra bias",
         };
-        sl_diag_say(out, "shadows detached from their casters by about %.0f px (%.0f%% of the reference's shadow missing): "
-                     "bias too large (Peter Panning)%s%s",
-                a.gap_px, 100 * a.missing, tips[mode] ? " — " : "", tips[mode] ? tips[mode] : "");
+        out->symptoms |= 1u << SL_SYMPTOM_DETACHED;
+        sl_diag_say(out, "shadows detached from their casters by about %.0f px (Peter Panning; %.0f%% of the reference's "
+                         "shadow missing)", a.gap_px, 100 * a.missing);
+        sl_diag_cause(out, "bias too large%s%s", tips[mode] ? " — " : "", tips[mode] ? tips[mode] : "");
         return true;
     }
     return false;

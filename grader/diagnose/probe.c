@@ -15,14 +15,15 @@
 #include "sl_gl.h"
 #include "sl_json.h"
 #include "sl_probe.h"
+#include "sl_verdict.h"
 
-/* A number as a message shows it: a GL enum by its name where it is one. */
-static void _sl_value(double v, char *out, size_t n) {
+/* A number as a message shows it: a GL enum by its name where the output is one. */
+static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
     if (isnan(v)) {
         snprintf(out, n, "NaN");
         return;
     }
-    if (v >= 0x0400 && v <= 0x9000 && v == floor(v)) {
+    if (gl_enum && v >= 0x0200 && v <= 0x9000 && v == floor(v)) {
         const char *name = sl_gl_enum_name((GLenum)v);
         if (strncmp(name, "unknown", 7) != 0) {
             snprintf(out, n, "%s", name);
@@ -30,6 +31,13 @@ static void _sl_value(double v, char *out, size_t n) {
         }
     }
     snprintf(out, n, "%.4g", v);
+}
+
+static void _sl_value(double v, char *out, size_t n) { _sl_value_named(v, false, out, n); }
+
+/* Outputs that hold GL enums: a filter, a face, a function. */
+static bool _sl_output_is_enum(const char *name) {
+    return strstr(name, "filter") || strstr(name, "face") || strstr(name, "function");
 }
 
 /* "n_dot_l = 0.05, constant_bias = 0.0005, shadow_map = step" */
@@ -69,9 +77,13 @@ static void _sl_output_name(const sl_probe_function *f, int o, char *out, size_t
     snprintf(out, n, "%.*s", (int)len, p ? p : "");
 }
 
-static bool _sl_close_enough(const sl_check *k, int row, double student, double expected) {
+/* Within the check's tolerances; a GL enum (a filter, a face, a function) only when it is the same one. */
+static bool _sl_close_enough(const sl_check *k, int row, int output, double student, double expected) {
     if (isnan(expected)) return isnan(student);
     if (isnan(student) || isinf(student)) return false;
+    char name[64];
+    _sl_output_name(sl_probe_at(k->function), output, name, sizeof name);
+    if (_sl_output_is_enum(name)) return student == expected;
     double tolerance = k->row_tolerance[row] > 0 ? k->row_tolerance[row] : k->tolerance;
     return fabs(student - expected) <= tolerance + k->relative * fabs(expected);
 }
@@ -84,6 +96,66 @@ static double _sl_stub_output(const sl_probe_function *f, const float *in, int o
     return in[offset + o];
 }
 
+/* "f(inputs) = got, expected want — about": one row, the outputs that differ named where there are several. */
+static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int row, const double *s, const double *e,
+                             char *out, size_t n) {
+    char inputs[600], got[300] = "", want[300] = "";
+    _sl_inputs(f, k->inputs[row], inputs, sizeof inputs);
+    if (f->output_count == 1) {
+        _sl_value(s[0], got, sizeof got);
+        _sl_value(e[0], want, sizeof want);
+    } else if (f->glsl && f->output_count <= 4) {
+        /* a vector: all of it */
+        size_t g = 0, w = 0;
+        for (int o = 0; o < f->output_count; o++) {
+            char a[48], b[48];
+            _sl_value(s[o], a, sizeof a);
+            _sl_value(e[o], b, sizeof b);
+            g += (size_t)snprintf(got + g, sizeof got - g, "%s%s", o ? ", " : "(", a);
+            w += (size_t)snprintf(want + w, sizeof want - w, "%s%s", o ? ", " : "(", b);
+        }
+        if (g < sizeof got) snprintf(got + g, sizeof got - g, ")");
+        if (w < sizeof want) snprintf(want + w, sizeof want - w, ")");
+    } else {
+        /* a matrix, or GL state: the values that differ, by name (a matrix's largest difference first) */
+        int order[SL_PROBE_MAX_OUTPUTS], count = 0;
+        for (int o = 0; o < f->output_count; o++)
+            if (!_sl_close_enough(k, row, o, s[o], e[o])) order[count++] = o;
+        for (int a = 0; a < count && f->output_count == 16; a++)
+            for (int b = a + 1; b < count; b++) {
+                double da = isnan(s[order[a]]) ? INFINITY : fabs(s[order[a]] - e[order[a]]);
+                double db = isnan(s[order[b]]) ? INFINITY : fabs(s[order[b]] - e[order[b]]);
+                if (db > da) {
+                    int t = order[a];
+                    order[a] = order[b];
+                    order[b] = t;
+                }
+            }
+        const char *about = k->about[row], *dash = about[0] ? " — " : "";
+        if (f->output_count == 16 && count > 0) {
+            char a[48], b[48], name[16];
+            _sl_value(s[order[0]], a, sizeof a);
+            _sl_value(e[order[0]], b, sizeof b);
+            _sl_output_name(f, order[0], name, sizeof name);
+            snprintf(out, n, "%s(%s) = a matrix whose %s is %s, expected %s%s%s", f->name, inputs, name, a, b, dash, about);
+            return;
+        }
+        size_t g = 0;
+        for (int i = 0; i < count; i++) {
+            char a[48], b[48], name[64];
+            _sl_output_name(f, order[i], name, sizeof name);
+            _sl_value_named(s[order[i]], _sl_output_is_enum(name), a, sizeof a);
+            _sl_value_named(e[order[i]], _sl_output_is_enum(name), b, sizeof b);
+            g += (size_t)snprintf(got + g, sizeof got - g, "%s%s %s (expected %s)", i ? ", " : "", name, a, b);
+            if (g >= sizeof got) break;
+        }
+        snprintf(out, n, "%s(%s) gives %s%s%s", f->name, inputs, got, dash, about);
+        return;
+    }
+    snprintf(out, n, "%s(%s) = %s, expected %s%s%s", f->name, inputs, got, want, k->about[row][0] ? " — " : "",
+             k->about[row]);
+}
+
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                        sl_check_result *out) {
     const sl_probe_function *f = sl_probe_at(k->function);
@@ -94,6 +166,8 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     for (int i = 0; i < r->not_implemented_count; i++)
         if (strcmp(r->not_implemented[i], f->name) == 0) {
             sl_diag_say(out, "not implemented: %s() still returns SL_NOT_IMPLEMENTED (%s in %s)", f->name, todo, file);
+            snprintf(out->summary, sizeof out->summary, "%s", out->message);
+            out->settled = out->stub = true;
             return;
         }
     const sl_capture *cap = sl_result_capture(r, capture);
@@ -103,26 +177,22 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
             sl_diag_say(out, "%s() could not be called:%s", f->name, r->capture_error + len + 1);
         else
             sl_diag_say(out, "%s() was not called: the case ended before its probe", f->name);
+        snprintf(out->summary, sizeof out->summary, "%s", out->message);
+        out->settled = true;
         return;
     }
-    int failing = 0, first = -1, worst_output = 0;
+    int failing = 0, first = -1;
     bool all_stub = true;
-    double worst = -1;
     for (int row = 0; row < k->rows; row++) {
         bool row_ok = true;
         for (int o = 0; o < f->output_count; o++) {
             double s = cap->numbers[row * f->output_count + o], e = ref->numbers[row * f->output_count + o];
-            bool ok = _sl_close_enough(k, row, s, e);
-            row_ok &= ok;
-            all_stub &= _sl_close_enough(k, row, s, _sl_stub_output(f, k->inputs[row], o));
-            double error = isnan(s) ? INFINITY : fabs(s - e);
-            if (!ok && first < 0 && error > worst) {
-                worst = error;
-                worst_output = o;
-            }
+            row_ok &= _sl_close_enough(k, row, o, s, e);
+            all_stub &= _sl_close_enough(k, row, o, s, _sl_stub_output(f, k->inputs[row], o));
         }
         if (!row_ok) {
             failing++;
+            out->failing_rows |= 1u << row;
             if (first < 0) first = row;
         }
     }
@@ -135,40 +205,30 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         if (f->stub_param >= 0) snprintf(stub, sizeof stub, "its parameter %s unchanged", f->params[f->stub_param].name);
         else snprintf(stub, sizeof stub, "the stub's %g", f->stub_value);
         sl_diag_say(out, "not implemented: %s() still returns %s (%s in %s)", f->name, stub, todo, file);
+        snprintf(out->summary, sizeof out->summary, "%s", out->message);
+        out->settled = out->stub = true;
         return;
     }
-    char inputs[600], got[200] = "", want[200] = "";
-    _sl_inputs(f, k->inputs[first], inputs, sizeof inputs);
-    const double *s = &cap->numbers[first * f->output_count], *e = &ref->numbers[first * f->output_count];
-    if (f->output_count == 16) {
-        /* a matrix: the element that differs most */
-        char name[16], a[48], b[48];
-        _sl_output_name(f, worst_output, name, sizeof name);
-        _sl_value(s[worst_output], a, sizeof a);
-        _sl_value(e[worst_output], b, sizeof b);
-        snprintf(got, sizeof got, "a matrix whose %s is %s", name, a);
-        snprintf(want, sizeof want, "%s", b);
-    } else if (f->output_count == 1) {
-        _sl_value(s[0], got, sizeof got);
-        _sl_value(e[0], want, sizeof want);
+    /* What the rows say together, then the row that shows it (or the first that differs). */
+    char verdict[600];
+    sl_verdict_rows rows = {.f = f, .k = k, .student = cap->numbers, .expected = ref->numbers,
+                            .failing = out->failing_rows};
+    int shown = sl_probe_verdict(&rows, verdict, sizeof verdict);
+    if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
+    char evidence[1500];
+    _sl_row_evidence(f, k, shown, &cap->numbers[shown * f->output_count], &ref->numbers[shown * f->output_count],
+                     evidence, sizeof evidence);
+    if (verdict[0]) {
+        sl_diag_say(out, "%s(): %s. For example %s", f->name, verdict, evidence);
+        snprintf(out->summary, sizeof out->summary, "%s", verdict);
     } else {
-        size_t g = 0, w = 0;
-        for (int o = 0; o < f->output_count; o++) {
-            char a[48], b[48], name[48];
-            _sl_value(s[o], a, sizeof a);
-            _sl_value(e[o], b, sizeof b);
-            _sl_output_name(f, o, name, sizeof name);
-            bool named = f->glsl ? false : true; /* C state: say which value is which */
-            g += (size_t)snprintf(got + g, sizeof got - g, "%s%s%s%s", o ? ", " : "(", named ? name : "", named ? " " : "", a);
-            w += (size_t)snprintf(want + w, sizeof want - w, "%s%s%s%s", o ? ", " : "(", named ? name : "", named ? " " : "", b);
-        }
-        if (g < sizeof got) snprintf(got + g, sizeof got - g, ")");
-        if (w < sizeof want) snprintf(want + w, sizeof want - w, ")");
+        sl_diag_say(out, "%s", evidence);
+        /* for other checks to quote: what differs and what the row tests, without the inputs */
+        const char *equals = strstr(evidence, ") = "), *gives = strstr(evidence, ") gives ");
+        if (equals) snprintf(out->summary, sizeof out->summary, "gives %s", equals + 4);
+        else snprintf(out->summary, sizeof out->summary, "%s", gives ? gives + 2 : evidence);
     }
-    sl_diag_say(out, "%s(%s) = %s, expected %s", f->name, inputs, got, want);
-    if (k->about[first][0]) sl_diag_append(out, " — %s", k->about[first]);
     sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
-    sl_diag_hint(out, k->hint);
 }
 
 bool sl_probe_reference_write(const char *path, const sl_check *k, const double *outputs, char *err, size_t n) {
