@@ -1,36 +1,73 @@
-/* sl_context: a GL 3.3 core context from one of two backends, with every GL
+/* sl_context: a GL 3.3 core context from one of three backends, with every GL
  * entry point loaded through that backend (see sl_gl.h).
- *   SL_BACKEND_OSMESA  headless, software (llvmpipe); the grader's default
- *   SL_BACKEND_GLFW    a window (X11 on Linux); the viewer's default */
+ *   SL_BACKEND_OSMESA  headless, software (llvmpipe). Mesa removed OSMesa in
+ *                      25.1, so newer systems do not have it.
+ *   SL_BACKEND_EGL     headless, no display and no surface: a GPU through
+ *                      EGL_EXT_platform_device where there is one, else llvmpipe
+ *                      (EGL_MESA_platform_surfaceless or Mesa's software device).
+ *   SL_BACKEND_GLFW    a window (X11 on Linux); the viewer's default.
+ * Which headless backends exist is decided at build time: ask
+ * sl_backend_available() (sl_backend.h).
+ *
+ * Framebuffer 0. Code draws into and reads from framebuffer 0 as "the
+ * context's own picture" (the window, the OSMesa buffer). EGL without a surface
+ * has no such framebuffer, so the EGL backend makes one: a framebuffer object
+ * of the context's size (RGBA8 colour, depth 24 / stencil 8), bound at
+ * creation. So that every caller, the labs included, keeps meaning "the
+ * context's picture" by 0 on every backend, the EGL backend loads
+ * glBindFramebuffer so that binding 0 binds that object, and glGetIntegerv
+ * reports it as 0 for GL_{DRAW_,READ_,}FRAMEBUFFER_BINDING. Code that needs the
+ * real name (e.g. to attach or query it) gets it from
+ * sl_context_default_framebuffer(). Differences that remain on EGL: its
+ * colour buffer is GL_COLOR_ATTACHMENT0, not GL_BACK/GL_FRONT, for
+ * glDrawBuffer, glReadBuffer and attachment queries.
+ *
+ * One context at a time per process: the GL entry points are process-wide. */
 #ifndef SL_CONTEXT_H
 #define SL_CONTEXT_H
 
 #include <stdbool.h>
 #include <stddef.h>
 
-typedef enum sl_backend { SL_BACKEND_OSMESA = 0, SL_BACKEND_GLFW } sl_backend;
+#include "sl_backend.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct sl_context_desc {
-    sl_backend backend;  /* default OSMesa */
+    sl_backend backend;  /* default: sl_backend_default_headless() */
     int width, height;   /* default 512 x 512 */
     const char *title;   /* window title (GLFW) */
     bool resizable;      /* GLFW only */
+    /* EGL: only Mesa's software device (llvmpipe), even where a GPU is
+     * present, so pictures match references rendered in software. The
+     * surfaceless platform is tried only if that device fails. */
+    bool software_only;
 } sl_context_desc;
 
 typedef struct sl_context sl_context;
 
-/* NULL on failure, with the reason in err. */
+/* NULL on failure, with the reason in err. The context is current on return. */
 sl_context *sl_context_create(const sl_context_desc *desc, char *err, size_t err_size);
 void sl_context_destroy(sl_context *ctx);
 
+/* The backend in use (never SL_BACKEND_DEFAULT_HEADLESS). */
 sl_backend sl_context_backend(const sl_context *ctx);
 /* Size of the default framebuffer in pixels. */
 void sl_context_framebuffer_size(const sl_context *ctx, int *width, int *height);
-/* Finishes the frame: swaps and polls events (GLFW), or glFinish (OSMesa). */
+/* The GL name of the default framebuffer: the EGL backend's framebuffer
+ * object, 0 for the others. Binding 0 binds it anyway (see the top). */
+unsigned sl_context_default_framebuffer(const sl_context *ctx);
+/* Finishes the frame: swaps and polls events (GLFW), or glFinish (headless). */
 void sl_context_end_frame(sl_context *ctx);
 bool sl_context_should_close(const sl_context *ctx);
-/* The GLFWwindow, or NULL for OSMesa. */
+/* The GLFWwindow, or NULL for the headless backends. */
 void *sl_context_window(const sl_context *ctx);
 const char *sl_context_renderer_name(void); /* GL_RENDERER of the current context */
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

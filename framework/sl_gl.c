@@ -45,6 +45,23 @@ const char *sl_gl_enum_name(GLenum value) {
     case GL_DEPTH32F_STENCIL8: return "GL_DEPTH32F_STENCIL8";
     case GL_RGBA8: return "GL_RGBA8";
     case GL_RGBA: return "GL_RGBA";
+    case GL_NEAREST: return "GL_NEAREST";
+    case GL_LINEAR: return "GL_LINEAR";
+    case GL_NEAREST_MIPMAP_NEAREST: return "GL_NEAREST_MIPMAP_NEAREST";
+    case GL_LINEAR_MIPMAP_NEAREST: return "GL_LINEAR_MIPMAP_NEAREST";
+    case GL_NEAREST_MIPMAP_LINEAR: return "GL_NEAREST_MIPMAP_LINEAR";
+    case GL_LINEAR_MIPMAP_LINEAR: return "GL_LINEAR_MIPMAP_LINEAR";
+    case GL_NEVER: return "GL_NEVER";
+    case GL_LESS: return "GL_LESS";
+    case GL_EQUAL: return "GL_EQUAL";
+    case GL_LEQUAL: return "GL_LEQUAL";
+    case GL_GREATER: return "GL_GREATER";
+    case GL_NOTEQUAL: return "GL_NOTEQUAL";
+    case GL_GEQUAL: return "GL_GEQUAL";
+    case GL_ALWAYS: return "GL_ALWAYS";
+    case GL_FRONT: return "GL_FRONT";
+    case GL_BACK: return "GL_BACK";
+    case GL_FRONT_AND_BACK: return "GL_FRONT_AND_BACK";
     default: return "unknown GL enum";
     }
 }

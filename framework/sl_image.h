@@ -1,5 +1,7 @@
 /* sl_image: float images in memory, and their files (PNG for colour and
- * visibility, OpenEXR for float buffers) through OpenImageIO.
+ * visibility, OpenEXR for float buffers) through OpenImageIO, which lives in
+ * a module loaded on the first read or write (see sl_image_io.h). If the
+ * module is missing, reads and writes fail with a message naming it.
  *
  * Pixels are floats, interleaved, row 0 is the TOP row (as in image files;
  * GL read-backs are flipped on capture). */

@@ -6,11 +6,3 @@ const sl_lab_functions sl_build_lab_functions = {
     lab3_depth_pass_state,  lab3_second_depth_state,
     lab4_configure_shadow_texture,
 };
-
-const sl_lab_functions *sl_isolation_lab_functions;
-const char *sl_isolation_labs_dir;
-
-const char *sl_lab_folder(int lab) {
-    static const char *const folders[SL_LAB_COUNT + 1] = {NULL, "lab1_depth_fbo", "lab2_projective", "lab3_bias", "lab4_pcf"};
-    return lab >= 1 && lab <= SL_LAB_COUNT ? folders[lab] : NULL;
-}

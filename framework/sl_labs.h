@@ -1,12 +1,11 @@
-/* sl_labs: the lab functions as a table, so one binary can run a student's
- * lab under test with the solutions' other labs (shadowlab-grade --isolate):
- * one early mistake then does not cost every later lab its marks. */
+/* sl_labs: the lab functions of this binary as a table: the renderer calls
+ * lab code only through it, so every call can be named (a crash is pinned on
+ * the function it happened in) and a stub's SL_NOT_IMPLEMENTED recorded. */
 #ifndef SL_LABS_H
 #define SL_LABS_H
 
 #include "shadowlab.h"
-
-#define SL_LAB_COUNT 4 /* labs in this build */
+#include "sl_params.h"
 
 typedef struct sl_lab_functions {
     sl_status (*lab1_create_shadow_map)(int size, sl_shadow_map *map);
@@ -20,14 +19,8 @@ typedef struct sl_lab_functions {
     sl_status (*lab4_configure_shadow_texture)(GLuint depth_texture, sl_filter_mode mode);
 } sl_lab_functions;
 
-/* The labs this binary was built from (labs/ or solutions/). */
+/* The labs this binary was built from (labs/, solutions/, or for the
+ * grader's --isolate, one lab's files with the solutions' others). */
 extern const sl_lab_functions sl_build_lab_functions;
-/* The solutions, linked under other names for --isolate; NULL when this copy
- * has no solutions (a student handout). Set before main() runs. */
-extern const sl_lab_functions *sl_isolation_lab_functions;
-extern const char *sl_isolation_labs_dir;
-
-/* Folder of lab N under a labs tree ("lab1_depth_fbo"), N = 1..SL_LAB_COUNT. */
-const char *sl_lab_folder(int lab);
 
 #endif

@@ -18,61 +18,6 @@ const char *sl_framework_dir(void) {
     return env && *env ? env : SL_FRAMEWORK_DIR;
 }
 
-void sl_render_params_defaults(sl_render_params *p) {
-    *p = (sl_render_params){
-        .lab = SL_RENDERER_MAX_LAB,
-        .shadow_map_size = 1024,
-        .compare = SL_COMPARE_MANUAL,
-        .bias = {
-            .mode = SL_BIAS_SLOPE_SCALED,
-            .constant = 0.005f,
-            .slope = 0.003f,
-            .max_bias = 0.03f,
-            .polygon_offset_factor = 2.0f,
-            .polygon_offset_units = 4.0f,
-            .normal_offset = 1.5f,
-        },
-        .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f},
-        .output = SL_OUTPUT_SHADED,
-    };
-}
-
-static const char *const _sl_bias_names[SL_BIAS_MODE_COUNT] = {
-    "none", "constant", "slope", "polygon-offset", "front-culling", "normal-offset", "midpoint",
-};
-static const char *const _sl_filter_names[SL_FILTER_MODE_COUNT] = {"none", "hardware", "grid", "poisson", "pcss"};
-
-static bool _sl_find_name(const char *const *names, int count, const char *name, int *index) {
-    for (int i = 0; i < count; i++)
-        if (strcmp(name, names[i]) == 0) {
-            *index = i;
-            return true;
-        }
-    return false;
-}
-
-const char *sl_bias_mode_name(sl_bias_mode mode) {
-    return mode < SL_BIAS_MODE_COUNT ? _sl_bias_names[mode] : "?";
-}
-
-bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode) {
-    int i;
-    if (!_sl_find_name(_sl_bias_names, SL_BIAS_MODE_COUNT, name, &i)) return false;
-    *mode = (sl_bias_mode)i;
-    return true;
-}
-
-const char *sl_filter_mode_name(sl_filter_mode mode) {
-    return mode < SL_FILTER_MODE_COUNT ? _sl_filter_names[mode] : "?";
-}
-
-bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
-    int i;
-    if (!_sl_find_name(_sl_filter_names, SL_FILTER_MODE_COUNT, name, &i)) return false;
-    *mode = (sl_filter_mode)i;
-    return true;
-}
-
 static void _sl_enter(const char *function) {
     if (sl_lab_call_hook) sl_lab_call_hook(function);
 }
@@ -282,8 +227,7 @@ static _sl_slot *_sl_variant_program(sl_renderer *r, const _sl_variant_key *key)
 
 bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, size_t err_size) {
     memset(r, 0, sizeof *r);
-    for (int lab = 1; lab <= SL_LAB_COUNT; lab++)
-        r->fns[lab] = desc && desc->lab_functions[lab] ? desc->lab_functions[lab] : &sl_build_lab_functions;
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) r->fns[lab] = &sl_build_lab_functions;
     const char *labs = desc && desc->labs_dir ? desc->labs_dir : getenv("SHADOWLAB_LABS");
     if (!labs || !*labs) labs = sl_build_labs_dir;
     snprintf(r->labs_dir, sizeof r->labs_dir, "%s", labs);

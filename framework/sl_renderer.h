@@ -21,25 +21,12 @@
 #include "sl_image.h"
 #include "sl_labs.h"
 #include "sl_mesh.h"
+#include "sl_params.h"
 #include "sl_scene.h"
 #include "sl_shader.h"
 #include "shadowlab.h"
 
-typedef enum sl_compare_mode { SL_COMPARE_MANUAL = 0, SL_COMPARE_HARDWARE = 1 } sl_compare_mode;
-/* SL_OUTPUT_LIT_MASK: white where a surface faces the light (the grader's "lit surfaces"). */
-typedef enum sl_output { SL_OUTPUT_SHADED = 0, SL_OUTPUT_VISIBILITY = 1, SL_OUTPUT_LIT_MASK = 2 } sl_output;
-
-#define SL_RENDERER_MAX_LAB 4
-
-typedef struct sl_render_params {
-    int lab;                 /* labs in use, 1..SL_RENDERER_MAX_LAB: 1 = depth pass only */
-    int shadow_map_size;     /* texels; default 1024 */
-    sl_compare_mode compare; /* labs 2-3: sampler2D + manual compare, or sampler2DShadow */
-    sl_bias_settings bias;   /* lab 2 uses bias.constant; lab 3 all of it */
-    sl_filter_settings filter; /* lab 4 */
-    sl_output output;
-    bool show_shadow_map;    /* debug view of the depth map in a corner */
-} sl_render_params;
+#define SL_RENDERER_MAX_LAB SL_LAB_COUNT
 
 #define SL_MAX_NOT_IMPLEMENTED 16
 
@@ -76,7 +63,6 @@ typedef struct sl_frame_timing {
 typedef struct sl_renderer_desc {
     const char *labs_dir;      /* labs/ or solutions/ (default: the build's) */
     const char *framework_dir; /* default: the source tree's framework/ */
-    const sl_lab_functions *lab_functions[SL_LAB_COUNT + 1]; /* per lab; NULL: this build's */
 } sl_renderer_desc;
 
 /* How many GLSL programs a renderer has built (compiled and linked), and the
@@ -90,7 +76,7 @@ typedef struct sl_program_stats {
 struct _sl_programs; /* the program cache (sl_renderer.c) */
 
 typedef struct sl_renderer {
-    const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab */
+    const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab (this build's) */
     char labs_dir[SL_PATH_MAX];
     char shaders_dir[SL_PATH_MAX];
     /* Every program (lab 1's depth pass, the camera pass per lab and setting,
@@ -123,6 +109,8 @@ extern void (*sl_lab_call_hook)(const char *function);
  * ("student", "solutions" or a variant's name). Defined per build. */
 extern const char sl_build_labs_dir[];
 extern const char sl_build_labs_kind[];
+/* The framework folder (its shaders/): compiled in; SHADOWLAB_FRAMEWORK
+ * overrides it in the viewer. The grader's runner never reads the environment. */
 const char *sl_framework_dir(void);
 
 /* Prepares a renderer; programs are built by the first frame that uses them.
@@ -154,13 +142,5 @@ bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
 bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out);
 /* The depth texture's texels (1 channel); false if it is not a depth texture. */
 bool sl_capture_depth_texture(GLuint texture, sl_image *out, char *err, size_t err_size);
-
-void sl_render_params_defaults(sl_render_params *params);
-
-/* Names as the command line and case files spell them ("slope", "pcss"). */
-const char *sl_bias_mode_name(sl_bias_mode mode);
-bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode);
-const char *sl_filter_mode_name(sl_filter_mode mode);
-bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode);
 
 #endif

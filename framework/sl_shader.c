@@ -10,6 +10,11 @@
 #include <sys/stat.h>
 
 #define _SL_INCLUDE_DEPTH_MAX 16
+/* Every file's lines are numbered from (its source number * this): some
+ * drivers report a wrong source number for some errors (Mesa, for
+ * initializers in an included file) but always the right line, so the line
+ * alone says which file it was. */
+#define _SL_LINE_BASE 100000
 
 typedef struct _sl_strbuf {
     char *data;
@@ -76,12 +81,18 @@ static void _sl_dirname(const char *path, char *out, size_t n) {
 
 typedef struct _sl_pp {
     const char *const *search_dirs;
+    /* Included files must lie in one of these (real paths): the search
+     * folders and the main file's folder, so lab code cannot pull in files
+     * from elsewhere on the machine (other labs' solutions, references). */
+    char roots[SL_SHADER_MAX_DIRS + 1][SL_PATH_MAX];
+    int root_count;
     char (*files)[SL_PATH_MAX];
     int file_count;
     char *err;
     size_t err_size;
     bool version_seen;
     const char *defines;
+    const char *main_text; /* the main file's text, when it is not a file */
 } _sl_pp;
 
 static int _sl_register_file(_sl_pp *pp, const char *path, bool *already) {
@@ -99,23 +110,48 @@ static int _sl_register_file(_sl_pp *pp, const char *path, bool *already) {
 
 static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth);
 
-/* Resolves an #include name: the including file's folder first, then the search folders. */
-static bool _sl_resolve_include(_sl_pp *pp, const char *from, const char *name, char *out, size_t n) {
-    char dir[SL_PATH_MAX];
-    _sl_dirname(from, dir, sizeof dir);
-    snprintf(out, n, "%s/%s", dir, name);
-    if (_sl_file_exists(out)) return true;
-    for (int i = 0; pp->search_dirs && i < SL_SHADER_MAX_DIRS && pp->search_dirs[i]; i++) {
-        snprintf(out, n, "%s/%s", pp->search_dirs[i], name);
-        if (_sl_file_exists(out)) return true;
+static void _sl_add_root(_sl_pp *pp, const char *dir) {
+    char real[PATH_MAX];
+    if (pp->root_count <= SL_SHADER_MAX_DIRS && realpath(dir, real))
+        snprintf(pp->roots[pp->root_count++], SL_PATH_MAX, "%s", real);
+}
+
+static bool _sl_inside_roots(const _sl_pp *pp, const char *path) {
+    char real[PATH_MAX];
+    if (!realpath(path, real)) return false;
+    for (int i = 0; i < pp->root_count; i++) {
+        size_t n = strlen(pp->roots[i]);
+        if (strncmp(real, pp->roots[i], n) == 0 && (real[n] == '/' || (n == 1 && pp->roots[i][0] == '/'))) return true;
     }
     return false;
+}
+
+/* Resolves an #include name: the including file's folder first, then the
+ * search folders. 0: found; 1: not found; 2: found, but outside the roots. */
+static int _sl_resolve_include(_sl_pp *pp, const char *from, const char *name, char *out, size_t n) {
+    char dir[SL_PATH_MAX];
+    bool outside = false;
+    _sl_dirname(from, dir, sizeof dir);
+    snprintf(out, n, "%s/%s", dir, name);
+    if (_sl_file_exists(out)) {
+        if (_sl_inside_roots(pp, out)) return 0;
+        outside = true;
+    }
+    for (int i = 0; pp->search_dirs && i < SL_SHADER_MAX_DIRS && pp->search_dirs[i]; i++) {
+        snprintf(out, n, "%s/%s", pp->search_dirs[i], name);
+        if (_sl_file_exists(out)) {
+            if (_sl_inside_roots(pp, out)) return 0;
+            outside = true;
+        }
+    }
+    return outside ? 2 : 1;
 }
 
 static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth) {
     /* Messages name the real file, also when a labs tree is assembled from links (--isolate). */
     char real[4096];
-    if (realpath(path, real)) path = real;
+    bool given = depth == 0 && pp->main_text;
+    if (!given && realpath(path, real)) path = real;
     bool already;
     int id = _sl_register_file(pp, path, &already);
     if (already) return true; /* included once */
@@ -123,7 +159,7 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
         snprintf(pp->err, pp->err_size, "%s: too many included files (at most %d)", path, SL_SHADER_MAX_FILES);
         return false;
     }
-    char *text = _sl_read_file(path);
+    char *text = given ? strdup(pp->main_text) : _sl_read_file(path);
     if (!text) {
         snprintf(pp->err, pp->err_size, "%s: cannot read shader file", path);
         return false;
@@ -138,7 +174,7 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
         const char *p = line;
         while (p < line + len && isspace((unsigned char)*p)) p++;
         if (need_marker && !(strncmp(p, "#version", 8) == 0)) {
-            _sl_appendf(out, "#line %d %d\n", line_no, id);
+            _sl_appendf(out, "#line %d %d\n", id * _SL_LINE_BASE + line_no, id);
             need_marker = false;
         }
         if (strncmp(p, "#version", 8) == 0) {
@@ -151,7 +187,7 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
                     _sl_append(out, pp->defines, strlen(pp->defines));
                     _sl_append(out, "\n", 1);
                 }
-                _sl_appendf(out, "#line %d %d\n", line_no + 1, id);
+                _sl_appendf(out, "#line %d %d\n", id * _SL_LINE_BASE + line_no + 1, id);
             }
             pp->version_seen = true;
         } else if (strncmp(p, "#include", 8) == 0) {
@@ -169,13 +205,22 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
                 ok = false;
                 break;
             }
-            if (!_sl_resolve_include(pp, path, name, resolved, sizeof resolved)) {
+            int found = name[0] == '/' ? 2 : _sl_resolve_include(pp, path, name, resolved, sizeof resolved);
+            if (found == 2) {
+                snprintf(pp->err, pp->err_size,
+                         "%s:%d: error: #include \"%s\" reaches outside the shader folders (the labs folder and "
+                         "framework/shaders): include files from there only",
+                         path, line_no, name);
+                ok = false;
+                break;
+            }
+            if (found == 1) {
                 snprintf(pp->err, pp->err_size, "%s:%d: error: cannot find included file \"%s\"", path, line_no, name);
                 ok = false;
                 break;
             }
             ok = _sl_expand(pp, out, resolved, depth + 1);
-            _sl_appendf(out, "#line %d %d\n", line_no + 1, id);
+            _sl_appendf(out, "#line %d %d\n", id * _SL_LINE_BASE + line_no + 1, id);
         } else {
             _sl_append(out, line, len);
             _sl_append(out, "\n", 1);
@@ -193,6 +238,12 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
 
 char *sl_shader_preprocess(const char *path, const char *const *search_dirs, const char *defines,
                            char files[][SL_PATH_MAX], int *file_count, char *err, size_t err_size) {
+    return sl_shader_preprocess_text(path, NULL, search_dirs, defines, files, file_count, err, err_size);
+}
+
+char *sl_shader_preprocess_text(const char *path, const char *text, const char *const *search_dirs,
+                                const char *defines, char files[][SL_PATH_MAX], int *file_count, char *err,
+                                size_t err_size) {
     char dummy_err[8];
     _sl_pp pp = {
         .search_dirs = search_dirs,
@@ -200,7 +251,12 @@ char *sl_shader_preprocess(const char *path, const char *const *search_dirs, con
         .err = err ? err : dummy_err,
         .err_size = err ? err_size : sizeof dummy_err,
         .defines = defines,
+        .main_text = text,
     };
+    char main_dir[SL_PATH_MAX];
+    _sl_dirname(path, main_dir, sizeof main_dir);
+    _sl_add_root(&pp, main_dir);
+    for (int i = 0; search_dirs && i < SL_SHADER_MAX_DIRS && search_dirs[i]; i++) _sl_add_root(&pp, search_dirs[i]);
     _sl_strbuf out = {0};
     bool ok = _sl_expand(&pp, &out, path, 0);
     if (file_count) *file_count = pp.file_count;
@@ -232,6 +288,10 @@ void sl_shader_map_log(const char *log, char files[][SL_PATH_MAX], int file_coun
             col = 0;
             mapped = true;
         }
+        if (mapped && ln >= _SL_LINE_BASE) { /* the line names the file (see _SL_LINE_BASE) */
+            src = ln / _SL_LINE_BASE;
+            ln %= _SL_LINE_BASE;
+        }
         if (mapped && src >= 0 && src < file_count) {
             if (col > 0)
                 _sl_appendf(&b, "%s:%d:%d: ", files[src], ln, col);
@@ -255,7 +315,8 @@ static GLuint _sl_compile(GLenum stage, const char *path, const sl_program *prog
     for (int i = 0; i < SL_SHADER_MAX_DIRS && program->search_dirs[i][0]; i++) dirs[i] = program->search_dirs[i];
     char files[SL_SHADER_MAX_FILES][SL_PATH_MAX];
     int count = 0;
-    char *source = sl_shader_preprocess(path, dirs, program->defines, files, &count, err, err_size);
+    const char *text = stage == GL_FRAGMENT_SHADER ? program->fragment_source : NULL;
+    char *source = sl_shader_preprocess_text(path, text, dirs, program->defines, files, &count, err, err_size);
     if (!source) return 0;
     for (int i = 0; i < count && *total_files < SL_SHADER_MAX_FILES; i++)
         snprintf(all_files[(*total_files)++], SL_PATH_MAX, "%s", files[i]);
@@ -349,6 +410,7 @@ bool sl_program_build(sl_program *program, const sl_shader_desc *desc, char *err
     for (int i = 0; i < SL_SHADER_MAX_DIRS && desc->search_dirs[i]; i++)
         snprintf(program->search_dirs[i], SL_PATH_MAX, "%s", desc->search_dirs[i]);
     if (desc->defines) snprintf(program->defines, sizeof program->defines, "%s", desc->defines);
+    if (desc->fragment_source) program->fragment_source = strdup(desc->fragment_source);
     return _sl_build_from_paths(program, err, err_size);
 }
 
@@ -371,6 +433,8 @@ bool sl_program_reload_if_changed(sl_program *program, char *err, size_t err_siz
 void sl_program_destroy(sl_program *program) {
     if (program->id) glDeleteProgram(program->id);
     program->id = 0;
+    free(program->fragment_source);
+    program->fragment_source = NULL;
 }
 
 GLint sl_program_uniform(const sl_program *program, const char *name) {

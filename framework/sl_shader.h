@@ -25,6 +25,9 @@ typedef struct sl_shader_desc {
     const char *geometry_path;                 /* optional */
     const char *search_dirs[SL_SHADER_MAX_DIRS]; /* for #include; NULL-terminated */
     const char *defines;                       /* optional lines inserted after #version */
+    /* optional: the fragment stage's text itself, instead of reading
+     * fragment_path (which then only names it and places its #includes) */
+    const char *fragment_source;
 } sl_shader_desc;
 
 typedef struct sl_program {
@@ -32,6 +35,7 @@ typedef struct sl_program {
     char stage_paths[3][SL_PATH_MAX];
     char search_dirs[SL_SHADER_MAX_DIRS][SL_PATH_MAX];
     char defines[512];
+    char *fragment_source; /* owned copy of sl_shader_desc.fragment_source, or NULL */
     /* every file read for the current program, with its time stamp */
     char files[SL_SHADER_MAX_FILES][SL_PATH_MAX];
     struct timespec mtimes[SL_SHADER_MAX_FILES];
@@ -54,6 +58,10 @@ GLint sl_program_uniform(const sl_program *program, const char *name);
  * source list (index = GLSL source-string number). Exposed for tests. */
 char *sl_shader_preprocess(const char *path, const char *const *search_dirs, const char *defines,
                            char files[][SL_PATH_MAX], int *file_count, char *err, size_t err_size);
+/* The same for a main file given as text (`path` names it and places its includes). */
+char *sl_shader_preprocess_text(const char *path, const char *text, const char *const *search_dirs,
+                                const char *defines, char files[][SL_PATH_MAX], int *file_count, char *err,
+                                size_t err_size);
 /* Rewrites a driver log "0:12(5): error: x" into "file:12:5: error: x". */
 void sl_shader_map_log(const char *log, char files[][SL_PATH_MAX], int file_count, char *out, size_t out_size);
 

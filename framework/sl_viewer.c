@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "sl_bench.h"
+#include "sl_case_view.h"
 #include "sl_context.h"
 #include "sl_log.h"
 #include "sl_renderer.h"
@@ -22,6 +23,12 @@ typedef struct _sl_viewer {
     double last_x, last_y;
     bool dirty_title;
 } _sl_viewer;
+
+/* The headless backends of this build, for messages: "osmesa or egl", "egl". */
+static const char *_sl_backend_choices(void) {
+    bool osmesa = sl_backend_available(SL_BACKEND_OSMESA), egl = sl_backend_available(SL_BACKEND_EGL);
+    return osmesa && egl ? "osmesa or egl" : (osmesa ? "osmesa" : "egl");
+}
 
 static void _sl_usage(FILE *f) {
     fprintf(f,
@@ -44,12 +51,18 @@ static void _sl_usage(FILE *f) {
             "  --show-map          show the shadow map in a corner\n"
             "  --frames K          render K frames, then exit (for scripts)\n"
             "  --screenshot FILE   save the last frame as PNG (with --frames)\n"
-            "  --headless          render with OSMesa instead of a window (no display needed)\n"
+            "  --headless          render without a window or display, with the default headless\n"
+            "                      backend (%s in this build)\n"
+            "  --backend NAME      headless backend: %s (implies --headless)\n"
             "  --labs-dir DIR      lab sources to load shaders from; default this build's\n"
+            "  --case NAME         render what the grader renders for case NAME (grader/cases/NAME.json),\n"
+            "                      beside the reference and their difference (red: a shadow missing,\n"
+            "                      blue: one too many); Tab, Space and D switch the view\n"
             "keys: 1-4 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
             "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
-            "      shaders reload when their files change\n");
+            "      shaders reload when their files change\n",
+            sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
     sl_bench_usage(f);
 }
 
@@ -155,9 +168,10 @@ int sl_viewer_main(int argc, char **argv) {
         if (strcmp(argv[i], "--bench") == 0) return sl_bench_main(argc, argv);
     _sl_viewer v = {0};
     sl_render_params_defaults(&v.params);
-    const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL;
+    const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL, *case_name = NULL;
     int frames = 0, width = 960, height = 640;
     bool headless = false;
+    sl_backend backend = sl_backend_default_headless();
     float light_size = -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -168,7 +182,8 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--screenshot") == 0 || strcmp(a, "--labs-dir") == 0 ||
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
-                           strcmp(a, "--poisson-radius") == 0;
+                           strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
+                           strcmp(a, "--backend") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -236,11 +251,19 @@ int sl_viewer_main(int argc, char **argv) {
             screenshot = next;
         } else if (strcmp(a, "--labs-dir") == 0) {
             labs_dir = next;
+        } else if (strcmp(a, "--case") == 0) {
+            case_name = next;
         } else if (strcmp(a, "--visibility") == 0) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--show-map") == 0) {
             v.params.show_shadow_map = true;
         } else if (strcmp(a, "--headless") == 0) {
+            headless = true;
+        } else if (strcmp(a, "--backend") == 0) {
+            if (!sl_backend_parse(next, &backend) || !sl_backend_available(backend)) {
+                fprintf(stderr, "shadowlab: --backend is %s in this build\n", _sl_backend_choices());
+                return 2;
+            }
             headless = true;
         } else {
             fprintf(stderr, "shadowlab: unknown option %s\n", a);
@@ -249,12 +272,18 @@ int sl_viewer_main(int argc, char **argv) {
         }
         if (takes_value) i++;
     }
-    if (screenshot && frames <= 0) frames = headless ? 1 : 3;
+    if ((screenshot || case_name) && headless && frames <= 0) frames = 1;
+    if (screenshot && frames <= 0) frames = 3;
     if (headless && frames <= 0) {
         fprintf(stderr, "shadowlab: --headless needs --frames K (and usually --screenshot FILE)\n");
         return 2;
     }
 
+    if (case_name) {
+        sl_case_view_desc cv = {.case_name = case_name, .labs_dir = labs_dir, .headless = headless,
+                                .backend = backend, .frames = frames, .screenshot = screenshot};
+        return sl_case_view_main(&cv);
+    }
     char err[16384];
     if (!sl_scene_load(&v.scene, scene_name, err, sizeof err)) {
         fprintf(stderr, "shadowlab: %s\n", err);
@@ -262,7 +291,7 @@ int sl_viewer_main(int argc, char **argv) {
     }
     if (light_size > 0) v.scene.light.size = light_size;
     sl_context_desc cd = {
-        .backend = headless ? SL_BACKEND_OSMESA : SL_BACKEND_GLFW,
+        .backend = headless ? backend : SL_BACKEND_GLFW,
         .width = width,
         .height = height,
         .title = "shadowlab",
@@ -280,7 +309,10 @@ int sl_viewer_main(int argc, char **argv) {
         sl_context_destroy(v.ctx);
         return 1;
     }
-    printf("shadowlab: %s, %s labs from %s\n", sl_context_renderer_name(), sl_build_labs_kind, v.renderer.labs_dir);
+    printf("shadowlab: %s through %s, %s labs from %s\n", sl_context_renderer_name(), sl_backend_name(sl_context_backend(v.ctx)),
+           sl_build_labs_kind, v.renderer.labs_dir);
+    /* 0 would do too (the EGL backend binds its own for it); the name says what is meant. */
+    GLuint target = sl_context_default_framebuffer(v.ctx);
 
     GLFWwindow *window = sl_context_window(v.ctx);
     if (window) {
@@ -308,7 +340,7 @@ int sl_viewer_main(int argc, char **argv) {
         }
         int fw, fh;
         sl_context_framebuffer_size(v.ctx, &fw, &fh);
-        sl_renderer_draw(&v.renderer, &v.scene, &v.params, 0, fw, fh);
+        sl_renderer_draw(&v.renderer, &v.scene, &v.params, target, fw, fh);
         const sl_frame_info *info = sl_renderer_info(&v.renderer);
         if (info->shader_error != reported_shader_error) {
             reported_shader_error = info->shader_error;
@@ -335,7 +367,7 @@ int sl_viewer_main(int argc, char **argv) {
             if (screenshot) {
                 sl_image shot;
                 glFinish();
-                if (!sl_capture_framebuffer(0, fw, fh, 3, &shot) || !sl_image_write(screenshot, &shot, err, sizeof err)) {
+                if (!sl_capture_framebuffer(target, fw, fh, 3, &shot) || !sl_image_write(screenshot, &shot, err, sizeof err)) {
                     fprintf(stderr, "shadowlab: cannot save the screenshot: %s\n", err);
                     status = 1;
                 } else {

@@ -7,25 +7,106 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sl_params.h"
+
+/* Default tolerances, from the renderer noise measured on the solutions
+ * (scripts/measure-renderer-noise.sh; grader/cases/README.md has the table):
+ * under the neighbourhood compare, other CPU features and softpipe move at
+ * most 0.006% of pixels by more than 0.02, and the mean by 1e-5. */
 static const struct {
     const char *name;
     const char *reference;
-    double threshold, fail_fraction, epsilon;
+    double threshold, fail_fraction, epsilon, mean;
 } _sl_kinds[SL_CHECK_KIND_COUNT] = {
-    [SL_CHECK_FBO] = {"fbo", NULL, 0, 0, 0},
+    [SL_CHECK_FBO] = {"fbo", NULL, 0, 0, 0, 0},
     /* depth in [0,1]; renderer noise moves silhouettes by a texel, absorbed by the neighbourhood */
-    [SL_CHECK_DEPTH_MAP] = {"depth_map", "depth_map.exr", 0.002, 0.005, 0},
-    [SL_CHECK_MATRICES] = {"matrices", "matrices.json", 0, 0, 1e-3},
-    [SL_CHECK_VISIBILITY] = {"visibility", "visibility.png", 0.1, 0.005, 0},
-    [SL_CHECK_IMAGE] = {"image", "image.png", 0.1, 0.01, 0},
+    [SL_CHECK_DEPTH_MAP] = {"depth_map", "depth_map.exr", 0.002, 0.005, 0, 0.0005},
+    [SL_CHECK_MATRICES] = {"matrices", "matrices.json", 0, 0, 1e-3, 0},
+    [SL_CHECK_VISIBILITY] = {"visibility", "visibility.exr", 0.05, 0.0025, 0, 0.002},
+    [SL_CHECK_IMAGE] = {"image", "image.png", 0.1, 0.01, 0, 0.005},
     /* threshold here: the allowed width difference, as a fraction of the reference's (at least 2 px) */
-    [SL_CHECK_PENUMBRA] = {"penumbra", "visibility.png", 0.35, 0, 0},
+    [SL_CHECK_PENUMBRA] = {"penumbra", "visibility.exr", 0.35, 0, 0, 0},
+    [SL_CHECK_PROBE] = {"probe", ".probe.json", 0, 0, 0, 0},
 };
 
 const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
-const char *sl_check_reference_file(sl_check_kind kind) { return _sl_kinds[kind].reference; }
-const char *sl_check_capture_name(sl_check_kind kind) {
-    return kind == SL_CHECK_PENUMBRA ? "visibility" : _sl_kinds[kind].name;
+
+static const char *const _sl_symptom_names[SL_SYMPTOM_COUNT] = {
+    [SL_SYMPTOM_NO_SHADOWS] = "no_shadows",         [SL_SYMPTOM_MISSING_SHADOW] = "missing_shadow",
+    [SL_SYMPTOM_EXTRA_SHADOW] = "extra_shadow",     [SL_SYMPTOM_ACNE] = "acne",
+    [SL_SYMPTOM_DETACHED] = "detached",             [SL_SYMPTOM_SWAPPED] = "swapped",
+    [SL_SYMPTOM_HARD_EDGES] = "hard_edges",         [SL_SYMPTOM_STALE_DEPTH] = "stale_depth",
+};
+
+const char *sl_symptom_name(sl_symptom symptom) {
+    return (unsigned)symptom < SL_SYMPTOM_COUNT ? _sl_symptom_names[symptom] : "?";
+}
+
+/* "hint_when": one symptom's name, or an array of them. */
+static bool _sl_hint_when(const sl_case *c, sl_check *k, const cJSON *json, char *err, size_t n) {
+    const cJSON *when = cJSON_GetObjectItemCaseSensitive(json, "hint_when"), *item;
+    if (!when) return true;
+    bool ok = cJSON_IsString(when) || (cJSON_IsArray(when) && cJSON_GetArraySize(when) > 0);
+    if (cJSON_IsString(when)) {
+        ok = false;
+        for (int s = 0; s < SL_SYMPTOM_COUNT; s++)
+            if (strcmp(when->valuestring, _sl_symptom_names[s]) == 0) {
+                k->hint_when |= 1u << s;
+                ok = true;
+            }
+    } else {
+        cJSON_ArrayForEach(item, when) {
+            bool known = false;
+            for (int s = 0; cJSON_IsString(item) && s < SL_SYMPTOM_COUNT; s++)
+                if (strcmp(item->valuestring, _sl_symptom_names[s]) == 0) {
+                    k->hint_when |= 1u << s;
+                    known = true;
+                }
+            ok &= known;
+        }
+    }
+    if (!ok) {
+        char names[300] = "";
+        for (int s = 0; s < SL_SYMPTOM_COUNT; s++)
+            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", s ? ", " : "", _sl_symptom_names[s]);
+        snprintf(err, n, "%s: checks \"%s\": \"hint_when\" must name symptoms: %s", c->path, k->name, names);
+    }
+    return ok;
+}
+
+bool sl_check_reference_file(const sl_check *k, char *out, size_t n) {
+    const char *file = _sl_kinds[k->kind].reference;
+    if (!file) return false;
+    if (k->kind == SL_CHECK_PROBE) snprintf(out, n, "%s%s", k->name, file); /* one file per probe check */
+    else snprintf(out, n, "%s", file);
+    return true;
+}
+const char *sl_check_capture_name(const sl_case *c, const sl_check *k) {
+    if (k->kind == SL_CHECK_PROBE) return sl_capture_name(SL_CAPTURE_PROBE + (int)(k - c->checks));
+    return k->kind == SL_CHECK_PENUMBRA ? "visibility" : _sl_kinds[k->kind].name;
+}
+
+uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
+    switch (k->kind) {
+    case SL_CHECK_PROBE: return 1u << (SL_CAPTURE_PROBE + (int)(k - c->checks));
+    case SL_CHECK_FBO: return 1u << SL_CAPTURE_FBO;
+    case SL_CHECK_DEPTH_MAP: return 1u << SL_CAPTURE_DEPTH_MAP;
+    case SL_CHECK_MATRICES: return 1u << SL_CAPTURE_MATRICES;
+    case SL_CHECK_VISIBILITY:
+        /* from lab 2 on, acne is told from shadow on the surfaces that face the light */
+        return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0);
+    case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
+    case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
+    default: return 0;
+    }
+}
+
+bool sl_case_name_valid(const char *name) {
+    if (!*name) return false;
+    for (const char *p = name; *p; p++)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') || *p == '_' || *p == '-'))
+            return false;
+    return true;
 }
 
 static bool _sl_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path,
@@ -100,6 +181,89 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     return true;
 }
 
+/* One row of a probe table: a value for every parameter, by name, in the
+ * parameter's order; map parameters name a synthetic map. */
+static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function *f, const cJSON *row, int r, char *err,
+                          size_t n) {
+    if (!cJSON_IsObject(row)) {
+        snprintf(err, n, "%s: checks \"%s\": rows[%d] must be an object of parameter values", c->path, k->name, r);
+        return false;
+    }
+    const cJSON *item;
+    cJSON_ArrayForEach(item, row) {
+        bool known = strcmp(item->string, "about") == 0 || strcmp(item->string, "tolerance") == 0;
+        for (int i = 0; i < f->param_count; i++) known |= strcmp(item->string, f->params[i].name) == 0;
+        if (!known) {
+            snprintf(err, n, "%s: checks \"%s\": rows[%d]: %s() has no parameter \"%s\"", c->path, k->name, r, f->name,
+                     item->string);
+            return false;
+        }
+    }
+    const char *about = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(row, "about"));
+    snprintf(k->about[r], sizeof k->about[r], "%s", about ? about : "");
+    const cJSON *tolerance = cJSON_GetObjectItemCaseSensitive(row, "tolerance");
+    k->row_tolerance[r] = cJSON_IsNumber(tolerance) && tolerance->valuedouble > 0 ? (float)tolerance->valuedouble : 0;
+    int offset = 0;
+    for (int i = 0; i < f->param_count; i++) {
+        const sl_probe_param *p = &f->params[i];
+        const cJSON *v = cJSON_GetObjectItemCaseSensitive(row, p->name);
+        int size = sl_probe_type_size(p->type);
+        bool ok;
+        if (p->type == SL_PROBE_MAP || p->type == SL_PROBE_SHADOW_MAP) {
+            int map = cJSON_IsString(v) ? sl_probe_map_parse(v->valuestring) : -1;
+            ok = map >= 0;
+            k->inputs[r][offset] = (float)map;
+        } else if (size == 1) {
+            ok = cJSON_IsNumber(v);
+            if (ok) k->inputs[r][offset] = (float)v->valuedouble;
+        } else {
+            ok = cJSON_IsArray(v) && cJSON_GetArraySize(v) == size;
+            for (int j = 0; ok && j < size; j++) {
+                const cJSON *e = cJSON_GetArrayItem(v, j);
+                ok = cJSON_IsNumber(e);
+                if (ok) k->inputs[r][offset + j] = (float)e->valuedouble;
+            }
+        }
+        if (!ok) {
+            if (p->type == SL_PROBE_MAP || p->type == SL_PROBE_SHADOW_MAP)
+                snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a map: lit, occluded, step or ramp",
+                         c->path, k->name, r, p->name);
+            else
+                snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must be %s", c->path, k->name, r, p->name,
+                         size == 1 ? "a number" : size == 16 ? "16 numbers (a column-major matrix)" : "an array of numbers");
+            return false;
+        }
+        offset += size;
+    }
+    return true;
+}
+
+static bool _sl_probe_check(const sl_case *c, sl_check *k, const cJSON *json, char *err, size_t n) {
+    const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "function"));
+    const sl_probe_function *f = name ? sl_probe_find(name) : NULL;
+    if (!f) {
+        snprintf(err, n, "%s: checks \"%s\": \"function\" must name a lab function (%s is none)", c->path, k->name,
+                 name ? name : "nothing");
+        return false;
+    }
+    k->function = sl_probe_index(f);
+    k->tolerance = 1e-4;
+    k->relative = 1e-3;
+    if (!_sl_number(json, "tolerance", &k->tolerance, 0, 1e9, c->path, err, n) ||
+        !_sl_number(json, "relative", &k->relative, 0, 1, c->path, err, n))
+        return false;
+    const cJSON *rows = cJSON_GetObjectItemCaseSensitive(json, "rows"), *row;
+    if (!cJSON_IsArray(rows) || cJSON_GetArraySize(rows) < 1 || cJSON_GetArraySize(rows) > SL_PROBE_MAX_ROWS) {
+        snprintf(err, n, "%s: checks \"%s\": \"rows\" must be 1..%d rows of inputs", c->path, k->name, SL_PROBE_MAX_ROWS);
+        return false;
+    }
+    cJSON_ArrayForEach(row, rows) {
+        if (!_sl_probe_row(c, k, f, row, k->rows, err, n)) return false;
+        k->rows++;
+    }
+    return true;
+}
+
 static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, char *err, size_t n) {
     memset(k, 0, sizeof *k);
     const char *kind = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "kind"));
@@ -107,7 +271,7 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
     for (int i = 0; kind && i < SL_CHECK_KIND_COUNT; i++)
         if (strcmp(kind, _sl_kinds[i].name) == 0) found = i;
     if (found < 0) {
-        snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility, image or penumbra",
+        snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility, image, penumbra or probe",
                  c->path, index);
         return false;
     }
@@ -115,17 +279,30 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
     k->threshold = _sl_kinds[found].threshold;
     k->fail_fraction = _sl_kinds[found].fail_fraction;
     k->epsilon = _sl_kinds[found].epsilon;
+    k->mean_tolerance = _sl_kinds[found].mean;
     const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "name"));
     snprintf(k->name, sizeof k->name, "%s", name ? name : kind);
+    if (!sl_case_name_valid(k->name)) {
+        snprintf(err, n, "%s: checks[%d]: \"name\" must be letters, digits, '_' and '-': it names a reference file",
+                 c->path, index);
+        return false;
+    }
+    for (int i = 0; i < index; i++)
+        if (strcmp(c->checks[i].name, k->name) == 0) {
+            snprintf(err, n, "%s: checks[%d]: two checks are named \"%s\"", c->path, index, k->name);
+            return false;
+        }
     k->bonus = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "bonus"));
     const char *hint = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "hint"));
     if (hint) snprintf(k->hint, sizeof k->hint, "%s", hint);
+    if (!_sl_hint_when(c, k, json, err, n)) return false;
     k->points = -1;
     double percent = k->fail_fraction * 100;
     if (!_sl_number(json, "points", &k->points, 0, 1000, c->path, err, n) ||
         !_sl_number(json, "threshold", &k->threshold, 0, 1e9, c->path, err, n) ||
         !_sl_number(json, "fail_percent", &percent, 0, 100, c->path, err, n) ||
-        !_sl_number(json, "epsilon", &k->epsilon, 0, 1, c->path, err, n))
+        !_sl_number(json, "epsilon", &k->epsilon, 0, 1, c->path, err, n) ||
+        !_sl_number(json, "mean_tolerance", &k->mean_tolerance, 0, 1, c->path, err, n))
         return false;
     k->fail_fraction = percent / 100;
     if (k->points < 0) {
@@ -139,6 +316,7 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
                  c->path, index, k->name, SL_CHECK_MAX_PROBES);
         return false;
     }
+    if (k->kind == SL_CHECK_PROBE && !_sl_probe_check(c, k, json, err, n)) return false;
     const cJSON *probe_list = k->kind == SL_CHECK_PENUMBRA ? probes : NULL;
     cJSON_ArrayForEach(p, probe_list) {
         sl_probe *probe = &k->probes[k->probe_count];
@@ -174,27 +352,31 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
     const char *scene = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "scene"));
     const cJSON *lab = cJSON_GetObjectItemCaseSensitive(json, "lab");
     const cJSON *checks = cJSON_GetObjectItemCaseSensitive(json, "checks");
-    double width = 256, height = 256, timeout = 20;
+    double width = 256, height = 256, timeout = 20, memory = 4096;
     if (!name || !*name) {
         snprintf(err, n, "%s: missing \"name\"", path);
+    } else if (!sl_case_name_valid(name) || strlen(name) >= sizeof c->name) {
+        snprintf(err, n, "%s: \"name\" must be letters, digits, '_' and '-' (at most %zu): it names folders and files",
+                 path, sizeof c->name - 1);
     } else if (!cJSON_IsNumber(lab) || lab->valueint < 1 || lab->valueint > 7) {
         snprintf(err, n, "%s: \"lab\" must be a number 1..7", path);
-    } else if (!scene) {
-        snprintf(err, n, "%s: missing \"scene\"", path);
     } else if (!cJSON_IsArray(checks) || cJSON_GetArraySize(checks) < 1 ||
                cJSON_GetArraySize(checks) > SL_CASE_MAX_CHECKS) {
         snprintf(err, n, "%s: \"checks\" must be an array of 1..%d checks", path, SL_CASE_MAX_CHECKS);
     } else if (_sl_number(json, "width", &width, 16, 2048, path, err, n) &&
                _sl_number(json, "height", &height, 16, 2048, path, err, n) &&
-               _sl_number(json, "timeout", &timeout, 1, 3600, path, err, n)) {
+               _sl_number(json, "timeout", &timeout, 1, 3600, path, err, n) &&
+               _sl_number(json, "memory_mb", &memory, 256, 65536, path, err, n)) {
         snprintf(c->name, sizeof c->name, "%s", name);
         snprintf(c->title, sizeof c->title, "%s", title ? title : name);
         c->lab = lab->valueint;
         c->width = (int)width;
         c->height = (int)height;
         c->timeout_seconds = timeout;
+        c->memory_mb = memory;
         char scene_err[1024];
-        ok = sl_scene_load(&c->scene, scene, scene_err, sizeof scene_err);
+        ok = true;
+        if (scene) ok = sl_scene_load(&c->scene, scene, scene_err, sizeof scene_err);
         if (!ok) snprintf(err, n, "%s: scene %s", path, scene_err);
         const cJSON *light = cJSON_GetObjectItemCaseSensitive(json, "light");
         if (ok && light) ok = sl_light_from_json(&c->scene.light, light, path, err, n);
@@ -204,7 +386,7 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
         /* "light_path": per-frame changes to the light; the last frame is the one captured. */
         const cJSON *frames = cJSON_GetObjectItemCaseSensitive(json, "light_path");
         c->frame_lights[0] = c->scene.light;
-        c->frame_count = 1;
+        c->frame_count = scene ? 1 : 0; /* without a scene: probes only, no frame */
         if (ok && frames) {
             if (!cJSON_IsArray(frames) || cJSON_GetArraySize(frames) < 1 ||
                 cJSON_GetArraySize(frames) > SL_CASE_MAX_FRAMES) {
@@ -226,6 +408,11 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
             ok = _sl_check(c, &c->checks[c->check_count], item, c->check_count, err, n);
             c->check_count += ok;
         }
+        for (int i = 0; ok && !scene && i < c->check_count; i++)
+            if (c->checks[i].kind != SL_CHECK_PROBE) {
+                snprintf(err, n, "%s: missing \"scene\" (only a case of probe checks goes without one)", path);
+                ok = false;
+            }
     }
     cJSON_Delete(json);
     return ok;

@@ -6,12 +6,14 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
-#include "sl_renderer.h"
+#include "sl_params.h"
+#include "sl_protocol.h"
 #include "sl_scene.h"
 
 #define SL_CASE_MAX_CHECKS 8
-#define SL_CASE_MAX_FRAMES 16
+#define SL_CASE_MAX_FRAMES SL_JOB_MAX_FRAMES
 
 typedef enum sl_check_kind {
     SL_CHECK_FBO,        /* the shadow map's framebuffer and texture (no reference) */
@@ -20,10 +22,26 @@ typedef enum sl_check_kind {
     SL_CHECK_VISIBILITY, /* the visibility term vs reference (PNG) */
     SL_CHECK_IMAGE,      /* the shaded image vs reference (PNG) */
     SL_CHECK_PENUMBRA,   /* penumbra widths along probe lines, vs the reference visibility */
+    SL_CHECK_PROBE,      /* a student function called on a table of inputs, vs the solution's outputs */
     SL_CHECK_KIND_COUNT
 } sl_check_kind;
 
 #define SL_CHECK_MAX_PROBES 4
+
+/* What a failed check's capture shows, as the grader measures it; a case's
+ * hint names the symptoms it is about ("hint_when"), and is shown only then. */
+typedef enum sl_symptom {
+    SL_SYMPTOM_NO_SHADOWS,     /* nothing shadowed where the reference has shadows */
+    SL_SYMPTOM_MISSING_SHADOW, /* part of the reference's shadow is lit here */
+    SL_SYMPTOM_EXTRA_SHADOW,   /* part of the reference's lit area is shadowed here */
+    SL_SYMPTOM_ACNE,           /* lit surfaces shadow themselves in a fine pattern */
+    SL_SYMPTOM_DETACHED,       /* shadows start away from their casters (Peter Panning) */
+    SL_SYMPTOM_SWAPPED,        /* lit and shadowed exchanged */
+    SL_SYMPTOM_HARD_EDGES,     /* hard edges where the reference's are soft */
+    SL_SYMPTOM_STALE_DEPTH,    /* a depth map with depths nearer than the scene's */
+    SL_SYMPTOM_COUNT
+} sl_symptom;
+const char *sl_symptom_name(sl_symptom symptom);
 
 /* A line across a shadow edge, in pixels of the camera image (x right, y down). */
 typedef struct sl_probe {
@@ -39,9 +57,18 @@ typedef struct sl_check {
     double threshold;     /* per pixel (images) */
     double fail_fraction; /* of pixels (images) */
     double epsilon;       /* per matrix element, relative to the largest (matrices) */
-    char hint[320];       /* added to the message when the check fails */
+    double mean_tolerance; /* of the mean per-pixel difference: systematic errors (images) */
+    char hint[320];       /* added to the message when the check fails with one of hint_when's symptoms */
+    uint32_t hint_when;   /* 1 << sl_symptom; 0: only when no more specific diagnosis was found */
     sl_probe probes[SL_CHECK_MAX_PROBES]; /* penumbra: the first is nearest to the contact */
     int probe_count;
+    /* probe: the function (sl_probe_at), its rows of inputs, and what each row tests */
+    int function;
+    int rows;
+    float inputs[SL_PROBE_MAX_ROWS][SL_PROBE_MAX_INPUTS];
+    char about[SL_PROBE_MAX_ROWS][256];
+    float row_tolerance[SL_PROBE_MAX_ROWS]; /* a row's own tolerance (0: the check's) */
+    double tolerance, relative; /* an output passes within tolerance + relative * |expected| */
 } sl_check;
 
 typedef struct sl_case {
@@ -55,15 +82,22 @@ typedef struct sl_case {
     sl_render_params params;
     int width, height;
     double timeout_seconds;
+    double memory_mb;     /* the runner's address space (default 4096) */
+    double reference_render_seconds; /* the solutions' frames' CPU time (references' manifest); 0: unknown */
     sl_check checks[SL_CASE_MAX_CHECKS];
     int check_count;
 } sl_case;
 
 const char *sl_check_kind_name(sl_check_kind kind);
-/* The capture a check compares ("visibility", "depth_map", ...). */
-const char *sl_check_capture_name(sl_check_kind kind);
-/* The file a check's reference lives in, relative to the references folder. */
-const char *sl_check_reference_file(sl_check_kind kind); /* NULL: needs none */
+/* The capture a check compares ("visibility", "depth_map", "probe_2", ...). */
+const char *sl_check_capture_name(const sl_case *c, const sl_check *k);
+/* Every capture a check needs of the runner, as bits (1 << sl_capture_kind). */
+uint32_t sl_check_captures(const sl_case *c, const sl_check *k);
+/* Case and check names become folder and file names: letters, digits, '_' and '-' only. */
+bool sl_case_name_valid(const char *name);
+/* The file a check's reference lives in, in its case's references folder
+ * ("visibility.png", "slope.probe.json"); false when it needs none. */
+bool sl_check_reference_file(const sl_check *k, char *out, size_t out_size);
 
 /* Reads and validates one case file; false with a message naming the file. */
 bool sl_case_load(sl_case *c, const char *path, char *err, size_t err_size);

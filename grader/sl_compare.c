@@ -34,7 +34,7 @@ sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *refe
     }
     if (diff) *diff = sl_image_alloc(reference->width, reference->height, 3);
     s.pixels = (long)reference->width * reference->height;
-    double sum_s = 0, sum_r = 0;
+    double sum_s = 0, sum_r = 0, sum_d = 0;
     for (int y = 0; y < reference->height; y++) {
         for (int x = 0; x < reference->width; x++) {
             const float *ps = sl_image_pixel(student, x, y), *pr = sl_image_pixel(reference, x, y);
@@ -46,6 +46,7 @@ sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *refe
                 }
                 double d = fabs((double)ps[c] - (double)pr[c]);
                 if (d > s.max_difference) s.max_difference = d;
+                sum_d += d / reference->channels;
             }
             s.nan_pixels += nan;
             if (!nan) sum_s += ps[0];
@@ -59,14 +60,19 @@ sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *refe
                 for (int c = 0; c < reference->channels && c < 3; c++) grey += pr[c];
                 grey = 0.35f * grey / (float)(reference->channels < 3 ? reference->channels : 3);
                 if (grey > 1) grey = 0.35f;
-                pd[0] = fail ? 1.0f : grey;
-                pd[1] = fail ? 0.0f : grey;
-                pd[2] = fail ? 0.0f : grey;
+                /* by kind: red where the student's is brighter (a missing
+                 * shadow), blue where darker (an extra one), magenta for NaN */
+                float brighter = nan ? 0 : ps[0] - pr[0];
+                static const float missing[3] = {1.0f, 0.15f, 0.1f}, extra[3] = {0.15f, 0.45f, 1.0f},
+                                   not_a_number[3] = {1.0f, 0.0f, 1.0f};
+                const float *colour = nan ? not_a_number : brighter > 0 ? missing : extra;
+                for (int c = 0; c < 3; c++) pd[c] = fail ? colour[c] : grey;
             }
         }
     }
     s.failing_fraction = s.pixels ? (double)s.failing / (double)s.pixels : 0;
     s.mean_student = s.pixels ? sum_s / (double)s.pixels : 0;
+    s.mean_difference = s.pixels > s.nan_pixels ? sum_d / (double)(s.pixels - s.nan_pixels) : 0;
     s.mean_reference = s.pixels ? sum_r / (double)s.pixels : 0;
     return s;
 }

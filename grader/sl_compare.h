@@ -17,11 +17,14 @@ typedef struct sl_compare_stats {
     long pixels, failing, nan_pixels;
     double failing_fraction;
     double max_difference;     /* largest plain per-pixel difference */
+    double mean_difference;    /* mean plain per-pixel difference (NaN pixels left out): systematic errors */
     double mean_student, mean_reference; /* channel 0 */
 } sl_compare_stats;
 
 /* Compares channel by channel; `diff` (may be NULL) receives an RGB image:
- * the reference darkened, failing pixels in red. */
+ * the reference darkened, failing pixels coloured by kind: red where the
+ * student's is brighter (a shadow missing), blue where it is darker (a shadow
+ * too many), magenta where it is NaN. */
 sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *reference, double threshold,
                                    sl_image *diff);
 

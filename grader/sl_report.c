@@ -6,19 +6,31 @@
 
 #include <cjson/cJSON.h>
 
-const char *sl_lab_title(int lab) {
-    static const char *titles[8] = {"", "depth FBO", "projective lookup", "bias & culling", "PCF & PCSS",
-                                    "variance shadow maps", "cascaded shadow maps", "cube-map shadows"};
-    return lab >= 1 && lab <= 7 ? titles[lab] : "?";
-}
+#include "sl_files.h"
+#include "sl_params.h"
 
-void sl_report_totals(const sl_grade_report *rep, double *score, double *max_score) {
-    *score = *max_score = 0;
+void sl_report_totals(const sl_grade_report *rep, double *score, double *max_score, double *bonus) {
+    *score = *max_score = *bonus = 0;
     for (int i = 0; i < rep->case_count; i++)
         for (int k = 0; k < rep->cases[i].c->check_count; k++) {
-            *score += rep->cases[i].checks[k].points;
-            if (!rep->cases[i].checks[k].bonus) *max_score += rep->cases[i].checks[k].max_points;
+            const sl_check_result *cr = &rep->cases[i].checks[k];
+            if (cr->bonus) {
+                *bonus += cr->points;
+            } else {
+                *score += cr->points;
+                *max_score += cr->max_points;
+            }
         }
+}
+
+void sl_report_score_line(const sl_grade_report *rep, char *out, size_t n) {
+    double score, max, bonus;
+    sl_report_totals(rep, &score, &max, &bonus);
+    int used = snprintf(out, n, "Score: %g/%g", score, max);
+    if (bonus > 0 && used > 0 && (size_t)used < n) used += snprintf(out + used, n - (size_t)used, " (+%g bonus)", bonus);
+    if (rep->interrupted && used > 0 && (size_t)used < n)
+        snprintf(out + used, n - (size_t)used, " (incomplete: the grader was stopped; %d of %d cases graded)",
+                 rep->cases_finished, rep->case_count);
 }
 
 bool sl_report_full_marks(const sl_grade_report *rep) {
@@ -44,8 +56,8 @@ static void _sl_print_message(FILE *out, const char *message) {
 void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
     const char *red = color ? "\033[31m" : "", *green = color ? "\033[32m" : "", *bold = color ? "\033[1m" : "",
                *reset = color ? "\033[0m" : "";
-    for (int lab = 1; lab <= 7; lab++) {
-        double score = 0, max = 0;
+    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+        double score = 0, max = 0, bonus = 0;
         bool any = false;
         for (int i = 0; i < rep->case_count; i++) {
             const sl_graded_case *g = &rep->cases[i];
@@ -59,40 +71,39 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
                 fprintf(out, "  %s%s%s %4.1f/%-4.1f %s%s\n", cr->passed ? green : red, cr->passed ? "PASS" : "FAIL", reset,
                         cr->points, cr->max_points, label, cr->bonus ? " (bonus)" : "");
                 if (!cr->passed) _sl_print_message(out, cr->message);
-                score += cr->points;
-                if (!cr->bonus) max += cr->max_points;
+                if (cr->bonus) {
+                    bonus += cr->points;
+                } else {
+                    score += cr->points;
+                    max += cr->max_points;
+                }
             }
         }
-        if (any) fprintf(out, "  Lab %d: %g/%g\n", lab, score, max);
+        if (any && bonus > 0) fprintf(out, "  Lab %d: %g/%g (+%g bonus)\n", lab, score, max, bonus);
+        else if (any) fprintf(out, "  Lab %d: %g/%g\n", lab, score, max);
     }
     for (int i = 0; i < rep->problem_count; i++) fprintf(out, "%sPROBLEM%s %s\n", red, reset, rep->problems[i]);
-    double score, max;
-    sl_report_totals(rep, &score, &max);
     fprintf(out, "Time: %.2f s (%d cases, %d at a time)\n", rep->seconds, rep->case_count, rep->jobs);
-    fprintf(out, "%sScore: %g/%g%s\n", bold, score, max, reset);
+    char line[256];
+    sl_report_score_line(rep, line, sizeof line);
+    fprintf(out, "%s%s%s\n", bold, line, reset);
 }
 
 static bool _sl_write_json(cJSON *json, const char *path, char *err, size_t err_size) {
     char *text = cJSON_Print(json);
-    FILE *f = text ? fopen(path, "w") : NULL;
-    bool ok = f && fputs(text, f) >= 0;
-    if (f) ok = fclose(f) == 0 && ok;
+    if (!text) {
+        snprintf(err, err_size, "%s: out of memory", path);
+        return false;
+    }
+    sl_atomic_file f;
+    bool ok = sl_atomic_open(&f, path, err, err_size);
+    if (ok) {
+        fputs(text, f.f);
+        fputc('\n', f.f);
+        ok = sl_atomic_commit(&f, err, err_size);
+    }
     free(text);
-    if (!ok) snprintf(err, err_size, "%s: cannot write", path);
     return ok;
-}
-
-/* Report files: a failure to open or finish one names the file. */
-static FILE *_sl_open(const char *path, char *err, size_t err_size) {
-    FILE *f = fopen(path, "w");
-    if (!f) snprintf(err, err_size, "%s: cannot write", path);
-    return f;
-}
-
-static bool _sl_close(FILE *f, const char *path, char *err, size_t err_size) {
-    if (fclose(f) == 0) return true;
-    snprintf(err, err_size, "%s: cannot write", path);
-    return false;
 }
 
 static void _sl_html_text(FILE *f, const char *text) {
@@ -109,17 +120,35 @@ static void _sl_html_text(FILE *f, const char *text) {
 
 /* A page a TA can open: the score per lab, every check, and the images of the failed ones. */
 static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const char *path, char *err, size_t err_size) {
-    FILE *f = _sl_open(path, err, err_size);
-    if (!f) return false;
-    double score, max;
-    sl_report_totals(rep, &score, &max);
+    sl_atomic_file file;
+    if (!sl_atomic_open(&file, path, err, err_size)) return false;
+    FILE *f = file.f;
+    double score, max, bonus;
+    sl_report_totals(rep, &score, &max, &bonus);
+    char line[256];
+    sl_report_score_line(rep, line, sizeof line);
     fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>shadowlab grade: %g/%g</title>\n"
                "<style>body{font-family:sans-serif;margin:2em}td,th{padding:.2em .6em;text-align:left;vertical-align:top}"
                ".pass{color:#070}.fail{color:#b00}img{width:256px;image-rendering:pixelated;border:1px solid #ccc}"
                "figure{display:inline-block;margin:.3em}</style></head><body>\n",
             score, max);
-    fprintf(f, "<h1>Score: %g/%g</h1>\n<p>%s labs, %d cases, %.2f s</p>\n", score, max, rep->labs_kind,
-            rep->case_count, rep->seconds);
+    fputs("<h1>", f);
+    _sl_html_text(f, line);
+    fprintf(f, "</h1>\n<p>%s labs, %d cases, %.2f s; rendered with %s (", rep->labs_kind, rep->case_count, rep->seconds,
+            rep->backend[0] ? rep->backend : "?");
+    _sl_html_text(f, rep->renderer);
+    fputs("); sandbox: ", f);
+    _sl_html_text(f, rep->sandbox);
+    if (rep->case_set[0]) {
+        fputs("; cases: ", f);
+        _sl_html_text(f, rep->case_set);
+    }
+    fputs("</p>\n", f);
+    if (rep->not_built) {
+        fputs("<p class=\"fail\">The submission did not build: ", f);
+        _sl_html_text(f, rep->not_built);
+        fputs("</p>\n", f);
+    }
     for (int i = 0; i < rep->problem_count; i++) {
         fputs("<p class=\"fail\">PROBLEM ", f);
         _sl_html_text(f, rep->problems[i]);
@@ -151,14 +180,15 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
         }
     }
     fputs("</table>\n</body></html>\n", f);
-    return _sl_close(f, path, err, err_size);
+    return sl_atomic_commit(&file, err, err_size);
 }
 
 bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *err, size_t err_size) {
-    FILE *f = _sl_open(path, err, err_size);
-    if (!f) return false;
+    sl_atomic_file file;
+    if (!sl_atomic_open(&file, path, err, err_size)) return false;
+    FILE *f = file.f;
     fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadowlab\">\n", f);
-    for (int lab = 1; lab <= 7; lab++) {
+    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
         int tests = 0, failures = 0;
         for (int i = 0; i < rep->case_count; i++)
             if (rep->cases[i].c->lab == lab)
@@ -189,7 +219,7 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
         fputs("  </testsuite>\n", f);
     }
     fputs("</testsuites>\n", f);
-    return _sl_close(f, path, err, err_size);
+    return sl_atomic_commit(&file, err, err_size);
 }
 
 bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err, size_t err_size) {
@@ -199,23 +229,36 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
         snprintf(err, err_size, "%s: cannot create the report folder", images);
         return false;
     }
-    double score, max;
-    sl_report_totals(rep, &score, &max);
+    double score, max, bonus;
+    sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
     cJSON_AddNumberToObject(root, "score", score);
     cJSON_AddNumberToObject(root, "max_score", max);
+    cJSON_AddNumberToObject(root, "bonus", bonus);
+    cJSON_AddBoolToObject(root, "complete", !rep->interrupted);
     cJSON_AddNumberToObject(root, "seconds", rep->seconds);
     cJSON_AddStringToObject(root, "labs", rep->labs_kind);
+    cJSON_AddStringToObject(root, "backend", rep->backend);
+    cJSON_AddStringToObject(root, "renderer", rep->renderer);
+    cJSON_AddStringToObject(root, "sandbox", rep->sandbox);
+    if (rep->case_set[0]) cJSON_AddStringToObject(root, "case_set", rep->case_set);
+    cJSON_AddBoolToObject(root, "built", rep->not_built == NULL);
+    if (rep->not_built) cJSON_AddStringToObject(root, "build_error", rep->not_built);
     cJSON *labs = cJSON_AddArrayToObject(root, "lab_scores");
-    for (int lab = 1; lab <= 7; lab++) {
-        double s = 0, m = 0;
+    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+        double s = 0, m = 0, b = 0;
         bool any = false;
         for (int i = 0; i < rep->case_count; i++)
             if (rep->cases[i].c->lab == lab)
                 for (int k = 0; k < rep->cases[i].c->check_count; k++) {
+                    const sl_check_result *cr = &rep->cases[i].checks[k];
                     any = true;
-                    s += rep->cases[i].checks[k].points;
-                    if (!rep->cases[i].checks[k].bonus) m += rep->cases[i].checks[k].max_points;
+                    if (cr->bonus) {
+                        b += cr->points;
+                    } else {
+                        s += cr->points;
+                        m += cr->max_points;
+                    }
                 }
         if (!any) continue;
         cJSON *l = cJSON_CreateObject();
@@ -223,6 +266,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
         cJSON_AddStringToObject(l, "title", sl_lab_title(lab));
         cJSON_AddNumberToObject(l, "score", s);
         cJSON_AddNumberToObject(l, "max_score", m);
+        cJSON_AddNumberToObject(l, "bonus", b);
         cJSON_AddItemToArray(labs, l);
     }
     cJSON *cases = cJSON_AddArrayToObject(root, "cases");
@@ -235,6 +279,8 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
         cJSON_AddNumberToObject(jc, "lab", g->c->lab);
         cJSON_AddNumberToObject(jc, "seconds", g->result->seconds);
         if (g->result->output_tail[0]) cJSON_AddStringToObject(jc, "output", g->result->output_tail);
+        cJSON_AddNumberToObject(jc, "cpu_seconds", g->result->cpu_seconds);
+        cJSON_AddNumberToObject(jc, "render_seconds", g->result->render_seconds);
         cJSON *checks = cJSON_AddArrayToObject(jc, "checks");
         for (int k = 0; k < g->c->check_count; k++) {
             const sl_check *ck = &g->c->checks[k];
@@ -247,7 +293,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
             cJSON_AddBoolToObject(j, "passed", cr->passed);
             cJSON_AddBoolToObject(j, "bonus", cr->bonus);
             cJSON_AddStringToObject(j, "message", cr->message);
-            const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(ck->kind));
+            const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(g->c, ck));
             if (!cr->passed && cap && cap->is_image) {
                 const sl_image *shown[3] = {&cap->image, &g->references[k].image, &cr->diff};
                 static const char *const roles[3] = {"student", "reference", "diff"};
@@ -257,7 +303,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
                     if (!shown[m]->data) continue;
                     snprintf(name, sizeof name, "images/%s.%s.%s.png", g->c->name, ck->name, roles[m]);
                     snprintf(path, sizeof path, "%s/%s", dir, name);
-                    if (sl_image_write(path, shown[m], err, err_size)) cJSON_AddStringToObject(imgs, roles[m], name);
+                    if (sl_atomic_write_image(path, shown[m], err, err_size)) cJSON_AddStringToObject(imgs, roles[m], name);
                     else ok = false;
                 }
             }
@@ -298,13 +344,17 @@ static void _sl_add_tests(const sl_grade_report *rep, cJSON *tests, bool prairie
 }
 
 bool sl_report_write_gradescope(const sl_grade_report *rep, const char *path, char *err, size_t err_size) {
-    double score, max;
-    sl_report_totals(rep, &score, &max);
+    double score, max, bonus;
+    sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
-    cJSON_AddNumberToObject(root, "score", score);
+    cJSON_AddNumberToObject(root, "score", score + bonus); /* extra credit counts on top */
     cJSON_AddNumberToObject(root, "execution_time", rep->seconds);
-    if (rep->problem_count) {
+    if (rep->problem_count || rep->interrupted || rep->not_built) {
         char text[4096] = "";
+        if (rep->not_built) snprintf(text, sizeof text, "The submission did not build: %s\n", rep->not_built);
+        if (rep->interrupted)
+            snprintf(text + strlen(text), sizeof text - strlen(text),
+                     "The grader was stopped before it finished: incomplete.\n");
         for (int i = 0; i < rep->problem_count; i++)
             snprintf(text + strlen(text), sizeof text - strlen(text), "%s\n", rep->problems[i]);
         cJSON_AddStringToObject(root, "output", text);
@@ -316,11 +366,17 @@ bool sl_report_write_gradescope(const sl_grade_report *rep, const char *path, ch
 }
 
 bool sl_report_write_prairielearn(const sl_grade_report *rep, const char *path, char *err, size_t err_size) {
-    double score, max;
-    sl_report_totals(rep, &score, &max);
+    double score, max, bonus;
+    sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
-    cJSON_AddBoolToObject(root, "gradable", rep->problem_count == 0);
-    cJSON_AddNumberToObject(root, "score", max > 0 ? score / max : 0);
+    /* A submission that does not build is "not gradable": it costs the student no attempt. */
+    cJSON_AddBoolToObject(root, "gradable", rep->problem_count == 0 && !rep->interrupted && !rep->not_built);
+    if (rep->not_built) {
+        char text[512];
+        snprintf(text, sizeof text, "The submission did not build: %s", rep->not_built);
+        cJSON_AddItemToArray(cJSON_AddArrayToObject(root, "format_errors"), cJSON_CreateString(text));
+    }
+    cJSON_AddNumberToObject(root, "score", max > 0 ? (score + bonus) / max : 0);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), true);
     bool ok = _sl_write_json(root, path, err, err_size);
     cJSON_Delete(root);

@@ -26,11 +26,18 @@ typedef struct sl_grade_report {
     double seconds;
     int jobs;
     const char *labs_kind, *labs_dir;
+    char sandbox[320];       /* the sandbox level the runners got, in words */
+    char backend[32], renderer[160]; /* what the runners rendered with (as the first runner said) */
+    bool interrupted;        /* stopped early: the score is incomplete */
+    int cases_finished;      /* cases that ran to their end */
+    char case_set[160];      /* which cases, when not the public ones ("hidden variants, seed 42") */
+    const char *not_built;   /* the compiler's first error, when the submission did not build */
 } sl_grade_report;
 
-const char *sl_lab_title(int lab);
-/* score counts bonus points; max_score does not. */
-void sl_report_totals(const sl_grade_report *report, double *score, double *max_score);
+/* score and max_score leave bonus checks out; bonus is what they earned. */
+void sl_report_totals(const sl_grade_report *report, double *score, double *max_score, double *bonus);
+/* "Score: 55/57 (+2 bonus)", or with "(incomplete: ...)" when interrupted. */
+void sl_report_score_line(const sl_grade_report *report, char *out, size_t out_size);
 /* Every check that is not a bonus passed. */
 bool sl_report_full_marks(const sl_grade_report *report);
 void sl_report_print(const sl_grade_report *report, FILE *out, bool color);

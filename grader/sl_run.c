@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,190 +15,290 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "sl_context.h"
-#include "sl_renderer.h"
+#include "sl_protocol.h"
 
-/* ---- wire format: [u32 type][u32 name length][u64 payload length][name][payload] ---- */
-enum { _SL_MSG_STAGE = 1, _SL_MSG_NOT_IMPLEMENTED, _SL_MSG_FAILED, _SL_MSG_ERROR, _SL_MSG_IMAGE, _SL_MSG_NUMBERS, _SL_MSG_DONE };
+#define _SL_MAX_JOBS 64
+#define _SL_CASE_BYTES_MAX ((uint64_t)512 << 20) /* everything one case may send */
+#define _SL_OUTPUT_KEEP 2047
 
-static int _sl_child_fd = -1;
+/* ---- the stream from a runner, taken apart as it arrives ---- */
 
-static void _sl_write_all(int fd, const void *data, size_t n) {
-    const char *p = data;
-    while (n > 0) {
-        ssize_t w = write(fd, p, n);
-        if (w < 0 && errno == EINTR) continue;
-        if (w <= 0) _exit(3); /* parent gone */
-        p += w;
-        n -= (size_t)w;
-    }
-}
-
-static void _sl_send(uint32_t type, const char *name, const void *payload, uint64_t payload_len) {
-    uint32_t name_len = name ? (uint32_t)strlen(name) : 0;
-    struct { uint32_t type, name_len; uint64_t payload_len; } header = {type, name_len, payload_len};
-    _sl_write_all(_sl_child_fd, &header, sizeof header);
-    if (name_len) _sl_write_all(_sl_child_fd, name, name_len);
-    if (payload_len) _sl_write_all(_sl_child_fd, payload, (size_t)payload_len);
-}
-
-static void _sl_send_image(const char *name, const sl_image *img) {
-    size_t n = (size_t)img->width * (size_t)img->height * (size_t)img->channels;
-    size_t bytes = 3 * sizeof(int32_t) + n * sizeof(float);
-    char *buf = malloc(bytes);
-    if (!buf) return;
-    int32_t dims[3] = {img->width, img->height, img->channels};
-    memcpy(buf, dims, sizeof dims);
-    memcpy(buf + sizeof dims, img->data, n * sizeof(float));
-    _sl_send(_SL_MSG_IMAGE, name, buf, bytes);
-    free(buf);
-}
-
-static void _sl_send_numbers(const char *name, const double *v, int count) {
-    _sl_send(_SL_MSG_NUMBERS, name, v, (uint64_t)count * sizeof(double));
-}
-
-static void _sl_stage_hook(const char *function) { _sl_send(_SL_MSG_STAGE, function, NULL, 0); }
-
-static bool _sl_case_has(const sl_case *c, sl_check_kind kind) {
-    for (int i = 0; i < c->check_count; i++)
-        if (c->checks[i].kind == kind) return true;
-    return false;
-}
-
-/* What the FBO check needs to know about lab 1's framebuffer and texture. */
-static void _sl_capture_fbo(const sl_shadow_map *map, int requested_size) {
-    double v[10] = {0};
-    while (glGetError() != GL_NO_ERROR) {}
-    bool is_fbo = map->framebuffer && glIsFramebuffer(map->framebuffer);
-    v[9] = requested_size;
-    if (is_fbo) {
-        GLint type = 0, name = 0, color_type = 0, draw = 0, read = 0;
-        glBindFramebuffer(GL_FRAMEBUFFER, map->framebuffer);
-        v[0] = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-        glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
-        if (type == GL_TEXTURE)
-            glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
-        glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &color_type);
-        glGetIntegerv(GL_DRAW_BUFFER, &draw);
-        glGetIntegerv(GL_READ_BUFFER, &read);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        v[1] = type;
-        v[2] = (GLuint)name == map->depth_texture && name != 0;
-        v[6] = draw;
-        v[7] = read;
-        v[8] = color_type;
-    }
-    if (map->depth_texture && glIsTexture(map->depth_texture)) {
-        GLint w = 0, h = 0, bits = 0;
-        glBindTexture(GL_TEXTURE_2D, map->depth_texture);
-        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
-        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
-        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &bits);
-        v[3] = bits;
-        v[4] = w;
-        v[5] = h;
-    }
-    while (glGetError() != GL_NO_ERROR) {}
-    _sl_send_numbers("fbo", v, 10);
-}
-
-static int _sl_child_main(const sl_case *c, const sl_run_options *o) {
-    char err[8192];
-    sl_context_desc cd = {.backend = SL_BACKEND_OSMESA, .width = c->width, .height = c->height};
-    sl_context *ctx = sl_context_create(&cd, err, sizeof err);
-    if (!ctx) {
-        _sl_send(_SL_MSG_ERROR, NULL, err, strlen(err));
-        return 1;
-    }
-    sl_renderer r;
-    sl_renderer_desc rd = {.labs_dir = o->labs_dir};
-    if (o->isolate) {
-        rd.labs_dir = o->isolation_dirs[c->lab];
-        for (int lab = 1; lab <= SL_LAB_COUNT; lab++)
-            if (lab != c->lab) rd.lab_functions[lab] = sl_isolation_lab_functions;
-    }
-    sl_scene scene = c->scene;
-    if (!sl_renderer_init(&r, &rd, err, sizeof err) || !sl_renderer_set_scene(&r, &scene, err, sizeof err)) {
-        _sl_send(_SL_MSG_ERROR, NULL, err, strlen(err));
-        return 1;
-    }
-    sl_lab_call_hook = _sl_stage_hook;
-    sl_render_params p = c->params;
-    p.output = SL_OUTPUT_VISIBILITY;
-    for (int f = 0; f < c->frame_count; f++) {
-        scene.light = c->frame_lights[f];
-        sl_renderer_draw(&r, &scene, &p, 0, c->width, c->height);
-        glFinish();
-    }
-    const sl_frame_info *info = sl_renderer_info(&r);
-    if (info->shader_error && info->shader_error_lab <= c->lab) {
-        /* A lab's shaders this case needs do not compile: the case fails on that alone. */
-        _sl_send(_SL_MSG_ERROR, NULL, info->shader_error, strlen(info->shader_error));
-        return 1;
-    }
-    sl_image img;
-    if ((_sl_case_has(c, SL_CHECK_VISIBILITY) || _sl_case_has(c, SL_CHECK_PENUMBRA)) &&
-        sl_capture_framebuffer(0, c->width, c->height, 1, &img)) {
-        _sl_send_image("visibility", &img);
-        sl_image_free(&img);
-    }
-    if (_sl_case_has(c, SL_CHECK_VISIBILITY) && c->lab >= 3) {
-        /* which pixels are surfaces facing the light: where acne can be told from shadow */
-        p.output = SL_OUTPUT_LIT_MASK;
-        sl_renderer_draw(&r, &scene, &p, 0, c->width, c->height);
-        if (sl_capture_framebuffer(0, c->width, c->height, 1, &img)) {
-            _sl_send_image("lit_mask", &img);
-            sl_image_free(&img);
-        }
-    }
-    if (_sl_case_has(c, SL_CHECK_IMAGE)) {
-        p.output = SL_OUTPUT_SHADED;
-        sl_renderer_draw(&r, &scene, &p, 0, c->width, c->height);
-        if (sl_capture_framebuffer(0, c->width, c->height, 3, &img)) {
-            _sl_send_image("image", &img);
-            sl_image_free(&img);
-        }
-    }
-    for (int i = 0; i < info->not_implemented_count; i++)
-        _sl_send(_SL_MSG_NOT_IMPLEMENTED, info->not_implemented[i], NULL, 0);
-    if (info->failed) _sl_send(_SL_MSG_FAILED, info->failed, NULL, 0);
-    if (_sl_case_has(c, SL_CHECK_FBO) && info->shadow_map.framebuffer + info->shadow_map.depth_texture > 0)
-        _sl_capture_fbo(&info->shadow_map, p.shadow_map_size);
-    if (_sl_case_has(c, SL_CHECK_DEPTH_MAP) && info->shadow_map_ready) {
-        if (sl_capture_depth_texture(info->shadow_map.depth_texture, &img, err, sizeof err)) {
-            _sl_send_image("depth_map", &img);
-            sl_image_free(&img);
-        } else {
-            _sl_send(_SL_MSG_ERROR, "depth_map", err, strlen(err));
-        }
-    }
-    if (_sl_case_has(c, SL_CHECK_MATRICES) && info->lab2_ready) {
-        double m[48];
-        for (int i = 0; i < 16; i++) {
-            m[i] = ((const float *)info->light_view)[i];
-            m[16 + i] = ((const float *)info->light_projection)[i];
-            m[32 + i] = ((const float *)info->shadow_matrix)[i];
-        }
-        _sl_send_numbers("matrices", m, 48);
-    }
-    sl_lab_call_hook = NULL;
-    sl_renderer_destroy(&r);
-    sl_context_destroy(ctx);
-    _sl_send(_SL_MSG_DONE, NULL, NULL, 0);
-    return 0;
-}
-
-/* ---- parent side ---- */
-
-typedef struct _sl_job {
-    pid_t pid;
-    int fd;
-    int index;
+typedef struct _sl_stream {
+    const sl_case *c;
+    sl_case_result *r;
+    uint32_t wanted;          /* captures the case asked for */
+    uint32_t received;        /* captures that arrived */
     char *buf;
     size_t len, cap;
+    uint64_t total;           /* bytes received in all */
+    bool done;                /* DONE parsed */
+    char stage[64];           /* the lab function running, per the last STAGE */
+} _sl_stream;
+
+static void _sl_protocol_error(_sl_stream *s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void _sl_protocol_error(_sl_stream *s, const char *fmt, ...) {
+    if (s->r->protocol_error[0]) return;
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(s->r->protocol_error, sizeof s->r->protocol_error, fmt, args);
+    va_end(args);
+}
+
+/* Text from the runner, made safe to print: control characters (terminal
+ * escapes, carriage returns) become '?', tabs and newlines stay. */
+static void _sl_clean_text(char *out, size_t out_size, const char *in, size_t n) {
+    size_t j = 0;
+    for (size_t i = 0; i < n && j + 1 < out_size; i++) {
+        unsigned char ch = (unsigned char)in[i];
+        out[j++] = (ch < 32 && ch != '\n' && ch != '\t') || ch == 127 ? '?' : (char)ch;
+    }
+    out[j] = '\0';
+}
+
+static bool _sl_valid_name(const char *name, size_t n) {
+    for (size_t i = 0; i < n; i++) {
+        char ch = name[i];
+        if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_')) return false;
+    }
+    return true;
+}
+
+static uint32_t _sl_wanted_captures(const sl_case *c) {
+    uint32_t wanted = 0;
+    for (int i = 0; i < c->check_count; i++) wanted |= sl_check_captures(c, &c->checks[i]);
+    return wanted;
+}
+
+/* The largest payload a message of this type and name may have; 0 when none is allowed. */
+static uint64_t _sl_payload_limit(const _sl_stream *s, uint32_t type, int capture) {
+    switch (type) {
+    case SL_MSG_HELLO:
+    case SL_MSG_ERROR:
+    case SL_MSG_CAPTURE_ERROR: return SL_MSG_TEXT_MAX;
+    case SL_MSG_NUMBERS: return SL_MSG_NUMBERS_MAX * sizeof(double);
+    case SL_MSG_RENDER_TIME: return sizeof(double);
+    case SL_MSG_IMAGE:
+        if (capture == SL_CAPTURE_DEPTH_MAP)
+            return SL_IMAGE_HEADER_BYTES + (uint64_t)SL_IMAGE_SIDE_MAX * SL_IMAGE_SIDE_MAX * sizeof(float);
+        return SL_IMAGE_HEADER_BYTES + (uint64_t)s->c->width * (uint64_t)s->c->height * 3 * sizeof(float);
+    default: return 0;
+    }
+}
+
+/* Checks a header before its payload is read: a lie about lengths is caught
+ * here, before anything is allocated for it. */
+static bool _sl_header_ok(_sl_stream *s, const sl_message_header *h, const char *name) {
+    if (s->done) {
+        _sl_protocol_error(s, "a message after DONE");
+        return false;
+    }
+    if (h->type < SL_MSG_HELLO || h->type >= SL_MSG_TYPE_END) {
+        _sl_protocol_error(s, "unknown message type %u", h->type);
+        return false;
+    }
+    if (h->name_length > SL_MSG_NAME_MAX || !_sl_valid_name(name, h->name_length)) {
+        _sl_protocol_error(s, "a message with a malformed name");
+        return false;
+    }
+    int capture = -1;
+    if (h->type == SL_MSG_IMAGE || h->type == SL_MSG_NUMBERS || h->type == SL_MSG_CAPTURE_ERROR) {
+        char n[SL_MSG_NAME_MAX + 1];
+        snprintf(n, sizeof n, "%.*s", (int)h->name_length, name);
+        capture = sl_capture_parse(n);
+        if (capture < 0 || !((s->wanted >> capture) & 1u)) {
+            _sl_protocol_error(s, "a capture the case did not ask for (\"%s\")", n);
+            return false;
+        }
+        if ((s->received >> capture) & 1u) {
+            _sl_protocol_error(s, "the capture \"%s\" twice", n);
+            return false;
+        }
+    }
+    uint64_t limit = _sl_payload_limit(s, h->type, capture);
+    if (h->payload_length > limit) {
+        _sl_protocol_error(s, "a message of %llu bytes where at most %llu are allowed",
+                           (unsigned long long)h->payload_length, (unsigned long long)limit);
+        return false;
+    }
+    return true;
+}
+
+static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint64_t n) {
+    sl_case_result *r = s->r;
+    int32_t dims[3];
+    if (n < SL_IMAGE_HEADER_BYTES) {
+        _sl_protocol_error(s, "an image without its size");
+        return;
+    }
+    memcpy(dims, payload, sizeof dims);
+    bool camera = capture != SL_CAPTURE_DEPTH_MAP;
+    int channels = capture == SL_CAPTURE_IMAGE ? 3 : 1;
+    bool ok = dims[0] > 0 && dims[1] > 0 && dims[0] <= SL_IMAGE_SIDE_MAX && dims[1] <= SL_IMAGE_SIDE_MAX &&
+              dims[2] == channels && (!camera || (dims[0] == s->c->width && dims[1] == s->c->height));
+    if (!ok || n != SL_IMAGE_HEADER_BYTES + (uint64_t)dims[0] * (uint64_t)dims[1] * (uint64_t)dims[2] * sizeof(float)) {
+        _sl_protocol_error(s, "an image whose size does not add up");
+        return;
+    }
+    if (r->capture_count >= SL_RUN_MAX_CAPTURES) return;
+    sl_capture *cap = &r->captures[r->capture_count];
+    *cap = (sl_capture){.is_image = true};
+    snprintf(cap->name, sizeof cap->name, "%s", sl_capture_name(capture));
+    cap->image = sl_image_alloc(dims[0], dims[1], dims[2]);
+    if (!cap->image.data) return;
+    memcpy(cap->image.data, payload + SL_IMAGE_HEADER_BYTES, (size_t)(n - SL_IMAGE_HEADER_BYTES));
+    r->capture_count++;
+}
+
+static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const char *name_raw, const char *payload) {
+    sl_case_result *r = s->r;
+    char name[SL_MSG_NAME_MAX + 1];
+    snprintf(name, sizeof name, "%.*s", (int)h->name_length, name_raw);
+    int capture = sl_capture_parse(name);
+    switch ((sl_message_type)h->type) {
+    case SL_MSG_HELLO: {
+        char text[256];
+        _sl_clean_text(text, sizeof text, payload, (size_t)h->payload_length);
+        char *nl = strchr(text, '\n');
+        if (nl) *nl = '\0';
+        snprintf(r->backend, sizeof r->backend, "%s", text);
+        snprintf(r->renderer, sizeof r->renderer, "%s", nl ? nl + 1 : "");
+        break;
+    }
+    case SL_MSG_STAGE: snprintf(s->stage, sizeof s->stage, "%s", name); break;
+    case SL_MSG_NOT_IMPLEMENTED:
+        for (int i = 0; i < r->not_implemented_count; i++)
+            if (strcmp(r->not_implemented[i], name) == 0) {
+                _sl_protocol_error(s, "\"%s\" reported twice", name);
+                return;
+            }
+        if (r->not_implemented_count < 16 && name[0])
+            snprintf(r->not_implemented[r->not_implemented_count++], sizeof r->not_implemented[0], "%s", name);
+        break;
+    case SL_MSG_FAILED: snprintf(r->failed, sizeof r->failed, "%s", name); break;
+    case SL_MSG_ERROR: _sl_clean_text(r->error, sizeof r->error, payload, (size_t)h->payload_length); break;
+    case SL_MSG_CAPTURE_ERROR: {
+        char text[400];
+        _sl_clean_text(text, sizeof text, payload, (size_t)h->payload_length);
+        snprintf(r->capture_error, sizeof r->capture_error, "%s: %s", name, text);
+        s->received |= 1u << capture;
+        break;
+    }
+    case SL_MSG_IMAGE:
+        s->received |= 1u << capture;
+        _sl_take_image(s, capture, payload, h->payload_length);
+        break;
+    case SL_MSG_NUMBERS: {
+        s->received |= 1u << capture;
+        int expected = capture == SL_CAPTURE_FBO ? SL_FBO_NUMBERS : capture == SL_CAPTURE_MATRICES ? SL_MATRICES_NUMBERS : -1;
+        if (capture >= SL_CAPTURE_PROBE) {
+            const sl_check *k = &s->c->checks[capture - SL_CAPTURE_PROBE];
+            const sl_probe_function *f = sl_probe_at(k->function);
+            expected = f ? k->rows * f->output_count : -1;
+        }
+        if ((uint64_t)expected * sizeof(double) != h->payload_length) {
+            _sl_protocol_error(s, "the capture \"%s\" has the wrong count of numbers", name);
+            return;
+        }
+        if (r->capture_count >= SL_RUN_MAX_CAPTURES) return;
+        sl_capture *cap = &r->captures[r->capture_count++];
+        *cap = (sl_capture){.number_count = expected};
+        snprintf(cap->name, sizeof cap->name, "%s", name);
+        memcpy(cap->numbers, payload, (size_t)h->payload_length);
+        break;
+    }
+    case SL_MSG_RENDER_TIME: {
+        double t;
+        if (h->payload_length != sizeof t) {
+            _sl_protocol_error(s, "a render time of the wrong size");
+            return;
+        }
+        memcpy(&t, payload, sizeof t);
+        r->render_seconds = t >= 0 && t < 1e6 ? t : 0;
+        break;
+    }
+    case SL_MSG_DONE: s->done = true; break;
+    default: break;
+    }
+}
+
+/* Takes every complete message from the front of the buffer. */
+static void _sl_parse_available(_sl_stream *s) {
+    size_t pos = 0;
+    while (!s->r->protocol_error[0] && s->len - pos >= sizeof(sl_message_header)) {
+        sl_message_header h;
+        memcpy(&h, s->buf + pos, sizeof h);
+        size_t name_have = s->len - pos - sizeof h;
+        const char *name = s->buf + pos + sizeof h;
+        if (h.name_length > SL_MSG_NAME_MAX) {
+            _sl_protocol_error(s, "a message with a malformed name");
+            break;
+        }
+        if (name_have < h.name_length) break;
+        if (!_sl_header_ok(s, &h, name)) break;
+        /* both lengths are bounded now: the sum cannot overflow */
+        uint64_t size = sizeof h + (uint64_t)h.name_length + h.payload_length;
+        if (s->len - pos < size) break;
+        _sl_take_message(s, &h, name, name + h.name_length);
+        pos += (size_t)size;
+    }
+    memmove(s->buf, s->buf + pos, s->len - pos);
+    s->len -= pos;
+}
+
+static bool _sl_stream_feed(_sl_stream *s, const char *data, size_t n) {
+    s->total += n;
+    if (s->total > _SL_CASE_BYTES_MAX) {
+        _sl_protocol_error(s, "more than %llu MiB of results", (unsigned long long)(_SL_CASE_BYTES_MAX >> 20));
+        return false;
+    }
+    if (s->len + n > s->cap) {
+        size_t cap = s->cap ? s->cap : 65536;
+        while (cap < s->len + n) cap *= 2;
+        char *buf = realloc(s->buf, cap);
+        if (!buf) {
+            _sl_protocol_error(s, "out of memory for the results");
+            return false;
+        }
+        s->buf = buf;
+        s->cap = cap;
+    }
+    memcpy(s->buf + s->len, data, n);
+    s->len += n;
+    _sl_parse_available(s);
+    return !s->r->protocol_error[0];
+}
+
+static void _sl_stream_end(_sl_stream *s) {
+    if (s->len > 0 && !s->r->protocol_error[0] && s->done) _sl_protocol_error(s, "a message after DONE");
+    if (!s->done && s->stage[0]) snprintf(s->r->crashed_in, sizeof s->r->crashed_in, "%s", s->stage);
+    free(s->buf);
+    s->buf = NULL;
+    s->len = s->cap = 0;
+}
+
+void sl_run_parse_stream(const sl_case *c, const void *data, size_t size, sl_case_result *r) {
+    memset(r, 0, sizeof *r);
+    _sl_stream s = {.c = c, .r = r, .wanted = _sl_wanted_captures(c)};
+    _sl_stream_feed(&s, data, size);
+    r->finished = s.done && !r->protocol_error[0];
+    _sl_stream_end(&s);
+}
+
+/* ---- the runners ---- */
+
+typedef struct _sl_job {
+    int index;
+    pid_t pid;
+    int job_fd;     /* the runner's fd 0: closed once DONE is checked */
+    int channel_fd; /* its fd 3 */
+    int output_fd;  /* its stdout and stderr */
+    const char *runner;
+    _sl_stream stream;
+    char output[_SL_OUTPUT_KEEP + 1]; /* a ring of the last bytes */
+    size_t output_len;
+    long long output_total;
     double start, deadline;
-    char log_path[64];
+    bool channel_open, output_open;
 } _sl_job;
 
 static double _sl_now(void) {
@@ -206,195 +307,254 @@ static double _sl_now(void) {
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
-static void _sl_parse(const _sl_job *job, sl_case_result *r) {
-    size_t pos = 0;
-    char stage[64] = "";
-    while (pos + 16 <= job->len) {
-        uint32_t type, name_len;
-        uint64_t payload_len;
-        memcpy(&type, job->buf + pos, 4);
-        memcpy(&name_len, job->buf + pos + 4, 4);
-        memcpy(&payload_len, job->buf + pos + 8, 8);
-        if (pos + 16 + name_len + payload_len > job->len) break; /* cut off by a crash */
-        char name[64];
-        snprintf(name, sizeof name, "%.*s", (int)(name_len < 63 ? name_len : 63), job->buf + pos + 16);
-        const char *payload = job->buf + pos + 16 + name_len;
-        switch (type) {
-        case _SL_MSG_STAGE: snprintf(stage, sizeof stage, "%s", name); break;
-        case _SL_MSG_NOT_IMPLEMENTED:
-            if (r->not_implemented_count < 16) snprintf(r->not_implemented[r->not_implemented_count++], 64, "%s", name);
-            break;
-        case _SL_MSG_FAILED: snprintf(r->failed, sizeof r->failed, "%s", name); break;
-        case _SL_MSG_ERROR:
-            if (name[0])
-                snprintf(r->capture_error, sizeof r->capture_error, "%s: %.*s", name, (int)payload_len, payload);
-            else
-                snprintf(r->error, sizeof r->error, "%.*s", (int)payload_len, payload);
-            break;
-        case _SL_MSG_IMAGE:
-            if (r->capture_count < SL_RUN_MAX_CAPTURES && payload_len >= 12) {
-                int32_t dims[3];
-                memcpy(dims, payload, sizeof dims);
-                uint64_t expect = 12 + (uint64_t)dims[0] * (uint64_t)dims[1] * (uint64_t)dims[2] * sizeof(float);
-                if (dims[0] > 0 && dims[1] > 0 && dims[2] > 0 && expect == payload_len) {
-                    sl_capture *cap = &r->captures[r->capture_count++];
-                    snprintf(cap->name, sizeof cap->name, "%s", name);
-                    cap->is_image = true;
-                    cap->image = sl_image_alloc(dims[0], dims[1], dims[2]);
-                    if (cap->image.data) memcpy(cap->image.data, payload + 12, payload_len - 12);
-                }
-            }
-            break;
-        case _SL_MSG_NUMBERS:
-            if (r->capture_count < SL_RUN_MAX_CAPTURES) {
-                sl_capture *cap = &r->captures[r->capture_count++];
-                snprintf(cap->name, sizeof cap->name, "%s", name);
-                cap->number_count = (int)(payload_len / sizeof(double));
-                if (cap->number_count > SL_RUN_MAX_NUMBERS) cap->number_count = SL_RUN_MAX_NUMBERS;
-                memcpy(cap->numbers, payload, (size_t)cap->number_count * sizeof(double));
-            }
-            break;
-        case _SL_MSG_DONE: r->finished = true; break;
-        default: break;
-        }
-        pos += 16 + name_len + payload_len;
-    }
-    if (!r->finished && stage[0]) snprintf(r->crashed_in, sizeof r->crashed_in, "%s", stage);
+static void _sl_close(int *fd) {
+    if (*fd >= 0) close(*fd);
+    *fd = -1;
 }
 
-static void _sl_read_tail(const char *path, char *out, size_t n) {
-    out[0] = '\0';
-    FILE *f = fopen(path, "rb");
-    if (!f) return;
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    long start = size > (long)n - 1 ? size - ((long)n - 1) : 0;
-    fseek(f, start, SEEK_SET);
-    size_t got = fread(out, 1, n - 1, f);
-    out[got] = '\0';
-    fclose(f);
-}
-
-static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_options *o) {
-    int fds[2];
+static void _sl_build_job(sl_job *job, const sl_case *c, const sl_run_options *o, const sl_sandbox_process *p) {
     memset(job, 0, sizeof *job);
-    job->index = index;
-    snprintf(job->log_path, sizeof job->log_path, "/tmp/shadowlab-case-XXXXXX");
-    int log_fd = mkstemp(job->log_path);
-    if (pipe(fds) != 0) return false;
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid < 0) {
-        close(fds[0]);
-        close(fds[1]);
-        return false;
+    job->magic = SL_JOB_MAGIC;
+    job->version = SL_PROTOCOL_VERSION;
+    job->size = sizeof *job;
+    job->lab = c->lab;
+    job->width = c->width;
+    job->height = c->height;
+    job->backend = o->backend;
+    job->scene = c->scene;
+    job->frame_count = c->frame_count;
+    memcpy(job->frame_lights, c->frame_lights, sizeof c->frame_lights[0] * (size_t)c->frame_count);
+    job->params = c->params;
+    job->captures = _sl_wanted_captures(c);
+    for (int k = 0; k < SL_JOB_MAX_PROBES; k++) {
+        sl_probe_table *t = &job->probes[k];
+        t->function = -1;
+        if (k >= c->check_count || c->checks[k].kind != SL_CHECK_PROBE) continue;
+        t->function = c->checks[k].function;
+        t->rows = c->checks[k].rows;
+        memcpy(t->inputs, c->checks[k].inputs, sizeof t->inputs);
     }
-    if (pid == 0) {
-        /* Child: keep only our pipe; what lab code prints goes to the log. */
-        for (int fd = 3; fd < 1024; fd++)
-            if (fd != fds[1] && fd != log_fd) close(fd);
-        if (log_fd >= 0) {
-            dup2(log_fd, 1);
-            dup2(log_fd, 2);
-            close(log_fd);
-        }
-        int null_fd = open("/dev/null", O_RDONLY);
-        if (null_fd >= 0) dup2(null_fd, 0);
-        struct rlimit core = {0, 0};
-        setrlimit(RLIMIT_CORE, &core);
-        double limit = o->timeout > 0 ? o->timeout : c->timeout_seconds;
-        struct rlimit cpu = {(rlim_t)limit * 2 + 5, (rlim_t)limit * 2 + 6};
-        setrlimit(RLIMIT_CPU, &cpu);
-        struct rlimit fsize = {64 << 20, 64 << 20};
-        setrlimit(RLIMIT_FSIZE, &fsize);
-        /* Runaway allocations fail in the case, not on the grading machine
-         * (llvmpipe needs well under 1 GiB of address space here). */
-        struct rlimit memory = {(rlim_t)4 << 30, (rlim_t)4 << 30};
-        setrlimit(RLIMIT_AS, &memory);
-        signal(SIGPIPE, SIG_DFL);
-        _sl_child_fd = fds[1];
-        _exit(_sl_child_main(c, o));
+    snprintf(job->labs_dir, sizeof job->labs_dir, "%s", p->labs_dir);
+    snprintf(job->framework_dir, sizeof job->framework_dir, "%s", p->framework_dir);
+}
+
+static bool _sl_write_all(int fd, const void *data, size_t n) {
+    const char *p = data;
+    while (n > 0) {
+        ssize_t w = write(fd, p, n);
+        if (w < 0 && errno == EINTR) continue;
+        if (w <= 0) return false;
+        p += w;
+        n -= (size_t)w;
     }
-    if (log_fd >= 0) close(log_fd);
-    close(fds[1]);
-    job->pid = pid;
-    job->fd = fds[0];
-    job->start = _sl_now();
-    job->deadline = job->start + (o->timeout > 0 ? o->timeout : c->timeout_seconds);
     return true;
 }
 
-static void _sl_finish(_sl_job *job, sl_case_result *r, bool timed_out) {
+static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_options *o, sl_case_result *r) {
+    memset(job, 0, sizeof *job);
+    job->index = index;
+    job->job_fd = job->channel_fd = job->output_fd = -1;
+    const sl_runner_setup *setup = o->setups[c->lab].runner ? &o->setups[c->lab] : &o->setups[0];
+    if (!setup->runner) {
+        snprintf(r->error, sizeof r->error, "no runner for lab %d in this build", c->lab);
+        return false;
+    }
+    int in[2], channel[2], output[2];
+    if (pipe2(in, O_CLOEXEC) != 0) goto fail_errno;
+    if (pipe2(channel, O_CLOEXEC) != 0) goto fail_in;
+    if (pipe2(output, O_CLOEXEC) != 0) goto fail_channel;
+    double timeout = o->timeout > 0 ? o->timeout : c->timeout_seconds;
+    sl_sandbox_spawn_desc d = {
+        .runner = setup->runner,
+        .labs_tree = setup->labs_tree,
+        .framework_dir = o->framework_dir,
+        .environment = o->environment,
+        .stdin_fd = in[0],
+        .channel_fd = channel[1],
+        .output_fd = output[1],
+        .cpu_seconds = timeout * 2 + 5, /* wall clock is the grader's deadline; this stops a runaway for good */
+        .memory_bytes = o->memory_bytes ? o->memory_bytes : (unsigned long long)(c->memory_mb * 1048576.0),
+    };
+    memcpy(d.lab_dirs, setup->lab_dirs, sizeof d.lab_dirs);
+    sl_sandbox_process proc;
+    char err[600];
+    bool spawned = sl_sandbox_spawn(o->sandbox, &d, &proc, err, sizeof err);
+    close(in[0]);
+    close(channel[1]);
+    close(output[1]);
+    if (!spawned) {
+        close(in[1]);
+        close(channel[0]);
+        close(output[0]);
+        snprintf(r->error, sizeof r->error, "could not start the runner: %s", err);
+        return false;
+    }
+    job->pid = proc.pid;
+    job->runner = setup->runner;
+    job->job_fd = in[1];
+    job->channel_fd = channel[0];
+    job->output_fd = output[0];
+    job->channel_open = job->output_open = true;
+    fcntl(job->channel_fd, F_SETFL, O_NONBLOCK);
+    fcntl(job->output_fd, F_SETFL, O_NONBLOCK);
+    job->stream = (_sl_stream){.c = c, .r = r, .wanted = _sl_wanted_captures(c)};
+    job->start = _sl_now();
+    job->deadline = job->start + timeout;
+    r->started = true;
+    static sl_job message; /* large: not on the stack */
+    _sl_build_job(&message, c, o, &proc);
+    /* The job must fit in the pipe's buffer, so writing it never waits for a
+     * runner that does not read (lab code runs before the runner's main). */
+    if (fcntl(job->job_fd, F_SETPIPE_SZ, 1 << 20) < (int)sizeof message || fcntl(job->job_fd, F_SETFL, O_NONBLOCK) != 0 ||
+        !_sl_write_all(job->job_fd, &message, sizeof message))
+        snprintf(r->error, sizeof r->error, "could not send the case to the runner: %s", strerror(errno));
+    return true;
+fail_channel:
+    close(channel[0]);
+    close(channel[1]);
+fail_in:
+    close(in[0]);
+    close(in[1]);
+fail_errno:
+    snprintf(r->error, sizeof r->error, "could not start the runner: %s", strerror(errno));
+    return false;
+}
+
+static void _sl_keep_output(_sl_job *job, const char *data, size_t n) {
+    job->output_total += (long long)n;
+    if (n >= _SL_OUTPUT_KEEP) {
+        memcpy(job->output, data + n - _SL_OUTPUT_KEEP, _SL_OUTPUT_KEEP);
+        job->output_len = _SL_OUTPUT_KEEP;
+        return;
+    }
+    if (job->output_len + n > _SL_OUTPUT_KEEP) {
+        size_t drop = job->output_len + n - _SL_OUTPUT_KEEP;
+        memmove(job->output, job->output + drop, job->output_len - drop);
+        job->output_len -= drop;
+    }
+    memcpy(job->output + job->output_len, data, n);
+    job->output_len += n;
+}
+
+/* Reads what is there; false when the fd reached its end. */
+static bool _sl_drain(_sl_job *job, bool channel) {
+    static char buf[1 << 16];
+    for (;;) {
+        ssize_t got = read(channel ? job->channel_fd : job->output_fd, buf, sizeof buf);
+        if (got > 0) {
+            if (!channel) _sl_keep_output(job, buf, (size_t)got);
+            else if (!_sl_stream_feed(&job->stream, buf, (size_t)got)) return false;
+            continue;
+        }
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return true;
+        return false;
+    }
+}
+
+/* After DONE: the process must still be the runner (lab code could have
+ * exec'ed another program to speak for it). Then it may exit. */
+static void _sl_acknowledge(_sl_job *job, const sl_run_options *o) {
+    if (job->job_fd < 0) return;
+    if (!sl_sandbox_runs_runner(job->pid, job->runner)) {
+        _sl_protocol_error(&job->stream, "DONE came from a process that is no longer the runner");
+        sl_sandbox_kill(o->sandbox, job->pid);
+    }
+    _sl_close(&job->job_fd);
+}
+
+static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
+    sl_case_result *r = job->stream.r;
+    if (kill_it) sl_sandbox_kill(o->sandbox, job->pid);
+    _sl_close(&job->job_fd);
     int status = 0;
-    if (timed_out) kill(job->pid, SIGKILL);
-    while (waitpid(job->pid, &status, 0) < 0 && errno == EINTR) {}
-    close(job->fd);
+    struct rusage usage = {0};
+    while (wait4(job->pid, &status, 0, &usage) < 0 && errno == EINTR) {}
+    /* In case it was not PID 1 of a namespace: nothing of its session may stay. */
+    sl_sandbox_kill(o->sandbox, job->pid);
+    if (job->channel_open) _sl_drain(job, true);
+    if (job->output_open) _sl_drain(job, false);
+    _sl_close(&job->channel_fd);
+    _sl_close(&job->output_fd);
     r->seconds = _sl_now() - job->start;
-    r->timed_out = timed_out;
-    if (WIFSIGNALED(status)) r->signal = timed_out ? 0 : WTERMSIG(status);
+    r->cpu_seconds = (double)usage.ru_utime.tv_sec + (double)usage.ru_utime.tv_usec * 1e-6 +
+                     (double)usage.ru_stime.tv_sec + (double)usage.ru_stime.tv_usec * 1e-6;
+    if (WIFSIGNALED(status) && !r->timed_out && !r->interrupted) r->signal = WTERMSIG(status);
     if (WIFEXITED(status)) r->exit_code = WEXITSTATUS(status);
-    _sl_parse(job, r);
-    if (r->finished && (r->signal || r->exit_code)) r->finished = false;
-    _sl_read_tail(job->log_path, r->output_tail, sizeof r->output_tail);
-    unlink(job->log_path);
-    free(job->buf);
-    job->buf = NULL;
+    bool done = job->stream.done;
+    _sl_stream_end(&job->stream);
+    r->finished = done && !r->protocol_error[0] && !r->timed_out && !r->interrupted && WIFEXITED(status) &&
+                  WEXITSTATUS(status) == 0;
+    if (r->protocol_error[0]) {
+        /* whatever arrived is not to be trusted */
+        sl_case_result_free(r);
+        r->not_implemented_count = 0;
+    }
+    job->output[job->output_len] = '\0';
+    _sl_clean_text(r->output_tail, sizeof r->output_tail, job->output, job->output_len);
+    r->output_dropped = job->output_total - (long long)job->output_len;
     job->pid = 0;
 }
 
-void sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_case_result *results) {
+bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_case_result *results,
+                  volatile int *stop) {
     int jobs = o->jobs > 0 ? o->jobs : 2;
-    if (jobs > 64) jobs = 64;
-    _sl_job running[64];
-    int active = 0, next = 0, done = 0;
+    if (jobs > _SL_MAX_JOBS) jobs = _SL_MAX_JOBS;
+    static _sl_job running[_SL_MAX_JOBS];
+    int active = 0, next = 0;
     memset(results, 0, sizeof *results * (size_t)count);
     signal(SIGPIPE, SIG_IGN);
-    while (done < count) {
+    while (next < count || active > 0) {
+        if (stop && *stop) break;
         while (active < jobs && next < count) {
-            if (_sl_start(&running[active], &cases[next], next, o)) {
-                active++;
-            } else {
-                snprintf(results[next].error, sizeof results[next].error, "could not start a process for this case: %s",
-                         strerror(errno));
-                done++;
-            }
+            if (_sl_start(&running[active], &cases[next], next, o, &results[next])) active++;
             next++;
         }
         if (active == 0) continue;
-        struct pollfd pfd[64];
+        struct pollfd pfd[2 * _SL_MAX_JOBS];
         double now = _sl_now(), wait = 1e9;
         for (int i = 0; i < active; i++) {
-            pfd[i] = (struct pollfd){.fd = running[i].fd, .events = POLLIN};
+            pfd[2 * i] = (struct pollfd){.fd = running[i].channel_open ? running[i].channel_fd : -1, .events = POLLIN};
+            pfd[2 * i + 1] = (struct pollfd){.fd = running[i].output_open ? running[i].output_fd : -1, .events = POLLIN};
             if (running[i].deadline - now < wait) wait = running[i].deadline - now;
         }
-        int ms = wait <= 0 ? 0 : (int)(wait * 1000) + 1;
-        int n = poll(pfd, (nfds_t)active, ms);
+        int ms = wait <= 0 ? 0 : wait > 1 ? 1000 : (int)(wait * 1000) + 1;
+        nfds_t watched = (nfds_t)(2 * active);
+        if (watched > sizeof pfd / sizeof pfd[0]) watched = sizeof pfd / sizeof pfd[0];
+        int n = poll(pfd, watched, ms);
         if (n < 0 && errno != EINTR) break;
         now = _sl_now();
         for (int i = active - 1; i >= 0; i--) {
             _sl_job *job = &running[i];
-            bool finished = false, timed_out = false;
-            if (n > 0 && (pfd[i].revents & (POLLIN | POLLHUP | POLLERR))) {
-                if (job->cap - job->len < 65536) {
-                    size_t cap = job->cap ? job->cap * 2 : 1 << 20;
-                    char *buf = realloc(job->buf, cap);
-                    if (buf) {
-                        job->buf = buf;
-                        job->cap = cap;
-                    }
+            bool broken = false;
+            if (n > 0 && job->channel_open && (pfd[2 * i].revents & (POLLIN | POLLHUP | POLLERR))) {
+                if (!_sl_drain(job, true)) {
+                    job->channel_open = false;
+                    broken = job->stream.r->protocol_error[0] != '\0';
                 }
-                ssize_t got = job->cap > job->len ? read(job->fd, job->buf + job->len, job->cap - job->len) : -1;
-                if (got > 0) job->len += (size_t)got;
-                else if (got == 0 || (errno != EINTR && errno != EAGAIN)) finished = true;
+                if (job->stream.done) _sl_acknowledge(job, o);
             }
-            if (!finished && now > job->deadline) finished = timed_out = true;
-            if (finished) {
-                _sl_finish(job, &results[job->index], timed_out);
+            if (n > 0 && job->output_open && (pfd[2 * i + 1].revents & (POLLIN | POLLHUP | POLLERR)))
+                job->output_open = _sl_drain(job, false);
+            /* The runner's set-up failed: it said why and stops. */
+            if (job->stream.r->error[0] && !job->stream.done) _sl_close(&job->job_fd);
+            bool timed_out = now > job->deadline;
+            if (timed_out) job->stream.r->timed_out = true;
+            if (broken || timed_out || (!job->channel_open && !job->output_open)) {
+                _sl_finish(job, o, broken || timed_out || !job->stream.done);
                 running[i] = running[--active];
-                done++;
             }
         }
     }
+    if (active > 0 || next < count) {
+        for (int i = 0; i < active; i++) {
+            running[i].stream.r->interrupted = true;
+            _sl_finish(&running[i], o, true);
+        }
+        for (int i = next; i < count; i++) results[i].interrupted = true;
+        return false;
+    }
+    return true;
 }
 
 const sl_capture *sl_result_capture(const sl_case_result *r, const char *name) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Set-up in one command: installs what is missing (Debian 12), builds, and
+# Set-up in one command: installs what is missing (Debian), builds, and
 # grades the labs headless.
 #   ./scripts/bootstrap.sh                    the student labs (labs/)
 #   SL_LABS=solutions ./scripts/bootstrap.sh  the solutions (course staff)

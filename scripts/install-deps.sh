@@ -1,36 +1,87 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package shadowlab needs to build, run and test.
-# Idempotent: packages already present are left alone. Run as root (or with sudo).
+# Installs the Debian packages shadowlab needs to build, run and test, as the
+# running release offers them (Debian 12 bookworm, 13 trixie, testing).
+# Idempotent: packages already present are left alone, and nothing is fetched
+# when all are there. Run as root (or with sudo).
 set -euo pipefail
 
+# The one package list. A name ending in '?' is installed where the release has
+# it and skipped where it does not.
 packages=(
   build-essential cmake pkg-config
-  libglfw3-dev          # viewer window (X11 build)
+  libglfw3-dev          # viewer window
   libcglm-dev           # math (GLM for C)
-  libosmesa6-dev        # headless GL for the grader (OSMesa, llvmpipe)
   libgl-dev             # GL headers: GL/glcorearb.h, KHR/khrplatform.h
+  libegl-dev            # headless GL through EGL (every release)
+  libegl-mesa0 libgbm1  # Mesa's EGL driver: surfaceless EGL and the software device
+  libgl1-mesa-dri       # llvmpipe, the software renderer (Debian 12: swrast_dri.so)
+  mesa-libgallium?      # llvmpipe's home from Mesa 24.2 on (Debian 13 and later)
+  libosmesa6-dev?       # headless GL through OSMesa, the references' backend; gone from Mesa 25.1 on
   libopenimageio-dev    # PNG / OpenEXR capture and references
   libcjson-dev          # case files, reports
   xvfb xauth            # the viewer's tests run in a virtual X display
-  libgl1-mesa-dri libglx-mesa0   # llvmpipe behind GLX: the viewer under Xvfb
+  libglx-mesa0          # llvmpipe behind GLX: the viewer under Xvfb
 )
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
+say() { echo "install-deps: $*"; }
 
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#packages[@]} packages already installed"
-  exit 0
+if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
+  say "this script knows Debian's packages only (no apt-get here). Install the equivalents of:" >&2
+  say "  ${packages[*]//\?/}" >&2
+  say "see README.md, 'Supported systems'." >&2
+  exit 2
 fi
+release=$( (. /etc/os-release 2>/dev/null && echo "${PRETTY_NAME:-unknown}") || echo unknown)
 
-echo "install-deps: installing ${missing[*]}"
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+# Whether apt's current package lists offer the package at all.
+offered() {
+  local candidate
+  candidate=$(apt-cache policy "$1" 2>/dev/null | awk '/Candidate:/ {print $2; exit}')
+  [ -n "$candidate" ] && [ "$candidate" != "(none)" ]
+}
+
 sudo=""
 if [ "$(id -u)" != 0 ]; then
-  command -v sudo >/dev/null || { echo "install-deps: run as root (missing: ${missing[*]})" >&2; exit 2; }
+  command -v sudo >/dev/null || { say "run as root (or install sudo)" >&2; exit 2; }
   sudo=sudo
 fi
 export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -q
-$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+updated=""
+update() { [ -n "$updated" ] || { $sudo apt-get update -q; updated=1; }; }
+
+required=() optional=()
+for p in "${packages[@]}"; do
+  case $p in *\?) optional+=("${p%\?}") ;; *) required+=("$p") ;; esac
+done
+
+missing=()
+for p in "${required[@]}"; do installed "$p" || missing+=("$p"); done
+# Only a machine that lacks something is asked to refresh apt's lists.
+[ ${#missing[@]} -eq 0 ] || update
+not_offered=()
+for p in "${optional[@]}"; do
+  installed "$p" && continue
+  if offered "$p"; then missing+=("$p"); else not_offered+=("$p"); fi
+done
+
+if [ ${#not_offered[@]} -gt 0 ]; then
+  say "not offered by $release, so skipped: ${not_offered[*]}"
+  case " ${not_offered[*]} " in
+    *" libosmesa6-dev "*) say "no OSMesa here (Mesa 25.1 removed it): shadowlab renders headless through EGL" ;;
+  esac
+fi
+
+if [ ${#missing[@]} -eq 0 ]; then
+  say "all packages already installed ($release)"
+  exit 0
+fi
+
+say "installing on $release: ${missing[*]}"
+update
+if ! $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"; then
+  say "apt-get could not install: ${missing[*]}" >&2
+  for p in "${missing[@]}"; do offered "$p" || say "  $p: not offered by $release's package lists" >&2; done
+  exit 1
+fi
+say "done"

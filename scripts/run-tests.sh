@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The whole test suite in one command: installs what is missing (Debian 12),
+# The whole test suite in one command: installs what is missing (Debian),
 # builds every grader the tests need (student, solutions, wrong variants), and
 # runs ctest. CI runs exactly this (.ci/run).
 set -euo pipefail

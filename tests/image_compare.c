@@ -19,7 +19,8 @@ int main(int argc, char **argv) {
         return 2;
     }
     sl_compare_stats s = sl_compare_images(&a, &b, threshold, NULL);
-    printf("image_compare: %s vs %s: %s%.3f%% of pixels differ (allowed %.3f%%), largest difference %.3f\n", argv[1],
-           argv[2], s.size_mismatch ? "sizes differ; " : "", 100 * s.failing_fraction, percent, s.max_difference);
+    printf("image_compare: %s vs %s: %s%.3f%% of pixels differ (allowed %.3f%%), largest difference %.3f, mean %.6f\n",
+           argv[1], argv[2], s.size_mismatch ? "sizes differ; " : "", 100 * s.failing_fraction, percent, s.max_difference,
+           s.mean_difference);
     return !s.size_mismatch && 100 * s.failing_fraction <= percent ? 0 : 1;
 }

@@ -1,37 +1,48 @@
 #!/usr/bin/env bash
 # make_variant.sh SPEC SOLUTIONS_DIR OUT_DIR
-# Copies the solutions to OUT_DIR and puts in the one mistake SPEC describes:
-# each "find:" line is replaced by the "replace:" line after it, in "file:".
-# Fails when a find line is no longer in the solution, or is there more than
-# once, so variants cannot rot or hit the wrong place.
+# Copies the solutions to OUT_DIR and makes the changes SPEC describes: each
+# "find:" text is replaced by the "replace:" text after it, in the file named
+# by the last "file:" line before them (a variant may change several files).
+# "find+:" and "replace+:" lines continue the text above them on a new line,
+# for a change that spans lines. Fails when a find text is no longer in its
+# file, or is there more than once, so variants cannot rot or hit the wrong place.
 set -euo pipefail
 spec=$1 solutions=$2 out=$3
-file="" finds=() replaces=()
+file="" files=() finds=() replaces=() last=""
 while IFS= read -r line || [ -n "$line" ]; do
   case "$line" in
-    "file: "*) file=${line#file: } ;;
-    "find: "*) finds+=("${line#find: }") ;;
-    "replace:"*) r=${line#replace:}; replaces+=("${r# }") ;;
+    "file: "*) file=${line#file: }; last="" ;;
+    "find: "*)
+      [ -n "$file" ] || { echo "$spec: a find: before any file:" >&2; exit 1; }
+      files+=("$file"); finds+=("${line#find: }"); last=find ;;
+    "find+: "* | "find+:")
+      [ "$last" = find ] || { echo "$spec: find+: must follow a find: line" >&2; exit 1; }
+      r=${line#find+:}; finds[${#finds[@]}-1]+=$'\n'"${r# }" ;;
+    "replace:"*) r=${line#replace:}; replaces+=("${r# }"); last=replace ;;
+    "replace+:"*)
+      [ "$last" = replace ] || { echo "$spec: replace+: must follow a replace: line" >&2; exit 1; }
+      r=${line#replace+:}; replaces[${#replaces[@]}-1]+=$'\n'"${r# }" ;;
   esac
 done <"$spec"
-[ -n "$file" ] && [ ${#finds[@]} -gt 0 ] && [ ${#finds[@]} = ${#replaces[@]} ] \
+[ ${#finds[@]} -gt 0 ] && [ ${#finds[@]} = ${#replaces[@]} ] \
   || { echo "$spec: needs file:, and find:/replace: pairs" >&2; exit 1; }
 rm -rf "$out.tmp"
 mkdir -p "$(dirname "$out")"
 cp -R "$solutions" "$out.tmp"
-target="$out.tmp/$file"
-content=$(cat "$target"; printf x); content=${content%x}
 for i in "${!finds[@]}"; do
+  target="$out.tmp/${files[$i]}"
+  [ -f "$target" ] || { echo "$spec: no file ${files[$i]} in the solutions" >&2; rm -rf "$out.tmp"; exit 1; }
+  content=$(cat "$target"; printf x); content=${content%x}
   case "$content" in
     *"${finds[$i]}"*) ;;
-    *) echo "$spec: '${finds[$i]}' is not in $file any more: update the variant" >&2; rm -rf "$out.tmp"; exit 1 ;;
+    *) echo "$spec: '${finds[$i]}' is not in ${files[$i]} any more: update the variant" >&2; rm -rf "$out.tmp"; exit 1 ;;
   esac
   rest=${content#*"${finds[$i]}"}
   case "$rest" in
-    *"${finds[$i]}"*) echo "$spec: '${finds[$i]}' is in $file more than once: make it unique" >&2; rm -rf "$out.tmp"; exit 1 ;;
+    *"${finds[$i]}"*) echo "$spec: '${finds[$i]}' is in ${files[$i]} more than once: make it unique" >&2; rm -rf "$out.tmp"; exit 1 ;;
   esac
   content=${content/"${finds[$i]}"/"${replaces[$i]}"}
+  printf '%s' "$content" >"$target"
 done
-printf '%s' "$content" >"$target"
 rm -rf "$out"
 mv "$out.tmp" "$out"

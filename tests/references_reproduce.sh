@@ -2,6 +2,7 @@
 # references_reproduce.sh GRADER IMAGE_COMPARE GRADER_SOURCE_DIR WORK_DIR
 # Renders the references again from the solutions and checks that the shipped
 # ones match: a solution changed without its references would show up here.
+# The fresh MANIFEST.json must list the same files as the shipped one.
 set -u
 grader=$1 compare=$2 src=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
@@ -12,6 +13,9 @@ while IFS= read -r shipped; do
   fresh="$work/$rel"
   [ -f "$fresh" ] || { echo "no fresh render of $rel" >&2; fail=1; continue; }
   case "$rel" in
+    MANIFEST.json)
+      diff <(grep -oE '"[a-z_]+\.(exr|png|json)"' "$fresh" | sort) <(grep -oE '"[a-z_]+\.(exr|png|json)"' "$shipped" | sort) >/dev/null ||
+        { echo "MANIFEST.json lists other files than the shipped one" >&2; fail=1; } ;;
     *.exr) "$compare" "$fresh" "$shipped" 0.002 0.5 || fail=1 ;;
     *.png) "$compare" "$fresh" "$shipped" 0.1 0.5 || fail=1 ;;
     *.json)

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# reports.sh GRADER WORK_DIR
+# reports.sh GRADER WORK_DIR [GRADER ARGS...]
 # A grade with failing checks writes every report: results.json, report.html,
 # student/reference/diff images of the failed image checks, JUnit XML, and
 # Gradescope and PrairieLearn results whose scores agree with the Score line.
+# No temporary file is left beside them.
 set -u
 grader=$1 work=$2
+shift 2
 rm -rf "$work"; mkdir -p "$work"
-out=$("$grader" --lab 2 --report "$work/report" --junit "$work/junit.xml" --gradescope "$work/gradescope.json" \
+out=$("$grader" "$@" --lab 2 --report "$work/report" --junit "$work/junit.xml" --gradescope "$work/gradescope.json" \
       --prairielearn "$work/prairielearn.json" 2>&1)
 status=$?
 echo "$out"
@@ -22,8 +24,12 @@ for role in student reference diff; do
   grep -q "images/lab2_directional_manual.visibility.$role.png" "$work/report/report.html" || problem "report.html does not show the $role image"
 done
 grep -q '"passed":[[:space:]]*false' "$work/report/results.json" || problem "results.json has no failed check"
+grep -q '"sandbox":' "$work/report/results.json" || problem "results.json does not say which sandbox the runners had"
+grep -qE '"renderer":[[:space:]]*"[^"]+"' "$work/report/results.json" || problem "results.json does not name the renderer"
 grep -qE "\"score\":[[:space:]]*$score([,.}[:space:]]|$)" "$work/gradescope.json" || problem "gradescope.json's score is not $score"
 grep -q '<failure message=' "$work/junit.xml" || problem "junit.xml has no failure"
 grep -q 'comparison inverted' "$work/junit.xml" || problem "junit.xml lacks the failure's reason"
 grep -q '"gradable":[[:space:]]*true' "$work/prairielearn.json" || problem "prairielearn.json is not gradable"
+leftovers=$(find "$work" -name '.*' -type f)
+[ -z "$leftovers" ] || problem "temporary files left: $leftovers"
 exit $fail

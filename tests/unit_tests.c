@@ -1,7 +1,9 @@
 /* Unit tests of the parts that need no GL: comparison, shader preprocessing
  * and error mapping, case and scene files, meshes. Run one with its name:
  *   sl_unit_tests compare_neighbourhood */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE
+#include <stdint.h>
+#include <sys/stat.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,6 +17,9 @@
 #include "sl_grade.h"
 #include "sl_mesh.h"
 #include "sl_scene.h"
+#include "sl_protocol.h"
+#include "sl_run.h"
+#include "sl_sha256.h"
 #include "sl_shader.h"
 
 static int failures;
@@ -133,6 +138,41 @@ static void test_shader_missing_include(void) {
     free(src);
 }
 
+/* An #include that resolves outside the shader folders is refused, whether
+ * by a relative path climbing out or by an absolute one. */
+static void test_shader_include_stays_inside(void) {
+    char dir[300], outside[300], path[512], files[SL_SHADER_MAX_FILES][SL_PATH_MAX], err[1024] = "";
+    snprintf(dir, sizeof dir, "%s/inside", tmp_dir);
+    snprintf(outside, sizeof outside, "%s/secret.glsl", tmp_dir);
+    CHECK(mkdir(dir, 0755) == 0);
+    write_file("secret.glsl", "float answer() { return 42.0; }\n");
+    write_file("inside/ok.glsl", "float ok() { return 1.0; }\n");
+    write_file("inside/climb.frag", "#version 330 core\n#include \"ok.glsl\"\n#include \"../secret.glsl\"\n");
+    char absolute[700];
+    snprintf(absolute, sizeof absolute, "#version 330 core\n#include \"%s\"\n", outside);
+    write_file("inside/absolute.frag", absolute);
+    const char *dirs[] = {dir, NULL};
+    int count = 0;
+    snprintf(path, sizeof path, "%s/climb.frag", dir);
+    char *src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src == NULL);
+    CHECK(strstr(err, "climb.frag:3: error: #include \"../secret.glsl\" reaches outside the shader folders") != NULL);
+    free(src);
+    snprintf(path, sizeof path, "%s/absolute.frag", dir);
+    src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src == NULL && strstr(err, "absolute.frag:2: error: #include") && strstr(err, "reaches outside"));
+    free(src);
+    /* a link inside that points outside is outside too */
+    char link_path[400];
+    snprintf(link_path, sizeof link_path, "%s/link.glsl", dir);
+    CHECK(symlink(outside, link_path) == 0);
+    write_file("inside/via_link.frag", "#version 330 core\n#include \"link.glsl\"\n");
+    snprintf(path, sizeof path, "%s/via_link.frag", dir);
+    src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src == NULL && strstr(err, "reaches outside"));
+    free(src);
+}
+
 static void test_case_files(void) {
     char path[512], err[2048];
     sl_case c;
@@ -141,7 +181,7 @@ static void test_case_files(void) {
     snprintf(path, sizeof path, "%s/ok.json", tmp_dir);
     CHECK(sl_case_load(&c, path, err, sizeof err));
     CHECK(c.lab == 2 && c.check_count == 1 && c.checks[0].points == 3);
-    CHECK(fabs(c.checks[0].fail_fraction - 0.01) < 1e-12 && c.checks[0].threshold == 0.1);
+    CHECK(fabs(c.checks[0].fail_fraction - 0.01) < 1e-12 && c.checks[0].threshold == 0.05); /* the visibility default */
     CHECK(c.params.compare == SL_COMPARE_HARDWARE && c.scene.object_count > 0);
 
     write_file("broken.json", "{\"name\": \"t\",\n \"lab\": 2,\n oops}");
@@ -249,7 +289,7 @@ static void test_grade_names_acne(void) {
     add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
     sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
     sl_check_result out;
-    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(!out.passed && out.points == 0);
     CHECK(strstr(out.message, "shadow acne on 3") != NULL); /* a third of the lit surface */
     CHECK(strstr(out.message, "slope_scaled_bias") != NULL);
@@ -273,13 +313,96 @@ static void test_grade_names_peter_panning(void) {
     add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
     sl_reference ref = image_reference(reference);
     sl_check_result out;
-    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(!out.passed);
     CHECK(strstr(out.message, "detached from their casters by about") != NULL);
     CHECK(strstr(out.message, "Peter Panning") != NULL);
     sl_image_free(&out.diff);
     sl_case_result_free(&r);
     sl_reference_free(&ref);
+}
+
+/* A failed check a later one builds on leads its message; a hint shows only with its own symptom, and
+ * never over a known cause. */
+static void test_grade_leads_with_root_cause(void) {
+    sl_case c = grade_case(2, SL_CHECK_VISIBILITY);
+    c.check_count = 2;
+    c.checks[1] = c.checks[0];
+    c.checks[0].kind = SL_CHECK_MATRICES;
+    snprintf(c.checks[1].hint, sizeof c.checks[1].hint, "look at the divide");
+    c.checks[1].hint_when = 1u << SL_SYMPTOM_MISSING_SHADOW;
+    sl_case_result r = {.finished = true};
+    add_capture(&r, "visibility", square(64, 64, 0, 1, 20, 20, 30, 30)); /* half the reference's shadow */
+    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
+    sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
+    sl_check_result earlier[1] = {{.max_points = 2}};
+    snprintf(earlier[0].summary, sizeof earlier[0].summary, "the shadow matrix multiplies Lv * Lp");
+    sl_grade_context context = {.earlier = earlier, .earlier_count = 1};
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[1], &r, &ref, &context, &out);
+    CHECK(!out.passed);
+    CHECK(strncmp(out.message, "the light's matrices are wrong (synthetic / ", 44) == 0);
+    CHECK(strstr(out.message, "the shadow matrix multiplies Lv * Lp): fix the matrices first. Here: ") != NULL);
+    CHECK(strstr(out.message, "Hint:") == NULL);
+    sl_image_free(&out.diff);
+    /* nothing known: the symptom, and the hint that is about it */
+    sl_grade_check(&c, &c.checks[1], &r, &ref, NULL, &out);
+    CHECK(strstr(out.message, "fix the matrices first") == NULL);
+    CHECK(strstr(out.message, "Hint: look at the divide") != NULL);
+    sl_image_free(&out.diff);
+    /* a hint about another symptom stays out */
+    c.checks[1].hint_when = 1u << SL_SYMPTOM_ACNE;
+    sl_grade_check(&c, &c.checks[1], &r, &ref, NULL, &out);
+    CHECK(strstr(out.message, "Hint:") == NULL);
+    sl_image_free(&out.diff);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+}
+
+/* A probe check of `function` over `rows` rows of inputs, with the student's and the solution's outputs. */
+static void grade_probe(const char *function, int rows, const float inputs[][SL_PROBE_MAX_INPUTS],
+                        const double *student, const double *expected, sl_check_result *out) {
+    sl_case c = grade_case(3, SL_CHECK_PROBE);
+    const sl_probe_function *f = sl_probe_find(function);
+    sl_check *k = &c.checks[0];
+    k->function = sl_probe_index(f);
+    k->rows = rows;
+    k->tolerance = 1e-6;
+    k->relative = 2e-3;
+    for (int i = 0; i < rows; i++) memcpy(k->inputs[i], inputs[i], sizeof k->inputs[i]);
+    sl_case_result r = {.finished = true};
+    sl_capture *cap = &r.captures[r.capture_count++];
+    snprintf(cap->name, sizeof cap->name, "%s", sl_check_capture_name(&c, k));
+    cap->number_count = rows * f->output_count;
+    memcpy(cap->numbers, student, sizeof(double) * (size_t)cap->number_count);
+    sl_reference ref = {.needed = true, .loaded = true, .number_count = cap->number_count};
+    memcpy(ref.numbers, expected, sizeof(double) * (size_t)ref.number_count);
+    sl_grade_check(&c, k, &r, &ref, NULL, out);
+}
+
+/* What a probe's rows say together: the slope term's function of the angle, a missing clamp, a constant. */
+static void test_grade_probe_verdicts(void) {
+    static const float rows[][SL_PROBE_MAX_INPUTS] = {
+        {1.0f, 0.0005f, 0.0015f, 0.01f}, {0.8f, 0.0005f, 0.0015f, 0.01f}, {0.5f, 0.0005f, 0.0015f, 0.01f},
+        {0.1f, 0.0005f, 0.0015f, 0.01f}};
+    double expected[4], with_sin[4], unclamped[4], constant[4];
+    for (int i = 0; i < 4; i++) {
+        double cos_t = rows[i][0], sin_t = sqrt(1 - cos_t * cos_t), tan_t = sin_t / cos_t;
+        expected[i] = fmin(rows[i][1] + rows[i][2] * tan_t, rows[i][3]);
+        with_sin[i] = fmin(rows[i][1] + rows[i][2] * sin_t, rows[i][3]);
+        unclamped[i] = rows[i][1] + rows[i][2] * tan_t;
+        constant[i] = 0.004;
+    }
+    sl_check_result out;
+    grade_probe("slope_scaled_bias", 4, rows, with_sin, expected, &out);
+    CHECK(!out.passed && strstr(out.message, "sin(theta) where tan(theta) belongs") != NULL);
+    CHECK(strstr(out.summary, "sin(theta)") == out.summary);
+    grade_probe("slope_scaled_bias", 4, rows, unclamped, expected, &out);
+    CHECK(strstr(out.message, "not clamped") != NULL);
+    grade_probe("slope_scaled_bias", 4, rows, constant, expected, &out);
+    CHECK(strstr(out.message, "a hand-tuned constant") != NULL);
+    grade_probe("slope_scaled_bias", 4, rows, expected, expected, &out);
+    CHECK(out.passed);
 }
 
 /* A vertical shadow edge whose soft ramp is `near` px wide in the top half and `far` px in the bottom. */
@@ -305,14 +428,14 @@ static void test_grade_penumbra_inverted(void) {
     add_capture(&r, "visibility", ramp(20, 3));
     sl_reference ref = image_reference(ramp(3, 20));
     sl_check_result out;
-    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(!out.passed);
     CHECK(strstr(out.message, "penumbra formula inverted") != NULL);
     sl_case_result_free(&r);
     /* the same widths pass */
     r = (sl_case_result){.finished = true};
     add_capture(&r, "visibility", ramp(3, 20));
-    sl_grade_check(&c, &c.checks[0], &r, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(out.passed && out.points == 1);
     sl_case_result_free(&r);
     sl_reference_free(&ref);
@@ -324,20 +447,143 @@ static void test_grade_run_failures(void) {
     sl_check_result out;
     sl_case_result crashed = {.signal = SIGSEGV};
     snprintf(crashed.crashed_in, sizeof crashed.crashed_in, "lab2_light_view");
-    sl_grade_check(&c, &c.checks[0], &crashed, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &crashed, &ref, NULL, &out);
     CHECK(strstr(out.message, "crashed (Segmentation fault) in lab2_light_view()") != NULL);
     sl_case_result hung = {.timed_out = true, .seconds = 20};
     snprintf(hung.crashed_in, sizeof hung.crashed_in, "lab2_shadow_matrix");
-    sl_grade_check(&c, &c.checks[0], &hung, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &hung, &ref, NULL, &out);
     CHECK(strstr(out.message, "timed out after 20 s in lab2_shadow_matrix()") != NULL);
     sl_case_result stub = {.finished = true, .not_implemented_count = 1};
     snprintf(stub.not_implemented[0], 64, "lab2_light_view");
-    sl_grade_check(&c, &c.checks[0], &stub, &ref, &out);
+    sl_grade_check(&c, &c.checks[0], &stub, &ref, NULL, &out);
     CHECK(strstr(out.message, "not implemented: lab2_light_view() still returns SL_NOT_IMPLEMENTED (TODO(lab2.1)") != NULL);
     sl_reference missing = {.needed = true};
     snprintf(missing.error, sizeof missing.error, "reference missing: x/matrices.json");
-    sl_grade_check(&c, &c.checks[0], &stub, &missing, &out);
+    sl_grade_check(&c, &c.checks[0], &stub, &missing, NULL, &out);
     CHECK(out.reference_problem && strstr(out.message, "reference missing") != NULL);
+}
+
+/* A stream as a runner (or lab code posing as one) would write it. */
+typedef struct stream {
+    char data[1 << 16];
+    size_t size;
+} stream;
+
+static void put(stream *s, uint32_t type, const char *name, const void *payload, uint64_t length, uint64_t claimed) {
+    sl_message_header h = {type, name ? (uint32_t)strlen(name) : 0, claimed};
+    memcpy(s->data + s->size, &h, sizeof h);
+    s->size += sizeof h;
+    if (h.name_length) memcpy(s->data + s->size, name, h.name_length);
+    s->size += h.name_length;
+    if (length) memcpy(s->data + s->size, payload, (size_t)length);
+    s->size += (size_t)length;
+}
+
+static void put_visibility(stream *s, int w, int h, int channels) {
+    static char buf[SL_IMAGE_HEADER_BYTES + 16 * 16 * 3 * sizeof(float)];
+    int32_t dims[3] = {w, h, channels};
+    memcpy(buf, dims, sizeof dims);
+    size_t n = SL_IMAGE_HEADER_BYTES + (size_t)w * (size_t)h * (size_t)channels * sizeof(float);
+    put(s, SL_MSG_IMAGE, "visibility", buf, n, n);
+}
+
+/* The grader's side of the channel refuses every lie about lengths and
+ * captures, and takes a well-formed stream. */
+static void test_channel_rejects_lies(void) {
+    sl_case c = grade_case(2, SL_CHECK_VISIBILITY);
+    c.width = c.height = 16;
+    sl_case_result r;
+    static stream s;
+    /* well-formed */
+    s.size = 0;
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nllvmpipe \033[2Jx", 23, 23);
+    put_visibility(&s, 16, 16, 1);
+    put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(r.finished && !r.protocol_error[0] && r.capture_count == 1);
+    CHECK(strcmp(r.backend, "osmesa") == 0 && strchr(r.renderer, '\033') == NULL); /* escapes removed */
+    sl_case_result_free(&r);
+    /* a payload length near 2^64: refused at the header, nothing allocated */
+    s.size = 0;
+    put(&s, SL_MSG_IMAGE, "visibility", NULL, 0, UINT64_MAX - 8);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(!r.finished && strstr(r.protocol_error, "bytes where at most") != NULL);
+    /* a name length of 2^32 - 1 */
+    s.size = 0;
+    sl_message_header h = {SL_MSG_STAGE, UINT32_MAX, 0};
+    memcpy(s.data, &h, sizeof h);
+    s.size = sizeof h;
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "malformed name") != NULL);
+    /* the same capture twice */
+    s.size = 0;
+    put_visibility(&s, 16, 16, 1);
+    put_visibility(&s, 16, 16, 1);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "\"visibility\" twice") != NULL);
+    sl_case_result_free(&r);
+    /* a capture the case did not ask for */
+    s.size = 0;
+    double numbers[SL_MATRICES_NUMBERS] = {0};
+    put(&s, SL_MSG_NUMBERS, "depth_map", numbers, sizeof numbers, sizeof numbers);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "did not ask for") != NULL);
+    /* an image whose size is not the case's */
+    s.size = 0;
+    put_visibility(&s, 8, 8, 1);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "does not add up") != NULL && r.capture_count == 0);
+    /* anything after DONE */
+    s.size = 0;
+    put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
+    put(&s, SL_MSG_STAGE, "lab1_create_shadow_map", NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(!r.finished && strstr(r.protocol_error, "after DONE") != NULL);
+    /* an unknown type, and a name with characters no function has */
+    s.size = 0;
+    put(&s, 99, NULL, NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "unknown message type") != NULL);
+    s.size = 0;
+    put(&s, SL_MSG_NOT_IMPLEMENTED, "../x", NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strstr(r.protocol_error, "malformed name") != NULL);
+    /* a stream cut off mid-message: not finished, no error (a crash) */
+    s.size = 0;
+    put(&s, SL_MSG_STAGE, "lab2_light_view", NULL, 0, 0);
+    put_visibility(&s, 16, 16, 1);
+    sl_run_parse_stream(&c, s.data, s.size - 10, &r);
+    CHECK(!r.finished && !r.protocol_error[0] && strcmp(r.crashed_in, "lab2_light_view") == 0);
+}
+
+static void test_sha256_known_answers(void) {
+    /* FIPS 180-4 examples */
+    sl_sha256 h;
+    char hex[65];
+    sl_sha256_init(&h);
+    sl_sha256_update(&h, "abc", 3);
+    sl_sha256_hex(&h, hex);
+    CHECK(strcmp(hex, "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad") == 0);
+    sl_sha256_init(&h);
+    const char *two = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";
+    sl_sha256_update(&h, two, strlen(two));
+    sl_sha256_hex(&h, hex);
+    CHECK(strcmp(hex, "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1") == 0);
+    sl_sha256_init(&h);
+    sl_sha256_hex(&h, hex);
+    CHECK(strcmp(hex, "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855") == 0);
+    /* a million 'a's, fed in uneven pieces */
+    sl_sha256_init(&h);
+    char chunk[997];
+    memset(chunk, 'a', sizeof chunk);
+    size_t left = 1000000;
+    while (left > 0) {
+        size_t n = left < sizeof chunk ? left : sizeof chunk;
+        sl_sha256_update(&h, chunk, n);
+        left -= n;
+    }
+    sl_sha256_hex(&h, hex);
+    CHECK(strcmp(hex, "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0") == 0);
 }
 
 int main(int argc, char **argv) {
@@ -352,7 +598,12 @@ int main(int argc, char **argv) {
         {"grade_names_acne", test_grade_names_acne},
         {"grade_names_peter_panning", test_grade_names_peter_panning},
         {"grade_penumbra_inverted", test_grade_penumbra_inverted},
+        {"grade_leads_with_root_cause", test_grade_leads_with_root_cause},
+        {"grade_probe_verdicts", test_grade_probe_verdicts},
         {"grade_run_failures", test_grade_run_failures},
+        {"shader_include_stays_inside", test_shader_include_stays_inside},
+        {"channel_rejects_lies", test_channel_rejects_lies},
+        {"sha256_known_answers", test_sha256_known_answers},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;

@@ -1,5 +1,5 @@
 #version 330 core
-// Lab 1, step 3: the depth pass's vertex shader.
+// Lab 1, step 4 (TODO lab1.4): the depth pass's vertex shader.
 // Each vertex goes from object space to the light's clip space; the rasterizer
 // then writes its depth into the shadow map.
 

@@ -1,0 +1,284 @@
+#define _POSIX_C_SOURCE 200809L
+#include "sl_case_view.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_case.h"
+#include "sl_compare.h"
+#include "sl_context.h"
+#include "sl_renderer.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#ifndef SL_GRADER_DIR
+#define SL_GRADER_DIR "grader"
+#endif
+
+enum { _SL_STUDENT, _SL_REFERENCE, _SL_DIFF, _SL_PANELS };
+
+typedef struct _sl_case_view {
+    sl_case c;
+    const sl_check *check;        /* the image check shown */
+    sl_image reference;
+    sl_context *ctx;
+    sl_renderer renderer;
+    sl_program panel_program;
+    GLuint textures[_SL_PANELS], vao, target_fbo, target_texture, target_depth;
+    bool side_by_side, show_reference, show_diff;
+    int scale;
+    char summary[256];
+} _sl_case_view;
+
+/* The image check to show: the first whose capture is a picture. */
+static const sl_check *_sl_shown_check(const sl_case *c) {
+    for (int pass = 0; pass < 3; pass++)
+        for (int i = 0; i < c->check_count; i++) {
+            sl_check_kind k = c->checks[i].kind;
+            if ((pass == 0 && (k == SL_CHECK_VISIBILITY || k == SL_CHECK_PENUMBRA)) ||
+                (pass == 1 && k == SL_CHECK_DEPTH_MAP) || (pass == 2 && k == SL_CHECK_IMAGE))
+                return &c->checks[i];
+        }
+    return NULL;
+}
+
+/* An image as RGB texels for a panel, bottom row first (GL's order). */
+static void _sl_upload(GLuint texture, const sl_image *img) {
+    float *rgb = malloc(sizeof(float) * 3 * (size_t)img->width * (size_t)img->height);
+    if (!rgb) return;
+    for (int y = 0; y < img->height; y++)
+        for (int x = 0; x < img->width; x++) {
+            const float *p = sl_image_pixel(img, x, img->height - 1 - y);
+            float *q = rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
+            for (int c = 0; c < 3; c++) q[c] = p[img->channels >= 3 ? c : 0];
+        }
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, img->width, img->height, 0, GL_RGB, GL_FLOAT, rgb);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    free(rgb);
+}
+
+/* Renders the case as the grader's runner does, and takes the same capture. */
+static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
+    const sl_case *c = &v->c;
+    sl_scene scene = c->scene;
+    sl_render_params p = c->params;
+    p.output = v->check->kind == SL_CHECK_IMAGE ? SL_OUTPUT_SHADED : SL_OUTPUT_VISIBILITY;
+    for (int f = 0; f < c->frame_count; f++) {
+        scene.light = c->frame_lights[f];
+        sl_renderer_draw(&v->renderer, &scene, &p, v->target_fbo, c->width, c->height);
+    }
+    const sl_frame_info *info = sl_renderer_info(&v->renderer);
+    if (v->check->kind == SL_CHECK_DEPTH_MAP) {
+        char err[256];
+        if (!info->shadow_map_ready || !sl_capture_depth_texture(info->shadow_map.depth_texture, out, err, sizeof err)) {
+            *out = sl_image_alloc(v->reference.width, v->reference.height, 1); /* nothing drawn yet: black */
+            return false;
+        }
+        return true;
+    }
+    return sl_capture_framebuffer(v->target_fbo, c->width, c->height, v->check->kind == SL_CHECK_IMAGE ? 3 : 1, out);
+}
+
+static void _sl_update(_sl_case_view *v) {
+    sl_image student = {0}, diff = {0};
+    _sl_render_student(v, &student);
+    sl_compare_stats st = sl_compare_images(&student, &v->reference, v->check->threshold, &diff);
+    const sl_frame_info *info = sl_renderer_info(&v->renderer);
+    if (st.size_mismatch)
+        snprintf(v->summary, sizeof v->summary, "%s: yours is %dx%d, the reference %dx%d", v->c.name, student.width,
+                 student.height, v->reference.width, v->reference.height);
+    else
+        snprintf(v->summary, sizeof v->summary, "%s / %s: %.2f%% of pixels differ (allowed %.2f%%)%s%s", v->c.name,
+                 v->check->name, 100 * st.failing_fraction, 100 * v->check->fail_fraction,
+                 info->not_implemented_count ? "; not implemented: " : "",
+                 info->not_implemented_count ? info->not_implemented[0] : "");
+    if (student.data) _sl_upload(v->textures[_SL_STUDENT], &student);
+    if (diff.data) _sl_upload(v->textures[_SL_DIFF], &diff);
+    sl_image_free(&student);
+    sl_image_free(&diff);
+}
+
+static void _sl_draw_panel(_sl_case_view *v, int panel, int slot, int width, int height) {
+    glViewport(slot * width, 0, width, height);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, v->textures[panel]);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+static void _sl_draw(_sl_case_view *v, int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDisable(GL_DEPTH_TEST);
+    glClearColor(0.1f, 0.1f, 0.1f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glUseProgram(v->panel_program.id);
+    glUniform1i(sl_program_uniform(&v->panel_program, "u_texture"), 0);
+    glBindVertexArray(v->vao);
+    if (v->side_by_side) {
+        for (int panel = 0; panel < _SL_PANELS; panel++) _sl_draw_panel(v, panel, panel, width / 3, height);
+    } else {
+        int panel = v->show_diff ? _SL_DIFF : v->show_reference ? _SL_REFERENCE : _SL_STUDENT;
+        _sl_draw_panel(v, panel, 0, width, height);
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+static void _sl_title(_sl_case_view *v) {
+    GLFWwindow *w = sl_context_window(v->ctx);
+    if (!w) return;
+    char title[512];
+    const char *layout = v->side_by_side ? "yours | reference | difference (red: shadow missing, blue: extra)"
+                         : v->show_diff  ? "difference (red: shadow missing, blue: extra)"
+                         : v->show_reference ? "reference" : "yours";
+    snprintf(title, sizeof title, "shadowlab — %s — %s", v->summary, layout);
+    glfwSetWindowTitle(w, title);
+}
+
+/* Keys, read by polling: Tab layout, Space yours/reference, D difference, Esc quit. */
+static bool _sl_keys(_sl_case_view *v) {
+    GLFWwindow *w = sl_context_window(v->ctx);
+    static int previous[GLFW_KEY_LAST + 1];
+    static const int keys[] = {GLFW_KEY_TAB, GLFW_KEY_SPACE, GLFW_KEY_D, GLFW_KEY_A};
+    bool changed = false;
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
+        int now = glfwGetKey(w, keys[i]);
+        if (now == GLFW_PRESS && previous[keys[i]] != GLFW_PRESS) {
+            changed = true;
+            if (keys[i] == GLFW_KEY_TAB) v->side_by_side = !v->side_by_side;
+            else if (keys[i] == GLFW_KEY_SPACE || keys[i] == GLFW_KEY_A) {
+                v->show_reference = !v->show_reference;
+                v->show_diff = false;
+            } else if (keys[i] == GLFW_KEY_D) v->show_diff = !v->show_diff;
+            if (keys[i] != GLFW_KEY_TAB) v->side_by_side = false;
+        }
+        previous[keys[i]] = now;
+    }
+    if (glfwGetKey(w, GLFW_KEY_ESCAPE) == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    return changed;
+}
+
+static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, size_t n) {
+    static char path[1200], reference[1400];
+    const char *cases = d->cases_dir ? d->cases_dir : SL_GRADER_DIR "/cases";
+    const char *refs = d->references_dir ? d->references_dir : SL_GRADER_DIR "/references";
+    bool is_path = strchr(d->case_name, '/') || strstr(d->case_name, ".json");
+    if (is_path) snprintf(path, sizeof path, "%s", d->case_name);
+    else snprintf(path, sizeof path, "%s/%s.json", cases, d->case_name);
+    if (!sl_case_load(&v->c, path, err, n)) return false;
+    v->check = _sl_shown_check(&v->c);
+    if (!v->check) {
+        snprintf(err, n, "%s has no picture to show (its checks are probes or numbers): run shadowlab-grade --case %s",
+                 v->c.name, v->c.name);
+        return false;
+    }
+    char file[200];
+    sl_check_reference_file(v->check, file, sizeof file);
+    snprintf(reference, sizeof reference, "%s/%s/%s", refs, v->c.name, file);
+    if (!sl_image_read(reference, &v->reference, err, n)) return false;
+    int panel_w = v->c.width, panel_h = v->c.height;
+    if (v->check->kind == SL_CHECK_DEPTH_MAP) panel_w = panel_h = 384; /* shown scaled */
+    v->scale = panel_w * 3 * 2 <= 1800 ? 2 : 1;
+    sl_context_desc cd = {
+        .backend = d->headless ? (sl_backend)d->backend : SL_BACKEND_GLFW,
+        .width = panel_w * v->scale * 3,
+        .height = panel_h * v->scale,
+        .title = "shadowlab",
+    };
+    v->ctx = sl_context_create(&cd, err, n);
+    if (!v->ctx) return false;
+    sl_renderer_desc rd = {.labs_dir = d->labs_dir};
+    if (!sl_renderer_init(&v->renderer, &rd, err, n) || !sl_renderer_set_scene(&v->renderer, &v->c.scene, err, n))
+        return false;
+    /* the grader's image size, off screen, in floats as the runner reads it */
+    glGenTextures(1, &v->target_texture);
+    glBindTexture(GL_TEXTURE_2D, v->target_texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, v->c.width, v->c.height, 0, GL_RGBA, GL_FLOAT, NULL);
+    glGenRenderbuffers(1, &v->target_depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, v->target_depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, v->c.width, v->c.height);
+    glGenFramebuffers(1, &v->target_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, v->target_fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, v->target_texture, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, v->target_depth);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    char vs[SL_PATH_MAX + 32], fs[SL_PATH_MAX + 32];
+    snprintf(vs, sizeof vs, "%s/debug_quad.vert", v->renderer.shaders_dir);
+    snprintf(fs, sizeof fs, "%s/case_panel.frag", v->renderer.shaders_dir);
+    sl_shader_desc sd = {.vertex_path = vs, .fragment_path = fs, .search_dirs = {v->renderer.shaders_dir}};
+    if (!sl_program_build(&v->panel_program, &sd, err, n)) return false;
+    glGenTextures(_SL_PANELS, v->textures);
+    glGenVertexArrays(1, &v->vao);
+    _sl_upload(v->textures[_SL_REFERENCE], &v->reference);
+    return true;
+}
+
+int sl_case_view_main(const sl_case_view_desc *d) {
+    static _sl_case_view v;
+    memset(&v, 0, sizeof v);
+    v.side_by_side = true;
+    char err[8192];
+    int status = 0;
+    if (!_sl_setup(&v, d, err, sizeof err)) {
+        fprintf(stderr, "shadowlab: --case: %s\n", err);
+        status = 1;
+    } else {
+        printf("shadowlab: case %s (%s), lab %d: %s\n", v.c.name, v.c.title, v.c.lab, sl_context_renderer_name());
+        GLFWwindow *window = sl_context_window(v.ctx);
+        if (window) printf("shadowlab: keys: Tab yours | reference | difference, or one at a time; Space yours or the "
+                           "reference; D the difference; Esc quit\n");
+        int rendered = 0;
+        double last_reload = 0;
+        const char *reported_error = NULL;
+        char last_summary[256] = "";
+        while (!sl_context_should_close(v.ctx)) {
+            if (window && glfwGetTime() - last_reload > 0.25) {
+                last_reload = glfwGetTime();
+                bool reloaded = false;
+                if (!sl_renderer_reload_changed(&v.renderer, &reloaded, err, sizeof err))
+                    fprintf(stderr, "shadowlab: shader reload failed, keeping the previous version:\n%s\n", err);
+            }
+            _sl_update(&v);
+            const sl_frame_info *info = sl_renderer_info(&v.renderer);
+            if (info->shader_error != reported_error) {
+                reported_error = info->shader_error;
+                if (reported_error) fprintf(stderr, "shadowlab: %s\n", reported_error);
+            }
+            if (strcmp(last_summary, v.summary) != 0) {
+                snprintf(last_summary, sizeof last_summary, "%s", v.summary);
+                printf("shadowlab: %s\n", v.summary);
+            }
+            if (window && _sl_keys(&v)) {}
+            _sl_title(&v);
+            int fw, fh;
+            sl_context_framebuffer_size(v.ctx, &fw, &fh);
+            _sl_draw(&v, fw, fh);
+            rendered++;
+            if (d->frames > 0 && rendered >= d->frames) {
+                if (d->screenshot) {
+                    sl_image shot;
+                    glFinish();
+                    if (!sl_capture_framebuffer(0, fw, fh, 3, &shot) || !sl_image_write(d->screenshot, &shot, err, sizeof err)) {
+                        fprintf(stderr, "shadowlab: cannot save the screenshot: %s\n", err);
+                        status = 1;
+                    } else {
+                        printf("shadowlab: saved %s (%dx%d)\n", d->screenshot, fw, fh);
+                    }
+                    sl_image_free(&shot);
+                }
+                break;
+            }
+            sl_context_end_frame(v.ctx);
+        }
+    }
+    if (v.ctx) {
+        sl_program_destroy(&v.panel_program);
+        sl_renderer_destroy(&v.renderer);
+        sl_context_destroy(v.ctx);
+    }
+    sl_image_free(&v.reference);
+    return status;
+}

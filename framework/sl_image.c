@@ -1,0 +1,134 @@
+/* sl_image: float images in memory here; their files through the image module
+ * (sl_image_io.h), loaded on the first read or write. */
+#define _POSIX_C_SOURCE 200809L /* readlink, pthread_once */
+#include "sl_image.h"
+
+#include <dlfcn.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "sl_image_io.h"
+
+static bool _sl_image_size(int width, int height, int channels, size_t *count) {
+    if (width <= 0 || height <= 0 || channels <= 0) return false;
+    size_t w = (size_t)width, h = (size_t)height, c = (size_t)channels;
+    if (w > SIZE_MAX / h || w * h > SIZE_MAX / c || w * h * c > SIZE_MAX / sizeof(float)) return false;
+    *count = w * h * c;
+    return true;
+}
+
+sl_image sl_image_alloc(int width, int height, int channels) {
+    sl_image image = {0, 0, 0, NULL};
+    size_t count = 0;
+    if (!_sl_image_size(width, height, channels, &count)) return image;
+    image.data = calloc(count, sizeof(float));
+    if (image.data) {
+        image.width = width;
+        image.height = height;
+        image.channels = channels;
+    }
+    return image;
+}
+
+void sl_image_free(sl_image *image) {
+    if (!image) return;
+    free(image->data);
+    *image = (sl_image){0, 0, 0, NULL};
+}
+
+void sl_image_flip_rows(sl_image *image) {
+    if (!image || !image->data || image->width <= 0 || image->height <= 1 || image->channels <= 0) return;
+    size_t row = (size_t)image->width * (size_t)image->channels;
+    /* Swap in place, element by element, so flipping needs no allocation. */
+    for (int top = 0, bottom = image->height - 1; top < bottom; top++, bottom--) {
+        float *a = image->data + (size_t)top * row;
+        float *b = image->data + (size_t)bottom * row;
+        for (size_t i = 0; i < row; i++) {
+            float t = a[i];
+            a[i] = b[i];
+            b[i] = t;
+        }
+    }
+}
+
+/* ---- the image module ---------------------------------------------------- */
+
+static pthread_once_t _sl_image_io_once = PTHREAD_ONCE_INIT;
+static const sl_image_io_api *_sl_image_io;
+static char _sl_image_io_error[1536];
+
+/* Tries one place. Returns false only when the module is not there, so a
+ * module that is there but broken (e.g. OpenImageIO missing) is reported as such. */
+static bool _sl_image_io_try(const char *path) {
+    if (access(path, F_OK) != 0) return false;
+    /* Never closed: OpenImageIO keeps threads and static state for the process's life. */
+    void *module = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!module) {
+        const char *why = dlerror();
+        snprintf(_sl_image_io_error, sizeof _sl_image_io_error, "the image module %s does not load: %s", SL_IMAGE_IO_MODULE,
+                 why ? why : "unknown reason");
+        return true;
+    }
+    /* POSIX: dlsym's object pointer converts to a function pointer through memcpy. */
+    void *symbol = dlsym(module, SL_IMAGE_IO_ENTRY);
+    sl_image_io_entry_fn entry = NULL;
+    if (symbol) memcpy(&entry, &symbol, sizeof entry);
+    const sl_image_io_api *api = entry ? entry() : NULL;
+    if (!api || api->version != SL_IMAGE_IO_VERSION || api->struct_size != sizeof *api || !api->read || !api->write) {
+        snprintf(_sl_image_io_error, sizeof _sl_image_io_error,
+                 "the image module %s is from another build of shadowlab (rebuild it: cmake --build build)", path);
+        return true;
+    }
+    _sl_image_io = api;
+    return true;
+}
+
+/* Next to the executable, then in ../lib beside its folder (an installed
+ * layout, and build/bin -> build/lib), then in this build's lib folder. */
+static void _sl_image_io_load(void) {
+    char exe_dir[1024] = "";
+    ssize_t n = readlink("/proc/self/exe", exe_dir, sizeof exe_dir - 1);
+    if (n > 0) {
+        exe_dir[n] = '\0';
+        char *slash = strrchr(exe_dir, '/');
+        if (slash) *slash = '\0';
+        else exe_dir[0] = '\0';
+    } else {
+        exe_dir[0] = '\0';
+    }
+    char places[3][1200];
+    int count = 0;
+    if (exe_dir[0]) {
+        snprintf(places[count++], sizeof places[0], "%s/%s", exe_dir, SL_IMAGE_IO_MODULE);
+        snprintf(places[count++], sizeof places[0], "%s/../lib/%s", exe_dir, SL_IMAGE_IO_MODULE);
+    }
+    snprintf(places[count++], sizeof places[0], "%s/%s", SL_IMAGE_IO_BUILD_DIR, SL_IMAGE_IO_MODULE);
+    for (int i = 0; i < count; i++)
+        if (_sl_image_io_try(places[i])) return;
+    snprintf(_sl_image_io_error, sizeof _sl_image_io_error,
+             "the image module %s is missing: it was not next to the program (%s), in %s/../lib, nor in %s. "
+             "Build it (cmake --build build) and keep it beside the programs",
+             SL_IMAGE_IO_MODULE, exe_dir[0] ? exe_dir : "unknown folder", exe_dir[0] ? exe_dir : "", SL_IMAGE_IO_BUILD_DIR);
+}
+
+static const sl_image_io_api *_sl_image_io_get(const char *path, char *err, size_t err_size) {
+    pthread_once(&_sl_image_io_once, _sl_image_io_load);
+    if (!_sl_image_io && err && err_size)
+        snprintf(err, err_size, "%s: cannot read or write image files: %s", path ? path : "(null)", _sl_image_io_error);
+    return _sl_image_io;
+}
+
+bool sl_image_write(const char *path, const sl_image *image, char *err, size_t err_size) {
+    const sl_image_io_api *io = _sl_image_io_get(path, err, err_size);
+    return io && io->write(path, image, err, err_size);
+}
+
+bool sl_image_read(const char *path, sl_image *out, char *err, size_t err_size) {
+    if (out) *out = (sl_image){0, 0, 0, NULL};
+    const sl_image_io_api *io = _sl_image_io_get(path, err, err_size);
+    return io && io->read(path, out, err, err_size);
+}

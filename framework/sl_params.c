@@ -1,0 +1,76 @@
+#include "sl_params.h"
+
+#include <string.h>
+
+void sl_render_params_defaults(sl_render_params *p) {
+    *p = (sl_render_params){
+        .lab = SL_LAB_COUNT,
+        .shadow_map_size = 1024,
+        .compare = SL_COMPARE_MANUAL,
+        .bias = {
+            .mode = SL_BIAS_SLOPE_SCALED,
+            .constant = 0.005f,
+            .slope = 0.003f,
+            .max_bias = 0.03f,
+            .polygon_offset_factor = 2.0f,
+            .polygon_offset_units = 4.0f,
+            .normal_offset = 1.5f,
+        },
+        .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f},
+        .output = SL_OUTPUT_SHADED,
+    };
+}
+
+static const char *const _sl_bias_names[SL_BIAS_MODE_COUNT] = {
+    "none", "constant", "slope", "polygon-offset", "front-culling", "normal-offset", "midpoint",
+};
+static const char *const _sl_filter_names[SL_FILTER_MODE_COUNT] = {"none", "hardware", "grid", "poisson", "pcss"};
+
+static bool _sl_find_name(const char *const *names, int count, const char *name, int *index) {
+    for (int i = 0; i < count; i++)
+        if (strcmp(name, names[i]) == 0) {
+            *index = i;
+            return true;
+        }
+    return false;
+}
+
+const char *sl_bias_mode_name(sl_bias_mode mode) {
+    return (unsigned)mode < SL_BIAS_MODE_COUNT ? _sl_bias_names[mode] : "?";
+}
+
+bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode) {
+    int i;
+    if (!_sl_find_name(_sl_bias_names, SL_BIAS_MODE_COUNT, name, &i)) return false;
+    *mode = (sl_bias_mode)i;
+    return true;
+}
+
+const char *sl_filter_mode_name(sl_filter_mode mode) {
+    return (unsigned)mode < SL_FILTER_MODE_COUNT ? _sl_filter_names[mode] : "?";
+}
+
+bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
+    int i;
+    if (!_sl_find_name(_sl_filter_names, SL_FILTER_MODE_COUNT, name, &i)) return false;
+    *mode = (sl_filter_mode)i;
+    return true;
+}
+
+const char *sl_lab_folder(int lab) {
+    static const char *const folders[SL_LAB_COUNT + 1] = {NULL, "lab1_depth_fbo", "lab2_projective", "lab3_bias",
+                                                          "lab4_pcf"};
+    return lab >= 1 && lab <= SL_LAB_COUNT ? folders[lab] : NULL;
+}
+
+const char *sl_lab_title(int lab) {
+    static const char *const titles[SL_LAB_MAX + 1] = {"",
+                                                       "depth FBO",
+                                                       "projective lookup",
+                                                       "bias & culling",
+                                                       "PCF & PCSS",
+                                                       "variance shadow maps",
+                                                       "cascaded shadow maps",
+                                                       "cube-map shadows"};
+    return lab >= 1 && lab <= SL_LAB_MAX ? titles[lab] : "?";
+}

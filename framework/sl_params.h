@@ -1,0 +1,42 @@
+/* sl_params: what a frame is rendered with (lab, map size, bias, filter,
+ * output), the names the command line and case files give those settings,
+ * and the labs' folders and titles. No GL here: the grader, which runs no lab
+ * code and opens no GL context, shares this module with the renderer. */
+#ifndef SL_PARAMS_H
+#define SL_PARAMS_H
+
+#include <stdbool.h>
+
+#include "shadowlab.h"
+
+#define SL_LAB_COUNT 4  /* labs with code in this project */
+#define SL_LAB_MAX 7    /* labs the course plans: case files may name 1..7 */
+
+typedef enum sl_compare_mode { SL_COMPARE_MANUAL = 0, SL_COMPARE_HARDWARE = 1 } sl_compare_mode;
+/* SL_OUTPUT_LIT_MASK: white where a surface faces the light (the grader's "lit surfaces"). */
+typedef enum sl_output { SL_OUTPUT_SHADED = 0, SL_OUTPUT_VISIBILITY = 1, SL_OUTPUT_LIT_MASK = 2 } sl_output;
+
+typedef struct sl_render_params {
+    int lab;                 /* labs in use, 1..SL_LAB_COUNT: 1 = depth pass only */
+    int shadow_map_size;     /* texels; default 1024 */
+    sl_compare_mode compare; /* labs 2-3: sampler2D + manual compare, or sampler2DShadow */
+    sl_bias_settings bias;   /* lab 2 uses bias.constant; lab 3 all of it */
+    sl_filter_settings filter; /* lab 4 */
+    sl_output output;
+    bool show_shadow_map;    /* debug view of the depth map in a corner */
+} sl_render_params;
+
+void sl_render_params_defaults(sl_render_params *params);
+
+/* Names as the command line and case files spell them ("slope", "pcss"). */
+const char *sl_bias_mode_name(sl_bias_mode mode);
+bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode);
+const char *sl_filter_mode_name(sl_filter_mode mode);
+bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode);
+
+/* Folder of lab N under a labs tree ("lab1_depth_fbo"), N = 1..SL_LAB_COUNT; NULL otherwise. */
+const char *sl_lab_folder(int lab);
+/* "depth FBO", ..., N = 1..SL_LAB_MAX; "?" otherwise. */
+const char *sl_lab_title(int lab);
+
+#endif

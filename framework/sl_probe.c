@@ -1,0 +1,141 @@
+#include "sl_probe.h"
+
+#include <math.h>
+#include <string.h>
+
+#define _SL_F(n) {n, SL_PROBE_FLOAT}
+#define _SL_I(n) {n, SL_PROBE_INT}
+#define _SL_V2(n) {n, SL_PROBE_VEC2}
+#define _SL_V3(n) {n, SL_PROBE_VEC3}
+#define _SL_V4(n) {n, SL_PROBE_VEC4}
+#define _SL_M4(n) {n, SL_PROBE_MAT4}
+#define _SL_MAP(n) {n, SL_PROBE_MAP}
+#define _SL_SHADOW(n) {n, SL_PROBE_SHADOW_MAP}
+#define _SL_MATRIX_OUT "m00,m10,m20,m30,m01,m11,m21,m31,m02,m12,m22,m32,m03,m13,m23,m33"
+
+/* Every function the labs ask students to write, with its signature as the
+ * stubs declare it. Outputs of matrices are column-major, as cglm and GLSL store them. */
+static const sl_probe_function _sl_functions[] = {
+    /* lab 1: the depth pass's state, on a map the probe makes (its depth texture filled with 0.5) */
+    {.name = "lab1_begin_depth_pass", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.3",
+     .outputs = "map's framebuffer bound,viewport width,viewport height,depth test,depth function,depth writes,"
+                "depth after the call",
+     .output_count = 7, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
+    /* lab 2 */
+    {.name = "lab2_light_view", .lab = 2, .file = "lab2_projective/lab2.c", .todo = "lab2.1",
+     .outputs = _SL_MATRIX_OUT, .output_count = 16,
+     .params = {_SL_I("light_type"), _SL_V3("direction"), _SL_V3("position"), _SL_V3("bounds_min"), _SL_V3("bounds_max")},
+     .param_count = 5, .stub_param = -1, .stub_value = NAN},
+    {.name = "lab2_light_projection", .lab = 2, .file = "lab2_projective/lab2.c", .todo = "lab2.2",
+     .outputs = _SL_MATRIX_OUT, .output_count = 16,
+     .params = {_SL_I("light_type"), _SL_V3("direction"), _SL_V3("position"), _SL_F("spot_angle_deg"), _SL_F("near"),
+                _SL_F("far"), _SL_V3("bounds_min"), _SL_V3("bounds_max"), _SL_V3("view_eye"), _SL_V3("view_target"),
+                _SL_V3("view_up")},
+     .param_count = 11, .stub_param = -1, .stub_value = NAN},
+    {.name = "lab2_shadow_matrix", .lab = 2, .file = "lab2_projective/lab2.c", .todo = "lab2.3",
+     .outputs = _SL_MATRIX_OUT, .output_count = 16,
+     .params = {_SL_V2("ortho_left_right"), _SL_V2("ortho_bottom_top"), _SL_V2("ortho_near_far"), _SL_V3("eye"),
+                _SL_V3("target"), _SL_V3("up")},
+     .param_count = 6, .stub_param = -1, .stub_value = NAN},
+    {.name = "shadow_coord", .lab = 2, .glsl = true, .file = "lab2_projective/shaders/shadow_coord.glsl",
+     .todo = "lab2.4", .outputs = "s,t,r,q", .output_count = 4,
+     .params = {_SL_M4("shadow_matrix"), _SL_V4("world_position")}, .param_count = 2, .stub_param = -1,
+     .stub_value = 0.0},
+    {.name = "shadow_compare_manual", .lab = 2, .glsl = true, .file = "lab2_projective/shaders/shadow_lookup.glsl",
+     .todo = "lab2.5", .outputs = "visibility", .output_count = 1,
+     .params = {_SL_MAP("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias")}, .param_count = 3, .stub_param = -1,
+     .stub_value = 1.0},
+    {.name = "shadow_compare_hardware", .lab = 2, .glsl = true, .file = "lab2_projective/shaders/shadow_lookup.glsl",
+     .todo = "lab2.6", .outputs = "visibility", .output_count = 1,
+     .params = {_SL_SHADOW("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias")}, .param_count = 3, .stub_param = -1,
+     .stub_value = 1.0},
+    /* lab 3 */
+    {.name = "lab3_depth_pass_state", .lab = 3, .file = "lab3_bias/lab3.c", .todo = "lab3.1",
+     .outputs = "polygon offset on,factor,units,culling on,cull face", .output_count = 5,
+     .params = {_SL_I("mode"), _SL_F("polygon_offset_factor"), _SL_F("polygon_offset_units")}, .param_count = 3,
+     .stub_param = -1, .stub_value = NAN},
+    {.name = "slope_scaled_bias", .lab = 3, .glsl = true, .file = "lab3_bias/shaders/bias.glsl", .todo = "lab3.2",
+     .outputs = "bias", .output_count = 1,
+     .params = {_SL_F("n_dot_l"), _SL_F("constant_bias"), _SL_F("slope"), _SL_F("max_bias")}, .param_count = 4,
+     .stub_param = -1, .stub_value = 0.0},
+    {.name = "normal_offset_position", .lab = 3, .glsl = true, .file = "lab3_bias/shaders/bias.glsl",
+     .todo = "lab3.3", .outputs = "x,y,z", .output_count = 3,
+     .params = {_SL_V3("world_position"), _SL_V3("normal"), _SL_F("n_dot_l"), _SL_F("texel_world_size"),
+                _SL_F("texels")},
+     .param_count = 5, .stub_param = 0},
+    {.name = "midpoint_compare", .lab = 3, .glsl = true, .file = "lab3_bias/shaders/midpoint.glsl",
+     .todo = "lab3.5", .outputs = "visibility", .output_count = 1,
+     .params = {_SL_MAP("first_depth"), _SL_MAP("second_depth"), _SL_V4("shadow_coord")}, .param_count = 3,
+     .stub_param = -1, .stub_value = 1.0, .bonus = true},
+    /* lab 4 */
+    {.name = "lab4_configure_shadow_texture", .lab = 4, .file = "lab4_pcf/lab4.c", .todo = "lab4.1",
+     .outputs = "min filter,mag filter", .output_count = 2, .params = {_SL_I("mode")}, .param_count = 1,
+     .stub_param = -1, .stub_value = NAN},
+    {.name = "pcf_hardware", .lab = 4, .glsl = true, .file = "lab4_pcf/shaders/pcf.glsl", .todo = "lab4.2",
+     .outputs = "visibility", .output_count = 1,
+     .params = {_SL_SHADOW("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias")}, .param_count = 3,
+     .linear_maps = true, .stub_param = -1, .stub_value = 1.0},
+    {.name = "pcf_grid", .lab = 4, .glsl = true, .file = "lab4_pcf/shaders/pcf.glsl", .todo = "lab4.3",
+     .outputs = "visibility", .output_count = 1,
+     .params = {_SL_MAP("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias"), _SL_I("radius")}, .param_count = 4,
+     .stub_param = -1, .stub_value = 1.0},
+    {.name = "pcf_poisson", .lab = 4, .glsl = true, .file = "lab4_pcf/shaders/pcf.glsl", .todo = "lab4.4",
+     .outputs = "visibility", .output_count = 1,
+     .params = {_SL_MAP("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias"), _SL_F("radius_texels"),
+                _SL_V2("pixel")},
+     .param_count = 5, .stub_param = -1, .stub_value = 1.0},
+    {.name = "pcss", .lab = 4, .glsl = true, .file = "lab4_pcf/shaders/pcf.glsl", .todo = "lab4.5",
+     .outputs = "visibility", .output_count = 1,
+     .params = {_SL_MAP("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias"), _SL_F("light_size_uv"), _SL_F("near"),
+                _SL_F("far")},
+     .param_count = 6, .stub_param = -1, .stub_value = 1.0},
+};
+
+#define _SL_FUNCTION_COUNT ((int)(sizeof _sl_functions / sizeof _sl_functions[0]))
+
+const sl_probe_function *sl_probe_find(const char *name) {
+    for (int i = 0; i < _SL_FUNCTION_COUNT; i++)
+        if (strcmp(_sl_functions[i].name, name) == 0) return &_sl_functions[i];
+    return NULL;
+}
+
+const sl_probe_function *sl_probe_at(int index) {
+    return index >= 0 && index < _SL_FUNCTION_COUNT ? &_sl_functions[index] : NULL;
+}
+
+int sl_probe_index(const sl_probe_function *f) { return (int)(f - _sl_functions); }
+
+int sl_probe_type_size(sl_probe_type type) {
+    static const int sizes[] = {[SL_PROBE_FLOAT] = 1, [SL_PROBE_INT] = 1, [SL_PROBE_VEC2] = 2, [SL_PROBE_VEC3] = 3,
+                                [SL_PROBE_VEC4] = 4, [SL_PROBE_MAT4] = 16, [SL_PROBE_MAP] = 1, [SL_PROBE_SHADOW_MAP] = 1};
+    return sizes[type];
+}
+
+int sl_probe_input_count(const sl_probe_function *f) {
+    int n = 0;
+    for (int i = 0; i < f->param_count; i++) n += sl_probe_type_size(f->params[i].type);
+    return n;
+}
+
+static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit", "occluded", "step", "ramp"};
+
+const char *sl_probe_map_name(sl_probe_map map) {
+    return (unsigned)map < SL_PROBE_MAP_COUNT ? _sl_map_names[map] : "?";
+}
+
+int sl_probe_map_parse(const char *name) {
+    for (int i = 0; i < SL_PROBE_MAP_COUNT; i++)
+        if (strcmp(name, _sl_map_names[i]) == 0) return i;
+    return -1;
+}
+
+float sl_probe_map_depth(sl_probe_map map, int x, int y) {
+    (void)y;
+    float u = ((float)x + 0.5f) / SL_PROBE_MAP_SIZE;
+    switch (map) {
+    case SL_PROBE_MAP_OCCLUDED: return 0.25f;
+    case SL_PROBE_MAP_STEP: return u < 0.5f ? 0.25f : 1.0f;
+    case SL_PROBE_MAP_RAMP: return u;
+    default: return 1.0f;
+    }
+}

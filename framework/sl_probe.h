@@ -1,0 +1,81 @@
+/* sl_probe: function probes. Each function a student writes, GLSL or C, is
+ * also called directly on a table of inputs that covers its domain and its
+ * edges (a case file's "probe" check), and its outputs are compared with the
+ * solution's. This module is the table of those functions: their
+ * parameters, what their stubs return, where their TODO is. No GL here: the
+ * grader reads it too; the runner calls the functions (sl_probe_pass.h). */
+#ifndef SL_PROBE_H
+#define SL_PROBE_H
+
+#include <stdbool.h>
+
+#define SL_PROBE_MAX_ROWS 32
+#define SL_PROBE_MAX_INPUTS 32  /* floats per row */
+#define SL_PROBE_MAX_OUTPUTS 16 /* numbers per row */
+#define SL_PROBE_MAX_PARAMS 12
+
+typedef enum sl_probe_type {
+    SL_PROBE_FLOAT,
+    SL_PROBE_INT,
+    SL_PROBE_VEC2,
+    SL_PROBE_VEC3,
+    SL_PROBE_VEC4,
+    SL_PROBE_MAT4,
+    SL_PROBE_MAP,        /* GLSL sampler2D over a synthetic depth map (sl_probe_map) */
+    SL_PROBE_SHADOW_MAP, /* GLSL sampler2DShadow over one (compare mode on, GL_LEQUAL) */
+} sl_probe_type;
+
+/* Synthetic depth maps, 64 x 64 texels, for the functions that read one. */
+typedef enum sl_probe_map {
+    SL_PROBE_MAP_LIT,      /* 1.0 everywhere: nothing in front of anything */
+    SL_PROBE_MAP_OCCLUDED, /* 0.25 everywhere: an occluder in front of everything */
+    SL_PROBE_MAP_STEP,     /* 0.25 where u < 0.5, 1.0 where u >= 0.5: one occluder's edge */
+    SL_PROBE_MAP_RAMP,     /* depth = u: a surface tilted away from the light */
+    SL_PROBE_MAP_COUNT
+} sl_probe_map;
+#define SL_PROBE_MAP_SIZE 64
+
+typedef struct sl_probe_param {
+    const char *name;
+    sl_probe_type type;
+} sl_probe_param;
+
+typedef struct sl_probe_function {
+    const char *name;   /* as students write it: "slope_scaled_bias" */
+    int lab;
+    bool glsl;          /* GLSL (called in a full-screen pass) or C (called in the runner) */
+    const char *file;   /* GLSL: the include path under the labs tree; C: the lab's .c file */
+    const char *todo;   /* "lab3.2" */
+    const char *outputs; /* names of the outputs, comma-separated ("bias", "x,y,z") */
+    int output_count;
+    sl_probe_param params[SL_PROBE_MAX_PARAMS];
+    int param_count;
+    bool linear_maps;   /* shadow maps filtered with GL_LINEAR (2x2 PCF) */
+    /* What the stub returns, so a stub reads as "not implemented": a
+     * constant for every output, or (stub_param >= 0) that parameter. */
+    double stub_value;
+    int stub_param;
+    bool bonus;         /* an extension's function */
+} sl_probe_function;
+
+/* The function of that name, or NULL. */
+const sl_probe_function *sl_probe_find(const char *name);
+const sl_probe_function *sl_probe_at(int index);
+int sl_probe_index(const sl_probe_function *f);
+/* Floats one input row takes (a map counts one: its sl_probe_map). */
+int sl_probe_input_count(const sl_probe_function *f);
+int sl_probe_type_size(sl_probe_type type);
+const char *sl_probe_map_name(sl_probe_map map);
+/* -1 when the name is no map's. */
+int sl_probe_map_parse(const char *name);
+/* The depth of a synthetic map at texel (x, y). */
+float sl_probe_map_depth(sl_probe_map map, int x, int y);
+
+/* A table of inputs as the runner receives it. */
+typedef struct sl_probe_table {
+    int function;  /* sl_probe_at index; -1: none */
+    int rows;
+    float inputs[SL_PROBE_MAX_ROWS][SL_PROBE_MAX_INPUTS];
+} sl_probe_table;
+
+#endif

@@ -1,0 +1,21 @@
+/* sl_probe_pass: calls a student's function on a probe table, in the runner.
+ * GLSL functions run in a full-screen pass, one pixel per row, that includes
+ * the lab's shader file and writes the function's result into an RGBA32F
+ * target; functions that read a depth map get synthetic ones (sl_probe_map).
+ * C functions are called directly through this build's lab table, with the
+ * GL state they set read back. */
+#ifndef SL_PROBE_PASS_H
+#define SL_PROBE_PASS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "sl_probe.h"
+
+/* outputs: rows x output_count numbers. not_implemented: a C function
+ * returned SL_NOT_IMPLEMENTED. False, with the reason (a GLSL compile error
+ * names the lab's file and line), when the function could not be called. */
+bool sl_probe_pass_run(const sl_probe_table *table, const char *labs_dir, const char *framework_dir, double *outputs,
+                       bool *not_implemented, char *err, size_t err_size);
+
+#endif

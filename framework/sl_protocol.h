@@ -1,0 +1,95 @@
+/* sl_protocol: what passes between the grader and its runner, the process
+ * that runs lab code for one case.
+ *
+ *   grader -> runner  fd 0: one sl_job; then the grader keeps the pipe open
+ *                     until it has checked the runner's DONE, and closes it
+ *                     to let the runner exit (the runner waits for that).
+ *   runner -> grader  fd 3: messages [sl_message_header][name][payload].
+ *                     stdout and stderr: lab code's own output, kept apart.
+ *
+ * The grader treats every byte from the runner as hostile: lab code shares
+ * the runner's process and can write anything to fd 3. So every length is
+ * bounded, every capture must be one the job asked for and come once, and
+ * nothing after DONE is allowed (grader/sl_run.c enforces it). The job holds
+ * only what the runner needs to render: never a reference. */
+#ifndef SL_PROTOCOL_H
+#define SL_PROTOCOL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sl_params.h"
+#include "sl_probe.h"
+#include "sl_scene.h"
+
+#define SL_JOB_MAGIC 0x424a4c53u /* "SLJB" */
+#define SL_PROTOCOL_VERSION 1
+#define SL_JOB_MAX_FRAMES 16
+#define SL_JOB_MAX_PROBES 8   /* a case's checks: each may be a probe */
+#define SL_CHANNEL_FD 3
+
+/* What a case can ask the runner to capture after its last frame. */
+typedef enum sl_capture_kind {
+    SL_CAPTURE_FBO,        /* numbers: lab 1's framebuffer and texture, as glGet* reports them */
+    SL_CAPTURE_DEPTH_MAP,  /* image, 1 channel: the shadow map's texels */
+    SL_CAPTURE_MATRICES,   /* numbers: light view, projection, shadow matrix (48) */
+    SL_CAPTURE_VISIBILITY, /* image, 1 channel: the visibility term, camera size */
+    SL_CAPTURE_LIT_MASK,   /* image, 1 channel: surfaces facing the light, camera size */
+    SL_CAPTURE_IMAGE,      /* image, 3 channels: the shaded picture, camera size */
+    SL_CAPTURE_KIND_COUNT,
+    /* numbers: the outputs of probe table k, "probe_k"; rows x outputs */
+    SL_CAPTURE_PROBE = SL_CAPTURE_KIND_COUNT,
+    SL_CAPTURE_END = SL_CAPTURE_PROBE + SL_JOB_MAX_PROBES
+} sl_capture_kind;
+
+/* "fbo", "depth_map", ..., "probe_3": the names captures travel under. */
+const char *sl_capture_name(int capture);
+/* -1 when the name is no capture's. */
+int sl_capture_parse(const char *name);
+
+#define SL_FBO_NUMBERS 10     /* see sl_runner.c: status, attachment type, ..., requested size */
+#define SL_MATRICES_NUMBERS 48
+
+typedef struct sl_job {
+    uint32_t magic, version, size; /* SL_JOB_MAGIC, SL_PROTOCOL_VERSION, sizeof(sl_job) */
+    int lab;                       /* the lab the case grades */
+    int width, height;             /* the camera image */
+    int backend;                   /* sl_backend: the headless GL to render with */
+    sl_scene scene;
+    sl_light frame_lights[SL_JOB_MAX_FRAMES]; /* the light of each frame; the last frame is captured */
+    int frame_count;
+    sl_render_params params;
+    uint32_t captures;             /* bit (1 << capture) per capture wanted; probe k: SL_CAPTURE_PROBE + k */
+    sl_probe_table probes[SL_JOB_MAX_PROBES]; /* function -1: none */
+    char labs_dir[512];            /* the labs tree's shaders, as the runner sees the file system */
+    char framework_dir[512];       /* framework/ (its shaders/), likewise */
+} sl_job;
+
+typedef enum sl_message_type {
+    SL_MSG_HELLO = 1,       /* payload: "backend\nrenderer" once the GL context exists */
+    SL_MSG_STAGE,           /* name: the lab function about to run ("" after it returned) */
+    SL_MSG_NOT_IMPLEMENTED, /* name: a stub that returned SL_NOT_IMPLEMENTED */
+    SL_MSG_FAILED,          /* name: a lab function that returned SL_FAILED */
+    SL_MSG_ERROR,           /* payload: why the case could not run (set-up, shader compile error) */
+    SL_MSG_CAPTURE_ERROR,   /* name: a capture; payload: why it could not be taken */
+    SL_MSG_IMAGE,           /* name: a capture; payload: int32 width, height, channels, then floats */
+    SL_MSG_NUMBERS,         /* name: a capture; payload: doubles */
+    SL_MSG_RENDER_TIME,     /* payload: one double, the CPU seconds the case's frames took */
+    SL_MSG_DONE,            /* every capture was sent */
+    SL_MSG_TYPE_END
+} sl_message_type;
+
+typedef struct sl_message_header {
+    uint32_t type;
+    uint32_t name_length;    /* at most SL_MSG_NAME_MAX, no terminator */
+    uint64_t payload_length;
+} sl_message_header;
+
+#define SL_MSG_NAME_MAX 63
+#define SL_MSG_TEXT_MAX 16384      /* ERROR, CAPTURE_ERROR and HELLO payloads */
+#define SL_MSG_NUMBERS_MAX (SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS)
+#define SL_IMAGE_SIDE_MAX 4096     /* shadow maps and camera images */
+#define SL_IMAGE_HEADER_BYTES 12   /* int32 width, height, channels */
+
+#endif

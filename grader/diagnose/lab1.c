@@ -1,0 +1,110 @@
+/* Lab 1's diagnoses: the framebuffer and the depth map. */
+#define _POSIX_C_SOURCE 200809L
+#include "sl_diagnose.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_compare.h"
+
+void sl_diagnose_fbo(const sl_case *c, const sl_case_result *r, sl_check_result *out) {
+    const sl_capture *cap = sl_result_capture(r, "fbo");
+    if (!cap || cap->number_count < 10) {
+        if (!sl_diag_explain_missing(c, r, out))
+            sl_diag_say(out, "lab1_create_shadow_map() left map->framebuffer and map->depth_texture at 0");
+        return;
+    }
+    const double *v = cap->numbers;
+    GLenum status = (GLenum)v[0];
+    if (v[0] == 0) {
+        sl_diag_say(out, "map->framebuffer is not a framebuffer object (glGenFramebuffers + glBindFramebuffer)");
+    } else if (v[1] != GL_TEXTURE) {
+        sl_diag_say(out, "nothing is attached as GL_DEPTH_ATTACHMENT: attach the depth texture with glFramebufferTexture2D");
+    } else if (!v[2]) {
+        sl_diag_say(out, "the texture attached as GL_DEPTH_ATTACHMENT is not map->depth_texture");
+    } else if (v[3] <= 0) {
+        sl_diag_say(out, "map->depth_texture has no depth format: use GL_DEPTH_COMPONENT24 (internal format) with GL_DEPTH_COMPONENT");
+    } else if (v[4] != v[9] || v[5] != v[9]) {
+        sl_diag_say(out, "the depth texture is %.0fx%.0f, but the requested map size is %.0f: use the size argument", v[4], v[5], v[9]);
+    } else if (v[8] != GL_NONE) {
+        sl_diag_say(out, "the framebuffer has a colour attachment: a depth-only pass needs none");
+    } else if (v[6] != GL_NONE || v[7] != GL_NONE) {
+        sl_diag_say(out, "draw/read buffer is %s, not GL_NONE: call glDrawBuffer(GL_NONE) and glReadBuffer(GL_NONE) while the framebuffer is bound",
+                v[6] != GL_NONE ? "set" : "set for reading");
+    } else if (status != GL_FRAMEBUFFER_COMPLETE) {
+        sl_diag_say(out, "the framebuffer is incomplete: %s", sl_gl_enum_name(status));
+    } else if (r->failed[0] && strcmp(r->failed, "lab1_create_shadow_map") == 0) {
+        sl_diag_say(out, "lab1_create_shadow_map() returned SL_FAILED, although its framebuffer is complete");
+    } else {
+        out->passed = true;
+    }
+}
+
+void sl_diagnose_depth(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                            sl_check_result *out) {
+    const sl_capture *cap = sl_result_capture(r, "depth_map");
+    if (!cap) {
+        if (r->capture_error[0]) sl_diag_say(out, "%s", r->capture_error);
+        else if (!sl_diag_explain_missing(c, r, out)) sl_diag_say(out, "no depth map was captured");
+        out->settled = true;
+        return;
+    }
+    const sl_image *s = &cap->image, *t = &ref->image;
+    sl_compare_stats st = sl_compare_images(s, t, k->threshold, &out->diff);
+    if (st.size_mismatch) {
+        sl_diag_say(out, "the depth map is %dx%d, the reference %dx%d", s->width, s->height, t->width, t->height);
+        out->settled = true;
+        return;
+    }
+    if (sl_diag_image_passes(k, &st, "depth map", out)) {
+        out->passed = true;
+        return;
+    }
+    if (out->message[0]) return; /* only the mean is off: said */
+    double ref_empty = sl_fraction_equal(t, 1.0f, 1e-6f);
+    double stu_empty = sl_fraction_equal(s, 1.0f, 1e-6f);
+    double stu_zero = sl_fraction_equal(s, 0.0f, 1e-6f);
+    /* Texels nearer than the reference's (something where nothing should be,
+     * or depths left from earlier frames) and farther (something missing). */
+    long nearer = 0, farther = 0, n = (long)s->width * s->height;
+    for (long i = 0; i < n; i++) {
+        double d = (double)s->data[i] - (double)t->data[i];
+        nearer += d < -k->threshold;
+        farther += d > k->threshold;
+    }
+    double near_fraction = (double)nearer / (double)n, far_fraction = (double)farther / (double)n;
+    if (stu_empty > 0.999 && ref_empty < 0.99) {
+        sl_diag_say(out, "the depth map is empty (all 1.0): nothing was written into it");
+        sl_diag_cause(out, "no fragment reached it — shaders/depth.vert must output u_light_view_projection * u_model * "
+                           "position (still the stub? TODO lab1.4); with the depth test off, or a depth function no "
+                           "fragment passes, nothing is written either (TODO lab1.3)");
+    } else if (stu_zero > 0.9) {
+        sl_diag_say(out, "the depth map is all 0.0: no fragment passed the depth test");
+        sl_diag_cause(out, "is the depth buffer cleared (glClear(GL_DEPTH_BUFFER_BIT)) after binding the framebuffer, "
+                           "with depth writes on (TODO lab1.3)?");
+    } else if (sl_content_only_in_lower_left(s, 1.0f, c->width, c->height)) {
+        sl_diag_say(out, "only the lower-left %dx%d texels of the %dx%d map hold depths", c->width, c->height, s->width,
+                    s->height);
+        sl_diag_cause(out, "the viewport is still the window's — call glViewport(0, 0, size, size) in "
+                           "lab1_begin_depth_pass (TODO lab1.3)");
+    } else if (nearer > 20 * (farther + 1) && near_fraction > k->fail_fraction) {
+        /* stale depths from earlier frames: many texels nearer than they should be, few farther */
+        out->symptoms |= 1u << SL_SYMPTOM_STALE_DEPTH;
+        sl_diag_say(out, "%.1f%% of texels hold depths nearer than the scene's", 100.0 * near_fraction);
+        sl_diag_cause(out, "depths from earlier frames remain — clear the depth buffer at the start of every depth pass");
+    } else if (far_fraction > k->fail_fraction / 2 && far_fraction > near_fraction && st.failing_fraction < 0.25) {
+        /* the background (the floor, whose model matrix is the identity) right, the objects missing or elsewhere */
+        sl_diag_say(out, "objects are missing from the map while the floor agrees: %.1f%% of texels are farther than "
+                         "the reference's (an object missing there), %.1f%% nearer (one where none should be)",
+                    100 * far_fraction, 100 * near_fraction);
+        sl_diag_cause(out, "is each object's u_model applied, in the order u_light_view_projection * u_model * "
+                           "position (shaders/depth.vert, TODO lab1.4)?");
+    } else {
+        sl_diag_say(out, "the depth map differs from the reference on %.1f%% of texels (allowed %.1f%%): %.1f%% are "
+                         "nearer than the reference's, %.1f%% farther",
+                    100 * st.failing_fraction, 100 * k->fail_fraction, 100 * near_fraction, 100 * far_fraction);
+    }
+    if (st.nan_pixels) sl_diag_append(out, "; %ld texels are NaN", st.nan_pixels);
+}

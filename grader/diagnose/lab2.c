@@ -1,0 +1,116 @@
+/* Lab 2's diagnoses: the light's matrices. */
+#define _POSIX_C_SOURCE 200809L
+#include "sl_diagnose.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_compare.h"
+
+static double _sl_matrix_error(const double *a, const double *b) {
+    double worst = 0, scale = 1;
+    for (int i = 0; i < 16; i++) scale = fmax(scale, fabs(b[i]));
+    for (int i = 0; i < 16; i++) {
+        double d = fabs(a[i] - b[i]);
+        if (isnan(a[i])) d = INFINITY;
+        worst = fmax(worst, d);
+    }
+    return worst / scale;
+}
+
+static void _sl_mul(const double *a, const double *b, double *out) { /* column-major out = a * b */
+    for (int col = 0; col < 4; col++)
+        for (int row = 0; row < 4; row++) {
+            double sum = 0;
+            for (int k = 0; k < 4; k++) sum += a[k * 4 + row] * b[col * 4 + k];
+            out[col * 4 + row] = sum;
+        }
+}
+
+void sl_diagnose_matrices(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                               sl_check_result *out) {
+    const sl_capture *cap = sl_result_capture(r, "matrices");
+    if (!cap) {
+        if (!sl_diag_explain_missing(c, r, out)) sl_diag_say(out, "lab 2's matrices were not used");
+        return;
+    }
+    const double *sv = cap->numbers, *sp = cap->numbers + 16, *sm = cap->numbers + 32;
+    const double *rv = ref->numbers, *rp = ref->numbers + 16, *rm = ref->numbers + 32;
+    double ev = _sl_matrix_error(sv, rv), ep = _sl_matrix_error(sp, rp), em = _sl_matrix_error(sm, rm);
+    if (ev <= k->epsilon && ep <= k->epsilon && em <= k->epsilon) {
+        out->passed = true;
+        return;
+    }
+    static const double bias[16] = {0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 0.5, 0.5, 0.5, 1};
+    double pv[16], vp[16], wvp[16], tmp[16];
+    _sl_mul(sp, sv, pv);
+    _sl_mul(sv, sp, vp);
+    _sl_mul(bias, vp, wvp);
+    if (ev > k->epsilon) {
+        sl_diag_say(out, "the light's view matrix differs from the reference (largest error %.3g): check eye, target and "
+                     "up against README.md's recipe (TODO lab2.1)", ev);
+    } else if (ep > k->epsilon) {
+        /* Does the student's camera see the whole scene? */
+        int outside = 0;
+        const sl_aabb *b = &c->scene.bounds;
+        for (int i = 0; i < 8 && c->scene.light.type == SL_LIGHT_DIRECTIONAL; i++) {
+            double p[4] = {i & 1 ? b->max[0] : b->min[0], i & 2 ? b->max[1] : b->min[1], i & 4 ? b->max[2] : b->min[2], 1};
+            double q[4] = {0};
+            for (int row = 0; row < 4; row++)
+                for (int col = 0; col < 4; col++) q[row] += pv[col * 4 + row] * p[col];
+            for (int a = 0; a < 3; a++) outside += fabs(q[a] / q[3]) > 1.0001;
+        }
+        if (outside)
+            sl_diag_say(out, "the orthographic fit is too small: scene corners fall outside the light's frustum, so shadows "
+                         "are cut off at its edge (TODO lab2.2)");
+        else
+            sl_diag_say(out, "the light's projection differs from the reference (largest error %.3g): %s (TODO lab2.2)", ep,
+                    c->scene.light.type == SL_LIGHT_SPOT
+                        ? "a spot light's field of view is twice the cone's half-angle, in radians, aspect 1"
+                        : "fit left/right/bottom/top/near/far to the scene box's corners in light view space, padded");
+    } else if (_sl_matrix_error(sm, pv) <= k->epsilon) {
+        sl_diag_say(out, "the shadow matrix is Lp * Lv without the bias matrix W: coordinates stay in [-1,1] instead of "
+                     "[0,1] (TODO lab2.3)");
+    } else if (_sl_matrix_error(sm, wvp) <= k->epsilon) {
+        sl_diag_say(out, "the shadow matrix multiplies Lv * Lp: the order is reversed, it must be W * Lp * Lv (TODO lab2.3)");
+    } else {
+        static const double transposed[16] = {0.5, 0, 0, 0.5, 0, 0.5, 0, 0.5, 0, 0, 0.5, 0.5, 0, 0, 0, 1};
+        double twvp[16];
+        _sl_mul(transposed, pv, twvp);
+        _sl_mul(pv, bias, tmp);
+        if (_sl_matrix_error(sm, tmp) <= k->epsilon)
+            sl_diag_say(out, "the shadow matrix is Lp * Lv * W: W must come first (leftmost), W * Lp * Lv (TODO lab2.3)");
+        else if (_sl_matrix_error(sm, twvp) <= k->epsilon)
+            sl_diag_say(out, "the bias matrix W is transposed: its translation (0.5, 0.5, 0.5) ends up in the bottom row. "
+                         "cglm's initialiser lists columns, so the translation is the last of the four {...} (TODO lab2.3)");
+        else
+            sl_diag_say(out, "the shadow matrix differs from W * Lp * Lv (largest error %.3g) (TODO lab2.3)", em);
+    }
+}
+
+bool sl_diagnose_lab2_visibility(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
+                                 sl_check_result *out) {
+    if (!mask) return false;
+    const char *fn, *todo;
+    sl_diag_lookup_function(c, &fn, &todo);
+    sl_acne acne = sl_measure_acne(s, t, mask);
+    if (acne.fraction <= 0.02) return false;
+    if (sl_acne_is_pattern(&acne)) {
+        out->symptoms |= 1u << SL_SYMPTOM_ACNE;
+        sl_diag_say(out, "shadow acne on %.0f%% of lit surfaces: they shadow themselves in stripes", 100 * acne.fraction);
+        sl_diag_cause(out, "the bias is missing or added — a surface compared with its own stored depth needs "
+                           "p.z - bias > closest to be shadowed, in %s (TODO %s)", fn, todo);
+        return true;
+    }
+    if (c->scene.light.type == SL_LIGHT_SPOT) {
+        /* a solid region: the floor past the spot light's far plane */
+        out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
+        sl_diag_say(out, "%.0f%% of lit surfaces are shadowed in solid regions, not in the stripes of acne", 100 * acne.fraction);
+        sl_diag_cause(out, "points beyond the light's far plane (depth > 1) are outside the frustum, so lit: test "
+                           "p.z as well as x and y in %s (TODO %s)", fn, todo);
+        return true;
+    }
+    return false;
+}

@@ -1,0 +1,291 @@
+/* Function probes: a student's function on a table of inputs, against the
+ * solution's outputs. The failure quotes the first row that differs, its
+ * inputs, both outputs, and what that row is there to test (its "about"). */
+#define _POSIX_C_SOURCE 200809L
+#include "sl_diagnose.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cjson/cJSON.h>
+
+#include "sl_files.h"
+#include "sl_gl.h"
+#include "sl_json.h"
+#include "sl_probe.h"
+#include "sl_verdict.h"
+
+/* A number as a message shows it: a GL enum by its name where the output is one. */
+static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
+    if (isnan(v)) {
+        snprintf(out, n, "NaN");
+        return;
+    }
+    if (gl_enum && v >= 0x0200 && v <= 0x9000 && v == floor(v)) {
+        const char *name = sl_gl_enum_name((GLenum)v);
+        if (strncmp(name, "unknown", 7) != 0) {
+            snprintf(out, n, "%s", name);
+            return;
+        }
+    }
+    snprintf(out, n, "%.4g", v);
+}
+
+static void _sl_value(double v, char *out, size_t n) { _sl_value_named(v, false, out, n); }
+
+/* Outputs that hold GL enums: a filter, a face, a function. */
+static bool _sl_output_is_enum(const char *name) {
+    return strstr(name, "filter") || strstr(name, "face") || strstr(name, "function");
+}
+
+/* "n_dot_l = 0.05, constant_bias = 0.0005, shadow_map = step" */
+static void _sl_inputs(const sl_probe_function *f, const float *in, char *out, size_t n) {
+    size_t used = 0;
+    int offset = 0;
+    out[0] = '\0';
+    for (int i = 0; i < f->param_count && used < n; i++) {
+        const sl_probe_param *p = &f->params[i];
+        int size = sl_probe_type_size(p->type);
+        char value[160] = "";
+        if (p->type == SL_PROBE_MAP || p->type == SL_PROBE_SHADOW_MAP) {
+            snprintf(value, sizeof value, "the \"%s\" map", sl_probe_map_name((sl_probe_map)(int)in[offset]));
+        } else if (p->type == SL_PROBE_MAT4) {
+            snprintf(value, sizeof value, "a matrix");
+        } else if (size == 1) {
+            snprintf(value, sizeof value, "%g", (double)in[offset]);
+        } else {
+            size_t v = 0;
+            for (int k = 0; k < size && v < sizeof value; k++)
+                v += (size_t)snprintf(value + v, sizeof value - v, "%s%g", k ? ", " : "(", (double)in[offset + k]);
+            if (v < sizeof value) snprintf(value + v, sizeof value - v, ")");
+        }
+        used += (size_t)snprintf(out + used, n - used, "%s%s = %s", i ? ", " : "", p->name, value);
+        offset += size;
+    }
+}
+
+/* The name of output o ("bias", "m30"). */
+static void _sl_output_name(const sl_probe_function *f, int o, char *out, size_t n) {
+    const char *p = f->outputs;
+    for (int i = 0; i < o && p; i++) {
+        p = strchr(p, ',');
+        if (p) p++;
+    }
+    size_t len = p ? strcspn(p, ",") : 0;
+    snprintf(out, n, "%.*s", (int)len, p ? p : "");
+}
+
+/* Within the check's tolerances; a GL enum (a filter, a face, a function) only when it is the same one. */
+static bool _sl_close_enough(const sl_check *k, int row, int output, double student, double expected) {
+    if (isnan(expected)) return isnan(student);
+    if (isnan(student) || isinf(student)) return false;
+    char name[64];
+    _sl_output_name(sl_probe_at(k->function), output, name, sizeof name);
+    if (_sl_output_is_enum(name)) return student == expected;
+    double tolerance = k->row_tolerance[row] > 0 ? k->row_tolerance[row] : k->tolerance;
+    return fabs(student - expected) <= tolerance + k->relative * fabs(expected);
+}
+
+/* What the stub of f returns for output o of a row. */
+static double _sl_stub_output(const sl_probe_function *f, const float *in, int o) {
+    if (f->stub_param < 0) return f->stub_value;
+    int offset = 0;
+    for (int i = 0; i < f->stub_param; i++) offset += sl_probe_type_size(f->params[i].type);
+    return in[offset + o];
+}
+
+/* "f(inputs) = got, expected want — about": one row, the outputs that differ named where there are several. */
+static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int row, const double *s, const double *e,
+                             char *out, size_t n) {
+    char inputs[600], got[300] = "", want[300] = "";
+    _sl_inputs(f, k->inputs[row], inputs, sizeof inputs);
+    if (f->output_count == 1) {
+        _sl_value(s[0], got, sizeof got);
+        _sl_value(e[0], want, sizeof want);
+    } else if (f->glsl && f->output_count <= 4) {
+        /* a vector: all of it */
+        size_t g = 0, w = 0;
+        for (int o = 0; o < f->output_count; o++) {
+            char a[48], b[48];
+            _sl_value(s[o], a, sizeof a);
+            _sl_value(e[o], b, sizeof b);
+            g += (size_t)snprintf(got + g, sizeof got - g, "%s%s", o ? ", " : "(", a);
+            w += (size_t)snprintf(want + w, sizeof want - w, "%s%s", o ? ", " : "(", b);
+        }
+        if (g < sizeof got) snprintf(got + g, sizeof got - g, ")");
+        if (w < sizeof want) snprintf(want + w, sizeof want - w, ")");
+    } else {
+        /* a matrix, or GL state: the values that differ, by name (a matrix's largest difference first) */
+        int order[SL_PROBE_MAX_OUTPUTS], count = 0;
+        for (int o = 0; o < f->output_count; o++)
+            if (!_sl_close_enough(k, row, o, s[o], e[o])) order[count++] = o;
+        for (int a = 0; a < count && f->output_count == 16; a++)
+            for (int b = a + 1; b < count; b++) {
+                double da = isnan(s[order[a]]) ? INFINITY : fabs(s[order[a]] - e[order[a]]);
+                double db = isnan(s[order[b]]) ? INFINITY : fabs(s[order[b]] - e[order[b]]);
+                if (db > da) {
+                    int t = order[a];
+                    order[a] = order[b];
+                    order[b] = t;
+                }
+            }
+        const char *about = k->about[row], *dash = about[0] ? " — " : "";
+        if (f->output_count == 16 && count > 0) {
+            char a[48], b[48], name[16];
+            _sl_value(s[order[0]], a, sizeof a);
+            _sl_value(e[order[0]], b, sizeof b);
+            _sl_output_name(f, order[0], name, sizeof name);
+            snprintf(out, n, "%s(%s) = a matrix whose %s is %s, expected %s%s%s", f->name, inputs, name, a, b, dash, about);
+            return;
+        }
+        size_t g = 0;
+        for (int i = 0; i < count; i++) {
+            char a[48], b[48], name[64];
+            _sl_output_name(f, order[i], name, sizeof name);
+            _sl_value_named(s[order[i]], _sl_output_is_enum(name), a, sizeof a);
+            _sl_value_named(e[order[i]], _sl_output_is_enum(name), b, sizeof b);
+            g += (size_t)snprintf(got + g, sizeof got - g, "%s%s %s (expected %s)", i ? ", " : "", name, a, b);
+            if (g >= sizeof got) break;
+        }
+        snprintf(out, n, "%s(%s) gives %s%s%s", f->name, inputs, got, dash, about);
+        return;
+    }
+    snprintf(out, n, "%s(%s) = %s, expected %s%s%s", f->name, inputs, got, want, k->about[row][0] ? " — " : "",
+             k->about[row]);
+}
+
+void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                       sl_check_result *out) {
+    const sl_probe_function *f = sl_probe_at(k->function);
+    char capture[32];
+    snprintf(capture, sizeof capture, "%s", sl_check_capture_name(c, k));
+    const char *todo = "", *file = "";
+    sl_diag_stub_location(f->name, &todo, &file);
+    for (int i = 0; i < r->not_implemented_count; i++)
+        if (strcmp(r->not_implemented[i], f->name) == 0) {
+            sl_diag_say(out, "not implemented: %s() still returns SL_NOT_IMPLEMENTED (%s in %s)", f->name, todo, file);
+            snprintf(out->summary, sizeof out->summary, "%s", out->message);
+            out->settled = out->stub = true;
+            return;
+        }
+    const sl_capture *cap = sl_result_capture(r, capture);
+    if (!cap) {
+        size_t len = strlen(capture);
+        if (strncmp(r->capture_error, capture, len) == 0 && r->capture_error[len] == ':')
+            sl_diag_say(out, "%s() could not be called:%s", f->name, r->capture_error + len + 1);
+        else
+            sl_diag_say(out, "%s() was not called: the case ended before its probe", f->name);
+        snprintf(out->summary, sizeof out->summary, "%s", out->message);
+        out->settled = true;
+        return;
+    }
+    int failing = 0, first = -1;
+    bool all_stub = true;
+    for (int row = 0; row < k->rows; row++) {
+        bool row_ok = true;
+        for (int o = 0; o < f->output_count; o++) {
+            double s = cap->numbers[row * f->output_count + o], e = ref->numbers[row * f->output_count + o];
+            row_ok &= _sl_close_enough(k, row, o, s, e);
+            all_stub &= _sl_close_enough(k, row, o, s, _sl_stub_output(f, k->inputs[row], o));
+        }
+        if (!row_ok) {
+            failing++;
+            out->failing_rows |= 1u << row;
+            if (first < 0) first = row;
+        }
+    }
+    if (failing == 0) {
+        out->passed = true;
+        return;
+    }
+    if (all_stub && f->glsl) {
+        char stub[64];
+        if (f->stub_param >= 0) snprintf(stub, sizeof stub, "its parameter %s unchanged", f->params[f->stub_param].name);
+        else snprintf(stub, sizeof stub, "the stub's %g", f->stub_value);
+        sl_diag_say(out, "not implemented: %s() still returns %s (%s in %s)", f->name, stub, todo, file);
+        snprintf(out->summary, sizeof out->summary, "%s", out->message);
+        out->settled = out->stub = true;
+        return;
+    }
+    /* What the rows say together, then the row that shows it (or the first that differs). */
+    char verdict[600];
+    sl_verdict_rows rows = {.f = f, .k = k, .student = cap->numbers, .expected = ref->numbers,
+                            .failing = out->failing_rows};
+    int shown = sl_probe_verdict(&rows, verdict, sizeof verdict);
+    if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
+    char evidence[1500];
+    _sl_row_evidence(f, k, shown, &cap->numbers[shown * f->output_count], &ref->numbers[shown * f->output_count],
+                     evidence, sizeof evidence);
+    if (verdict[0]) {
+        sl_diag_say(out, "%s(): %s. For example %s", f->name, verdict, evidence);
+        snprintf(out->summary, sizeof out->summary, "%s", verdict);
+    } else {
+        sl_diag_say(out, "%s", evidence);
+        /* for other checks to quote: what differs and what the row tests, without the inputs */
+        const char *equals = strstr(evidence, ") = "), *gives = strstr(evidence, ") gives ");
+        if (equals) snprintf(out->summary, sizeof out->summary, "gives %s", equals + 4);
+        else snprintf(out->summary, sizeof out->summary, "%s", gives ? gives + 2 : evidence);
+    }
+    sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
+}
+
+bool sl_probe_reference_write(const char *path, const sl_check *k, const double *outputs, char *err, size_t n) {
+    const sl_probe_function *f = sl_probe_at(k->function);
+    int inputs = sl_probe_input_count(f);
+    sl_atomic_file file;
+    if (!sl_atomic_open(&file, path, err, n)) return false;
+    fprintf(file.f, "{\n  \"function\": \"%s\",\n  \"rows\": [\n", f->name);
+    for (int r = 0; r < k->rows; r++) {
+        fprintf(file.f, "    {\"inputs\": [");
+        for (int i = 0; i < inputs; i++) fprintf(file.f, "%s%.9g", i ? ", " : "", (double)k->inputs[r][i]);
+        fprintf(file.f, "], \"outputs\": [");
+        for (int o = 0; o < f->output_count; o++) {
+            double v = outputs[r * f->output_count + o];
+            if (isnan(v)) fprintf(file.f, "%snull", o ? ", " : "");
+            else fprintf(file.f, "%s%.9g", o ? ", " : "", v);
+        }
+        fprintf(file.f, "]}%s\n", r + 1 < k->rows ? "," : "");
+    }
+    fprintf(file.f, "  ]\n}\n");
+    return sl_atomic_commit(&file, err, n);
+}
+
+bool sl_probe_reference_read(const char *path, const sl_check *k, double *outputs, char *err, size_t n) {
+    const sl_probe_function *f = sl_probe_at(k->function);
+    char json_err[600];
+    cJSON *json = sl_json_load_file(path, "reference", json_err, sizeof json_err);
+    if (!json) {
+        snprintf(err, n, "reference corrupt: %s", json_err);
+        return false;
+    }
+    const char *function = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "function"));
+    const cJSON *rows = cJSON_GetObjectItemCaseSensitive(json, "rows");
+    bool ok = function && cJSON_IsArray(rows);
+    if (!ok) snprintf(err, n, "reference corrupt: %s: expected \"function\" and \"rows\"", path);
+    bool same = ok && strcmp(function, f->name) == 0 && cJSON_GetArraySize(rows) == k->rows;
+    int inputs = sl_probe_input_count(f);
+    for (int r = 0; ok && same && r < k->rows; r++) {
+        const cJSON *row = cJSON_GetArrayItem(rows, r);
+        const cJSON *in = cJSON_GetObjectItemCaseSensitive(row, "inputs");
+        const cJSON *o = cJSON_GetObjectItemCaseSensitive(row, "outputs");
+        same = cJSON_GetArraySize(in) == inputs;
+        for (int i = 0; same && i < inputs; i++) {
+            const cJSON *v = cJSON_GetArrayItem(in, i);
+            same = cJSON_IsNumber(v) && (float)v->valuedouble == k->inputs[r][i];
+        }
+        ok = cJSON_GetArraySize(o) == f->output_count;
+        for (int j = 0; ok && j < f->output_count; j++) {
+            const cJSON *v = cJSON_GetArrayItem(o, j);
+            ok = cJSON_IsNumber(v) || cJSON_IsNull(v);
+            outputs[r * f->output_count + j] = cJSON_IsNumber(v) ? v->valuedouble : NAN;
+        }
+        if (!ok) snprintf(err, n, "reference corrupt: %s: row %d has not %d outputs", path, r, f->output_count);
+    }
+    if (ok && !same)
+        snprintf(err, n, "reference does not fit its case: %s was made for other inputs than the case's rows for "
+                         "%s() (staff: --update-references)", path, f->name);
+    cJSON_Delete(json);
+    return ok && same;
+}

@@ -1,0 +1,455 @@
+/* Verdicts on a failed function probe: what the pattern of its rows says is
+ * wrong, in a few words, before the row that shows it is quoted. Each
+ * verdict reads only the rows' inputs and the two sets of outputs, never a
+ * guess at the student's code: a filter's weight sum is what it gives on an
+ * empty map, its width how far its results depart from a single comparison
+ * across the synthetic step edge, and so on. */
+#define _POSIX_C_SOURCE 200809L
+#include "sl_verdict.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "sl_params.h"
+
+/* The inputs of one parameter of a row, or NULL if the function has none of that name. */
+static const float *_sl_param(const sl_probe_function *f, const float *row, const char *name) {
+    int offset = 0;
+    for (int i = 0; i < f->param_count; i++) {
+        if (strcmp(f->params[i].name, name) == 0) return row + offset;
+        offset += sl_probe_type_size(f->params[i].type);
+    }
+    return NULL;
+}
+
+static bool _sl_failed(const sl_verdict_rows *v, int row) { return (v->failing >> row) & 1u; }
+static double _sl_got(const sl_verdict_rows *v, int row, int o) { return v->student[row * v->f->output_count + o]; }
+static double _sl_want(const sl_verdict_rows *v, int row, int o) { return v->expected[row * v->f->output_count + o]; }
+static bool _sl_near(double a, double b, double tolerance) { return fabs(a - b) <= tolerance; }
+
+/* ---- filters: a map, a shadow coordinate, a bias; 1 lit, 0 shadowed ---- */
+
+typedef enum _sl_row_kind {
+    _SL_ROW_OUTSIDE,     /* behind the light, or off the map or past its far plane: lit */
+    _SL_ROW_HOMOGENEOUS, /* inside, w not 1: the divide matters */
+    _SL_ROW_EMPTY_MAP,   /* nothing in front anywhere: 1, whatever the kernel */
+    _SL_ROW_OWN_SURFACE, /* on the stored surface itself: lit thanks to the bias alone */
+    _SL_ROW_OCCLUDED,    /* an occluder over every sample: 0 */
+    _SL_ROW_EDGE,        /* the step map: an occluder's edge */
+    _SL_ROW_OTHER
+} _sl_row_kind;
+
+typedef struct _sl_filter_row {
+    _sl_row_kind kind;
+    double p[3];   /* the divided coordinate */
+    double bias;
+    double centre; /* one comparison at p.xy, as an unfiltered lookup gives it */
+} _sl_filter_row;
+
+static _sl_filter_row _sl_filter_row_of(const sl_probe_function *f, const float *in) {
+    _sl_filter_row r = {.kind = _SL_ROW_OTHER};
+    const float *map = _sl_param(f, in, "shadow_map"), *coord = _sl_param(f, in, "shadow_coord");
+    const float *bias = _sl_param(f, in, "bias");
+    r.bias = bias ? *bias : 0;
+    if (!map || !coord) return r;
+    double w = coord[3];
+    for (int i = 0; i < 3; i++) r.p[i] = w != 0 ? coord[i] / w : 0;
+    bool outside = w <= 0;
+    for (int i = 0; i < 3; i++) outside |= r.p[i] < 0 || r.p[i] > 1;
+    int texel = (int)floor(r.p[0] * SL_PROBE_MAP_SIZE);
+    texel = texel < 0 ? 0 : texel >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : texel;
+    double stored = sl_probe_map_depth((sl_probe_map)(int)*map, texel, 0);
+    r.centre = r.p[2] - r.bias > stored ? 0.0 : 1.0;
+    /* the occluder's own surface: behind its stored depth by less than the bias */
+    double occluder = sl_probe_map_depth(SL_PROBE_MAP_OCCLUDED, 0, 0);
+    bool own_surface = stored == occluder && r.p[2] > occluder && r.p[2] - r.bias <= occluder;
+    if (outside) r.kind = _SL_ROW_OUTSIDE;
+    else if (w != 1) r.kind = _SL_ROW_HOMOGENEOUS;
+    else if ((int)*map == SL_PROBE_MAP_LIT) r.kind = _SL_ROW_EMPTY_MAP;
+    else if (own_surface) r.kind = _SL_ROW_OWN_SURFACE;
+    else if ((int)*map == SL_PROBE_MAP_OCCLUDED) r.kind = _SL_ROW_OCCLUDED;
+    else if ((int)*map == SL_PROBE_MAP_STEP) r.kind = _SL_ROW_EDGE;
+    return r;
+}
+
+/* The first failing row of a kind (-1: none). */
+static int _sl_first_failing(const sl_verdict_rows *v, _sl_row_kind kind) {
+    for (int row = 0; row < v->k->rows; row++)
+        if (_sl_failed(v, row) && _sl_filter_row_of(v->f, v->k->inputs[row]).kind == kind) return row;
+    return -1;
+}
+
+/* A failing row with w not 1 whose result differs from its twin's, the same
+ * point given with w = 1 (the divide is wrong), or with no twin, the only
+ * kind of row that fails; -1 otherwise (a twin failing alike is another mistake). */
+static int _sl_homogeneous_differs(const sl_verdict_rows *v) {
+    const sl_probe_function *f = v->f;
+    int coord = 0, floats = sl_probe_input_count(f), others = 0, lone = -1;
+    for (int i = 0; i < f->param_count && strcmp(f->params[i].name, "shadow_coord") != 0; i++)
+        coord += sl_probe_type_size(f->params[i].type);
+    for (int a = 0; a < v->k->rows; a++) {
+        if (!_sl_failed(v, a)) continue;
+        _sl_filter_row fa = _sl_filter_row_of(f, v->k->inputs[a]);
+        if (fa.kind != _SL_ROW_HOMOGENEOUS) {
+            others++;
+            continue;
+        }
+        bool twin = false;
+        for (int b = 0; b < v->k->rows && !twin; b++) {
+            const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
+            bool same = ib[coord + 3] == 1.0f;
+            for (int i = 0; same && i < floats; i++)
+                same = i >= coord && i < coord + 3 ? fabs(ia[i] / ia[coord + 3] - ib[i]) < 1e-6
+                       : i == coord + 3   ? true
+                                          : ia[i] == ib[i];
+            if (!same) continue;
+            twin = true;
+            if (!_sl_near(_sl_got(v, a, 0), _sl_got(v, b, 0), 1e-3)) return a;
+        }
+        if (!twin && lone < 0) lone = a;
+    }
+    return others == 0 ? lone : -1;
+}
+
+/* Rows that differ only in a parameter called *radius*, giving the same result where the reference's differ. */
+static int _sl_radius_ignored(const sl_verdict_rows *v, char *text, size_t n) {
+    const sl_probe_function *f = v->f;
+    int radius = -1, offset = 0;
+    for (int i = 0; i < f->param_count; i++) {
+        if (strstr(f->params[i].name, "radius")) radius = offset;
+        offset += sl_probe_type_size(f->params[i].type);
+    }
+    if (radius < 0) return -1;
+    int floats = sl_probe_input_count(f);
+    for (int a = 0; a < v->k->rows; a++) {
+        if (!_sl_failed(v, a)) continue;
+        for (int b = 0; b < v->k->rows; b++) {
+            if (b == a) continue;
+            bool same = true;
+            for (int i = 0; i < floats; i++) same &= i == radius || v->k->inputs[a][i] == v->k->inputs[b][i];
+            if (!same || v->k->inputs[a][radius] == v->k->inputs[b][radius]) continue;
+            if (_sl_near(_sl_got(v, a, 0), _sl_got(v, b, 0), 1e-4) && !_sl_near(_sl_want(v, a, 0), _sl_want(v, b, 0), 0.02)) {
+                snprintf(text, n, "the radius is ignored: radius %g and radius %g give the same %.4g at the same point "
+                                  "(expected %.4g and %.4g) — the kernel's extent must come from the radius",
+                         (double)v->k->inputs[a][radius], (double)v->k->inputs[b][radius], _sl_got(v, a, 0),
+                         _sl_want(v, a, 0), _sl_want(v, b, 0));
+                return a;
+            }
+        }
+    }
+    return -1;
+}
+
+static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
+    const sl_probe_function *f = v->f;
+    bool kernel = strcmp(f->name, "pcf_grid") == 0 || strcmp(f->name, "pcf_poisson") == 0;
+    bool pcss = strcmp(f->name, "pcss") == 0;
+    int row;
+    /* lit and shadowed exchanged on most rows: the comparison itself, whatever else */
+    int swapped = 0, compared = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        _sl_filter_row fr = _sl_filter_row_of(f, v->k->inputs[r]);
+        if (fr.kind == _SL_ROW_OUTSIDE || fr.kind == _SL_ROW_OTHER) continue;
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        if (e > 0.02 && e < 0.98) continue;
+        compared++;
+        swapped += _sl_near(s, 1 - e, 0.02);
+    }
+    if (compared >= 3 && swapped * 3 >= compared * 2) {
+        snprintf(text, n, "the comparison is inverted: lit where the point is shadowed and the other way round — 0.0 "
+                          "when p.z - bias is farther than the stored depth");
+        return -1; /* the first row that differs shows it */
+    }
+    /* the coordinate first: every other row depends on it */
+    if ((row = _sl_first_failing(v, _SL_ROW_OUTSIDE)) >= 0) {
+        snprintf(text, n, "a point outside the light's frustum must be lit: return 1.0 when w <= 0, or when x, y or z "
+                          "is outside [0, 1] after the divide");
+        return row;
+    }
+    if ((row = _sl_homogeneous_differs(v)) >= 0) {
+        snprintf(text, n, "no divide by w: the shadow coordinate is homogeneous — divide xyz by w before the lookup");
+        return row;
+    }
+    if (pcss && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
+        snprintf(text, n, "no blocker found must mean fully lit: with nothing in the map in front of the point, the "
+                          "blocker search finds none, and pcss() returns 1.0");
+        return row;
+    }
+    if (kernel && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
+        double sum = _sl_got(v, row, 0);
+        snprintf(text, n, "the weights sum to %.4g, not 1 (nothing in front gives %.4g): the kernel is not normalised "
+                          "— divide the sum of the results by the number of samples", sum, sum);
+        return row;
+    }
+    if ((row = _sl_first_failing(v, _SL_ROW_OWN_SURFACE)) >= 0 && _sl_got(v, row, 0) < _sl_want(v, row, 0)) {
+        snprintf(text, n, "the bias is not subtracted: a point on the stored surface itself compares as shadowed, which "
+                          "is shadow acne — compare p.z - bias with the stored depth");
+        return row;
+    }
+    if ((row = _sl_first_failing(v, _SL_ROW_OCCLUDED)) >= 0 && _sl_got(v, row, 0) > _sl_want(v, row, 0)) {
+        if (pcss)
+            snprintf(text, n, "the blocker search finds no blockers where an occluder covers the whole map: stored "
+                              "depths nearer than p.z - bias are the blockers");
+        else
+            snprintf(text, n, "samples land off the map: with an occluder over the whole map it still gives %.3g lit — "
+                              "the kernel is far too wide; scale the offsets by the texel size, 1.0 / textureSize(map, 0)",
+                     _sl_got(v, row, 0));
+        return row;
+    }
+    if (!kernel) return -1; /* PCSS and single lookups: their rows say the rest */
+    /* Across the edge: hard 0/1 results where soft ones are expected, then the width */
+    int soft = 0, hard = 0, as_centre = 0, narrow = 0, wide = 0, first_soft = -1, first_width = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        _sl_filter_row fr = _sl_filter_row_of(f, v->k->inputs[r]);
+        if (fr.kind != _SL_ROW_EDGE || !_sl_failed(v, r)) continue;
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        if (e > 0.02 && e < 0.98) {
+            soft++;
+            if (first_soft < 0) first_soft = r;
+            if (s <= 0.001 || s >= 0.999) {
+                hard++;
+                as_centre += _sl_near(s, fr.centre, 0.001);
+            }
+        }
+        double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
+        double here = fabs(s - fr.centre), there = fabs(e - fr.centre);
+        if (here < there - tolerance) narrow++;
+        if (here > there + tolerance) wide++;
+        if (first_width < 0 && (here < there - tolerance || here > there + tolerance)) first_width = r;
+    }
+    if (soft > 0 && hard == soft) {
+        if (as_centre == hard)
+            snprintf(text, n, "one comparison per point: results are 0 or 1 where the kernel should blend, exactly as "
+                              "a single lookup gives them — the kernel has no width; compare at every sample and "
+                              "average the results");
+        else
+            snprintf(text, n, "depths averaged, then compared once: results are 0 or 1 where the kernel should blend, "
+                              "and not where one comparison puts them — filtering depths instead of comparison results "
+                              "(Reeves 1987); compare at every sample, then average the 0/1 results");
+        return first_soft;
+    }
+    /* fractional, but the same whatever the radius */
+    if ((row = _sl_radius_ignored(v, text, n)) >= 0) return row;
+    if (narrow > wide && first_width >= 0) {
+        snprintf(text, n, "the kernel is too narrow: across an occluder's edge its results stay closer to a single "
+                          "comparison's 0 or 1 than they should — are the offsets radius texels wide, each texel "
+                          "1.0 / textureSize(map, 0)?");
+        return first_width;
+    }
+    if (wide > narrow && first_width >= 0) {
+        snprintf(text, n, "the kernel is too wide: results blend farther from an occluder's edge than they should — "
+                          "are the offsets scaled by the texel size, 1.0 / textureSize(map, 0), and by the radius only once?");
+        return first_width;
+    }
+    return -1;
+}
+
+/* ---- lab 3 ---- */
+
+static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
+    const sl_probe_function *f = v->f;
+    int rows = v->k->rows;
+    double lo = INFINITY, hi = -INFINITY, want_lo = INFINITY, want_hi = -INFINITY;
+    for (int r = 0; r < rows; r++) {
+        lo = fmin(lo, _sl_got(v, r, 0));
+        hi = fmax(hi, _sl_got(v, r, 0));
+        want_lo = fmin(want_lo, _sl_want(v, r, 0));
+        want_hi = fmax(want_hi, _sl_want(v, r, 0));
+    }
+    if (rows >= 3 && hi - lo <= 1e-7 && want_hi - want_lo > 1e-5) {
+        snprintf(text, n, "it returns %.4g for every angle and every setting: a hand-tuned constant, not the slope-scaled "
+                          "bias min(constant + slope * tan(theta), max_bias)", lo);
+        return 0;
+    }
+    /* where the reference is clamped, above max_bias here: no clamp */
+    for (int r = 0; r < rows; r++) {
+        double max_bias = *_sl_param(f, v->k->inputs[r], "max_bias");
+        if (_sl_failed(v, r) && _sl_near(_sl_want(v, r, 0), max_bias, 1e-7) && _sl_got(v, r, 0) > max_bias + 1e-7) {
+            snprintf(text, n, "not clamped: the clamp to max_bias is missing — at n_dot_l = %g it gives %.4g, above "
+                              "max_bias %.4g; return min(constant + slope * tan(theta), max_bias)",
+                     (double)*_sl_param(f, v->k->inputs[r], "n_dot_l"), _sl_got(v, r, 0), max_bias);
+            return r;
+        }
+    }
+    /* Where the clamp does not act: which function of the angle does the slope term follow? */
+    int rows_seen = 0, as_sin = 0, as_angle = 0, first = -1;
+    double ratio_lo = INFINITY, ratio_hi = -INFINITY, term_lo = INFINITY, term_hi = -INFINITY;
+    for (int r = 0; r < rows; r++) {
+        const float *in = v->k->inputs[r];
+        double cos_t = *_sl_param(f, in, "n_dot_l"), c = *_sl_param(f, in, "constant_bias");
+        double slope = *_sl_param(f, in, "slope"), max_bias = *_sl_param(f, in, "max_bias");
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        /* rows where either clamp acts say nothing about the slope term */
+        if (!_sl_failed(v, r) || slope <= 0 || cos_t <= 0.01 || cos_t >= 1 || e >= max_bias - 1e-7 ||
+            s >= max_bias - 1e-7)
+            continue;
+        if (first < 0) first = r;
+        double sin_t = sqrt(1 - cos_t * cos_t), term = (s - c) / slope;
+        rows_seen++;
+        as_sin += _sl_near(term, sin_t, 0.02 * sin_t + 1e-4);
+        as_angle += _sl_near(term, tan(cos_t), 0.02 * tan(cos_t) + 1e-4) || _sl_near(term, acos(cos_t), 0.02);
+        ratio_lo = fmin(ratio_lo, s / e);
+        ratio_hi = fmax(ratio_hi, s / e);
+        term_lo = fmin(term_lo, term / ((e - c) / slope));
+        term_hi = fmax(term_hi, term / ((e - c) / slope));
+    }
+    if (rows_seen == 0) return -1;
+    if (as_sin == rows_seen) {
+        snprintf(text, n, "sin(theta) where tan(theta) belongs: the slope term follows sqrt(1 - cos^2), not "
+                          "sqrt(1 - cos^2) / cos — divide by cos(theta) = N.L");
+        return first;
+    }
+    if (as_angle == rows_seen) {
+        snprintf(text, n, "N.L used as an angle: n_dot_l is cos(theta) already; tan(theta) = sqrt(1 - cos^2) / cos");
+        return first;
+    }
+    if (fabs(term_hi) <= 0.02 && fabs(term_lo) <= 0.02) {
+        snprintf(text, n, "the slope term is missing: the constant alone, too small where the surface turns away "
+                          "from the light — min(constant + slope * tan(theta), max_bias)");
+        return first;
+    }
+    if (term_hi - term_lo <= 0.03 * fabs(term_hi)) {
+        snprintf(text, n, "the slope term is %.3g times slope * tan(theta): a factor inside the clamp? The bias is "
+                          "min(constant + slope * tan(theta), max_bias)", term_lo);
+        return first;
+    }
+    if (ratio_hi - ratio_lo <= 0.03 * fabs(ratio_hi)) {
+        snprintf(text, n, "%.3g times the expected bias wherever the clamp does not act: a factor inside the clamp? The "
+                          "bias is min(constant + slope * tan(theta), max_bias)", ratio_lo);
+        return first;
+    }
+    return -1;
+}
+
+static int _sl_verdict_normal_offset(const sl_verdict_rows *v, char *text, size_t n) {
+    const sl_probe_function *f = v->f;
+    int against = 0, facing = -1, seen = 0, first = -1;
+    double ratio_lo = INFINITY, ratio_hi = -INFINITY;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        const float *p = _sl_param(f, in, "world_position"), *normal = _sl_param(f, in, "normal");
+        double along_s = 0, along_e = 0, length_s = 0, length_e = 0;
+        for (int i = 0; i < 3; i++) {
+            double ds = _sl_got(v, r, i) - p[i], de = _sl_want(v, r, i) - p[i];
+            along_s += ds * normal[i];
+            along_e += de * normal[i];
+            length_s += ds * ds;
+            length_e += de * de;
+        }
+        if (first < 0) first = r;
+        if (length_e < 1e-12) {
+            if (facing < 0) facing = r;
+            continue;
+        }
+        seen++;
+        against += along_s < 0 && along_e > 0;
+        double ratio = sqrt(length_s / length_e);
+        ratio_lo = fmin(ratio_lo, ratio);
+        ratio_hi = fmax(ratio_hi, ratio);
+    }
+    if (seen > 0 && against == seen) {
+        snprintf(text, n, "the point moves against the normal, into the surface: move it along +normal, off the surface");
+        return first;
+    }
+    if (facing >= 0) {
+        snprintf(text, n, "a surface facing the light (N.L = 1) must not move: the offset is scaled by (1 - N.L)");
+        return facing;
+    }
+    if (seen > 1 && ratio_hi - ratio_lo <= 0.03 * ratio_hi) {
+        snprintf(text, n, "the offset is %.3g times texels * texel_world_size * (1 - N.L): a factor missing or extra",
+                 ratio_lo);
+        return first;
+    }
+    return -1;
+}
+
+/* Outputs: polygon offset on, factor, units, culling on, cull face. */
+static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        int mode = (int)v->k->inputs[r][0];
+        const char *name = sl_bias_mode_name((sl_bias_mode)mode);
+        double e[5], s[5];
+        for (int o = 0; o < 5; o++) {
+            e[o] = _sl_want(v, r, o);
+            s[o] = _sl_got(v, r, o);
+        }
+        if (isnan(s[0])) continue;
+        if (s[0] && e[0] && s[1] == e[2] && s[2] == e[1] && e[1] != e[2]) {
+            snprintf(text, n, "factor and units swapped: glPolygonOffset(factor, units) takes the slope factor first");
+            return r;
+        }
+        if (s[3] && !e[3]) {
+            snprintf(text, n, "culling is left on in %s mode: switch GL_CULL_FACE off in every mode but front-culling — "
+                              "a plane with no thickness has only a front face, and culled it casts no shadow", name);
+            return r;
+        }
+        if (s[0] && !e[0]) {
+            snprintf(text, n, "polygon offset is left on in %s mode: switch GL_POLYGON_OFFSET_FILL off in every mode "
+                              "but polygon-offset", name);
+            return r;
+        }
+        if (!s[0] && e[0]) {
+            snprintf(text, n, "no polygon offset in polygon-offset mode: glPolygonOffset acts only while "
+                              "GL_POLYGON_OFFSET_FILL is enabled");
+            return r;
+        }
+        if (!s[3] && e[3]) {
+            snprintf(text, n, "no culling in front-culling mode: glEnable(GL_CULL_FACE) with glCullFace(GL_FRONT)");
+            return r;
+        }
+        if (e[3] && s[4] != e[4]) {
+            snprintf(text, n, "the wrong faces are culled in front-culling mode: glCullFace(GL_FRONT), so the map keeps "
+                              "the far side of each object");
+            return r;
+        }
+    }
+    return -1;
+}
+
+/* ---- lab 1 ---- */
+
+/* Outputs: the map's framebuffer bound, viewport width and height, depth
+ * test, depth function, depth writes, the depth after the call (cleared: 1). */
+static int _sl_verdict_begin_depth_pass(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
+        double size = v->k->inputs[r][0];
+        if (_sl_got(v, r, 0) != 1) {
+            snprintf(text, n, "the map's framebuffer is not bound: glBindFramebuffer(GL_FRAMEBUFFER, map->framebuffer) "
+                              "first, or the depth pass draws into another one");
+        } else if (_sl_got(v, r, 1) != size || _sl_got(v, r, 2) != size) {
+            snprintf(text, n, "the viewport is %gx%g, not the map's %gx%g: glViewport(0, 0, map->size, map->size)",
+                     _sl_got(v, r, 1), _sl_got(v, r, 2), size, size);
+        } else if (!_sl_got(v, r, 3)) {
+            snprintf(text, n, "the depth test is off: with GL_DEPTH_TEST disabled no depth is written at all — "
+                              "glEnable(GL_DEPTH_TEST)");
+        } else if (_sl_got(v, r, 4) != _sl_want(v, r, 4)) {
+            snprintf(text, n, "the depth function is not GL_LESS (nor GL_LEQUAL): each texel must keep the nearest "
+                              "depth — glDepthFunc(GL_LESS)");
+        } else if (!_sl_got(v, r, 5)) {
+            snprintf(text, n, "depth writes are off: glDepthMask(GL_TRUE), before the clear too (glClear respects it)");
+        } else if (_sl_got(v, r, 6) != 1) {
+            snprintf(text, n, "the depths are not cleared to 1.0 at the start of the pass: glClear(GL_DEPTH_BUFFER_BIT) "
+                              "after binding the map's framebuffer, every pass");
+        } else {
+            continue;
+        }
+        return r;
+    }
+    return -1;
+}
+
+int sl_probe_verdict(const sl_verdict_rows *v, char *text, size_t n) {
+    text[0] = '\0';
+    const char *name = v->f->name;
+    if (v->f->glsl && _sl_param(v->f, v->k->inputs[0], "shadow_map") && _sl_param(v->f, v->k->inputs[0], "shadow_coord"))
+        return _sl_verdict_filter(v, text, n);
+    if (strcmp(name, "lab1_begin_depth_pass") == 0) return _sl_verdict_begin_depth_pass(v, text, n);
+    if (strcmp(name, "slope_scaled_bias") == 0) return _sl_verdict_slope(v, text, n);
+    if (strcmp(name, "normal_offset_position") == 0) return _sl_verdict_normal_offset(v, text, n);
+    if (strcmp(name, "lab3_depth_pass_state") == 0) return _sl_verdict_depth_pass_state(v, text, n);
+    return -1;
+}

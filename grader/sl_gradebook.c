@@ -1,0 +1,198 @@
+#define _POSIX_C_SOURCE 200809L
+#include "sl_gradebook.h"
+
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "sl_files.h"
+#include "sl_json.h"
+#include "sl_params.h"
+
+#define _SL_MAX_SUBMISSIONS 20000
+#define _SL_NOTE_MAX 400
+
+typedef struct _sl_row {
+    char name[128];
+    char status[32];
+    bool have_lab[SL_LAB_MAX + 1];
+    double lab[SL_LAB_MAX + 1];
+    bool have_totals;
+    double bonus, total, max;
+    char note[_SL_NOTE_MAX];
+} _sl_row;
+
+static int _sl_by_name(const void *a, const void *b) { return strcmp(((const _sl_row *)a)->name, ((const _sl_row *)b)->name); }
+
+/* A submission's folder name as the batch makes it: letters, digits, '.', '_', '-'. */
+static bool _sl_submission_name(const char *name) {
+    if (!name[0] || name[0] == '.' || strlen(name) >= 128) return false;
+    for (const char *p = name; *p; p++)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') || *p == '.' ||
+              *p == '_' || *p == '-'))
+            return false;
+    return true;
+}
+
+static bool _sl_exists(const char *path) {
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+/* The first line of a small file, or "". */
+static void _sl_first_line(const char *path, char *out, size_t n) {
+    out[0] = '\0';
+    FILE *f = fopen(path, "r");
+    if (!f) return;
+    if (fgets(out, (int)n, f)) out[strcspn(out, "\r\n")] = '\0';
+    fclose(f);
+}
+
+static void _sl_read_row(const char *dir, _sl_row *row) {
+    char path[1400], status_text[32];
+    snprintf(path, sizeof path, "%s/%s/status", dir, row->name);
+    if (!_sl_exists(path)) {
+        snprintf(row->status, sizeof row->status, "not finished");
+        snprintf(row->note, sizeof row->note, "interrupted: the next batch run grades it again");
+        return;
+    }
+    _sl_first_line(path, status_text, sizeof status_text);
+    snprintf(path, sizeof path, "%s/%s/report/results.json", dir, row->name);
+    char err[1200];
+    cJSON *json = _sl_exists(path) ? sl_json_load_file(path, "results", err, sizeof err) : NULL;
+    if (!json) {
+        snprintf(row->status, sizeof row->status, "grading problem");
+        snprintf(row->note, sizeof row->note, "no report (grade exit status %s): see %s/grade.log",
+                 status_text[0] ? status_text : "?", row->name);
+        return;
+    }
+    const cJSON *labs = cJSON_GetObjectItemCaseSensitive(json, "lab_scores"), *lab;
+    cJSON_ArrayForEach(lab, labs) {
+        const cJSON *number = cJSON_GetObjectItemCaseSensitive(lab, "lab");
+        const cJSON *score = cJSON_GetObjectItemCaseSensitive(lab, "score");
+        if (cJSON_IsNumber(number) && cJSON_IsNumber(score) && number->valueint >= 1 && number->valueint <= SL_LAB_MAX) {
+            row->have_lab[number->valueint] = true;
+            row->lab[number->valueint] = score->valuedouble;
+        }
+    }
+    const cJSON *score = cJSON_GetObjectItemCaseSensitive(json, "score");
+    const cJSON *max = cJSON_GetObjectItemCaseSensitive(json, "max_score");
+    const cJSON *bonus = cJSON_GetObjectItemCaseSensitive(json, "bonus");
+    row->have_totals = cJSON_IsNumber(score) && cJSON_IsNumber(max);
+    if (row->have_totals) {
+        row->bonus = cJSON_IsNumber(bonus) ? bonus->valuedouble : 0;
+        row->total = score->valuedouble + row->bonus;
+        row->max = max->valuedouble;
+    }
+    const cJSON *problems = cJSON_GetObjectItemCaseSensitive(json, "problems");
+    const char *build_error = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "build_error"));
+    if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "built"))) {
+        snprintf(row->status, sizeof row->status, "did not build");
+        snprintf(row->note, sizeof row->note, "%s", build_error ? build_error : "");
+    } else if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "complete"))) {
+        snprintf(row->status, sizeof row->status, "incomplete");
+        snprintf(row->note, sizeof row->note, "the grader was stopped before it finished");
+    } else if (cJSON_GetArraySize(problems) > 0) {
+        snprintf(row->status, sizeof row->status, "grading problem");
+        const char *first = cJSON_GetStringValue(cJSON_GetArrayItem(problems, 0));
+        snprintf(row->note, sizeof row->note, "%s", first ? first : "");
+    } else if (strcmp(status_text, "0") != 0 && strcmp(status_text, "1") != 0) {
+        snprintf(row->status, sizeof row->status, "grading problem");
+        snprintf(row->note, sizeof row->note, "grade exit status %s: see %s/grade.log", status_text, row->name);
+    } else {
+        snprintf(row->status, sizeof row->status, "graded");
+    }
+    cJSON_Delete(json);
+}
+
+/* One CSV field (RFC 4180), with no control characters, and defused for
+ * spreadsheets: a cell starting with = + - @ is not taken for a formula. */
+static void _sl_field(FILE *f, const char *text, bool first) {
+    if (!first) fputc(',', f);
+    bool quote = strpbrk(text, ",\"") != NULL || strchr("=+-@", text[0]) != NULL;
+    if (text[0] == '\0') quote = false;
+    if (quote) fputc('"', f);
+    if (text[0] && strchr("=+-@", text[0])) fputc('\'', f);
+    for (const unsigned char *p = (const unsigned char *)text; *p; p++) {
+        if (*p < 0x20 || *p == 0x7f) fputc(' ', f);
+        else if (*p == '"') fputs("\"\"", f);
+        else fputc(*p, f);
+    }
+    if (quote) fputc('"', f);
+}
+
+static void _sl_number(FILE *f, bool have, double v) {
+    char text[32] = "";
+    if (have) snprintf(text, sizeof text, "%g", v);
+    _sl_field(f, text, false);
+}
+
+bool sl_gradebook_write(const char *dir, const char *csv_path, char *err, size_t n) {
+    DIR *d = opendir(dir);
+    if (!d) {
+        snprintf(err, n, "%s: cannot open the batch folder", dir);
+        return false;
+    }
+    _sl_row *rows = calloc(_SL_MAX_SUBMISSIONS, sizeof *rows);
+    if (!rows) {
+        closedir(d);
+        snprintf(err, n, "out of memory");
+        return false;
+    }
+    int count = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) && count < _SL_MAX_SUBMISSIONS) {
+        char path[1400];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (!_sl_submission_name(e->d_name) || stat(path, &st) != 0 || !S_ISDIR(st.st_mode)) continue;
+        snprintf(rows[count].name, sizeof rows[count].name, "%s", e->d_name);
+        count++;
+    }
+    closedir(d);
+    qsort(rows, (size_t)count, sizeof rows[0], _sl_by_name);
+    bool labs[SL_LAB_MAX + 1] = {false}, any = false;
+    for (int i = 0; i < count; i++) {
+        _sl_read_row(dir, &rows[i]);
+        for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+            labs[lab] |= rows[i].have_lab[lab];
+            any |= rows[i].have_lab[lab];
+        }
+    }
+    for (int lab = 1; !any && lab <= SL_LAB_COUNT; lab++) labs[lab] = true;
+
+    sl_atomic_file file;
+    if (!sl_atomic_open(&file, csv_path, err, n)) {
+        free(rows);
+        return false;
+    }
+    FILE *f = file.f;
+    _sl_field(f, "submission", true);
+    _sl_field(f, "status", false);
+    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+        char column[16];
+        snprintf(column, sizeof column, "lab%d", lab);
+        if (labs[lab]) _sl_field(f, column, false);
+    }
+    _sl_field(f, "bonus", false);
+    _sl_field(f, "total", false);
+    _sl_field(f, "max", false);
+    _sl_field(f, "note", false);
+    fputc('\n', f);
+    for (int i = 0; i < count; i++) {
+        const _sl_row *r = &rows[i];
+        _sl_field(f, r->name, true);
+        _sl_field(f, r->status, false);
+        for (int lab = 1; lab <= SL_LAB_MAX; lab++)
+            if (labs[lab]) _sl_number(f, r->have_lab[lab], r->lab[lab]);
+        _sl_number(f, r->have_totals, r->bonus);
+        _sl_number(f, r->have_totals, r->total);
+        _sl_number(f, r->have_totals, r->max);
+        _sl_field(f, r->note, false);
+        fputc('\n', f);
+    }
+    free(rows);
+    return sl_atomic_commit(&file, err, n);
+}

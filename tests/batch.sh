@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# scripts/grade-batch on five sample submissions, one in each accepted layout:
+# the solutions, the stubs, two known mistakes and one that does not compile.
+# The first run is interrupted as soon as a submission is graded; the second
+# grades the rest without grading the finished ones again, and the gradebook
+# is the expected one (tests/batch/expected-gradebook.csv).
+#   batch.sh BUILD SOURCE WORK LAB2_MISTAKE_TREE LAB4_MISTAKE_TREE
+set -euo pipefail
+build=$1 source=$2 work=$3 lab2_tree=$4 lab4_tree=$5
+expected="$source/tests/batch/expected-gradebook.csv"
+rm -rf "$work"
+mkdir -p "$work/submissions"
+subs="$work/submissions" out="$work/grades"
+fail=0
+problem() { echo "batch: $*" >&2; fail=1; }
+
+# ---- the submissions ----
+mkdir "$subs/solutions"                                      # 1. a labs/ folder
+cp -R "$source/solutions" "$subs/solutions/labs"
+cp -R "$source/labs" "$subs/stubs"                           # 2. the lab folders
+mkdir "$subs/lab2_inverted_compare"                          # 3. loose files
+find "$lab2_tree" -type f \( -name 'lab[0-9].c' -o -path '*/shaders/*' \) -exec cp {} "$subs/lab2_inverted_compare/" \;
+echo "my notes" >"$subs/lab2_inverted_compare/notes.txt"
+mkdir -p "$subs/lab4_pcss_inverted/shadowlab-main"           # an unpacked archive: one folder
+cp -R "$lab4_tree" "$subs/lab4_pcss_inverted/shadowlab-main/labs"
+mkdir "$subs/does_not_build"
+find "$source/solutions" -type f -exec cp {} "$subs/does_not_build/" \;
+sed -i '0,/return SL_OK;/s//return SL_OK/' "$subs/does_not_build/lab3.c"
+
+# A case or two per lab: enough for each mistake to show, and a quicker batch.
+# A generous time limit: the test machine may be busy.
+cases=(--case lab1_depth_boxes --case lab2_directional_manual --case lab3_contact --case lab4_pcss --timeout 120)
+batch=("$source/scripts/grade-batch" -j 2 --build "$build" --out "$out" "$subs" -- "${cases[@]}")
+
+# ---- 1. interrupted once a submission is graded ----
+"${batch[@]}" >"$work/first.log" 2>&1 &
+pid=$!
+until compgen -G "$out/*/status" >/dev/null || ! kill -0 "$pid" 2>/dev/null; do sleep 0.2; done
+kill -TERM "$pid" 2>/dev/null || true
+set +e
+wait "$pid"
+status=$?
+set -e
+cat "$work/first.log"
+[ "$status" = 130 ] || problem "the interrupted batch exited with $status, not 130"
+grep -q "interrupted: [0-9] of 5 graded" "$work/first.log" || problem "the interrupted batch did not say so"
+finished=()
+for d in "$out"/*/; do [ -f "$d/status" ] && finished+=("$(basename "$d")"); done
+[ ${#finished[@]} -ge 1 ] && [ ${#finished[@]} -lt 5 ] || problem "${#finished[@]} submissions finished before the interruption"
+declare -A before=()
+for name in "${finished[@]}"; do before[$name]=$(stat -c '%i %Y' "$out/$name/report/results.json" "$out/$name/status"); done
+leftovers=$(pgrep -f -- "$out/" || true)
+[ -z "$leftovers" ] || problem "processes left running after the interruption: $leftovers"
+
+# ---- 2. resumed ----
+set +e
+"${batch[@]}" >"$work/second.log" 2>&1
+status=$?
+set -e
+cat "$work/second.log"
+[ "$status" = 0 ] || problem "the resumed batch exited with $status"
+grep -q "^grade-batch: ${#finished[@]} of 5 already graded" "$work/second.log" || problem "the resumed batch did not keep the finished grades"
+grep -q "^\[5/5 graded" "$work/second.log" || problem "no progress line reached 5/5"
+for name in "${finished[@]}"; do
+  [ "${before[$name]}" = "$(stat -c '%i %Y' "$out/$name/report/results.json" "$out/$name/status")" ] ||
+    problem "$name was graded again"
+  ! grep -q "started $name" "$work/second.log" || problem "$name was started again"
+done
+for name in does_not_build lab2_inverted_compare lab4_pcss_inverted solutions stubs; do
+  [ -f "$out/$name/report/report.html" ] && [ -f "$out/$name/grade.log" ] || problem "$name has no report folder"
+done
+grep -q "layout: loose files" "$out/lab2_inverted_compare/grade.log" || problem "the loose files were not taken"
+grep -q "layout: a labs/ folder" "$out/lab4_pcss_inverted/grade.log" || problem "the unpacked archive was not looked into"
+
+# ---- 3. the gradebook ----
+gradebook="$out/gradebook.csv"
+cat "$gradebook"
+[ "$(head -n 1 "$gradebook")" = "submission,status,lab1,lab2,lab3,lab4,bonus,total,max,note" ] ||
+  problem "the gradebook's columns: $(head -n 1 "$gradebook")"
+# every column before the note is a name, a status or a number: no comma inside
+field() { cut -d, -f"$2" <<<"$1"; }
+solutions_row=$(grep '^solutions,' "$gradebook")
+[ "$(field "$solutions_row" 8)" = "$(field "$solutions_row" 9)" ] || problem "the solutions' total is not the maximum"
+rows=0
+while IFS= read -r line; do
+  [[ "$line" == \#* ]] && continue
+  rows=$((rows + 1))
+  IFS=, read -r name status l1 l2 l3 l4 note_re <<<"$line"
+  row=$(grep "^$name," "$gradebook") || { problem "no row for $name"; continue; }
+  [ "$(field "$row" 2)" = "$status" ] || problem "$name: status '$(field "$row" 2)', expected '$status'"
+  want=("$l1" "$l2" "$l3" "$l4")
+  for lab in 1 2 3 4; do
+    got=$(field "$row" $((lab + 2))) full=$(field "$solutions_row" $((lab + 2))) w=${want[$((lab - 1))]}
+    case "$w" in
+      any) ;;
+      full) [ "$got" = "$full" ] || problem "$name: lab $lab scored $got, expected full marks ($full)" ;;
+      lost) awk -v g="$got" -v f="$full" 'BEGIN { exit !(g < f) }' || problem "$name: lab $lab kept full marks ($got)" ;;
+      *) [ "$got" = "$w" ] || problem "$name: lab $lab scored $got, expected $w" ;;
+    esac
+  done
+  note=$(cut -d, -f10- <<<"$row")
+  grep -Eq -- "$note_re" <<<"$note" || problem "$name: note '$note' does not match $note_re"
+  [ "$(field "$row" 9)" = "$(field "$solutions_row" 9)" ] || problem "$name: another maximum than the solutions'"
+done <"$expected"
+[ "$(($(wc -l <"$gradebook") - 1))" = "$rows" ] || problem "the gradebook has other rows than the expected ones"
+exit $fail

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# make_attack.sh ATTACK_DIR SOURCE_DIR OUT_DIR
+# A labs tree for one attack: the untouched stubs (SOURCE_DIR/labs) with the
+# attack's files laid over them. In those files, @SOURCE_DIR@ becomes the
+# project's absolute path and @RELATIVE_SOURCE_DIR@ its path relative to the
+# file's own folder, as a student who knows the layout would write them.
+set -euo pipefail
+attack=$1 src=$2 out=$3
+rm -rf "$out.tmp"
+mkdir -p "$(dirname "$out")"
+cp -R "$src/labs" "$out.tmp"
+while IFS= read -r file; do
+  rel=${file#"$attack/"}
+  case "$rel" in README.md) continue ;; esac
+  target="$out.tmp/$rel"
+  mkdir -p "$(dirname "$target")"
+  folder=$(dirname "$out/$rel")
+  relative=$(realpath -m --relative-to="$folder" "$src")
+  sed -e "s|@SOURCE_DIR@|$src|g" -e "s|@RELATIVE_SOURCE_DIR@|$relative|g" "$file" >"$target"
+done < <(find "$attack" -type f | sort)
+rm -rf "$out"
+mv "$out.tmp" "$out"
