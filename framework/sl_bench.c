@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "sl_backend.h"
+#include "sl_bench_baseline.h"
 #include "sl_context.h"
 #include "sl_renderer.h"
 #define GLFW_INCLUDE_NONE
@@ -28,6 +29,7 @@ typedef struct _sl_technique {
     bool set_filter;
     sl_filter_mode filter;
     int grid_radius;
+    bool baseline;      /* sl_bench_baseline's plain program, not the labs' (grid_radius: its kernel) */
 } _sl_technique;
 
 #define _SL_ROW(n, w, s, l, d) .name = n, .what = w, .scene = s, .lab = l, .lab_default = d
@@ -53,6 +55,10 @@ static const _sl_technique _sl_techniques[] = {
      .filter = SL_FILTER_POISSON},
     {_SL_ROW("lab4-pcss", "PCSS (blocker search + 16-tap PCF)", "pole_on_floor", 4, false), .set_filter = true,
      .filter = SL_FILTER_PCSS},
+    /* The same scene and settings drawn by a plain tutorial-style program:
+     * what lab 4's 3x3 grid costs against it, measured in the same run. */
+    {_SL_ROW("plain-gl-3x3", "plain GL program, 3x3 PCF (no lab code; sl_bench_baseline.c)", "boxes_on_floor", 4,
+             false), .baseline = true, .grid_radius = 1},
 };
 #undef _SL_ROW
 #define _SL_TECHNIQUE_COUNT ((int)(sizeof _sl_techniques / sizeof _sl_techniques[0]))
@@ -199,11 +205,65 @@ static void _sl_describe_problem(const sl_frame_info *info, int lab, char *out, 
     if (out[0] == ';') memmove(out, out + 2, strlen(out + 2) + 1);
 }
 
+/* The baseline's frames, timed like the labs'. */
+static bool _sl_run_baseline(sl_context *ctx, const _sl_bench_options *o, const _sl_technique *t, const sl_scene *scene,
+                             _sl_result *res, double *frames, double *passes, char *err, size_t err_size) {
+    double start = _sl_now_ms();
+    sl_bench_baseline b;
+    if (!sl_bench_baseline_init(&b, scene, o->map_size, t->grid_radius, err, err_size)) return false;
+    res->programs = 2;
+    res->pass_count = 2;
+    res->pass_names[0] = "depth";
+    res->pass_names[1] = "camera";
+    int total = o->warmup + o->frames;
+    for (int f = 0; f < total; f++) {
+        int width, height;
+        sl_context_framebuffer_size(ctx, &width, &height);
+        if (f > 0) start = _sl_now_ms();
+        double pass_ms[2];
+        sl_bench_baseline_draw(&b, scene, width, height, pass_ms);
+        if (o->window) sl_context_end_frame(ctx);
+        glFinish();
+        double ms = _sl_now_ms() - start;
+        if (f == 0) res->first_ms = ms;
+        /* a frame's pass times arrive with the next frame's call: shift by one */
+        if (f > o->warmup) {
+            passes[0 * o->frames + f - 1 - o->warmup] = pass_ms[0];
+            passes[1 * o->frames + f - 1 - o->warmup] = pass_ms[1];
+        }
+        if (f < o->warmup) continue;
+        frames[f - o->warmup] = ms;
+    }
+    double last[2];
+    glFinish();
+    sl_bench_baseline_draw(&b, scene, 16, 16, last); /* collects the last timed frame's pass times */
+    glFinish();
+    passes[0 * o->frames + o->frames - 1] = last[0];
+    passes[1 * o->frames + o->frames - 1] = last[1];
+    sl_bench_baseline_destroy(&b);
+    return true;
+}
+
 static bool _sl_run_technique(sl_context *ctx, const _sl_bench_options *o, const _sl_technique *t,
                               _sl_result *res, char *err, size_t err_size) {
     *res = (_sl_result){.t = t};
     sl_scene scene;
     if (!sl_scene_load(&scene, t->scene, err, err_size)) return false;
+    if (t->baseline) {
+        double *frames = malloc(sizeof(double) * (size_t)o->frames);
+        double *passes = malloc(sizeof(double) * (size_t)o->frames * 2);
+        bool ok = frames && passes && _sl_run_baseline(ctx, o, t, &scene, res, frames, passes, err, err_size);
+        if (!frames || !passes) snprintf(err, err_size, "out of memory");
+        if (ok) {
+            _sl_median_min(frames, o->frames, &res->frame_median, &res->frame_min);
+            for (int i = 0; i < 2; i++)
+                _sl_median_min(passes + i * o->frames, o->frames, &res->pass_median[i], &res->pass_min[i]);
+            res->ran = true;
+        }
+        free(frames);
+        free(passes);
+        return ok;
+    }
     sl_render_params params;
     _sl_params_for(t, o->map_size, &params);
     sl_renderer renderer;

@@ -316,3 +316,14 @@ void sl_mesh_destroy(sl_mesh *mesh) {
     mesh->vao = mesh->vbo = mesh->ebo = 0;
     mesh->index_count = 0;
 }
+
+sl_mesh_data sl_mesh_for_object(const sl_object *o) {
+    switch (o->shape) {
+    case SL_SHAPE_PLANE: return sl_mesh_plane(o->size[0], o->size[1], o->subdivisions);
+    case SL_SHAPE_BOX: return sl_mesh_box(o->size[0], o->size[1], o->size[2]);
+    case SL_SHAPE_SPHERE: return sl_mesh_sphere(o->size[0], 48, 24);
+    case SL_SHAPE_CYLINDER: return sl_mesh_cylinder(o->size[0], o->size[1], 48);
+    case SL_SHAPE_TORUS: return sl_mesh_torus(o->size[0], o->size[1], 48, 24);
+    }
+    return (sl_mesh_data){0};
+}

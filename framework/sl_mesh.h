@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "sl_gl.h"
+#include "sl_scene.h"
 
 enum { SL_ATTRIB_POSITION = 0, SL_ATTRIB_NORMAL = 1 };
 
@@ -30,6 +31,9 @@ sl_mesh_data sl_mesh_sphere(float radius, int slices, int stacks);
 sl_mesh_data sl_mesh_cylinder(float radius, float height, int slices); /* capped */
 sl_mesh_data sl_mesh_torus(float major_radius, float minor_radius, int rings, int sides); /* ring in the xz plane */
 void sl_mesh_data_free(sl_mesh_data *data);
+/* The mesh of a scene object's shape and size, in its own space (the model
+ * matrix places it); the same tessellation wherever it is drawn. */
+sl_mesh_data sl_mesh_for_object(const sl_object *object);
 
 /* Object-space bounds of the vertices. */
 void sl_mesh_data_bounds(const sl_mesh_data *data, float min[3], float max[3]);

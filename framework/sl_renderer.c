@@ -317,15 +317,7 @@ bool sl_renderer_set_scene(sl_renderer *r, const sl_scene *scene, char *err, siz
     _sl_destroy_meshes(r);
     for (int i = 0; i < scene->object_count; i++) {
         const sl_object *o = &scene->objects[i];
-        sl_mesh_data data;
-        switch (o->shape) {
-        case SL_SHAPE_PLANE: data = sl_mesh_plane(o->size[0], o->size[1], o->subdivisions); break;
-        case SL_SHAPE_BOX: data = sl_mesh_box(o->size[0], o->size[1], o->size[2]); break;
-        case SL_SHAPE_SPHERE: data = sl_mesh_sphere(o->size[0], 48, 24); break;
-        case SL_SHAPE_CYLINDER: data = sl_mesh_cylinder(o->size[0], o->size[1], 48); break;
-        case SL_SHAPE_TORUS: data = sl_mesh_torus(o->size[0], o->size[1], 48, 24); break;
-        default: data = (sl_mesh_data){0}; break;
-        }
+        sl_mesh_data data = sl_mesh_for_object(o);
         bool ok = sl_mesh_upload(&r->meshes[i], &data);
         sl_mesh_data_free(&data);
         if (!ok) {
