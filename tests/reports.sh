@@ -28,7 +28,7 @@ grep -q '"sandbox":' "$work/report/results.json" || problem "results.json does n
 grep -qE '"renderer":[[:space:]]*"[^"]+"' "$work/report/results.json" || problem "results.json does not name the renderer"
 grep -qE "\"score\":[[:space:]]*$score([,.}[:space:]]|$)" "$work/gradescope.json" || problem "gradescope.json's score is not $score"
 grep -q '<failure message=' "$work/junit.xml" || problem "junit.xml has no failure"
-grep -q 'comparison inverted' "$work/junit.xml" || problem "junit.xml lacks the failure's reason"
+grep -qE 'comparison (is )?inverted' "$work/junit.xml" || problem "junit.xml lacks the failure's reason"
 grep -q '"gradable":[[:space:]]*true' "$work/prairielearn.json" || problem "prairielearn.json is not gradable"
 leftovers=$(find "$work" -name '.*' -type f)
 [ -z "$leftovers" ] || problem "temporary files left: $leftovers"
