@@ -64,6 +64,8 @@ static void _sl_usage(FILE *f) {
             "                       else EGL; both render with llvmpipe, as the references were)\n"
             "  --sandbox LEVEL      the strongest sandbox to try: namespaces, uid or basic\n"
             "                       (default namespaces; the report says which one was used)\n"
+            "  --progress           a line on stderr as each case ends ([k/N] case, seconds); on a\n"
+            "                       terminal, one line that updates\n"
             "  --strict             refuse to grade unless the runners get the namespaces sandbox\n"
             "                       (for grading servers: a weaker one lets lab code read the files\n"
             "                       the grader's user can read)\n"
@@ -198,13 +200,28 @@ static void _sl_remove_isolation_trees(const char *root) {
     rmdir(root);
 }
 
+/* --progress: a line per ended case; on a terminal by default, one line
+ * rewritten in place and erased before the report. */
+typedef struct _sl_progress {
+    bool lines, terminal;
+} _sl_progress;
+
+static void _sl_case_ended(const sl_case *c, const sl_case_result *r, int ended, int total, void *context) {
+    const _sl_progress *p = context;
+    if (p->lines)
+        fprintf(stderr, "shadowlab-grade: [%d/%d] %s (%.1f s)\n", ended, total, c->name, r->seconds);
+    else
+        fprintf(stderr, "\r\033[Kshadowlab-grade: [%d/%d] %s", ended, total, c->name);
+    fflush(stderr);
+}
+
 typedef struct _sl_options {
     const char *cases_dir, *refs_dir, *labs_dir, *runners_dir;
     const char *patterns[_SL_MAX_PATTERNS], *excludes[_SL_MAX_PATTERNS];
     int pattern_count, exclude_count;
     const char *report_dir, *gradescope, *prairielearn, *junit;
     int only_lab;
-    bool update, list, isolate, strict, hidden;
+    bool update, list, isolate, strict, hidden, progress;
     const char *seed, *not_built, *gradebook;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
@@ -274,6 +291,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
                 return SL_EXIT_ERROR;
             }
         } else if (strcmp(a, "--strict") == 0) o->strict = true;
+        else if (strcmp(a, "--progress") == 0) o->progress = true;
         else if (strcmp(a, "--update-references") == 0) o->update = true;
         else if (strcmp(a, "--isolate") == 0) o->isolate = true;
         else if (strcmp(a, "--hidden") == 0) o->hidden = true;
@@ -652,9 +670,15 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         sl_manifest_free(manifest);
     }
 
+    _sl_progress progress = {.lines = o.progress, .terminal = !o.progress && isatty(2)};
+    if (progress.lines || progress.terminal) {
+        run.case_ended = _sl_case_ended;
+        run.case_ended_context = &progress;
+    }
     double start = _sl_now();
     static sl_case_result results[_SL_MAX_CASES];
     bool complete = sl_run_cases(cases, count, &run, results, &_sl_stop);
+    if (progress.terminal) fputs("\r\033[K", stderr); /* the report follows on stdout */
     int status = SL_EXIT_FULL;
     if (o.update) {
         status = complete ? _sl_update_references(&o, cases, count, results) : SL_EXIT_ERROR;

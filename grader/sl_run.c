@@ -501,13 +501,14 @@ bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_c
     int jobs = o->jobs > 0 ? o->jobs : 2;
     if (jobs > _SL_MAX_JOBS) jobs = _SL_MAX_JOBS;
     static _sl_job running[_SL_MAX_JOBS];
-    int active = 0, next = 0;
+    int active = 0, next = 0, ended = 0;
     memset(results, 0, sizeof *results * (size_t)count);
     signal(SIGPIPE, SIG_IGN);
     while (next < count || active > 0) {
         if (stop && *stop) break;
         while (active < jobs && next < count) {
             if (_sl_start(&running[active], &cases[next], next, o, &results[next])) active++;
+            else if (o->case_ended) o->case_ended(&cases[next], &results[next], ++ended, count, o->case_ended_context);
             next++;
         }
         if (active == 0) continue;
@@ -542,6 +543,8 @@ bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_c
             if (timed_out) job->stream.r->timed_out = true;
             if (broken || timed_out || (!job->channel_open && !job->output_open)) {
                 _sl_finish(job, o, broken || timed_out || !job->stream.done);
+                if (o->case_ended)
+                    o->case_ended(job->stream.c, job->stream.r, ++ended, count, o->case_ended_context);
                 running[i] = running[--active];
             }
         }

@@ -67,6 +67,10 @@ typedef struct sl_run_options {
     /* by the case's lab; setups[0] serves every lab without a setup of its own */
     sl_runner_setup setups[SL_LAB_MAX + 1];
     const char *const *environment; /* the runner's, NULL-terminated */
+    /* Optional: called as each case ends (not for cases cut short by `stop`),
+     * with how many have ended so far; for progress lines. */
+    void (*case_ended)(const sl_case *c, const sl_case_result *r, int ended, int total, void *context);
+    void *case_ended_context;
 } sl_run_options;
 
 /* Runs every case; returns false if interrupted (the results of cases not

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # interrupted.sh GRADER WORK_DIR [GRADER ARGS...]
-# SIGINT in the middle of a grade: the runners are killed, what was graded is
+# SIGINT in the middle of a grade (GRADER ARGS: runners whose lab code hangs): the runners are killed, what was graded is
 # printed with a Score line marked incomplete, exit 2, no runner is left and no
 # temporary file stays beside the report.
 set -u
@@ -17,23 +17,18 @@ tagged() {
     tr '\0' '\n' 2>/dev/null <"$p/environ" | grep -qx "MESA_SL_TEST_TAG=$tag" && echo "${p#/proc/}"
   done
 }
-"$grader" "$@" -j1 --report "$work/report" >"$work/out.txt" 2>&1 &
+# -j1, no time limit to speak of, and a lab whose code never returns: once a
+# case has ended (--progress says so), the grader is certainly still grading.
+"$grader" "$@" -j1 --timeout 600 --progress --report "$work/report" >"$work/out.txt" 2>"$work/err.txt" &
 pid=$!
-# -j1: once a second runner has started, the first case is done and another
-# runs; that is when the grader is interrupted (no timing involved).
-seen=""
-for _ in $(seq 1 6000); do
-  for r in $(tagged); do
-    [ "$(cat /proc/$r/comm 2>/dev/null)" = shadowlab-runne ] || continue # the runner, not a set-up process
-    [[ " $seen " == *" $r "* ]] || seen="$seen $r"
-  done
-  [ "$(wc -w <<<"$seen")" -ge 2 ] && break
-  sleep 0.02
+until grep -q '^shadowlab-grade: \[1/' "$work/err.txt" 2>/dev/null; do
+  kill -0 $pid 2>/dev/null || break
+  sleep 0.1
 done
 kill -INT $pid
 wait $pid
 status=$?
-cat "$work/out.txt"
+cat "$work/err.txt" "$work/out.txt"
 problem() { echo "interrupted: $*" >&2; fail=1; }
 [ "$status" = 2 ] || problem "exit status $status, expected 2"
 tail -n 1 "$work/out.txt" | grep -qE "^Score: [0-9.]+/[0-9.]+( \(\+[0-9.]+ bonus\))? \(incomplete: the grader was stopped; [0-9]+ of [0-9]+ cases graded\)$" ||
