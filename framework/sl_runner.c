@@ -58,7 +58,14 @@ static void _sl_send_numbers(int kind, const double *v, int count) {
     _sl_send(SL_MSG_NUMBERS, sl_capture_name(kind), v, (size_t)count * sizeof(double));
 }
 
-static void _sl_stage_hook(const char *function) { _sl_send(SL_MSG_STAGE, function ? function : "", NULL, 0); }
+/* Where the runner is, for the grader's message if it hangs or crashes: the
+ * lab function it is in, or else, while a case's frames are drawn, "drawing_labN"
+ * (GL work, the lab shaders' included, is done there: a shader loop that does
+ * not end stops the runner in a draw, a readback or glFinish). */
+static char _sl_draw_stage[32];
+static void _sl_stage_hook(const char *function) {
+    _sl_send(SL_MSG_STAGE, function ? function : _sl_draw_stage, NULL, 0);
+}
 
 /* What the FBO check needs to know about lab 1's framebuffer and texture. */
 static void _sl_capture_fbo(const sl_shadow_map *map, int requested_size) {
@@ -161,6 +168,8 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     char err[8192];
     sl_renderer r;
     sl_renderer_desc rd = {.labs_dir = job->labs_dir, .framework_dir = job->framework_dir};
+    snprintf(_sl_draw_stage, sizeof _sl_draw_stage, "drawing_lab%d", job->params.lab);
+    _sl_stage_hook(NULL);
     sl_scene scene = job->scene;
     _sl_float_target target = {0};
     if (!_sl_float_target_make(&target, job->width, job->height)) {
@@ -226,6 +235,8 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     _sl_send(SL_MSG_RENDER_TIME, NULL, &render_seconds, sizeof render_seconds);
     sl_renderer_destroy(&r);
     _sl_float_target_free(&target);
+    _sl_draw_stage[0] = '\0';
+    _sl_stage_hook(NULL);
     return true;
 }
 

@@ -127,14 +127,23 @@ bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check
 }
 
 static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *out) {
+    int drawing_lab = 0; /* the runner stopped in a draw of the case's frames (sl_runner.c) */
+    if (sscanf(r->crashed_in, "drawing_lab%d", &drawing_lab) != 1 || drawing_lab < 1 || drawing_lab > SL_LAB_MAX)
+        drawing_lab = 0;
     if (r->interrupted) {
         sl_diag_say(out, "not graded: the grader was stopped before this case finished");
     } else if (r->protocol_error[0]) {
         sl_diag_say(out, "the case's results broke the rules of the grader's channel (%s): nothing it sent counts. "
                      "Lab code must not write to file descriptor 3 or replace the process", r->protocol_error);
+    } else if (r->timed_out && drawing_lab > 0) {
+        sl_diag_say(out, "timed out after %.0f s while drawing with the shaders of labs 1-%d: a shader loop that does "
+                         "not end?", r->seconds, drawing_lab);
     } else if (r->timed_out) {
         sl_diag_say(out, "timed out after %.0f s%s%s%s", r->seconds, r->crashed_in[0] ? " in " : "",
                 r->crashed_in, r->crashed_in[0] ? "() (an endless loop?)" : "");
+    } else if (r->signal && drawing_lab > 0) {
+        sl_diag_say(out, "crashed (%s) while drawing with the shaders of labs 1-%d (in the GL driver: state set by lab "
+                         "code, or a shader)", strsignal(r->signal), drawing_lab);
     } else if (r->signal) {
         sl_diag_say(out, "crashed (%s)%s%s%s", strsignal(r->signal), r->crashed_in[0] ? " in " : " outside lab code",
                 r->crashed_in, r->crashed_in[0] ? "()" : "");

@@ -17,6 +17,11 @@ chmod 711 "$work"   # the runners (uid 65534) go through it to their files, as t
 fail=0
 problem() { echo "gradescope_mock: $*" >&2; fail=1; }
 nobody() { setpriv --reuid=65534 --regid=65534 --clear-groups -- "$@"; }
+nobody true 2>/dev/null || {
+  echo "gradescope_mock: uid 65534 cannot run programs on this machine (the root folder is closed to other users,"
+  echo "as in a chroot made with mktemp -d): the uid sandbox this test is about cannot exist here: skipped"
+  exit 77
+}
 
 # ---- the bundle ----
 # (a generous time limit: the test machine may be busy)

@@ -453,6 +453,12 @@ static void test_grade_run_failures(void) {
     snprintf(hung.crashed_in, sizeof hung.crashed_in, "lab2_shadow_matrix");
     sl_grade_check(&c, &c.checks[0], &hung, &ref, NULL, &out);
     CHECK(strstr(out.message, "timed out after 20 s in lab2_shadow_matrix()") != NULL);
+    /* hung in a draw, no lab function running: the GPU is in a lab shader (Mesa 25+ does not cut loops short) */
+    sl_case_result spinning = {.timed_out = true, .seconds = 20};
+    snprintf(spinning.crashed_in, sizeof spinning.crashed_in, "drawing_lab2");
+    sl_grade_check(&c, &c.checks[0], &spinning, &ref, NULL, &out);
+    CHECK(strstr(out.message, "timed out after 20 s while drawing with the shaders of labs 1-2: a shader loop that "
+                              "does not end?") != NULL);
     sl_case_result stub = {.finished = true, .not_implemented_count = 1};
     snprintf(stub.not_implemented[0], 64, "lab2_light_view");
     sl_grade_check(&c, &c.checks[0], &stub, &ref, NULL, &out);
