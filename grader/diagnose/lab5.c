@@ -202,10 +202,11 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
     sl_diag_say(out, "light bleeding: %.1f%% of the reference's umbra is lit above %.2f with the reduction (amount "
                      "%.2f), %.1f%% without it; the reduction must at least halve it",
                 100 * with, 0.1, c->params.vsm.bleeding, 100 * without);
-    if (with > without)
-        sl_diag_cause(out, "more bleeding with the reduction than without: are linstep's arguments swapped? "
-                           "reduce_light_bleeding() returns linstep(amount, 1.0, p_max) (TODO(lab5.8))");
-    else
+    if (with > without) {
+        sl_diag_append(out, ", and the reduction adds light to the umbra instead");
+        sl_diag_cause(out, "are linstep's arguments swapped? reduce_light_bleeding() returns linstep(amount, 1.0, "
+                           "p_max) (TODO(lab5.8))");
+    } else
         sl_diag_cause(out, "reduce_light_bleeding() must cut p_max below `amount` off and stretch the rest: "
                            "linstep(amount, 1.0, p_max) (TODO(lab5.8))");
 }
