@@ -122,6 +122,7 @@ typedef struct sl_vsm_settings {
     int blur_radius;     /* of the separable Gaussian, in texels; 0: no blur */
     float min_variance;  /* the variance never goes below this (precision, acne) */
     float bleeding;      /* light-bleeding reduction: linstep(bleeding, 1, p_max); 0: off */
+    int map_size;        /* the moments targets' size in texels; 0: the shadow map's */
 } sl_vsm_settings;
 
 sl_status lab5_create_moments_target(int size, sl_moments_target *target);

@@ -11,16 +11,19 @@ typedef struct _sl_vsm_program {
     sl_program program;
     bool attempted;
     GLint model, light_view_projection, light_near, light_far; /* the moments pass */
-    GLint moments, direction, radius;                           /* the blur */
+    GLint moments, direction;                                   /* the blur */
     GLint texture, channel;                                     /* the debug view */
 } _sl_vsm_program;
+
+#define _SL_MAX_BLUR_RADIUS 32
 
 struct sl_vsm {
     sl_moments_target target;
     sl_status target_status;
     bool target_attempted;
-    /* the moments pass per light type (its depth is linearised for spot lights), the blur, the debug view */
-    _sl_vsm_program moments[3], blur, debug;
+    /* the moments pass per light type (its depth is linearised for spot lights), the blur per
+     * radius (compiled in: its loop unrolls), the debug view */
+    _sl_vsm_program moments[3], blur[_SL_MAX_BLUR_RADIUS + 1], debug;
 };
 
 #define _SL_LAB5 5
@@ -53,7 +56,6 @@ static _sl_vsm_program *_sl_vsm_build(sl_renderer *r, _sl_vsm_program *s, const 
     s->light_far = sl_program_uniform(p, "u_light_far");
     s->moments = sl_program_uniform(p, "u_moments");
     s->direction = sl_program_uniform(p, "u_direction");
-    s->radius = sl_program_uniform(p, "u_radius");
     s->texture = sl_program_uniform(p, "u_texture");
     s->channel = sl_program_uniform(p, "u_channel");
     return s;
@@ -83,7 +85,7 @@ bool sl_vsm_passes(sl_renderer *r, const sl_scene *scene, const sl_render_params
     sl_vsm *v = _sl_vsm_of(r);
     sl_frame_info *info = &r->info;
     if (!v) return false;
-    int size = p->shadow_map_size > 0 ? p->shadow_map_size : 1024;
+    int size = p->vsm.map_size > 0 ? p->vsm.map_size : p->shadow_map_size > 0 ? p->shadow_map_size : 1024;
     if (v->target_attempted && v->target_status == SL_OK && v->target.size != size) {
         sl_renderer_lab_enter("lab5_destroy_moments_target");
         r->fns[_SL_LAB5]->lab5_destroy_moments_target(&v->target);
@@ -123,8 +125,10 @@ bool sl_vsm_passes(sl_renderer *r, const sl_scene *scene, const sl_render_params
     sl_renderer_draw_objects(r, scene, m->model);
     sl_renderer_timer_mark(r, "moments");
     /* 2. the blur, horizontal then vertical */
-    if (p->vsm.blur_radius > 0) {
-        _sl_vsm_program *b = _sl_vsm_build(r, &v->blur, "debug_quad.vert", "blur.frag", NULL);
+    int radius = p->vsm.blur_radius < _SL_MAX_BLUR_RADIUS ? p->vsm.blur_radius : _SL_MAX_BLUR_RADIUS;
+    if (radius > 0) {
+        snprintf(defines, sizeof defines, "#define SL_BLUR_RADIUS %d\n", radius);
+        _sl_vsm_program *b = _sl_vsm_build(r, &v->blur[radius], "debug_quad.vert", "blur.frag", defines);
         if (!b) {
             _sl_vsm_shader_failed(r);
             return false;
@@ -137,7 +141,6 @@ bool sl_vsm_passes(sl_renderer *r, const sl_scene *scene, const sl_render_params
             glUseProgram(b->program.id);
             glUniform1i(b->moments, 0);
             glUniform2f(b->direction, direction == 0 ? 1.0f : 0.0f, direction == 0 ? 0.0f : 1.0f);
-            glUniform1i(b->radius, p->vsm.blur_radius);
             glBindVertexArray(r->empty_vao);
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
@@ -177,13 +180,17 @@ void sl_vsm_debug_view(sl_renderer *r, int width, int height) {
     glEnable(GL_DEPTH_TEST);
 }
 
+/* Every program of the module, by index: the moments passes, the debug view, the blurs. */
+static _sl_vsm_program *_sl_vsm_program_at(sl_vsm *v, int i) {
+    return i < 3 ? &v->moments[i] : i == 3 ? &v->debug : &v->blur[i - 4];
+}
+
 bool sl_vsm_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
     sl_vsm *v = r->vsm;
     if (!v) return true;
-    _sl_vsm_program *all[] = {&v->moments[0], &v->moments[1], &v->moments[2], &v->blur, &v->debug};
     bool ok = true;
-    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) {
-        _sl_vsm_program *s = all[i];
+    for (int i = 0; i < 4 + _SL_MAX_BLUR_RADIUS + 1; i++) {
+        _sl_vsm_program *s = _sl_vsm_program_at(v, i);
         if (!s->attempted) continue;
         if (!s->program.id) {
             s->attempted = false; /* never compiled: try again on the next frame */
@@ -208,8 +215,7 @@ void sl_vsm_destroy(sl_renderer *r) {
         r->fns[_SL_LAB5]->lab5_destroy_moments_target(&v->target);
         sl_renderer_lab_enter(NULL);
     }
-    _sl_vsm_program *all[] = {&v->moments[0], &v->moments[1], &v->moments[2], &v->blur, &v->debug};
-    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) sl_program_destroy(&all[i]->program);
+    for (int i = 0; i < 4 + _SL_MAX_BLUR_RADIUS + 1; i++) sl_program_destroy(&_sl_vsm_program_at(v, i)->program);
     free(v);
     r->vsm = NULL;
 }

@@ -17,7 +17,9 @@ void sl_render_params_defaults(sl_render_params *p) {
             .normal_offset = 1.5f,
         },
         .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f},
-        .vsm = {.blur_radius = 2, .min_variance = 0.00002f, .bleeding = 0.3f},
+        /* 512: filtered moments need fewer texels than a depth map for the same softness, and
+         * the blur costs per texel (labs/lab5_vsm/README.md, "Performance") */
+        .vsm = {.blur_radius = 2, .min_variance = 0.00002f, .bleeding = 0.3f, .map_size = 512},
         .output = SL_OUTPUT_SHADED,
     };
 }

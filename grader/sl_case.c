@@ -137,6 +137,7 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     c->params.output = SL_OUTPUT_VISIBILITY;
     if (c->lab < 3) c->params.bias.mode = SL_BIAS_CONSTANT;
     if (c->lab < 4) c->params.filter.mode = SL_FILTER_NONE;
+    c->params.vsm.map_size = 0; /* lab 5's moments: the case's shadow_map_size */
     if (!json) return true;
     if (!cJSON_IsObject(json)) {
         snprintf(err, n, "%s: \"params\" must be an object", c->path);

@@ -6,9 +6,12 @@
 // ---- Step 5: a 1D Gaussian along `direction` ------------------------------------
 vec2 blur_moments(sampler2D moments, vec2 uv, vec2 direction, int radius) {
     // TODO(lab5.5): README.md, "Separable blur": the weighted sum of the
-    // 2 * radius + 1 texels uv + i * direction / textureSize(moments, 0),
+    // 2 * radius + 1 texels i whole texels from uv along `direction`,
     // i in [-radius, radius], with Gaussian weights exp(-i^2 / (2 sigma^2)),
     // sigma = max(radius / 2, 0.5), divided by the sum of the weights. Read
-    // level 0 only: textureLod(moments, ..., 0.0).rg.
+    // level 0 only: texelFetch(moments, texel, 0) with the texel clamped to
+    // the map (the edge repeats), or textureLod(moments, uv + i * direction /
+    // textureSize(moments, 0), 0.0). `radius` arrives as a constant: the loop
+    // unrolls, so compute what does not change (sigma, the size) before it.
     return textureLod(moments, uv, 0.0).rg;
 }
