@@ -50,6 +50,7 @@ static void _sl_usage(FILE *f) {
             "  --blur R            lab 5: blur radius of the moments in texels; default 2\n"
             "  --bleeding A        lab 5: light-bleeding reduction amount 0..0.99; default 0.3\n"
             "  --min-variance V    lab 5: minimum variance; default 2e-5\n"
+            "  --moments-size N    lab 5: the moments maps' size; default 512, 0: --map-size's\n"
             "  --pcf               lab 5: lab 4's filter instead of VSM (key P)\n"
             "  --visibility        show the visibility term alone (what the grader compares)\n"
             "  --show-map          show the shadow map in a corner\n"
@@ -203,7 +204,8 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
                            strcmp(a, "--backend") == 0 || strcmp(a, "--blur") == 0 ||
-                           strcmp(a, "--bleeding") == 0 || strcmp(a, "--min-variance") == 0;
+                           strcmp(a, "--bleeding") == 0 || strcmp(a, "--min-variance") == 0 ||
+                           strcmp(a, "--moments-size") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -277,6 +279,12 @@ int sl_viewer_main(int argc, char **argv) {
             }
         } else if (strcmp(a, "--min-variance") == 0) {
             v.params.vsm.min_variance = (float)atof(next);
+        } else if (strcmp(a, "--moments-size") == 0) {
+            v.params.vsm.map_size = atoi(next);
+            if (v.params.vsm.map_size != 0 && (v.params.vsm.map_size < 16 || v.params.vsm.map_size > 8192)) {
+                fprintf(stderr, "shadowlab: --moments-size must be 16..8192, or 0 for the shadow map's size\n");
+                return 2;
+            }
         } else if (strcmp(a, "--pcf") == 0) {
             v.params.vsm_off = true;
         } else if (strcmp(a, "--light-size") == 0) {
