@@ -719,7 +719,7 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     _sl_reset_state(0, width, height);
     int depth_lab = _sl_depth_pass(r, scene, params);
     info->moments_ready = false;
-    if (params->lab >= 5) {
+    if (params->lab >= 5 && !params->vsm_off) { /* off: lab 4's filter alone, as fast as in lab 4 */
         _sl_reset_state(0, width, height);
         sl_vsm_passes(r, scene, params);
     }

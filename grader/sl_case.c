@@ -100,13 +100,16 @@ uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
     case SL_CHECK_MATRICES: return 1u << SL_CAPTURE_MATRICES;
     case SL_CHECK_VISIBILITY:
         /* from lab 2 on, acne is told from shadow on the surfaces that face the light */
-        return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0);
+        /* lab 5: the moments target's format too, the first suspect of a VSM picture that is off */
+        return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0) |
+               (c->lab >= 5 ? 1u << SL_CAPTURE_MOMENTS_TARGET : 0);
     case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
     case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
     case SL_CHECK_MOMENTS: return (1u << SL_CAPTURE_MOMENTS) | (1u << SL_CAPTURE_MOMENTS_TARGET);
     case SL_CHECK_MOMENTS_BLURRED: return (1u << SL_CAPTURE_MOMENTS_BLURRED) | (1u << SL_CAPTURE_MOMENTS_TARGET);
     case SL_CHECK_BLEEDING:
-        return (1u << SL_CAPTURE_VISIBILITY) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED) | (1u << SL_CAPTURE_LIT_MASK);
+        return (1u << SL_CAPTURE_VISIBILITY) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED) | (1u << SL_CAPTURE_LIT_MASK) |
+               (1u << SL_CAPTURE_MOMENTS_TARGET);
     default: return 0;
     }
 }

@@ -393,6 +393,7 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
     }
     if (sl_diag_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
     if (out->message[0]) return;                      /* only the mean is off: said */
+    if (k->kind == SL_CHECK_VISIBILITY && c->lab >= 5 && sl_diagnose_lab5_format(r, out)) return;
     if (k->kind == SL_CHECK_VISIBILITY) {
         const sl_capture *mask = sl_result_capture(r, "lit_mask");
         _sl_check_visibility(c, k, s, t, mask ? &mask->image : NULL, &st, out);

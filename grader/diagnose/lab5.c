@@ -58,6 +58,8 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
     return false;
 }
 
+bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out) { return !_sl_format_ok(r, out); }
+
 void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                          sl_check_result *out) {
     bool blurred = k->kind == SL_CHECK_MOMENTS_BLURRED;
@@ -199,6 +201,7 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
         return;
     }
     if (sl_diag_explain_missing(c, r, out)) return;
+    if (sl_diagnose_lab5_format(r, out)) return;
     sl_diag_say(out, "light bleeding: %.1f%% of the reference's umbra is lit above %.2f with the reduction (amount "
                      "%.2f), %.1f%% without it; the reduction must at least halve it",
                 100 * with, 0.1, c->params.vsm.bleeding, 100 * without);
