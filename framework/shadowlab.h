@@ -106,4 +106,34 @@ typedef struct sl_filter_settings {
  * GL_TEXTURE_2D on texture unit 0 when this is called). */
 sl_status lab4_configure_shadow_texture(GLuint depth_texture, sl_filter_mode mode);
 
+/* ---- Lab 5: variance shadow maps (labs/lab5_vsm/lab5.c) ----------------- */
+/* Two moments targets of the same size: the moments pass draws into [0] (with
+ * a depth buffer for its own depth test), the horizontal blur reads [0] and
+ * writes [1], the vertical blur reads [1] and writes [0]: the camera pass
+ * reads moments[0]. */
+typedef struct sl_moments_target {
+    GLuint framebuffer[2];
+    GLuint moments[2]; /* GL_RG32F textures: (depth, depth^2) per texel */
+    GLuint depth;      /* a depth renderbuffer, attached to framebuffer[0] */
+    int size;          /* width = height, in texels */
+} sl_moments_target;
+
+typedef struct sl_vsm_settings {
+    int blur_radius;     /* of the separable Gaussian, in texels; 0: no blur */
+    float min_variance;  /* the variance never goes below this (precision, acne) */
+    float bleeding;      /* light-bleeding reduction: linstep(bleeding, 1, p_max); 0: off */
+    int map_size;        /* the moments targets' size in texels; 0: the shadow map's */
+} sl_vsm_settings;
+
+sl_status lab5_create_moments_target(int size, sl_moments_target *target);
+/* The moments pass: target->framebuffer[0] bound, cleared, depth test on. */
+sl_status lab5_begin_moments_pass(const sl_moments_target *target);
+/* One blur pass: direction 0 reads moments[0] and writes framebuffer[1]
+ * (horizontal), direction 1 reads moments[1] and writes framebuffer[0]
+ * (vertical). Binds the texture to read on texture unit 0. */
+sl_status lab5_begin_blur_pass(const sl_moments_target *target, int direction);
+/* After the blur: mipmaps of moments[0] and trilinear filtering. */
+sl_status lab5_filter_moments(const sl_moments_target *target);
+void lab5_destroy_moments_target(sl_moments_target *target);
+
 #endif

@@ -30,6 +30,8 @@ typedef struct _sl_technique {
     sl_filter_mode filter;
     int grid_radius;
     bool baseline;      /* sl_bench_baseline's plain program, not the labs' (grid_radius: its kernel) */
+    bool set_vsm;       /* lab 5 */
+    int blur_radius;
 } _sl_technique;
 
 #define _SL_ROW(n, w, s, l, d) .name = n, .what = w, .scene = s, .lab = l, .lab_default = d
@@ -59,6 +61,41 @@ static const _sl_technique _sl_techniques[] = {
      * what lab 4's 3x3 grid costs against it, measured in the same run. */
     {_SL_ROW("plain-gl-3x3", "plain GL program, 3x3 PCF (no lab code; sl_bench_baseline.c)", "boxes_on_floor", 4,
              false), .baseline = true, .grid_radius = 1},
+    /* lab 5: VSM, and against lab 4's grid at the same kernel footprint, (2r+1) texels: a separable
+     * blur of radius r costs 2 (2r+1) taps per texel of the map, the grid (2r+1)^2 per pixel */
+    {_SL_ROW("lab5", "VSM: 512 moments, 5-tap blur, mipmaps, Chebyshev", "boxes_on_floor", 5, true)},
+    {_SL_ROW("lab5-vsm-r1", "VSM, blur radius 1 (3+3 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
+     .blur_radius = 1},
+    {_SL_ROW("lab5-pcf-r1", "PCF grid 3x3, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+     .filter = SL_FILTER_GRID, .grid_radius = 1},
+    {_SL_ROW("lab5-vsm-r2", "VSM, blur radius 2 (5+5 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
+     .blur_radius = 2},
+    {_SL_ROW("lab5-pcf-r2", "PCF grid 5x5, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+     .filter = SL_FILTER_GRID, .grid_radius = 2},
+    {_SL_ROW("lab5-vsm-r3", "VSM, blur radius 3 (7+7 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
+     .blur_radius = 3},
+    {_SL_ROW("lab5-pcf-r3", "PCF grid 7x7, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+     .filter = SL_FILTER_GRID, .grid_radius = 3},
+    {_SL_ROW("lab5-vsm-r4", "VSM, blur radius 4 (9+9 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
+     .blur_radius = 4},
+    {_SL_ROW("lab5-pcf-r4", "PCF grid 9x9, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+     .filter = SL_FILTER_GRID, .grid_radius = 4},
+    {_SL_ROW("lab5-vsm-r5", "VSM, blur radius 5 (11+11 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
+     .blur_radius = 5},
+    {_SL_ROW("lab5-pcf-r5", "PCF grid 11x11, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+     .filter = SL_FILTER_GRID, .grid_radius = 5},
+    {_SL_ROW("lab5-vsm-r6", "VSM, blur radius 6 (13+13 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
+     .blur_radius = 6},
+    {_SL_ROW("lab5-pcf-r6", "PCF grid 13x13, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+     .filter = SL_FILTER_GRID, .grid_radius = 6},
+    {_SL_ROW("lab5-vsm-r7", "VSM, blur radius 7 (15+15 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
+     .blur_radius = 7},
+    {_SL_ROW("lab5-pcf-r7", "PCF grid 15x15, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+     .filter = SL_FILTER_GRID, .grid_radius = 7},
+    {_SL_ROW("lab5-vsm-r8", "VSM, blur radius 8 (17+17 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
+     .blur_radius = 8},
+    {_SL_ROW("lab5-pcf-r8", "PCF grid 17x17, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+     .filter = SL_FILTER_GRID, .grid_radius = 8},
 };
 #undef _SL_ROW
 #define _SL_TECHNIQUE_COUNT ((int)(sizeof _sl_techniques / sizeof _sl_techniques[0]))
@@ -185,6 +222,10 @@ static void _sl_params_for(const _sl_technique *t, int map_size, sl_render_param
     if (t->set_filter) {
         p->filter.mode = t->filter;
         if (t->filter == SL_FILTER_GRID) p->filter.grid_radius = t->grid_radius;
+    }
+    if (t->set_vsm) {
+        p->vsm.blur_radius = t->blur_radius;
+        p->vsm.map_size = 0; /* the shadow map's size, as lab 4's grid: the same texels, the same footprint */
     }
 }
 

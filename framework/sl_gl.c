@@ -45,6 +45,15 @@ const char *sl_gl_enum_name(GLenum value) {
     case GL_DEPTH32F_STENCIL8: return "GL_DEPTH32F_STENCIL8";
     case GL_RGBA8: return "GL_RGBA8";
     case GL_RGBA: return "GL_RGBA";
+    /* lab 5's moments */
+    case GL_RG: return "GL_RG";
+    case GL_RG8: return "GL_RG8";
+    case GL_RG16: return "GL_RG16";
+    case GL_RG16F: return "GL_RG16F";
+    case GL_RG32F: return "GL_RG32F";
+    case GL_RGBA16F: return "GL_RGBA16F";
+    case GL_RGBA32F: return "GL_RGBA32F";
+    case GL_R32F: return "GL_R32F";
     case GL_NEAREST: return "GL_NEAREST";
     case GL_LINEAR: return "GL_LINEAR";
     case GL_NEAREST_MIPMAP_NEAREST: return "GL_NEAREST_MIPMAP_NEAREST";

@@ -5,4 +5,7 @@ const sl_lab_functions sl_build_lab_functions = {
     lab2_light_view,        lab2_light_projection, lab2_shadow_matrix,
     lab3_depth_pass_state,  lab3_second_depth_state,
     lab4_configure_shadow_texture,
+    /* lab 5 */
+    lab5_create_moments_target, lab5_begin_moments_pass, lab5_begin_blur_pass, lab5_filter_moments,
+    lab5_destroy_moments_target,
 };

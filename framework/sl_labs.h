@@ -17,6 +17,12 @@ typedef struct sl_lab_functions {
     sl_status (*lab3_depth_pass_state)(const sl_bias_settings *bias);
     sl_status (*lab3_second_depth_state)(void);
     sl_status (*lab4_configure_shadow_texture)(GLuint depth_texture, sl_filter_mode mode);
+    /* lab 5 */
+    sl_status (*lab5_create_moments_target)(int size, sl_moments_target *target);
+    sl_status (*lab5_begin_moments_pass)(const sl_moments_target *target);
+    sl_status (*lab5_begin_blur_pass)(const sl_moments_target *target, int direction);
+    sl_status (*lab5_filter_moments)(const sl_moments_target *target);
+    void (*lab5_destroy_moments_target)(sl_moments_target *target);
 } sl_lab_functions;
 
 /* The labs this binary was built from (labs/, solutions/, or for the

@@ -17,6 +17,9 @@ void sl_render_params_defaults(sl_render_params *p) {
             .normal_offset = 1.5f,
         },
         .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f},
+        /* 512: filtered moments need fewer texels than a depth map for the same softness, and
+         * the blur costs per texel (labs/lab5_vsm/README.md, "Performance") */
+        .vsm = {.blur_radius = 2, .min_variance = 0.00002f, .bleeding = 0.3f, .map_size = 512},
         .output = SL_OUTPUT_SHADED,
     };
 }
@@ -59,7 +62,7 @@ bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
 
 const char *sl_lab_folder(int lab) {
     static const char *const folders[SL_LAB_COUNT + 1] = {NULL, "lab1_depth_fbo", "lab2_projective", "lab3_bias",
-                                                          "lab4_pcf"};
+                                                          "lab4_pcf", "lab5_vsm"};
     return lab >= 1 && lab <= SL_LAB_COUNT ? folders[lab] : NULL;
 }
 

@@ -9,7 +9,7 @@
 
 #include "shadowlab.h"
 
-#define SL_LAB_COUNT 4  /* labs with code in this project */
+#define SL_LAB_COUNT 5  /* labs with code in this project */
 #define SL_LAB_MAX 7    /* labs the course plans: case files may name 1..7 */
 
 typedef enum sl_compare_mode { SL_COMPARE_MANUAL = 0, SL_COMPARE_HARDWARE = 1 } sl_compare_mode;
@@ -22,6 +22,8 @@ typedef struct sl_render_params {
     sl_compare_mode compare; /* labs 2-3: sampler2D + manual compare, or sampler2DShadow */
     sl_bias_settings bias;   /* lab 2 uses bias.constant; lab 3 all of it */
     sl_filter_settings filter; /* lab 4 */
+    sl_vsm_settings vsm;     /* lab 5 */
+    bool vsm_off;            /* lab 5 in use, but lab 4's filter instead (the viewer's VSM vs PCF key) */
     sl_output output;
     bool show_shadow_map;    /* debug view of the depth map in a corner */
 } sl_render_params;

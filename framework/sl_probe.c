@@ -89,6 +89,16 @@ static const sl_probe_function _sl_functions[] = {
      .params = {_SL_MAP("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias"), _SL_F("light_size_uv"), _SL_F("near"),
                 _SL_F("far")},
      .param_count = 6, .stub_param = -1, .stub_value = 1.0},
+    /* lab 5 */
+    {.name = "compute_moments", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/moments.glsl", .todo = "lab5.3",
+     .outputs = "first moment,second moment", .output_count = 2, .params = {_SL_F("depth")}, .param_count = 1,
+     .stub_param = -1, .stub_value = 1.0},
+    {.name = "chebyshev_upper_bound", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/vsm.glsl", .todo = "lab5.7",
+     .outputs = "p_max", .output_count = 1, .params = {_SL_V2("moments"), _SL_F("t"), _SL_F("min_variance")},
+     .param_count = 3, .stub_param = -1, .stub_value = 1.0},
+    {.name = "reduce_light_bleeding", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/vsm.glsl", .todo = "lab5.8",
+     .outputs = "visibility", .output_count = 1, .params = {_SL_F("p_max"), _SL_F("amount")}, .param_count = 2,
+     .stub_param = 0},
 };
 
 #define _SL_FUNCTION_COUNT ((int)(sizeof _sl_functions / sizeof _sl_functions[0]))

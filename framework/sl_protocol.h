@@ -37,6 +37,11 @@ typedef enum sl_capture_kind {
     SL_CAPTURE_VISIBILITY, /* image, 1 channel: the visibility term, camera size */
     SL_CAPTURE_LIT_MASK,   /* image, 1 channel: surfaces facing the light, camera size */
     SL_CAPTURE_IMAGE,      /* image, 3 channels: the shaded picture, camera size */
+    /* lab 5 */
+    SL_CAPTURE_MOMENTS,         /* image, 2 channels: the moments before the blur (a frame with radius 0), map size */
+    SL_CAPTURE_MOMENTS_BLURRED, /* image, 2 channels: the moments the camera pass reads, map size */
+    SL_CAPTURE_MOMENTS_TARGET,  /* numbers: lab 5's target, as glGet* reports it */
+    SL_CAPTURE_VISIBILITY_UNREDUCED, /* image, 1 channel: the visibility without light-bleeding reduction */
     SL_CAPTURE_KIND_COUNT,
     /* numbers: the outputs of probe table k, "probe_k"; rows x outputs */
     SL_CAPTURE_PROBE = SL_CAPTURE_KIND_COUNT,
@@ -50,6 +55,7 @@ int sl_capture_parse(const char *name);
 
 #define SL_FBO_NUMBERS 10     /* see sl_runner.c: status, attachment type, ..., requested size */
 #define SL_MATRICES_NUMBERS 48
+#define SL_MOMENTS_TARGET_NUMBERS 8 /* see sl_vsm_describe_target */
 
 typedef struct sl_job {
     uint32_t magic, version, size; /* SL_JOB_MAGIC, SL_PROTOCOL_VERSION, sizeof(sl_job) */

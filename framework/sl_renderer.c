@@ -7,6 +7,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "sl_lab5_vsm.h"
+
 #ifndef SL_FRAMEWORK_DIR
 #define SL_FRAMEWORK_DIR "framework"
 #endif
@@ -38,6 +40,14 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
     return false;
 }
 
+void sl_renderer_lab_enter(const char *function) {
+    if (sl_lab_call_hook) sl_lab_call_hook(function);
+}
+
+bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status) {
+    return _sl_lab_result(r, function, status);
+}
+
 /* Calls lab N's function fn through the renderer's table, recording what it returned. */
 #define _SL_CALL_LAB(r, N, fn, ...) (_sl_enter(#fn), _sl_lab_result((r), #fn, (r)->fns[N]->fn(__VA_ARGS__)))
 
@@ -54,7 +64,8 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
     X(model) X(normal_matrix) X(albedo) X(view) X(projection) X(shadow_matrix) X(light_view_projection)   \
     X(light_position) X(light_direction) X(light_radiance) X(spot_cos) X(shadows) X(output) X(depth_bias) \
     X(second_map) X(slope_bias) X(max_bias) X(normal_offset) X(texel_size) X(poisson_radius)              \
-    X(light_size_uv) X(light_near) X(light_far) X(shadow_map) X(texture) X(perspective) X(near) X(far)
+    X(light_size_uv) X(light_near) X(light_far) X(shadow_map) X(texture) X(perspective) X(near) X(far)    \
+    X(moments) X(min_variance) X(bleeding)
 
 typedef struct _sl_uniforms {
 #define _SL_UNIFORM_FIELD(name) GLint name;
@@ -174,17 +185,18 @@ static _sl_slot *_sl_depth_program(sl_renderer *r) {
 
 /* The camera-pass shaders of each lab: a lab's fragment shader includes its GLSL and the labs' before it. */
 static const char *const _sl_scene_vertex[SL_RENDERER_MAX_LAB + 1] = {
-    [0] = "plain.vert", [2] = "scene.vert", [3] = "scene.vert", [4] = "scene.vert",
+    [0] = "plain.vert", [2] = "scene.vert", [3] = "scene.vert", [4] = "scene.vert", [5] = "scene.vert",
 };
 static const char *const _sl_scene_fragment[SL_RENDERER_MAX_LAB + 1] = {
     [0] = "plain.frag", [2] = "scene.frag", [3] = "scene_bias.frag", [4] = "scene_filter.frag",
+    [5] = "scene_vsm.frag",
 };
 
 static void _sl_variant_defines(const _sl_variant_key *k, char *out, size_t n) {
     int len = snprintf(out, n, "#define SL_LAB %d\n#define SL_LIGHT_TYPE %d\n", k->lab, k->light_type);
     if (k->hardware) len += snprintf(out + len, n - (size_t)len, "#define SL_HARDWARE_COMPARE 1\n");
     if (k->lab >= 3) len += snprintf(out + len, n - (size_t)len, "#define SL_BIAS_MODE %d\n", k->bias_mode);
-    if (k->lab >= 4)
+    if (k->lab == 4)
         snprintf(out + len, n - (size_t)len, "#define SL_FILTER_MODE %d\n#define SL_GRID_RADIUS %d\n", k->filter_mode,
                  k->grid_radius);
 }
@@ -281,6 +293,12 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
         if (ok) snprintf(err, err_size, "%s", r->shader_errors[now[i].lab]);
         ok = false;
     }
+    /* lab 5's passes keep their programs in their own module */
+    char vsm_err[1024] = "";
+    if (!sl_vsm_reload_changed(r, reloaded, vsm_err, sizeof vsm_err)) {
+        if (ok) snprintf(err, err_size, "%s", vsm_err);
+        ok = false;
+    }
     return ok;
 }
 
@@ -301,6 +319,7 @@ void sl_renderer_destroy(sl_renderer *r) {
         r->fns[1]->lab1_destroy_shadow_map(&r->second_map);
         if (sl_lab_call_hook) sl_lab_call_hook(NULL);
     }
+    sl_vsm_destroy(r);
     if (r->programs) {
         struct _sl_programs *ps = r->programs;
         sl_program_destroy(&ps->depth.program);
@@ -403,6 +422,15 @@ static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_r
     sl_light_default_matrices(&light, &bounds, info->light_view, info->light_projection);
     glm_mat4_identity(info->shadow_matrix);
 }
+
+void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model_location) {
+    for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
+        glUniformMatrix4fv(model_location, 1, GL_FALSE, (const float *)scene->objects[i].model);
+        sl_mesh_draw(&r->meshes[i]);
+    }
+}
+
+void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass) { _sl_timer_mark(r, finished_pass); }
 
 static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const _sl_uniforms *u, bool colours) {
     for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
@@ -512,10 +540,11 @@ static _sl_variant_key _sl_variant_for(const sl_renderer *r, const sl_scene *sce
     bool midpoint = lab == 3 && p->bias.mode == SL_BIAS_MIDPOINT && r->info.second_map_ready;
     _sl_variant_key key = {.lab = lab, .light_type = (int)scene->light.type};
     if (lab < 2) return key; /* no shadows: plain.frag */
-    key.hardware = lab >= 4 ? p->filter.mode == SL_FILTER_HARDWARE : p->compare == SL_COMPARE_HARDWARE && !midpoint;
+    key.hardware = lab >= 4 ? lab == 4 && p->filter.mode == SL_FILTER_HARDWARE
+                            : p->compare == SL_COMPARE_HARDWARE && !midpoint;
     /* midpoint without its second map (not implemented): lab 2's constant bias instead */
     if (lab >= 3) key.bias_mode = p->bias.mode == SL_BIAS_MIDPOINT && !midpoint ? SL_BIAS_CONSTANT : p->bias.mode;
-    if (lab >= 4) {
+    if (lab == 4) {
         key.filter_mode = p->filter.mode;
         key.grid_radius = p->filter.mode == SL_FILTER_GRID ? p->filter.grid_radius : 0;
     }
@@ -551,8 +580,10 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     if (info->shadow_map_ready && info->lab2_ready) {
         lab = p->lab < SL_RENDERER_MAX_LAB ? p->lab : SL_RENDERER_MAX_LAB;
         if (depth_lab < 3 && lab > 2) lab = 2;
+        /* lab 5: its moments, or lab 4's filters when they are not there (or VSM is switched off) */
+        if (lab >= 5 && (!info->moments_ready || p->vsm_off)) lab = 4;
     }
-    if (lab >= 4) {
+    if (lab == 4) {
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
         if (!_SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, r->shadow_map.depth_texture, p->filter.mode)) lab = 3;
@@ -575,7 +606,7 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
             info->shader_error_lab = 0;
         }
     }
-    bool hardware = lab >= 4 ? p->filter.mode == SL_FILTER_HARDWARE : p->compare == SL_COMPARE_HARDWARE;
+    bool hardware = lab >= 4 ? lab == 4 && p->filter.mode == SL_FILTER_HARDWARE : p->compare == SL_COMPARE_HARDWARE;
     bool midpoint = lab == 3 && p->bias.mode == SL_BIAS_MIDPOINT && info->second_map_ready;
     if (midpoint) hardware = false; /* the midpoint is compared by hand, on two sampler2Ds */
     info->lab_in_use = lab >= 2 ? lab : (info->shadow_map_ready ? 1 : 0);
@@ -622,6 +653,12 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     glUniform1f(u->light_near, l->near);
     glUniform1f(u->light_far, l->far);
     glUniform1i(u->shadow_map, 0);
+    /* lab 5: the blurred, mipmapped moments on unit 2 */
+    glUniform1i(u->moments, 2);
+    glUniform1f(u->min_variance, p->vsm.min_variance);
+    glUniform1f(u->bleeding, p->vsm.bleeding);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, lab == 5 ? sl_vsm_moments_texture(r) : 0);
     glActiveTexture(GL_TEXTURE0);
     if (lab >= 2) {
         glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
@@ -673,9 +710,15 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     _sl_light_matrices(r, scene, params);
     _sl_reset_state(0, width, height);
     int depth_lab = _sl_depth_pass(r, scene, params);
+    info->moments_ready = false;
+    if (params->lab >= 5 && !params->vsm_off) { /* off: lab 4's filter alone, as fast as in lab 4 */
+        _sl_reset_state(0, width, height);
+        sl_vsm_passes(r, scene, params);
+    }
     _sl_reset_state(target, width, height);
     _sl_scene_pass(r, scene, params, depth_lab, width, height);
-    if (params->show_shadow_map) _sl_debug_view(r, &scene->light, width, height);
+    if (params->show_shadow_map && info->lab_in_use == 5) sl_vsm_debug_view(r, width, height);
+    else if (params->show_shadow_map) _sl_debug_view(r, &scene->light, width, height);
     glBindVertexArray(0);
     glUseProgram(0);
 }

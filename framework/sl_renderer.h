@@ -43,6 +43,8 @@ typedef struct sl_frame_info {
     int lab_in_use;              /* the highest lab whose code this frame used (0: no shadows) */
     mat4 light_view, light_projection, shadow_matrix; /* the matrices used */
     sl_shadow_map shadow_map;    /* lab 1's map, for inspection */
+    bool moments_ready;          /* lab 5: moments drawn, blurred and filtered this frame */
+    sl_moments_target moments_target; /* lab 5's targets, for inspection */
 } sl_frame_info;
 
 /* Per-pass times of one frame, from GL timer queries (glQueryCounter, GL 3.3).
@@ -99,6 +101,7 @@ typedef struct sl_renderer {
     GLuint timer_queries[SL_MAX_PASSES + 1];
     const char *timer_names[SL_MAX_PASSES];
     int timer_count;
+    struct sl_vsm *vsm; /* lab 5's targets and programs (sl_lab5_vsm.c), made by its first frame */
 } sl_renderer;
 
 /* Called before each call into lab code with the function's name, so a crash
@@ -137,6 +140,15 @@ void sl_renderer_set_timing(sl_renderer *r, bool enabled);
 /* The pass times of the last frame drawn with timing on; waits until the GL
  * has finished that frame. False if no such frame was drawn. */
 bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
+
+/* For the passes of later labs in modules of their own (sl_lab5_vsm.c): a
+ * lab call's name before it (NULL after), and its result recorded as the
+ * renderer's own calls are (true: the step may go on); every object drawn
+ * with the program in use (only its model matrix set); a pass's timestamp. */
+void sl_renderer_lab_enter(const char *function);
+bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status);
+void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model_location);
+void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass);
 
 /* Read-backs, as top-down images. */
 bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out);

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "sl_context.h"
+#include "sl_lab5_vsm.h"
 #include "sl_probe_pass.h"
 #include "sl_protocol.h"
 #include "sl_renderer.h"
@@ -163,6 +164,45 @@ static void _sl_missing_add(_sl_missing *m, const char *name) {
     if (m->count < 32) m->names[m->count++] = name;
 }
 
+/* Lab 5's captures: the moments before the blur (a frame with radius 0),
+ * then, from a frame as the case asks, the moments the camera pass read and
+ * the target's format, and the visibility without light-bleeding reduction
+ * (a frame with amount 0). Every frame after the first asks every lab 5
+ * stub, so the stubs the last frame recorded are all of them. */
+static void _sl_capture_lab5(sl_renderer *r, const sl_job *job, sl_scene *scene, sl_render_params *p, GLuint fb) {
+    char err[512];
+    const sl_frame_info *info = sl_renderer_info(r);
+    uint32_t lab5 = (1u << SL_CAPTURE_MOMENTS) | (1u << SL_CAPTURE_MOMENTS_BLURRED) |
+                    (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED);
+    if (!(job->captures & lab5)) return;
+    sl_render_params q = *p;
+    q.output = SL_OUTPUT_VISIBILITY;
+    for (int pass = 0; pass < 2; pass++) {
+        int kind = pass == 0 ? SL_CAPTURE_MOMENTS : SL_CAPTURE_MOMENTS_BLURRED;
+        q.vsm.blur_radius = pass == 0 ? 0 : p->vsm.blur_radius; /* 0: the moments pass alone */
+        if (pass == 0 && !_sl_wants(job, kind)) continue;
+        sl_renderer_draw(r, scene, &q, fb, job->width, job->height);
+        if (!_sl_wants(job, kind) || !info->moments_ready) continue;
+        sl_image img;
+        if (sl_vsm_capture_moments(info->moments_target.moments[0], &img, err, sizeof err)) {
+            _sl_send_image(kind, &img);
+            sl_image_free(&img);
+        } else {
+            _sl_send_text(SL_MSG_CAPTURE_ERROR, sl_capture_name(kind), err);
+        }
+    }
+    if (_sl_wants(job, SL_CAPTURE_MOMENTS_TARGET) && info->moments_target.framebuffer[0] + info->moments_target.moments[0]) {
+        double v[SL_MOMENTS_TARGET_NUMBERS];
+        sl_vsm_describe_target(&info->moments_target, v);
+        _sl_send_numbers(SL_CAPTURE_MOMENTS_TARGET, v, SL_MOMENTS_TARGET_NUMBERS);
+    }
+    if (_sl_wants(job, SL_CAPTURE_VISIBILITY_UNREDUCED)) {
+        q.vsm.bleeding = 0;
+        _sl_capture_output(r, job, scene, &q, fb, SL_OUTPUT_VISIBILITY, SL_CAPTURE_VISIBILITY_UNREDUCED, 1, true);
+    }
+    p->output = SL_OUTPUT_VISIBILITY;
+}
+
 /* The case's frames and their captures; false when the case must stop (said why). */
 static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     char err[8192];
@@ -201,6 +241,7 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
         _sl_capture_output(&r, job, &scene, &p, fb, SL_OUTPUT_LIT_MASK, SL_CAPTURE_LIT_MASK, 1, true);
     if (_sl_wants(job, SL_CAPTURE_IMAGE))
         _sl_capture_output(&r, job, &scene, &p, fb, SL_OUTPUT_SHADED, SL_CAPTURE_IMAGE, 3, true);
+    _sl_capture_lab5(&r, job, &scene, &p, fb);
     for (int i = 0; i < info->not_implemented_count; i++) _sl_missing_add(missing, info->not_implemented[i]);
     if (info->failed) _sl_send(SL_MSG_FAILED, info->failed, NULL, 0);
     if (_sl_wants(job, SL_CAPTURE_FBO) && info->shadow_map.framebuffer + info->shadow_map.depth_texture > 0)

@@ -33,7 +33,7 @@ static const char *_sl_backend_choices(void) {
 static void _sl_usage(FILE *f) {
     fprintf(f,
             "usage: shadowlab [options]\n"
-            "  --lab N             labs in use: 1 depth map, 2 shadows, 3 bias, 4 filtering; default 4\n"
+            "  --lab N             labs in use: 1 depth map, 2 shadows, 3 bias, 4 filtering, 5 VSM; default 5\n"
             "  --scene NAME|FILE   a built-in scene (boxes_on_floor, spot_on_floor, curved_grazing,\n"
             "                      pole_on_floor, thin_caster, long_ground, closed_room) or a scene\n"
             "                      .json; default boxes_on_floor\n"
@@ -47,6 +47,11 @@ static void _sl_usage(FILE *f) {
             "  --kernel R          lab 4: grid radius in texels (1 = 3x3); default 1\n"
             "  --poisson-radius R  lab 4: Poisson disk radius in texels; default 2.5\n"
             "  --light-size S      lab 4: the light's size in world units (PCSS)\n"
+            "  --blur R            lab 5: blur radius of the moments in texels; default 2\n"
+            "  --bleeding A        lab 5: light-bleeding reduction amount 0..0.99; default 0.3\n"
+            "  --min-variance V    lab 5: minimum variance; default 2e-5\n"
+            "  --moments-size N    lab 5: the moments maps' size; default 512, 0: --map-size's\n"
+            "  --pcf               lab 5: lab 4's filter instead of VSM (key P)\n"
             "  --visibility        show the visibility term alone (what the grader compares)\n"
             "  --show-map          show the shadow map in a corner\n"
             "  --frames K          render K frames, then exit (for scripts)\n"
@@ -58,8 +63,9 @@ static void _sl_usage(FILE *f) {
             "  --case NAME         render what the grader renders for case NAME (grader/cases/NAME.json),\n"
             "                      beside the reference and their difference (red: a shadow missing,\n"
             "                      blue: one too many); Tab, Space and D switch the view\n"
-            "keys: 1-4 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
+            "keys: 1-5 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
             "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
+            "      lab 5: R T blur radius, K L bleeding reduction, N J min variance, P VSM / lab 4 filter,\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
             "      shaders reload when their files change\n",
             sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
@@ -85,6 +91,11 @@ static void _sl_update_title(_sl_viewer *v) {
         snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " r=%.1f", p->filter.poisson_radius);
     if (p->lab >= 4 && p->filter.mode == SL_FILTER_PCSS)
         snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " light %.2f", v->scene.light.size);
+    if (p->lab >= 5 && !p->vsm_off)
+        snprintf(settings, sizeof settings, "VSM: blur %d, bleeding %.2f, min variance %.1e", p->vsm.blur_radius,
+                 p->vsm.bleeding, p->vsm.min_variance);
+    else if (p->lab >= 5)
+        snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " (VSM off: P)");
     int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s", p->lab, v->scene.name, settings,
                      p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "");
     if (info->not_implemented_count > 0 && n > 0 && (size_t)n < sizeof title)
@@ -115,6 +126,15 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     case GLFW_KEY_2: v->params.lab = 2; break;
     case GLFW_KEY_3: v->params.lab = 3; break;
     case GLFW_KEY_4: v->params.lab = 4; break;
+    /* lab 5: P swaps VSM and lab 4's filter on the same scene; R/T blur radius, K/L bleeding, N/J min variance */
+    case GLFW_KEY_5: v->params.lab = 5; break;
+    case GLFW_KEY_P: v->params.vsm_off = !v->params.vsm_off; break;
+    case GLFW_KEY_R: v->params.vsm.blur_radius = v->params.vsm.blur_radius > 0 ? v->params.vsm.blur_radius - 1 : 0; break;
+    case GLFW_KEY_T: v->params.vsm.blur_radius = v->params.vsm.blur_radius < 32 ? v->params.vsm.blur_radius + 1 : 32; break;
+    case GLFW_KEY_K: v->params.vsm.bleeding = glm_clamp(v->params.vsm.bleeding - 0.05f, 0, 0.95f); break;
+    case GLFW_KEY_L: v->params.vsm.bleeding = glm_clamp(v->params.vsm.bleeding + 0.05f, 0, 0.95f); break;
+    case GLFW_KEY_N: v->params.vsm.min_variance = glm_clamp(v->params.vsm.min_variance * 0.5f, 1e-7f, 0.01f); break;
+    case GLFW_KEY_J: v->params.vsm.min_variance = glm_clamp(v->params.vsm.min_variance * 2.0f, 1e-7f, 0.01f); break;
     case GLFW_KEY_B: v->params.bias.mode = (sl_bias_mode)((v->params.bias.mode + 1) % SL_BIAS_MODE_COUNT); break;
     case GLFW_KEY_F: v->params.filter.mode = (sl_filter_mode)((v->params.filter.mode + 1) % SL_FILTER_MODE_COUNT); break;
     case GLFW_KEY_EQUAL:
@@ -183,7 +203,9 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
-                           strcmp(a, "--backend") == 0;
+                           strcmp(a, "--backend") == 0 || strcmp(a, "--blur") == 0 ||
+                           strcmp(a, "--bleeding") == 0 || strcmp(a, "--min-variance") == 0 ||
+                           strcmp(a, "--moments-size") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -243,6 +265,28 @@ int sl_viewer_main(int argc, char **argv) {
                 fprintf(stderr, "shadowlab: --poisson-radius is 0..64 texels\n");
                 return 2;
             }
+        } else if (strcmp(a, "--blur") == 0) { /* lab 5 */
+            v.params.vsm.blur_radius = atoi(next);
+            if (v.params.vsm.blur_radius < 0 || v.params.vsm.blur_radius > 32) {
+                fprintf(stderr, "shadowlab: --blur is a radius 0..32 texels\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--bleeding") == 0) {
+            v.params.vsm.bleeding = (float)atof(next);
+            if (v.params.vsm.bleeding < 0 || v.params.vsm.bleeding > 0.99f) {
+                fprintf(stderr, "shadowlab: --bleeding is an amount 0..0.99\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--min-variance") == 0) {
+            v.params.vsm.min_variance = (float)atof(next);
+        } else if (strcmp(a, "--moments-size") == 0) {
+            v.params.vsm.map_size = atoi(next);
+            if (v.params.vsm.map_size != 0 && (v.params.vsm.map_size < 16 || v.params.vsm.map_size > 8192)) {
+                fprintf(stderr, "shadowlab: --moments-size must be 16..8192, or 0 for the shadow map's size\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--pcf") == 0) {
+            v.params.vsm_off = true;
         } else if (strcmp(a, "--light-size") == 0) {
             light_size = (float)atof(next);
         } else if (strcmp(a, "--frames") == 0) {

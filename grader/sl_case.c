@@ -27,6 +27,12 @@ static const struct {
     /* threshold here: the allowed width difference, as a fraction of the reference's (at least 2 px) */
     [SL_CHECK_PENUMBRA] = {"penumbra", "visibility.exr", 0.35, 0, 0, 0},
     [SL_CHECK_PROBE] = {"probe", ".probe.json", 0, 0, 0, 0},
+    /* moments: the same rasterised depths on every renderer; 1e-4 is far above float noise. The
+     * format's precision is checked by rule (the neighbourhood compare forgives quantisation). */
+    [SL_CHECK_MOMENTS] = {"moments", "moments.exr", 1e-4, 0.005, 0, 2e-5},
+    [SL_CHECK_MOMENTS_BLURRED] = {"moments_blurred", "moments_blurred.exr", 1e-4, 0.005, 0, 2e-5},
+    /* threshold: visibility above it in the reference's umbra is light bleeding */
+    [SL_CHECK_BLEEDING] = {"bleeding", "visibility.exr", 0.1, 0, 0, 0},
 };
 
 const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
@@ -83,7 +89,7 @@ bool sl_check_reference_file(const sl_check *k, char *out, size_t n) {
 }
 const char *sl_check_capture_name(const sl_case *c, const sl_check *k) {
     if (k->kind == SL_CHECK_PROBE) return sl_capture_name(SL_CAPTURE_PROBE + (int)(k - c->checks));
-    return k->kind == SL_CHECK_PENUMBRA ? "visibility" : _sl_kinds[k->kind].name;
+    return k->kind == SL_CHECK_PENUMBRA || k->kind == SL_CHECK_BLEEDING ? "visibility" : _sl_kinds[k->kind].name;
 }
 
 uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
@@ -94,9 +100,16 @@ uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
     case SL_CHECK_MATRICES: return 1u << SL_CAPTURE_MATRICES;
     case SL_CHECK_VISIBILITY:
         /* from lab 2 on, acne is told from shadow on the surfaces that face the light */
-        return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0);
+        /* lab 5: the moments target's format too, the first suspect of a VSM picture that is off */
+        return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0) |
+               (c->lab >= 5 ? 1u << SL_CAPTURE_MOMENTS_TARGET : 0);
     case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
     case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
+    case SL_CHECK_MOMENTS: return (1u << SL_CAPTURE_MOMENTS) | (1u << SL_CAPTURE_MOMENTS_TARGET);
+    case SL_CHECK_MOMENTS_BLURRED: return (1u << SL_CAPTURE_MOMENTS_BLURRED) | (1u << SL_CAPTURE_MOMENTS_TARGET);
+    case SL_CHECK_BLEEDING:
+        return (1u << SL_CAPTURE_VISIBILITY) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED) | (1u << SL_CAPTURE_LIT_MASK) |
+               (1u << SL_CAPTURE_MOMENTS_TARGET);
     default: return 0;
     }
 }
@@ -127,6 +140,7 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     c->params.output = SL_OUTPUT_VISIBILITY;
     if (c->lab < 3) c->params.bias.mode = SL_BIAS_CONSTANT;
     if (c->lab < 4) c->params.filter.mode = SL_FILTER_NONE;
+    c->params.vsm.map_size = 0; /* lab 5's moments: the case's shadow_map_size */
     if (!json) return true;
     if (!cJSON_IsObject(json)) {
         snprintf(err, n, "%s: \"params\" must be an object", c->path);
@@ -137,6 +151,8 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     double size = c->params.shadow_map_size, constant = b->constant, slope = b->slope, max_bias = b->max_bias;
     double factor = b->polygon_offset_factor, units = b->polygon_offset_units, offset = b->normal_offset;
     double radius = f->grid_radius, poisson = f->poisson_radius;
+    sl_vsm_settings *v = &c->params.vsm;
+    double blur = v->blur_radius, min_variance = v->min_variance, bleeding = v->bleeding;
     if (!_sl_number(json, "shadow_map_size", &size, 16, 4096, c->path, err, n) ||
         !_sl_number(json, "depth_bias", &constant, 0, 1, c->path, err, n) ||
         !_sl_number(json, "slope_bias", &slope, 0, 1, c->path, err, n) ||
@@ -145,8 +161,14 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
         !_sl_number(json, "polygon_offset_units", &units, -10000, 10000, c->path, err, n) ||
         !_sl_number(json, "normal_offset", &offset, 0, 100, c->path, err, n) ||
         !_sl_number(json, "grid_radius", &radius, 0, 16, c->path, err, n) ||
-        !_sl_number(json, "poisson_radius", &poisson, 0, 256, c->path, err, n))
+        !_sl_number(json, "poisson_radius", &poisson, 0, 256, c->path, err, n) ||
+        !_sl_number(json, "blur_radius", &blur, 0, 32, c->path, err, n) ||
+        !_sl_number(json, "min_variance", &min_variance, 0, 1, c->path, err, n) ||
+        !_sl_number(json, "bleeding", &bleeding, 0, 0.99, c->path, err, n))
         return false;
+    v->blur_radius = (int)blur;
+    v->min_variance = (float)min_variance;
+    v->bleeding = (float)bleeding;
     c->params.shadow_map_size = (int)size;
     b->constant = (float)constant;
     b->slope = (float)slope;
@@ -271,7 +293,8 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
     for (int i = 0; kind && i < SL_CHECK_KIND_COUNT; i++)
         if (strcmp(kind, _sl_kinds[i].name) == 0) found = i;
     if (found < 0) {
-        snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility, image, penumbra or probe",
+        snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility, image, penumbra, probe, "
+                    "moments, moments_blurred or bleeding",
                  c->path, index);
         return false;
     }

@@ -23,6 +23,10 @@ typedef enum sl_check_kind {
     SL_CHECK_IMAGE,      /* the shaded image vs reference (PNG) */
     SL_CHECK_PENUMBRA,   /* penumbra widths along probe lines, vs the reference visibility */
     SL_CHECK_PROBE,      /* a student function called on a table of inputs, vs the solution's outputs */
+    /* lab 5 */
+    SL_CHECK_MOMENTS,         /* the moments before the blur vs reference (2-channel EXR, per channel), and their format */
+    SL_CHECK_MOMENTS_BLURRED, /* the moments after the blur, likewise; blur widths along x and y */
+    SL_CHECK_BLEEDING,        /* light bleeding in the reference's umbra, with and without the reduction */
     SL_CHECK_KIND_COUNT
 } sl_check_kind;
 

@@ -75,6 +75,18 @@ bool sl_diagnose_lab4_visibility(const sl_case *c, const sl_image *student, cons
 void sl_diagnose_penumbra(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                           sl_check_result *out);
 
+/* ---- lab 5 (grader/diagnose/lab5.c) ---- */
+/* The moments before or after the blur, per channel, and the target's format. */
+void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                         sl_check_result *out);
+/* Light bleeding in the reference's umbra, with and without the reduction. */
+void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                          sl_check_result *out);
+/* The moments target's format, when it is the cause (said in out); false when it is fine. */
+bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out);
+bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *student, const sl_image *reference,
+                                 const sl_image *lit_mask, sl_check_result *out);
+
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                        sl_check_result *out);

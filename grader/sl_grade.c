@@ -33,6 +33,10 @@ static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
     {"lab3_depth_pass_state", "TODO(lab3.1)", "labs/lab3_bias/lab3.c"},
     {"lab3_second_depth_state", "TODO(lab3.4), the optional extension,", "labs/lab3_bias/lab3.c"},
     {"lab4_configure_shadow_texture", "TODO(lab4.1)", "labs/lab4_pcf/lab4.c"},
+    {"lab5_create_moments_target", "TODO(lab5.1)", "labs/lab5_vsm/lab5.c"},
+    {"lab5_begin_moments_pass", "TODO(lab5.2)", "labs/lab5_vsm/lab5.c"},
+    {"lab5_begin_blur_pass", "TODO(lab5.4)", "labs/lab5_vsm/lab5.c"},
+    {"lab5_filter_moments", "TODO(lab5.6)", "labs/lab5_vsm/lab5.c"},
 };
 
 void sl_diag_say(sl_check_result *out, const char *fmt, ...) {
@@ -169,7 +173,10 @@ void sl_diag_lookup_function(const sl_case *c, const char **function, const char
         {"shadow_compare_manual() (lab 2)", "lab2.5"}, {"pcf_hardware()", "lab4.2"}, {"pcf_grid()", "lab4.3"},
         {"pcf_poisson()", "lab4.4"}, {"pcss()", "lab4.5"},
     };
-    if (c->lab >= 4) {
+    if (c->lab >= 5) {
+        *function = "chebyshev_upper_bound()";
+        *todo = "lab5.7";
+    } else if (c->lab >= 4) {
         *function = filters[c->params.filter.mode][0];
         *todo = filters[c->params.filter.mode][1];
     } else if (c->lab == 3 && c->params.bias.mode == SL_BIAS_MIDPOINT) {
@@ -191,6 +198,10 @@ static bool _sl_reference_fits(sl_reference *ref, const sl_case *c, const sl_che
     const sl_image *img = &ref->image;
     int w = c->width, h = c->height, channels = k->kind == SL_CHECK_IMAGE ? 3 : 1;
     if (k->kind == SL_CHECK_DEPTH_MAP) w = h = c->params.shadow_map_size;
+    if (k->kind == SL_CHECK_MOMENTS || k->kind == SL_CHECK_MOMENTS_BLURRED) {
+        w = h = c->params.shadow_map_size;
+        channels = 2;
+    }
     if (img->width == w && img->height == h && img->channels == channels) return true;
     snprintf(ref->error, sizeof ref->error, "reference does not fit its case: %s is %dx%dx%d, the case makes %dx%dx%d",
              ref->path, img->width, img->height, img->channels, w, h, channels);
@@ -351,7 +362,8 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
     }
     if (c->lab == 2 && sl_diagnose_lab2_visibility(c, s, t, mask, out)) return;
     if (c->lab == 3 && mask && sl_diagnose_lab3_visibility(c, s, t, mask, out)) return;
-    if (c->lab >= 4 && sl_diagnose_lab4_visibility(c, s, t, mask, out)) return;
+    if (c->lab == 4 && sl_diagnose_lab4_visibility(c, s, t, mask, out)) return;
+    if (c->lab >= 5 && sl_diagnose_lab5_visibility(c, s, t, mask, out)) return;
     if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
         sl_diag_say(out, "lit and shadowed are swapped (%.0f%% of shadows lit, %.0f%% of lit pixels shadowed)",
@@ -390,6 +402,7 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
     }
     if (sl_diag_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
     if (out->message[0]) return;                      /* only the mean is off: said */
+    if (k->kind == SL_CHECK_VISIBILITY && c->lab >= 5 && sl_diagnose_lab5_format(r, out)) return;
     if (k->kind == SL_CHECK_VISIBILITY) {
         const sl_capture *mask = sl_result_capture(r, "lit_mask");
         _sl_check_visibility(c, k, s, t, mask ? &mask->image : NULL, &st, out);
@@ -416,7 +429,8 @@ static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_f
     const sl_probe_function *f = sl_probe_at(failure->function);
     if (!f || f->lab > c->lab) return false;
     if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE && k->kind != SL_CHECK_PENUMBRA &&
-        k->kind != SL_CHECK_DEPTH_MAP)
+        k->kind != SL_CHECK_DEPTH_MAP && k->kind != SL_CHECK_MOMENTS && k->kind != SL_CHECK_MOMENTS_BLURRED &&
+        k->kind != SL_CHECK_BLEEDING)
         return false;
     const char *name = f->name;
     sl_bias_mode bias = c->params.bias.mode;
@@ -446,6 +460,10 @@ static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_f
     case 4:
         if (strcmp(name, "lab4_configure_shadow_texture") == 0) return (failure->failing_modes >> filter) & 1u;
         return strcmp(name, _sl_filter_function(filter)) == 0;
+    case 5:
+        /* the moments feed every check; the lookup only what the camera sees */
+        if (strcmp(name, "compute_moments") == 0) return true;
+        return k->kind != SL_CHECK_MOMENTS && k->kind != SL_CHECK_MOMENTS_BLURRED;
     default: return false;
     }
 }
@@ -584,6 +602,9 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     case SL_CHECK_IMAGE: _sl_check_image(c, k, r, ref, out); break;
     case SL_CHECK_PENUMBRA: sl_diagnose_penumbra(c, k, r, ref, out); break;
     case SL_CHECK_PROBE: sl_diagnose_probe(c, k, r, ref, out); break;
+    case SL_CHECK_MOMENTS:
+    case SL_CHECK_MOMENTS_BLURRED: sl_diagnose_moments(c, k, r, ref, out); break;
+    case SL_CHECK_BLEEDING: sl_diagnose_bleeding(c, k, r, ref, out); break;
     default: sl_diag_say(out, "unknown check kind"); break;
     }
     if (out->passed) {

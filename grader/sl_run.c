@@ -78,8 +78,8 @@ static uint64_t _sl_payload_limit(const _sl_stream *s, uint32_t type, int captur
     case SL_MSG_NUMBERS: return SL_MSG_NUMBERS_MAX * sizeof(double);
     case SL_MSG_RENDER_TIME: return sizeof(double);
     case SL_MSG_IMAGE:
-        if (capture == SL_CAPTURE_DEPTH_MAP)
-            return SL_IMAGE_HEADER_BYTES + (uint64_t)SL_IMAGE_SIDE_MAX * SL_IMAGE_SIDE_MAX * sizeof(float);
+        if (capture == SL_CAPTURE_DEPTH_MAP || capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED)
+            return SL_IMAGE_HEADER_BYTES + 2 * (uint64_t)SL_IMAGE_SIDE_MAX * SL_IMAGE_SIDE_MAX * sizeof(float);
         return SL_IMAGE_HEADER_BYTES + (uint64_t)s->c->width * (uint64_t)s->c->height * 3 * sizeof(float);
     default: return 0;
     }
@@ -131,8 +131,9 @@ static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint
         return;
     }
     memcpy(dims, payload, sizeof dims);
-    bool camera = capture != SL_CAPTURE_DEPTH_MAP;
-    int channels = capture == SL_CAPTURE_IMAGE ? 3 : 1;
+    bool moments = capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED;
+    bool camera = capture != SL_CAPTURE_DEPTH_MAP && !moments;
+    int channels = capture == SL_CAPTURE_IMAGE ? 3 : moments ? 2 : 1;
     bool ok = dims[0] > 0 && dims[1] > 0 && dims[0] <= SL_IMAGE_SIDE_MAX && dims[1] <= SL_IMAGE_SIDE_MAX &&
               dims[2] == channels && (!camera || (dims[0] == s->c->width && dims[1] == s->c->height));
     if (!ok || n != SL_IMAGE_HEADER_BYTES + (uint64_t)dims[0] * (uint64_t)dims[1] * (uint64_t)dims[2] * sizeof(float)) {
@@ -190,6 +191,7 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
     case SL_MSG_NUMBERS: {
         s->received |= 1u << capture;
         int expected = capture == SL_CAPTURE_FBO ? SL_FBO_NUMBERS : capture == SL_CAPTURE_MATRICES ? SL_MATRICES_NUMBERS : -1;
+        if (capture == SL_CAPTURE_MOMENTS_TARGET) expected = SL_MOMENTS_TARGET_NUMBERS;
         if (capture >= SL_CAPTURE_PROBE) {
             const sl_check *k = &s->c->checks[capture - SL_CAPTURE_PROBE];
             const sl_probe_function *f = sl_probe_at(k->function);

@@ -1,0 +1,276 @@
+#include "sl_lab5_vsm.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_renderer.h"
+#include "sl_shader.h"
+
+typedef struct _sl_vsm_program {
+    sl_program program;
+    bool attempted;
+    GLint model, light_view_projection, light_near, light_far; /* the moments pass */
+    GLint moments, direction;                                   /* the blur */
+    GLint texture, channel;                                     /* the debug view */
+} _sl_vsm_program;
+
+#define _SL_MAX_BLUR_RADIUS 32
+
+struct sl_vsm {
+    sl_moments_target target;
+    sl_status target_status;
+    bool target_attempted;
+    /* the moments pass per light type (its depth is linearised for spot lights), the blur per
+     * radius (compiled in: its loop unrolls), the debug view */
+    _sl_vsm_program moments[3], blur[_SL_MAX_BLUR_RADIUS + 1], debug;
+};
+
+#define _SL_LAB5 5
+
+/* Calls lab 5's fn through the renderer's table, recording what it returned. */
+#define _SL_CALL_LAB5(r, fn, ...) \
+    (sl_renderer_lab_enter(#fn), sl_renderer_lab_result((r), #fn, (r)->fns[_SL_LAB5]->fn(__VA_ARGS__)))
+
+static sl_vsm *_sl_vsm_of(sl_renderer *r) {
+    if (!r->vsm) r->vsm = calloc(1, sizeof *r->vsm);
+    return r->vsm;
+}
+
+static _sl_vsm_program *_sl_vsm_build(sl_renderer *r, _sl_vsm_program *s, const char *vs, const char *fs,
+                                      const char *defines) {
+    if (!s->attempted) {
+        char v[SL_PATH_MAX * 2], f[SL_PATH_MAX * 2];
+        snprintf(v, sizeof v, "%s/%s", r->shaders_dir, vs);
+        snprintf(f, sizeof f, "%s/%s", r->shaders_dir, fs);
+        sl_shader_desc desc = {.vertex_path = v, .fragment_path = f, .search_dirs = {r->labs_dir, r->shaders_dir},
+                               .defines = defines};
+        s->attempted = true;
+        sl_program_build(&s->program, &desc, r->shader_errors[_SL_LAB5], sizeof r->shader_errors[_SL_LAB5]);
+    }
+    if (!s->program.id) return NULL;
+    const sl_program *p = &s->program;
+    s->model = sl_program_uniform(p, "u_model");
+    s->light_view_projection = sl_program_uniform(p, "u_light_view_projection");
+    s->light_near = sl_program_uniform(p, "u_light_near");
+    s->light_far = sl_program_uniform(p, "u_light_far");
+    s->moments = sl_program_uniform(p, "u_moments");
+    s->direction = sl_program_uniform(p, "u_direction");
+    s->texture = sl_program_uniform(p, "u_texture");
+    s->channel = sl_program_uniform(p, "u_channel");
+    return s;
+}
+
+static void _sl_vsm_shader_failed(sl_renderer *r) {
+    sl_frame_info *info = &r->info;
+    if (info->shader_error) return;
+    info->shader_error = r->shader_errors[_SL_LAB5];
+    info->shader_error_lab = _SL_LAB5;
+}
+
+/* Lab 5's own stubs are all asked, even when an earlier one stops the passes,
+ * so the grader can name every function that is not done yet. */
+static void _sl_vsm_ask_stubs(sl_renderer *r, sl_vsm *v, int from) {
+    sl_moments_target none = {0};
+    const sl_moments_target *t = v->target_status == SL_OK ? &v->target : &none;
+    GLint fb = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &fb);
+    if (from <= 2) _SL_CALL_LAB5(r, lab5_begin_moments_pass, t);
+    if (from <= 4) _SL_CALL_LAB5(r, lab5_begin_blur_pass, t, 0);
+    if (from <= 6) _SL_CALL_LAB5(r, lab5_filter_moments, t);
+    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
+}
+
+bool sl_vsm_passes(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
+    sl_vsm *v = _sl_vsm_of(r);
+    sl_frame_info *info = &r->info;
+    if (!v) return false;
+    int size = p->vsm.map_size > 0 ? p->vsm.map_size : p->shadow_map_size > 0 ? p->shadow_map_size : 1024;
+    if (v->target_attempted && v->target_status == SL_OK && v->target.size != size) {
+        sl_renderer_lab_enter("lab5_destroy_moments_target");
+        r->fns[_SL_LAB5]->lab5_destroy_moments_target(&v->target);
+        sl_renderer_lab_enter(NULL);
+        v->target_attempted = false;
+    }
+    if (!v->target_attempted) {
+        memset(&v->target, 0, sizeof v->target);
+        sl_renderer_lab_enter("lab5_create_moments_target");
+        v->target_status = r->fns[_SL_LAB5]->lab5_create_moments_target(size, &v->target);
+        v->target_attempted = true;
+    }
+    info->moments_target = v->target; /* even on failure: the grader inspects what was made */
+    if (!sl_renderer_lab_result(r, "lab5_create_moments_target", v->target_status)) {
+        _sl_vsm_ask_stubs(r, v, 2);
+        return false;
+    }
+    /* 1. the moments pass */
+    int type = scene->light.type >= 0 && scene->light.type < 3 ? (int)scene->light.type : 0;
+    char defines[64];
+    snprintf(defines, sizeof defines, "#define SL_LIGHT_TYPE %d\n", type);
+    _sl_vsm_program *m = _sl_vsm_build(r, &v->moments[type], "moments.vert", "moments.frag", defines);
+    if (!m) {
+        _sl_vsm_shader_failed(r);
+        return false;
+    }
+    if (!_SL_CALL_LAB5(r, lab5_begin_moments_pass, &v->target)) {
+        _sl_vsm_ask_stubs(r, v, 4);
+        return false;
+    }
+    mat4 view_proj;
+    glm_mat4_mul(info->light_projection, info->light_view, view_proj);
+    glUseProgram(m->program.id);
+    glUniformMatrix4fv(m->light_view_projection, 1, GL_FALSE, (const float *)view_proj);
+    glUniform1f(m->light_near, scene->light.near);
+    glUniform1f(m->light_far, scene->light.far);
+    sl_renderer_draw_objects(r, scene, m->model);
+    sl_renderer_timer_mark(r, "moments");
+    /* 2. the blur, horizontal then vertical */
+    int radius = p->vsm.blur_radius < _SL_MAX_BLUR_RADIUS ? p->vsm.blur_radius : _SL_MAX_BLUR_RADIUS;
+    if (radius > 0) {
+        snprintf(defines, sizeof defines, "#define SL_BLUR_RADIUS %d\n", radius);
+        _sl_vsm_program *b = _sl_vsm_build(r, &v->blur[radius], "debug_quad.vert", "blur.frag", defines);
+        if (!b) {
+            _sl_vsm_shader_failed(r);
+            return false;
+        }
+        for (int direction = 0; direction < 2; direction++) {
+            if (!_SL_CALL_LAB5(r, lab5_begin_blur_pass, &v->target, direction)) {
+                _sl_vsm_ask_stubs(r, v, 6);
+                return false;
+            }
+            glUseProgram(b->program.id);
+            glUniform1i(b->moments, 0);
+            glUniform2f(b->direction, direction == 0 ? 1.0f : 0.0f, direction == 0 ? 0.0f : 1.0f);
+            glBindVertexArray(r->empty_vao);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+        sl_renderer_timer_mark(r, "blur");
+    }
+    /* 3. mipmaps and trilinear filtering */
+    glActiveTexture(GL_TEXTURE0);
+    if (!_SL_CALL_LAB5(r, lab5_filter_moments, &v->target)) return false;
+    sl_renderer_timer_mark(r, "mipmaps");
+    info->moments_ready = true;
+    return true;
+}
+
+GLuint sl_vsm_moments_texture(const sl_renderer *r) {
+    return r->vsm && r->info.moments_ready ? r->vsm->target.moments[0] : 0;
+}
+
+void sl_vsm_debug_view(sl_renderer *r, int width, int height) {
+    sl_vsm *v = r->vsm;
+    if (!v || !r->info.moments_ready) return;
+    _sl_vsm_program *d = _sl_vsm_build(r, &v->debug, "debug_quad.vert", "moments_debug.frag", NULL);
+    if (!d) return;
+    int side = (width < height ? width : height) / 3;
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(d->program.id);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, v->target.moments[0]);
+    glUniform1i(d->texture, 0);
+    glBindVertexArray(r->empty_vao);
+    for (int channel = 0; channel < 2; channel++) {
+        /* the mean on the left, the second moment on the right, in the lower right corner */
+        glViewport(width - (2 - channel) * (side + 8), 8, side, side);
+        glUniform1i(d->channel, channel);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+}
+
+/* Every program of the module, by index: the moments passes, the debug view, the blurs. */
+static _sl_vsm_program *_sl_vsm_program_at(sl_vsm *v, int i) {
+    return i < 3 ? &v->moments[i] : i == 3 ? &v->debug : &v->blur[i - 4];
+}
+
+bool sl_vsm_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
+    sl_vsm *v = r->vsm;
+    if (!v) return true;
+    bool ok = true;
+    for (int i = 0; i < 4 + _SL_MAX_BLUR_RADIUS + 1; i++) {
+        _sl_vsm_program *s = _sl_vsm_program_at(v, i);
+        if (!s->attempted) continue;
+        if (!s->program.id) {
+            s->attempted = false; /* never compiled: try again on the next frame */
+            continue;
+        }
+        char e[4096] = "";
+        if (sl_program_reload_if_changed(&s->program, e, sizeof e)) {
+            *reloaded = true;
+        } else if (e[0]) {
+            if (ok) snprintf(err, err_size, "%s", e);
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+void sl_vsm_destroy(sl_renderer *r) {
+    sl_vsm *v = r->vsm;
+    if (!v) return;
+    if (v->target_attempted && v->target_status == SL_OK) {
+        sl_renderer_lab_enter("lab5_destroy_moments_target");
+        r->fns[_SL_LAB5]->lab5_destroy_moments_target(&v->target);
+        sl_renderer_lab_enter(NULL);
+    }
+    for (int i = 0; i < 4 + _SL_MAX_BLUR_RADIUS + 1; i++) sl_program_destroy(&_sl_vsm_program_at(v, i)->program);
+    free(v);
+    r->vsm = NULL;
+}
+
+bool sl_vsm_capture_moments(GLuint texture, sl_image *out, char *err, size_t err_size) {
+    *out = (sl_image){0};
+    if (!texture || !glIsTexture(texture)) {
+        snprintf(err, err_size, "moments[0] (%u) is not a texture name", texture);
+        return false;
+    }
+    GLint w = 0, h = 0;
+    glBindTexture(GL_TEXTURE_2D, texture);
+    while (glGetError() != GL_NO_ERROR) {}
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+    if (glGetError() != GL_NO_ERROR || w <= 0 || h <= 0 || w > 4096 || h > 4096) {
+        snprintf(err, err_size, "moments[0] (%u) is not a 2D texture with storage", texture);
+        return false;
+    }
+    *out = sl_image_alloc(w, h, 2);
+    if (!out->data) return false;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, out->data);
+    sl_image_flip_rows(out);
+    return true;
+}
+
+void sl_vsm_describe_target(const sl_moments_target *t, double out[SL_MOMENTS_TARGET_NUMBERS]) {
+    memset(out, 0, sizeof(double) * SL_MOMENTS_TARGET_NUMBERS);
+    while (glGetError() != GL_NO_ERROR) {}
+    if (t->framebuffer[0] && glIsFramebuffer(t->framebuffer[0])) {
+        GLint depth_type = 0;
+        glBindFramebuffer(GL_FRAMEBUFFER, t->framebuffer[0]);
+        out[0] = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                              GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &depth_type);
+        out[7] = depth_type;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    if (t->moments[0] && glIsTexture(t->moments[0])) {
+        GLint format = 0, w = 0, h = 0, red = 0, green = 0, type = 0;
+        glBindTexture(GL_TEXTURE_2D, t->moments[0]);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_GREEN_SIZE, &green);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_TYPE, &type);
+        out[1] = format;
+        out[2] = w;
+        out[3] = h;
+        out[4] = red;
+        out[5] = green;
+        out[6] = type == GL_FLOAT;
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    while (glGetError() != GL_NO_ERROR) {}
+}

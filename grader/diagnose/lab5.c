@@ -1,0 +1,239 @@
+/* Lab 5's diagnoses: the moments (format, each channel, the blur's two
+ * directions), light bleeding, and what a wrong Chebyshev bound does to lit
+ * surfaces. */
+#define _POSIX_C_SOURCE 200809L
+#include "sl_diagnose.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_compare.h"
+#include "sl_gl.h"
+
+/* One channel of an image, as an image of its own (the compare's threshold then holds per channel). */
+static sl_image _sl_channel(const sl_image *img, int channel) {
+    sl_image out = sl_image_alloc(img->width, img->height, 1);
+    if (!out.data) return out;
+    for (long i = 0; i < (long)img->width * img->height; i++) out.data[i] = img->data[i * img->channels + channel];
+    return out;
+}
+
+/* Mean squared difference between neighbours along x (dx 1) or y: a blur lowers it in its own direction only. */
+static double _sl_gradient_energy(const sl_image *m, int dx, int dy) {
+    double sum = 0;
+    long n = 0;
+    for (int y = 0; y + dy < m->height; y++)
+        for (int x = 0; x + dx < m->width; x++) {
+            float a = m->data[((long)y * m->width + x) * m->channels];
+            float b = m->data[((long)(y + dy) * m->width + x + dx) * m->channels];
+            if (isnan(a) || isnan(b)) continue;
+            sum += (double)(a - b) * (a - b);
+            n++;
+        }
+    return n ? sum / (double)n : 0;
+}
+
+/* The target's format: 32-bit floats in red and green, or the variance drowns in rounding. */
+static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
+    const sl_capture *t = sl_result_capture(r, "moments_target");
+    if (!t || t->number_count < SL_MOMENTS_TARGET_NUMBERS) return true; /* nothing made: the image says so */
+    const double *v = t->numbers;
+    GLenum format = (GLenum)v[1];
+    int red = (int)v[4], green = (int)v[5];
+    bool is_float = v[6] != 0;
+    if (v[0] != GL_FRAMEBUFFER_COMPLETE) {
+        sl_diag_say(out, "framebuffer[0] of the moments target is not complete (%s)", sl_gl_enum_name((GLenum)v[0]));
+        sl_diag_cause(out, "moments[0] as GL_COLOR_ATTACHMENT0 and a depth renderbuffer as GL_DEPTH_ATTACHMENT "
+                           "(TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
+        return false;
+    }
+    if (red >= 32 && green >= 32 && is_float) return true;
+    sl_diag_say(out, "the moments are stored as %s (%d-bit %s per channel): the variance E[x^2] - E[x]^2 is the "
+                     "difference of two nearly equal numbers, and %d bits round it away, so shadows show bands and "
+                     "light leaks where the variance comes out wrong (precision)",
+                sl_gl_enum_name(format), red, is_float ? "float" : "fixed point", red);
+    sl_diag_cause(out, "create moments[0] and moments[1] as GL_RG32F (TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
+    return false;
+}
+
+bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out) { return !_sl_format_ok(r, out); }
+
+void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                         sl_check_result *out) {
+    bool blurred = k->kind == SL_CHECK_MOMENTS_BLURRED;
+    const char *capture = sl_check_capture_name(c, k);
+    const sl_capture *cap = sl_result_capture(r, capture);
+    if (!cap) {
+        if (!sl_diag_explain_missing(c, r, out)) sl_diag_say(out, "no moments were captured");
+        out->settled = true;
+        return;
+    }
+    const sl_image *s = &cap->image, *t = &ref->image;
+    if (s->width != t->width || s->height != t->height || s->channels != 2 || t->channels != 2) {
+        sl_diag_say(out, "the moments are %dx%dx%d, the reference %dx%dx%d", s->width, s->height, s->channels,
+                    t->width, t->height, t->channels);
+        out->settled = true;
+        return;
+    }
+    bool format_ok = _sl_format_ok(r, out);
+    static const char *const names[2] = {"the first moment (depth)", "the second moment (depth^2)"};
+    sl_compare_stats st[2];
+    bool ok[2];
+    for (int ch = 0; ch < 2; ch++) {
+        sl_image a = _sl_channel(s, ch), b = _sl_channel(t, ch), diff = {0};
+        st[ch] = sl_compare_images(&a, &b, k->threshold, &diff);
+        ok[ch] = st[ch].failing_fraction <= k->fail_fraction && st[ch].nan_pixels == 0 &&
+                 (k->mean_tolerance <= 0 || st[ch].mean_difference <= k->mean_tolerance);
+        if (!ok[ch] && !out->diff.data) out->diff = diff;
+        else sl_image_free(&diff);
+        sl_image_free(&a);
+        sl_image_free(&b);
+    }
+    if (format_ok && ok[0] && ok[1]) {
+        out->passed = true;
+        return;
+    }
+    if (sl_diag_explain_missing(c, r, out)) return;
+    if (!format_ok) return; /* said: the format comes first */
+    long n = (long)s->width * s->height, stub = 0, unsquared = 0, covered = 0;
+    for (long i = 0; i < n; i++) {
+        float m1 = s->data[2 * i], m2 = s->data[2 * i + 1];
+        stub += m1 == 1.0f && m2 == 1.0f;
+        if (m1 < 0.98f && t->data[2 * i] < 0.98f) {
+            covered++;
+            unsquared += fabsf(m2 - m1) < 1e-4f && fabsf(m1 - m1 * m1) > 1e-3f;
+        }
+    }
+    if (stub == n) {
+        sl_diag_say(out, "the moments are (1, 1) on every texel: nothing in front of anything");
+        sl_diag_cause(out, "compute_moments() still returns its stub's vec2(1.0) (TODO(lab5.3) in "
+                           "labs/lab5_vsm/shaders/moments.glsl), or nothing was drawn into framebuffer[0]");
+        return;
+    }
+    if (covered > 0 && unsquared > covered / 2) {
+        sl_diag_say(out, "the second moment equals the first on %.0f%% of the scene's texels: depth is stored where "
+                         "depth^2 belongs, so the variance depth - depth^2 is large everywhere",
+                    100.0 * (double)unsquared / (double)covered);
+        sl_diag_cause(out, "compute_moments() must return vec2(depth, depth * depth) (TODO(lab5.3) in "
+                           "labs/lab5_vsm/shaders/moments.glsl)");
+        return;
+    }
+    if (blurred && ok[0] + ok[1] < 2) {
+        /* a blur lowers the differences between neighbours in its direction: compare both directions' */
+        double sharp_x = _sl_gradient_energy(s, 1, 0) / fmax(_sl_gradient_energy(t, 1, 0), 1e-12);
+        double sharp_y = _sl_gradient_energy(s, 0, 1) / fmax(_sl_gradient_energy(t, 0, 1), 1e-12);
+        if (sharp_x > 1.5 && sharp_y > 1.5) {
+            sl_diag_say(out, "the moments are sharper than the reference's along both x and y (%.1fx and %.1fx the "
+                             "differences between neighbours): not blurred, or blurred less",
+                        sharp_x, sharp_y);
+            sl_diag_cause(out, "blur_moments() (TODO(lab5.5) in labs/lab5_vsm/shaders/blur.glsl): 2 * radius + 1 "
+                               "Gaussian weights, offsets of one texel (1.0 / textureSize) along direction");
+            return;
+        }
+        if ((sharp_x > 1.5) != (sharp_y > 1.5)) {
+            bool only_x = sharp_y > 1.5;
+            sl_diag_say(out, "the moments are blurred along %s only: along %s their edges are %.1fx as sharp as the "
+                             "reference's, so a penumbra is wide one way and hard the other",
+                        only_x ? "x" : "y", only_x ? "y" : "x", only_x ? sharp_y : sharp_x);
+            sl_diag_cause(out, "the vertical pass must read moments[1] and step along (0, 1): does blur_moments() use "
+                               "`direction` (TODO(lab5.5)), and lab5_begin_blur_pass() read and write the other "
+                               "target for direction 1 (TODO(lab5.4))?");
+            return;
+        }
+        if (sharp_x < 0.67 && sharp_y < 0.67) {
+            sl_diag_say(out, "the moments are blurrier than the reference's (%.2fx and %.2fx its differences between "
+                             "neighbours along x and y)", sharp_x, sharp_y);
+            sl_diag_cause(out, "blur_moments(): sigma = max(radius / 2, 0.5), offsets of one texel, radius texels "
+                               "each side (TODO(lab5.5))");
+            return;
+        }
+    }
+    int ch = ok[0] ? 1 : 0;
+    sl_diag_say(out, "%s differs from the reference on %.2f%% of texels (allowed %.2f%%, threshold %g; mean "
+                     "difference %.5f)", names[ch], 100 * st[ch].failing_fraction, 100 * k->fail_fraction,
+                k->threshold, st[ch].mean_difference);
+    if (st[ch].nan_pixels) sl_diag_append(out, "; %ld texels are NaN", st[ch].nan_pixels);
+    sl_diag_cause(out, blurred ? "the moments pass matches? then the blur (TODO(lab5.4), TODO(lab5.5))"
+                               : "compute_moments() (TODO(lab5.3)) gets the linear depth: return (depth, depth^2); "
+                                 "and lab5_begin_moments_pass() clears to (1, 1) with the depth test on (TODO(lab5.2))");
+}
+
+/* Light bleeding: where the reference (with the reduction) is in umbra, the
+ * fraction of pixels lit above the threshold here, with and without it. */
+static double _sl_bleed(const sl_image *v, const sl_image *t, const sl_image *mask, long *umbra) {
+    long n = (long)t->width * t->height, in = 0, lit = 0;
+    for (long i = 0; i < n; i++) {
+        if ((mask && mask->data[i] < 0.5f) || t->data[i] > 0.02f) continue;
+        in++;
+        lit += !(v->data[i] <= 0.1f);
+    }
+    *umbra = in;
+    return in ? (double)lit / (double)in : 0;
+}
+
+void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                          sl_check_result *out) {
+    const sl_capture *on = sl_result_capture(r, "visibility"), *off = sl_result_capture(r, "visibility_unreduced");
+    const sl_capture *mask = sl_result_capture(r, "lit_mask");
+    if (!on || !off) {
+        if (!sl_diag_explain_missing(c, r, out)) sl_diag_say(out, "no visibility was captured");
+        out->settled = true;
+        return;
+    }
+    const sl_image *t = &ref->image;
+    if (on->image.width != t->width || on->image.height != t->height || off->image.width != t->width ||
+        off->image.height != t->height) {
+        sl_diag_say(out, "the visibility is %dx%d, the reference %dx%d", on->image.width, on->image.height, t->width,
+                    t->height);
+        out->settled = true;
+        return;
+    }
+    long umbra = 0;
+    const sl_image *m = mask && mask->image.width == t->width && mask->image.height == t->height ? &mask->image : NULL;
+    (void)k;
+    double with = _sl_bleed(&on->image, t, m, &umbra), without = _sl_bleed(&off->image, t, m, &umbra);
+    /* A scene (or a hidden variant of it) whose reference has next to no umbra
+     * has no bleeding to measure: nothing to lose. */
+    if (umbra < 100 || with <= fmax(0.5 * without, 0.01)) {
+        out->passed = true;
+        return;
+    }
+    if (sl_diag_explain_missing(c, r, out)) return;
+    if (sl_diagnose_lab5_format(r, out)) return;
+    sl_diag_say(out, "light bleeding: %.1f%% of the reference's umbra is lit above %.2f with the reduction (amount "
+                     "%.2f), %.1f%% without it; the reduction must at least halve it",
+                100 * with, 0.1, c->params.vsm.bleeding, 100 * without);
+    if (with > without) {
+        sl_diag_append(out, ", and the reduction adds light to the umbra instead");
+        sl_diag_cause(out, "are linstep's arguments swapped? reduce_light_bleeding() returns linstep(amount, 1.0, "
+                           "p_max) (TODO(lab5.8))");
+    } else
+        sl_diag_cause(out, "reduce_light_bleeding() must cut p_max below `amount` off and stretch the rest: "
+                           "linstep(amount, 1.0, p_max) (TODO(lab5.8))");
+}
+
+bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
+                                 sl_check_result *out) {
+    (void)c;
+    sl_acne acne = sl_measure_acne(s, t, mask);
+    long nan = 0;
+    for (long i = 0; i < (long)s->width * s->height; i++) nan += isnan(s->data[i]);
+    if (nan > 0 || sl_acne_is_pattern(&acne)) {
+        sl_diag_say(out, "dark speckles on %.1f%% of the lit surfaces%s", 100 * acne.fraction,
+                    nan ? " and NaN pixels" : "");
+        sl_diag_cause(out, "where t is just beyond mu and the moments are from one flat surface, the variance is 0 "
+                           "(or a rounding error below it): is it clamped to min_variance in "
+                           "chebyshev_upper_bound() (TODO(lab5.7))?");
+        return true;
+    }
+    if (acne.fraction > 0.2 && acne.mean > 0.5 && acne.mean < 0.97) {
+        sl_diag_say(out, "lit surfaces are slightly darkened everywhere (mean visibility %.3f where the reference "
+                         "is 1)", acne.mean);
+        sl_diag_cause(out, "the bound only holds for t > mu: chebyshev_upper_bound() returns 1.0 when t <= mu "
+                           "(TODO(lab5.7))");
+        return true;
+    }
+    return false;
+}
