@@ -5,4 +5,5 @@ const sl_lab_functions sl_build_lab_functions = {
     lab2_light_view,        lab2_light_projection, lab2_shadow_matrix,
     lab3_depth_pass_state,  lab3_second_depth_state,
     lab4_configure_shadow_texture,
+    lab6_split_distances,   lab6_slice_sphere,     lab6_cascade_matrices,
 };

@@ -4,7 +4,7 @@
 
 void sl_render_params_defaults(sl_render_params *p) {
     *p = (sl_render_params){
-        .lab = SL_LAB_COUNT,
+        .lab = 4, /* the single-map labs' full pipeline; lab 6 draws its own way (--lab 6) */
         .shadow_map_size = 1024,
         .compare = SL_COMPARE_MANUAL,
         .bias = {
@@ -18,6 +18,7 @@ void sl_render_params_defaults(sl_render_params *p) {
         },
         .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f},
         .output = SL_OUTPUT_SHADED,
+        .cascades = {.count = 4, .lambda = 0.8f, .max_distance = 0, .caster_margin = 40.0f},
     };
 }
 
@@ -59,7 +60,7 @@ bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
 
 const char *sl_lab_folder(int lab) {
     static const char *const folders[SL_LAB_COUNT + 1] = {NULL, "lab1_depth_fbo", "lab2_projective", "lab3_bias",
-                                                          "lab4_pcf"};
+                                                          "lab4_pcf", [6] = "lab6_cascades"};
     return lab >= 1 && lab <= SL_LAB_COUNT ? folders[lab] : NULL;
 }
 

@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_renderer.h"
 
+#include "sl_lab6_cascades.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,6 +38,11 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
         r->info.failed = function;
     }
     return false;
+}
+
+void sl_renderer_enter_lab(const char *function) { _sl_enter(function); }
+bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status) {
+    return _sl_lab_result(r, function, status);
 }
 
 /* Calls lab N's function fn through the renderer's table, recording what it returned. */
@@ -308,6 +315,7 @@ void sl_renderer_destroy(sl_renderer *r) {
         for (int i = 0; i < ps->variant_count; i++) sl_program_destroy(&ps->variants[i].slot.program);
         free(ps);
     }
+    sl_lab6_release(r);
     if (r->empty_vao) glDeleteVertexArrays(1, &r->empty_vao);
     if (r->timer_queries[0]) glDeleteQueries(SL_MAX_PASSES + 1, r->timer_queries);
     memset(r, 0, sizeof *r);
@@ -356,6 +364,8 @@ static void _sl_timer_mark(sl_renderer *r, const char *finished_pass) {
         glQueryCounter(r->timer_queries[r->timer_count], GL_TIMESTAMP);
     }
 }
+
+void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass) { _sl_timer_mark(r, finished_pass); }
 
 bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out) {
     *out = (sl_frame_timing){0};
@@ -558,6 +568,7 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     int lab = 0;
     if (info->shadow_map_ready && info->lab2_ready) {
         lab = p->lab < SL_RENDERER_MAX_LAB ? p->lab : SL_RENDERER_MAX_LAB;
+        if (lab > 4) lab = 4; /* the single-map pipeline ends at lab 4; lab 6 draws in sl_lab6_cascades.c */
         if (depth_lab < 3 && lab > 2) lab = 2;
     }
     if (lab >= 4) {
@@ -678,6 +689,12 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->lab_in_use = 0;
     r->programs->frame++;
     _sl_timer_mark(r, NULL);
+    if (params->lab == 6) { /* cascades: a frame of their own (sl_lab6_cascades.c) */
+        sl_lab6_draw(r, scene, params, target, width, height);
+        glBindVertexArray(0);
+        glUseProgram(0);
+        return;
+    }
     _sl_light_matrices(r, scene, params);
     _sl_reset_state(0, width, height);
     int depth_lab = _sl_depth_pass(r, scene, params);

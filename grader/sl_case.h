@@ -23,6 +23,8 @@ typedef enum sl_check_kind {
     SL_CHECK_IMAGE,      /* the shaded image vs reference (PNG) */
     SL_CHECK_PENUMBRA,   /* penumbra widths along probe lines, vs the reference visibility */
     SL_CHECK_PROBE,      /* a student function called on a table of inputs, vs the solution's outputs */
+    SL_CHECK_CASCADE_INDEX, /* lab 6: the cascade each pixel used vs reference (EXR) */
+    SL_CHECK_FLICKER,    /* lab 6: visibility changes on world-fixed pixels along a camera path */
     SL_CHECK_KIND_COUNT
 } sl_check_kind;
 
@@ -79,6 +81,9 @@ typedef struct sl_case {
     sl_scene scene;
     sl_light frame_lights[SL_CASE_MAX_FRAMES]; /* the light of each frame; the last one is captured */
     int frame_count;
+    /* lab 6's "camera_path": the camera the cascades are fitted to, per frame */
+    bool camera_path;
+    sl_camera frame_cameras[SL_CASE_MAX_FRAMES];
     sl_render_params params;
     int width, height;
     double timeout_seconds;

@@ -75,6 +75,12 @@ bool sl_diagnose_lab4_visibility(const sl_case *c, const sl_image *student, cons
 void sl_diagnose_penumbra(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                           sl_check_result *out);
 
+/* ---- lab 6 (grader/diagnose/lab6.c) ---- */
+void sl_diagnose_cascade_index(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                               sl_check_result *out);
+void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                         sl_check_result *out);
+
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                        sl_check_result *out);
