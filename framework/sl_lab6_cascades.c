@@ -21,6 +21,8 @@ struct _sl_lab6 {
     _sl_lab6_program scene[3];   /* the camera pass, per light type */
     _sl_lab6_program plain[3];   /* no shadows: a stub or a shader error */
     _sl_lab6_program debug;      /* one layer of the array, in the overlay */
+    _sl_lab6_program lines;      /* the frozen frustum's slices and light boxes */
+    GLuint line_vao, line_buffer;
 };
 
 static struct _sl_lab6 *_sl_lab6_state(sl_renderer *r) {
@@ -35,6 +37,9 @@ void sl_lab6_release(sl_renderer *r) {
     if (s->framebuffer) glDeleteFramebuffers(1, &s->framebuffer);
     sl_program_destroy(&s->depth.program);
     sl_program_destroy(&s->debug.program);
+    sl_program_destroy(&s->lines.program);
+    if (s->line_vao) glDeleteVertexArrays(1, &s->line_vao);
+    if (s->line_buffer) glDeleteBuffers(1, &s->line_buffer);
     for (int i = 0; i < 3; i++) {
         sl_program_destroy(&s->scene[i].program);
         sl_program_destroy(&s->plain[i].program);
@@ -272,6 +277,89 @@ static void _sl_lab6_camera_pass(sl_renderer *r, const sl_scene *scene, const sl
     sl_renderer_timer_mark(r, "camera");
 }
 
+/* The 12 edges of a box given by its 8 corners (bit 0: x, bit 1: y, bit 2: z), as line vertices. */
+static int _sl_lab6_box_edges(vec3 corners[8], float *out) {
+    int n = 0;
+    for (int a = 0; a < 8; a++)
+        for (int bit = 1; bit < 8; bit <<= 1) {
+            int b = a | bit;
+            if (b == a) continue;
+            for (int k = 0; k < 3; k++) out[n * 3 + k] = corners[a][k];
+            for (int k = 0; k < 3; k++) out[n * 3 + 3 + k] = corners[b][k];
+            n += 2;
+        }
+    return n; /* 24 vertices */
+}
+
+/* The classic demo, seen from the scene's camera: each cascade's slice of the
+ * frozen camera's frustum and its light box, in the cascade's colour. */
+static void _sl_lab6_frustum_lines(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, float aspect) {
+    struct _sl_lab6 *s = r->lab6;
+    sl_frame_info *info = &r->info;
+    sl_program *prog = _sl_lab6_build(r, &s->lines, r->shaders_dir, "lines.vert", r->shaders_dir, "lines.frag",
+                                      NULL, 0);
+    if (!prog) return;
+    if (!s->line_vao) {
+        glGenVertexArrays(1, &s->line_vao);
+        glGenBuffers(1, &s->line_buffer);
+        glBindVertexArray(s->line_vao);
+        glBindBuffer(GL_ARRAY_BUFFER, s->line_buffer);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), NULL);
+    }
+    const sl_camera *frozen = &p->cascades.camera;
+    mat4 view, proj, vp, inv;
+    sl_camera_view(frozen, view);
+    sl_camera_projection(frozen, aspect, proj);
+    glm_mat4_mul(proj, view, vp);
+    glm_mat4_inv(vp, inv);
+    static const float colours[SL_MAX_CASCADES][3] = {{1, 0.3f, 0.25f}, {0.2f, 0.9f, 0.3f}, {0.3f, 0.45f, 1}, {1, 0.85f, 0.2f}};
+    float vertices[SL_MAX_CASCADES][2][24 * 3];
+    int counts[SL_MAX_CASCADES][2];
+    for (int i = 0; i < info->cascade_count; i++) {
+        vec3 slice[8], box[8];
+        for (int c = 0; c < 8; c++) {
+            /* the slice: along each frustum edge at the cascade's split depths */
+            vec4 n = {(c & 1) ? 1.f : -1.f, (c & 2) ? 1.f : -1.f, -1, 1}, f = {n[0], n[1], 1, 1}, wn, wf;
+            glm_mat4_mulv(inv, n, wn);
+            glm_mat4_mulv(inv, f, wf);
+            float d = info->cascade_splits[i + ((c & 4) ? 1 : 0)];
+            float t = (d - frozen->near) / (frozen->far - frozen->near);
+            for (int k = 0; k < 3; k++) slice[c][k] = wn[k] / wn[3] + (wf[k] / wf[3] - wn[k] / wn[3]) * t;
+            /* the light box: the corners of the cascade's NDC cube, back to the world */
+            mat4 light_vp, light_inv;
+            glm_mat4_mul(info->cascade_projection[i], info->cascade_view[i], light_vp);
+            glm_mat4_inv(light_vp, light_inv);
+            vec4 ndc = {(c & 1) ? 1.f : -1.f, (c & 2) ? 1.f : -1.f, (c & 4) ? 1.f : -1.f, 1}, w;
+            glm_mat4_mulv(light_inv, ndc, w);
+            for (int k = 0; k < 3; k++) box[c][k] = w[k] / w[3];
+        }
+        counts[i][0] = _sl_lab6_box_edges(slice, vertices[i][0]);
+        counts[i][1] = _sl_lab6_box_edges(box, vertices[i][1]);
+    }
+    mat4 scene_view, scene_proj;
+    sl_camera_view(&scene->camera, scene_view);
+    sl_camera_projection(&scene->camera, aspect, scene_proj);
+    glUseProgram(prog->id);
+    glUniformMatrix4fv(glGetUniformLocation(prog->id, "u_view"), 1, GL_FALSE, (const float *)scene_view);
+    glUniformMatrix4fv(glGetUniformLocation(prog->id, "u_projection"), 1, GL_FALSE, (const float *)scene_proj);
+    GLint colour = glGetUniformLocation(prog->id, "u_albedo");
+    glBindVertexArray(s->line_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, s->line_buffer);
+    glDisable(GL_DEPTH_TEST); /* the boxes reach under the ground: show them whole */
+    for (int i = 0; i < info->cascade_count; i++)
+        for (int which = 0; which < 2; which++) {
+            float dim = which ? 0.55f : 1.0f; /* light boxes darker than the slices */
+            glUniform3f(colour, colours[i][0] * dim, colours[i][1] * dim, colours[i][2] * dim);
+            glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(counts[i][which] * 3 * sizeof(float)), vertices[i][which],
+                         GL_STREAM_DRAW);
+            glDrawArrays(GL_LINES, 0, counts[i][which]);
+        }
+    glEnable(GL_DEPTH_TEST);
+    glBindVertexArray(0);
+    sl_renderer_timer_mark(r, "frustum lines");
+}
+
 void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target, int width,
                   int height) {
     sl_frame_info *info = &r->info;
@@ -282,6 +370,8 @@ void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params 
     if (ok) ok = _sl_lab6_depth_passes(r, scene, params);
     info->cascades_ready = ok;
     _sl_lab6_camera_pass(r, scene, params, ok, target, width, height);
+    if (ok && params->cascades.use_camera && params->cascades.show_frustum)
+        _sl_lab6_frustum_lines(r, scene, params, aspect);
     if (ok && params->show_shadow_map) sl_lab6_debug_view(r, width, height);
 }
 

@@ -33,6 +33,7 @@ typedef struct sl_cascade_params {
     float max_distance;  /* view depth the last cascade ends at (0: the camera's far plane) */
     float caster_margin; /* world units the light's depth range reaches beyond the slice's sphere */
     bool show_cascades;  /* shaded output tinted by cascade (viewer) */
+    bool show_frustum;   /* with use_camera: the slices of `camera`'s frustum and their light boxes, as lines */
     bool use_camera;
     sl_camera camera;
 } sl_cascade_params;
