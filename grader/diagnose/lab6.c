@@ -137,9 +137,9 @@ void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_resu
         sl_diag_cause(out, "fix the cascades' visibility first (the other checks of lab 6 say how)");
         return;
     }
-    sl_diag_say(out, "shadows shimmer as the camera moves: snap the projection to whole texels (%.2f%% of the "
-                     "world-fixed receiver pixels change from one frame to the next, allowed %.2f%%; the reference: "
-                     "%.2f%%)",
+    sl_diag_say(out, "shadows shimmer as the camera moves: snap the projection to whole texels (%.3f%% of the "
+                     "world-fixed receiver pixels change from one frame to the next, allowed %.3f%%; the reference: "
+                     "%.3f%%)",
                 100 * got.score, 100 * k->threshold, 100 * want.score);
     if (_sl_path_turns(c))
         sl_diag_cause(out, "here the camera only turns: keep each cascade's size fixed as it turns (a bounding sphere, "
