@@ -48,6 +48,30 @@ void sl_lab6_release(sl_renderer *r) {
     r->lab6 = NULL;
 }
 
+bool sl_lab6_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
+    struct _sl_lab6 *s = r->lab6;
+    if (!s) return true;
+    struct {
+        _sl_lab6_program *p;
+        int lab;
+    } watched[] = {{&s->depth, 1}, {&s->scene[0], 6}, {&s->scene[1], 6}, {&s->scene[2], 6}};
+    bool ok = true;
+    for (size_t i = 0; i < sizeof watched / sizeof watched[0]; i++) {
+        _sl_lab6_program *p = watched[i].p;
+        if (!p->attempted) continue;
+        char e[sizeof r->shader_errors[0]];
+        if (sl_program_reload_if_changed(&p->program, e, sizeof e)) {
+            r->shader_errors[watched[i].lab][0] = '\0';
+            *reloaded = true;
+        } else if (e[0]) {
+            snprintf(r->shader_errors[watched[i].lab], sizeof r->shader_errors[0], "%s", e);
+            if (ok) snprintf(err, err_size, "%s", e);
+            ok = false;
+        }
+    }
+    return ok;
+}
+
 const sl_camera *sl_lab6_fit_camera(const sl_scene *scene, const sl_render_params *params) {
     return params->cascades.use_camera ? &params->cascades.camera : &scene->camera;
 }

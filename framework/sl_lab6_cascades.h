@@ -22,6 +22,8 @@ void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params 
 /* The cascades' layers side by side along the bottom of the picture (viewer overlay). */
 void sl_lab6_debug_view(sl_renderer *r, int width, int height);
 void sl_lab6_release(sl_renderer *r);
+/* Rebuilds lab 6's programs whose files changed (the viewer's hot reload); false with err set if one failed. */
+bool sl_lab6_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size);
 
 /* The camera the cascades of this frame are fitted to: params' frozen one, or the scene's. */
 const sl_camera *sl_lab6_fit_camera(const sl_scene *scene, const sl_render_params *params);

@@ -288,6 +288,11 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
         if (ok) snprintf(err, err_size, "%s", r->shader_errors[now[i].lab]);
         ok = false;
     }
+    char lab6_err[sizeof r->shader_errors[0]]; /* lab 6's programs live in sl_lab6_cascades.c */
+    if (!sl_lab6_reload_changed(r, reloaded, lab6_err, sizeof lab6_err)) {
+        if (ok) snprintf(err, err_size, "%s", lab6_err);
+        ok = false;
+    }
     return ok;
 }
 
