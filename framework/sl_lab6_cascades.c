@@ -274,10 +274,12 @@ static void _sl_lab6_camera_pass(sl_renderer *r, const sl_scene *scene, const sl
     glUniform1i(glGetUniformLocation(id, "u_shadows"), shadowed ? 1 : 0);
     if (shadowed) {
         int count = info->cascade_count;
-        float split_far[4] = {0, 0, 0, 0}, texel[4] = {0, 0, 0, 0}, depth_scale[4] = {0, 0, 0, 0};
+        float split_far[4] = {0, 0, 0, 0}, split_near[4] = {0, 0, 0, 0}, texel[4] = {0, 0, 0, 0},
+              depth_scale[4] = {0, 0, 0, 0};
         int size = p->shadow_map_size > 0 ? p->shadow_map_size : 1024;
         for (int i = 0; i < count; i++) {
             split_far[i] = info->cascade_splits[i + 1];
+            split_near[i] = info->cascade_splits[i];
             /* the world size of a texel and of the depth range, from the projection lab 6 built */
             float sx = info->cascade_projection[i][0][0], sz = info->cascade_projection[i][2][2];
             texel[i] = sx != 0 ? 2.0f / sx / (float)size : 0;
@@ -285,6 +287,8 @@ static void _sl_lab6_camera_pass(sl_renderer *r, const sl_scene *scene, const sl
         }
         glUniform1i(glGetUniformLocation(id, "u_cascade_count"), count);
         glUniform4fv(glGetUniformLocation(id, "u_split_far"), 1, split_far);
+        glUniform4fv(glGetUniformLocation(id, "u_split_near"), 1, split_near);
+        glUniform1f(glGetUniformLocation(id, "u_blend_band"), p->cascades.blend_band);
         glUniform4fv(glGetUniformLocation(id, "u_texel_world"), 1, texel);
         glUniform4fv(glGetUniformLocation(id, "u_depth_per_world"), 1, depth_scale);
         glUniformMatrix4fv(glGetUniformLocation(id, "u_cascade_matrix"), count, GL_FALSE,

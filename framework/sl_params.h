@@ -32,6 +32,7 @@ typedef struct sl_cascade_params {
     float lambda;        /* practical split scheme: 0 uniform, 1 logarithmic */
     float max_distance;  /* view depth the last cascade ends at (0: the camera's far plane) */
     float caster_margin; /* world units the light's depth range reaches beyond the slice's sphere */
+    float blend_band;    /* bonus: the last fraction of each cascade's range blended with the next (0: off) */
     bool show_cascades;  /* shaded output tinted by cascade (viewer) */
     bool show_frustum;   /* with use_camera: the slices of `camera`'s frustum and their light boxes, as lines */
     bool use_camera;

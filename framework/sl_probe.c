@@ -108,6 +108,10 @@ static const sl_probe_function _sl_functions[] = {
      .outputs = "layer", .output_count = 1,
      .params = {_SL_V3("view_position"), _SL_V4("split_far"), _SL_I("count")}, .param_count = 3, .stub_param = -1,
      .stub_value = 0.0},
+    {.name = "cascade_blend", .lab = 6, .glsl = true, .file = "lab6_cascades/shaders/cascades.glsl", .todo = "lab6.6",
+     .outputs = "weight", .output_count = 1,
+     .params = {_SL_F("view_depth"), _SL_F("split_near"), _SL_F("split_far"), _SL_F("band")}, .param_count = 4,
+     .stub_param = -1, .stub_value = 0.0, .bonus = true},
 };
 
 #define _SL_FUNCTION_COUNT ((int)(sizeof _sl_functions / sizeof _sl_functions[0]))

@@ -56,6 +56,7 @@ static void _sl_usage(FILE *f) {
             "  --cascades N        lab 6: cascades, 1..4; default 4\n"
             "  --lambda X          lab 6: the split scheme's weight, 0 uniform .. 1 logarithmic; default 0.8\n"
             "  --show-cascades     lab 6: tint each pixel by the cascade it uses\n"
+            "  --blend-band X      lab 6 (bonus): blend the last fraction X of each cascade with the next\n"
             "  --freeze            lab 6: freeze the camera's frustum and look at it, its slices and\n"
             "                      their light boxes from above\n"
             "  --visibility        show the visibility term alone (what the grader compares)\n"
@@ -72,7 +73,7 @@ static void _sl_usage(FILE *f) {
             "keys: 1-4 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
             "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
-            "      lab 6: 6 lab 6, K cascade colours, N cascade count, , . lambda, Z freeze the\n"
+            "      lab 6: 6 lab 6, K cascade colours, N cascade count, , . lambda, J blend band, Z freeze the\n"
             "      frustum (view from above), W A S D Q E fly (Shift: faster), M the cascades' layers;\n"
             "      shaders reload when their files change\n",
             sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
@@ -99,8 +100,9 @@ static void _sl_update_title(_sl_viewer *v) {
     if (p->lab >= 4 && p->filter.mode == SL_FILTER_PCSS)
         snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " light %.2f", v->scene.light.size);
     if (p->lab == 6) /* lab 6: cascades */
-        snprintf(settings, sizeof settings, "%d cascades, lambda %.2f%s%s", p->cascades.count, p->cascades.lambda,
-                 p->cascades.show_cascades ? ", coloured" : "", v->frozen ? ", frustum frozen (Z)" : "");
+        snprintf(settings, sizeof settings, "%d cascades, lambda %.2f%s%s%s", p->cascades.count, p->cascades.lambda,
+                 p->cascades.blend_band > 0 ? ", blend band" : "", p->cascades.show_cascades ? ", coloured" : "",
+                 v->frozen ? ", frustum frozen (Z)" : "");
     int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s", p->lab, v->scene.name, settings,
                      p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "");
     if (info->not_implemented_count > 0 && n > 0 && (size_t)n < sizeof title)
@@ -195,6 +197,7 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     case GLFW_KEY_COMMA: v->params.cascades.lambda = glm_clamp(v->params.cascades.lambda - 0.1f, 0, 1); break;
     case GLFW_KEY_PERIOD: v->params.cascades.lambda = glm_clamp(v->params.cascades.lambda + 0.1f, 0, 1); break;
     case GLFW_KEY_Z: _sl_freeze(v, !v->frozen); break;
+    case GLFW_KEY_J: v->params.cascades.blend_band = v->params.cascades.blend_band > 0 ? 0 : 0.2f; break;
     case GLFW_KEY_W: case GLFW_KEY_A: case GLFW_KEY_S: case GLFW_KEY_D: case GLFW_KEY_Q: case GLFW_KEY_E:
         return; /* flying: polled every frame (_sl_fly) */
     case GLFW_KEY_B: v->params.bias.mode = (sl_bias_mode)((v->params.bias.mode + 1) % SL_BIAS_MODE_COUNT); break;
@@ -267,7 +270,7 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
                            strcmp(a, "--backend") == 0 || strcmp(a, "--cascades") == 0 ||
-                           strcmp(a, "--lambda") == 0;
+                           strcmp(a, "--lambda") == 0 || strcmp(a, "--blend-band") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -347,6 +350,12 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.cascades.lambda = (float)atof(next);
             if (v.params.cascades.lambda < 0 || v.params.cascades.lambda > 1) {
                 fprintf(stderr, "shadowlab: --lambda is 0..1\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--blend-band") == 0) {
+            v.params.cascades.blend_band = (float)atof(next);
+            if (v.params.cascades.blend_band < 0 || v.params.cascades.blend_band > 1) {
+                fprintf(stderr, "shadowlab: --blend-band is 0..1\n");
                 return 2;
             }
         } else if (strcmp(a, "--show-cascades") == 0) {

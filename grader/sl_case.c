@@ -179,10 +179,12 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     if (cascades) {
         sl_cascade_params *cp = &c->params.cascades;
         double count = cp->count, lambda = cp->lambda, max_distance = cp->max_distance, margin = cp->caster_margin;
+        double band = cp->blend_band;
         if (!cJSON_IsObject(cascades) || !_sl_number(cascades, "count", &count, 1, SL_MAX_CASCADES, c->path, err, n) ||
             !_sl_number(cascades, "lambda", &lambda, 0, 1, c->path, err, n) ||
             !_sl_number(cascades, "max_distance", &max_distance, 0, 1e6, c->path, err, n) ||
-            !_sl_number(cascades, "caster_margin", &margin, 0, 1e6, c->path, err, n)) {
+            !_sl_number(cascades, "caster_margin", &margin, 0, 1e6, c->path, err, n) ||
+            !_sl_number(cascades, "blend_band", &band, 0, 1, c->path, err, n)) {
             if (!cJSON_IsObject(cascades)) snprintf(err, n, "%s: \"cascades\" must be an object", c->path);
             return false;
         }
@@ -190,6 +192,7 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
         cp->lambda = (float)lambda;
         cp->max_distance = (float)max_distance;
         cp->caster_margin = (float)margin;
+        cp->blend_band = (float)band;
     }
     const cJSON *compare = cJSON_GetObjectItemCaseSensitive(json, "compare");
     if (compare) {

@@ -18,3 +18,12 @@ int cascade_index(vec3 view_position, vec4 split_far, int count) {
 float cascade_compare(sampler2DArray cascades, int layer, vec4 shadow_coord, float bias) {
     return 1.0;
 }
+
+// TODO(lab6.6), bonus: a blend band. In the last `band` fraction of a
+// cascade's depth range (split_near..split_far), return the weight of the
+// NEXT cascade: 0 at split_far - band * (split_far - split_near), growing
+// linearly to 1 at split_far; 0 before that, and 0 when band <= 0. The
+// framework then mixes the two cascades' results (README.md, "Blend band").
+float cascade_blend(float view_depth, float split_near, float split_far, float band) {
+    return 0.0;
+}

@@ -22,3 +22,13 @@ float cascade_compare(sampler2DArray cascades, int layer, vec4 shadow_coord, flo
     float stored = texture(cascades, vec3(p.xy, float(layer))).r;
     return p.z - bias > stored ? 0.0 : 1.0;
 }
+
+// TODO(lab6.6), bonus: a blend band. In the last `band` fraction of a
+// cascade's depth range (split_near..split_far), the weight of the NEXT
+// cascade grows linearly from 0 to 1, so the change of texel size at a split
+// fades in instead of showing as a line. 0 everywhere else, 0 when band <= 0.
+float cascade_blend(float view_depth, float split_near, float split_far, float band) {
+    if (band <= 0.0) return 0.0;
+    float start = split_far - band * (split_far - split_near);
+    return clamp((view_depth - start) / (split_far - start), 0.0, 1.0);
+}
