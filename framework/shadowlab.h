@@ -135,5 +135,24 @@ sl_status lab5_begin_blur_pass(const sl_moments_target *target, int direction);
 /* After the blur: mipmaps of moments[0] and trilinear filtering. */
 sl_status lab5_filter_moments(const sl_moments_target *target);
 void lab5_destroy_moments_target(sl_moments_target *target);
+/* ---- Lab 6: cascaded shadow maps (labs/lab6_cascades/lab6.c) ------------ */
+#define SL_MAX_CASCADES 4
+
+/* Where the cascades begin and end, as view depths (distance along the
+ * camera's view direction): splits[0] = near, splits[count] = far, between
+ * them the practical split scheme with weight lambda (Zhang et al. 2006). */
+sl_status lab6_split_distances(float near, float far, int count, float lambda, float splits[SL_MAX_CASCADES + 1]);
+/* The bounding sphere (dest: centre x, y, z and radius) of the slice of the
+ * camera's frustum between view depths split_near and split_far. The frustum
+ * is given by the inverse of the camera's projection * view and its own
+ * near and far planes. */
+sl_status lab6_slice_sphere(mat4 inv_view_projection, float near, float far, float split_near, float split_far,
+                            vec4 dest);
+/* One cascade's light camera: a view along light->direction and an
+ * orthographic projection around `sphere`, whose depth range reaches
+ * caster_margin further towards the light, moved so the world stays on the
+ * texel grid of a map_size x map_size map (texel snapping). */
+sl_status lab6_cascade_matrices(const sl_light *light, vec4 sphere, float caster_margin, int map_size, mat4 light_view,
+                                mat4 light_projection);
 
 #endif

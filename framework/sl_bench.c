@@ -32,6 +32,7 @@ typedef struct _sl_technique {
     bool baseline;      /* sl_bench_baseline's plain program, not the labs' (grid_radius: its kernel) */
     bool set_vsm;       /* lab 5 */
     int blur_radius;
+    int cascades;       /* lab 6: the cascade count (0: the default's) */
 } _sl_technique;
 
 #define _SL_ROW(n, w, s, l, d) .name = n, .what = w, .scene = s, .lab = l, .lab_default = d
@@ -96,6 +97,11 @@ static const _sl_technique _sl_techniques[] = {
      .blur_radius = 8},
     {_SL_ROW("lab5-pcf-r8", "PCF grid 17x17, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 8},
+    /* lab 6: one depth pass per cascade (each --map-size square), the camera pass picks one per pixel */
+    {_SL_ROW("lab6", "4 cascades, lambda 0.8", "cascade_field", 6, true), .cascades = 4},
+    {_SL_ROW("lab6-2-cascades", "2 cascades, lambda 0.8", "cascade_field", 6, false), .cascades = 2},
+    {_SL_ROW("lab6-1-cascade", "1 cascade: one map over the view (for scale)", "cascade_field", 6, false),
+     .cascades = 1},
 };
 #undef _SL_ROW
 #define _SL_TECHNIQUE_COUNT ((int)(sizeof _sl_techniques / sizeof _sl_techniques[0]))
@@ -227,6 +233,7 @@ static void _sl_params_for(const _sl_technique *t, int map_size, sl_render_param
         p->vsm.blur_radius = t->blur_radius;
         p->vsm.map_size = 0; /* the shadow map's size, as lab 4's grid: the same texels, the same footprint */
     }
+    if (t->cascades > 0) p->cascades.count = t->cascades;
 }
 
 /* Says what kept a frame from drawing the technique in full: stubs, errors, a lower lab. */

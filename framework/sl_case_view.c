@@ -69,6 +69,10 @@ static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
     p.output = v->check->kind == SL_CHECK_IMAGE ? SL_OUTPUT_SHADED : SL_OUTPUT_VISIBILITY;
     for (int f = 0; f < c->frame_count; f++) {
         scene.light = c->frame_lights[f];
+        if (c->camera_path) { /* lab 6: the cascades follow the path, the picture stays */
+            p.cascades.use_camera = true;
+            p.cascades.camera = c->frame_cameras[f];
+        }
         sl_renderer_draw(&v->renderer, &scene, &p, v->target_fbo, c->width, c->height);
     }
     const sl_frame_info *info = sl_renderer_info(&v->renderer);

@@ -1,5 +1,5 @@
 /* sl_lab5_vsm: lab 5's passes before the camera pass, called by the renderer
- * when params.lab >= 5:
+ * when params.lab == 5:
  *
  *   1. lab 5 creates its moments targets (once per size) and begins the
  *      moments pass; the framework draws every object from the light with

@@ -8,4 +8,5 @@ const sl_lab_functions sl_build_lab_functions = {
     /* lab 5 */
     lab5_create_moments_target, lab5_begin_moments_pass, lab5_begin_blur_pass, lab5_filter_moments,
     lab5_destroy_moments_target,
+    lab6_split_distances,   lab6_slice_sphere,     lab6_cascade_matrices,
 };

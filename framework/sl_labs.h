@@ -23,6 +23,12 @@ typedef struct sl_lab_functions {
     sl_status (*lab5_begin_blur_pass)(const sl_moments_target *target, int direction);
     sl_status (*lab5_filter_moments)(const sl_moments_target *target);
     void (*lab5_destroy_moments_target)(sl_moments_target *target);
+    /* lab 6 */
+    sl_status (*lab6_split_distances)(float near, float far, int count, float lambda, float *splits);
+    sl_status (*lab6_slice_sphere)(mat4 inv_view_projection, float near, float far, float split_near, float split_far,
+                                   vec4 dest);
+    sl_status (*lab6_cascade_matrices)(const sl_light *light, vec4 sphere, float caster_margin, int map_size,
+                                       mat4 light_view, mat4 light_projection);
 } sl_lab_functions;
 
 /* The labs this binary was built from (labs/, solutions/, or for the

@@ -4,7 +4,7 @@
 
 void sl_render_params_defaults(sl_render_params *p) {
     *p = (sl_render_params){
-        .lab = SL_LAB_COUNT,
+        .lab = 4, /* labs 1-4 build on each other; 5 (VSM) and 6 (cascades) are techniques of their own (--lab N) */
         .shadow_map_size = 1024,
         .compare = SL_COMPARE_MANUAL,
         .bias = {
@@ -21,6 +21,7 @@ void sl_render_params_defaults(sl_render_params *p) {
          * the blur costs per texel (labs/lab5_vsm/README.md, "Performance") */
         .vsm = {.blur_radius = 2, .min_variance = 0.00002f, .bleeding = 0.3f, .map_size = 512},
         .output = SL_OUTPUT_SHADED,
+        .cascades = {.count = 4, .lambda = 0.8f, .max_distance = 0, .caster_margin = 40.0f},
     };
 }
 
@@ -62,7 +63,7 @@ bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
 
 const char *sl_lab_folder(int lab) {
     static const char *const folders[SL_LAB_COUNT + 1] = {NULL, "lab1_depth_fbo", "lab2_projective", "lab3_bias",
-                                                          "lab4_pcf", "lab5_vsm"};
+                                                          "lab4_pcf", "lab5_vsm", "lab6_cascades"};
     return lab >= 1 && lab <= SL_LAB_COUNT ? folders[lab] : NULL;
 }
 

@@ -8,13 +8,36 @@
 #include <stdbool.h>
 
 #include "shadowlab.h"
+#include "sl_scene.h"
 
-#define SL_LAB_COUNT 5  /* labs with code in this project */
+#define SL_LAB_COUNT 6  /* the highest lab with code in this project (sl_lab_folder: the ones present) */
 #define SL_LAB_MAX 7    /* labs the course plans: case files may name 1..7 */
 
 typedef enum sl_compare_mode { SL_COMPARE_MANUAL = 0, SL_COMPARE_HARDWARE = 1 } sl_compare_mode;
 /* SL_OUTPUT_LIT_MASK: white where a surface faces the light (the grader's "lit surfaces"). */
-typedef enum sl_output { SL_OUTPUT_SHADED = 0, SL_OUTPUT_VISIBILITY = 1, SL_OUTPUT_LIT_MASK = 2 } sl_output;
+/* SL_OUTPUT_CASCADE_INDEX (lab 6): the cascade each pixel used, as a number (-1: none, background). */
+typedef enum sl_output {
+    SL_OUTPUT_SHADED = 0,
+    SL_OUTPUT_VISIBILITY = 1,
+    SL_OUTPUT_LIT_MASK = 2,
+    SL_OUTPUT_CASCADE_INDEX = 3,
+} sl_output;
+
+/* Lab 6: the cascades. The camera they are fitted to (and whose view depth
+ * picks one) is the scene's, unless use_camera: then `camera`, which the
+ * viewer's frozen frustum and the grader's camera paths use while the
+ * picture is drawn from the scene's camera. */
+typedef struct sl_cascade_params {
+    int count;           /* 1..SL_MAX_CASCADES */
+    float lambda;        /* practical split scheme: 0 uniform, 1 logarithmic */
+    float max_distance;  /* view depth the last cascade ends at (0: the camera's far plane) */
+    float caster_margin; /* world units the light's depth range reaches beyond the slice's sphere */
+    float blend_band;    /* bonus: the last fraction of each cascade's range blended with the next (0: off) */
+    bool show_cascades;  /* shaded output tinted by cascade (viewer) */
+    bool show_frustum;   /* with use_camera: the slices of `camera`'s frustum and their light boxes, as lines */
+    bool use_camera;
+    sl_camera camera;
+} sl_cascade_params;
 
 typedef struct sl_render_params {
     int lab;                 /* labs in use, 1..SL_LAB_COUNT: 1 = depth pass only */
@@ -26,6 +49,7 @@ typedef struct sl_render_params {
     bool vsm_off;            /* lab 5 in use, but lab 4's filter instead (the viewer's VSM vs PCF key) */
     sl_output output;
     bool show_shadow_map;    /* debug view of the depth map in a corner */
+    sl_cascade_params cascades; /* lab 6 */
 } sl_render_params;
 
 void sl_render_params_defaults(sl_render_params *params);
@@ -36,7 +60,8 @@ bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode);
 const char *sl_filter_mode_name(sl_filter_mode mode);
 bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode);
 
-/* Folder of lab N under a labs tree ("lab1_depth_fbo"), N = 1..SL_LAB_COUNT; NULL otherwise. */
+/* Folder of lab N under a labs tree ("lab1_depth_fbo"), N = 1..SL_LAB_COUNT; NULL otherwise, and NULL for a
+ * lab number this project has no code for (yet): loops over labs skip those. */
 const char *sl_lab_folder(int lab);
 /* "depth FBO", ..., N = 1..SL_LAB_MAX; "?" otherwise. */
 const char *sl_lab_title(int lab);

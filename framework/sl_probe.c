@@ -99,6 +99,29 @@ static const sl_probe_function _sl_functions[] = {
     {.name = "reduce_light_bleeding", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/vsm.glsl", .todo = "lab5.8",
      .outputs = "visibility", .output_count = 1, .params = {_SL_F("p_max"), _SL_F("amount")}, .param_count = 2,
      .stub_param = 0},
+    /* lab 6: splits (unused ones 0), a slice's sphere from a camera the probe builds, one cascade's light camera
+     * (its projection * view: the light's camera is free to sit anywhere along the light's ray) */
+    {.name = "lab6_split_distances", .lab = 6, .file = "lab6_cascades/lab6.c", .todo = "lab6.1",
+     .outputs = "splits[0],splits[1],splits[2],splits[3],splits[4]", .output_count = 5,
+     .params = {_SL_F("near"), _SL_F("far"), _SL_I("count"), _SL_F("lambda")}, .param_count = 4, .stub_param = -1,
+     .stub_value = NAN},
+    {.name = "lab6_slice_sphere", .lab = 6, .file = "lab6_cascades/lab6.c", .todo = "lab6.2",
+     .outputs = "x,y,z,radius", .output_count = 4,
+     .params = {_SL_V3("eye"), _SL_V3("target"), _SL_F("fov_deg"), _SL_F("aspect"), _SL_F("near"), _SL_F("far"),
+                _SL_F("split_near"), _SL_F("split_far")},
+     .param_count = 8, .stub_param = -1, .stub_value = NAN},
+    {.name = "lab6_cascade_matrices", .lab = 6, .file = "lab6_cascades/lab6.c", .todo = "lab6.3",
+     .outputs = _SL_MATRIX_OUT, .output_count = 16,
+     .params = {_SL_V3("direction"), _SL_V4("sphere"), _SL_F("caster_margin"), _SL_I("map_size")}, .param_count = 4,
+     .stub_param = -1, .stub_value = NAN},
+    {.name = "cascade_index", .lab = 6, .glsl = true, .file = "lab6_cascades/shaders/cascades.glsl", .todo = "lab6.4",
+     .outputs = "layer", .output_count = 1,
+     .params = {_SL_V3("view_position"), _SL_V4("split_far"), _SL_I("count")}, .param_count = 3, .stub_param = -1,
+     .stub_value = 0.0},
+    {.name = "cascade_blend", .lab = 6, .glsl = true, .file = "lab6_cascades/shaders/cascades.glsl", .todo = "lab6.6",
+     .outputs = "weight", .output_count = 1,
+     .params = {_SL_F("view_depth"), _SL_F("split_near"), _SL_F("split_far"), _SL_F("band")}, .param_count = 4,
+     .stub_param = -1, .stub_value = 0.0, .bonus = true},
 };
 
 #define _SL_FUNCTION_COUNT ((int)(sizeof _sl_functions / sizeof _sl_functions[0]))

@@ -379,6 +379,32 @@ static sl_status _sl_call_c(const sl_probe_function *f, const float *in, double 
         out[3] = glIsEnabled(GL_CULL_FACE);
         out[4] = out[3] ? face : 0;
         _sl_neutral_depth_state();
+    } else if (strcmp(f->name, "lab6_split_distances") == 0) {
+        float splits[SL_MAX_CASCADES + 1] = {0};
+        int count = (int)in[2];
+        status = labs->lab6_split_distances(in[0], in[1], count, in[3], splits);
+        for (int i = 0; i <= SL_MAX_CASCADES; i++) out[i] = i <= count ? splits[i] : 0;
+    } else if (strcmp(f->name, "lab6_slice_sphere") == 0) {
+        sl_camera cam = {.fov_deg = in[6], .near = in[8], .far = in[9]};
+        _sl_vec3(in + 0, cam.position);
+        _sl_vec3(in + 3, cam.target);
+        mat4 view, proj, vp, inv;
+        sl_camera_view(&cam, view);
+        sl_camera_projection(&cam, in[7], proj);
+        glm_mat4_mul(proj, view, vp);
+        glm_mat4_inv(vp, inv);
+        vec4 sphere = {0, 0, 0, 0};
+        status = labs->lab6_slice_sphere(inv, cam.near, cam.far, in[10], in[11], sphere);
+        for (int i = 0; i < 4; i++) out[i] = sphere[i];
+    } else if (strcmp(f->name, "lab6_cascade_matrices") == 0) {
+        sl_light light = _sl_light(SL_LIGHT_DIRECTIONAL, in + 0, in + 0);
+        vec4 sphere = {in[3], in[4], in[5], in[6]};
+        mat4 view, proj, vp;
+        glm_mat4_identity(view);
+        glm_mat4_identity(proj);
+        status = labs->lab6_cascade_matrices(&light, sphere, in[7], (int)in[8], view, proj);
+        glm_mat4_mul(proj, view, vp);
+        _sl_store_matrix(vp, out);
     } else if (strcmp(f->name, "lab4_configure_shadow_texture") == 0) {
         GLuint tex;
         glGenTextures(1, &tex);

@@ -4,10 +4,10 @@
 
 static const char *const _sl_capture_names[SL_CAPTURE_END] = {
     "fbo", "depth_map", "matrices", "visibility", "lit_mask", "image",
-    "moments", "moments_blurred", "moments_target", "visibility_unreduced",
+    "moments", "moments_blurred", "moments_target", "visibility_unreduced", "cascade_index", "flicker",
     "probe_0", "probe_1", "probe_2", "probe_3", "probe_4", "probe_5", "probe_6", "probe_7",
 };
-_Static_assert(SL_CAPTURE_END == 18, "a name for every capture");
+_Static_assert(SL_CAPTURE_END == 20, "a name for every capture");
 
 const char *sl_capture_name(int capture) {
     return capture >= 0 && capture < SL_CAPTURE_END ? _sl_capture_names[capture] : "?";

@@ -42,6 +42,8 @@ typedef enum sl_capture_kind {
     SL_CAPTURE_MOMENTS_BLURRED, /* image, 2 channels: the moments the camera pass reads, map size */
     SL_CAPTURE_MOMENTS_TARGET,  /* numbers: lab 5's target, as glGet* reports it */
     SL_CAPTURE_VISIBILITY_UNREDUCED, /* image, 1 channel: the visibility without light-bleeding reduction */
+    SL_CAPTURE_CASCADE_INDEX, /* lab 6: image, 1 channel: the cascade each pixel used (-1: none), camera size */
+    SL_CAPTURE_FLICKER,    /* lab 6: image, 1 channel: every frame's visibility, stacked: camera width x height * frames */
     SL_CAPTURE_KIND_COUNT,
     /* numbers: the outputs of probe table k, "probe_k"; rows x outputs */
     SL_CAPTURE_PROBE = SL_CAPTURE_KIND_COUNT,
@@ -65,6 +67,9 @@ typedef struct sl_job {
     sl_scene scene;
     sl_light frame_lights[SL_JOB_MAX_FRAMES]; /* the light of each frame; the last frame is captured */
     int frame_count;
+    /* lab 6: the camera the cascades are fitted to in each frame (the picture keeps the scene's camera) */
+    bool camera_path;
+    sl_camera frame_cameras[SL_JOB_MAX_FRAMES];
     sl_render_params params;
     uint32_t captures;             /* bit (1 << capture) per capture wanted; probe k: SL_CAPTURE_PROBE + k */
     sl_probe_table probes[SL_JOB_MAX_PROBES]; /* function -1: none */

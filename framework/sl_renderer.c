@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_renderer.h"
 
+#include "sl_lab6_cascades.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -44,6 +46,7 @@ void sl_renderer_lab_enter(const char *function) {
     if (sl_lab_call_hook) sl_lab_call_hook(function);
 }
 
+void sl_renderer_enter_lab(const char *function) { _sl_enter(function); }
 bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status) {
     return _sl_lab_result(r, function, status);
 }
@@ -299,6 +302,11 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
         if (ok) snprintf(err, err_size, "%s", vsm_err);
         ok = false;
     }
+    char lab6_err[sizeof r->shader_errors[0]]; /* lab 6's programs live in sl_lab6_cascades.c */
+    if (!sl_lab6_reload_changed(r, reloaded, lab6_err, sizeof lab6_err)) {
+        if (ok) snprintf(err, err_size, "%s", lab6_err);
+        ok = false;
+    }
     return ok;
 }
 
@@ -327,6 +335,7 @@ void sl_renderer_destroy(sl_renderer *r) {
         for (int i = 0; i < ps->variant_count; i++) sl_program_destroy(&ps->variants[i].slot.program);
         free(ps);
     }
+    sl_lab6_release(r);
     if (r->empty_vao) glDeleteVertexArrays(1, &r->empty_vao);
     if (r->timer_queries[0]) glDeleteQueries(SL_MAX_PASSES + 1, r->timer_queries);
     memset(r, 0, sizeof *r);
@@ -367,6 +376,8 @@ static void _sl_timer_mark(sl_renderer *r, const char *finished_pass) {
         glQueryCounter(r->timer_queries[r->timer_count], GL_TIMESTAMP);
     }
 }
+
+void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass) { _sl_timer_mark(r, finished_pass); }
 
 bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out) {
     *out = (sl_frame_timing){0};
@@ -429,8 +440,6 @@ void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model
         sl_mesh_draw(&r->meshes[i]);
     }
 }
-
-void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass) { _sl_timer_mark(r, finished_pass); }
 
 static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const _sl_uniforms *u, bool colours) {
     for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
@@ -579,9 +588,10 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     int lab = 0;
     if (info->shadow_map_ready && info->lab2_ready) {
         lab = p->lab < SL_RENDERER_MAX_LAB ? p->lab : SL_RENDERER_MAX_LAB;
+        if (lab > 5) lab = 4; /* the single-map pipeline ends at lab 5 (VSM); lab 6 draws in sl_lab6_cascades.c */
         if (depth_lab < 3 && lab > 2) lab = 2;
         /* lab 5: its moments, or lab 4's filters when they are not there (or VSM is switched off) */
-        if (lab >= 5 && (!info->moments_ready || p->vsm_off)) lab = 4;
+        if (lab == 5 && (!info->moments_ready || p->vsm_off)) lab = 4;
     }
     if (lab == 4) {
         glActiveTexture(GL_TEXTURE0);
@@ -707,11 +717,17 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->lab_in_use = 0;
     r->programs->frame++;
     _sl_timer_mark(r, NULL);
+    if (params->lab == 6) { /* cascades: a frame of their own (sl_lab6_cascades.c) */
+        sl_lab6_draw(r, scene, params, target, width, height);
+        glBindVertexArray(0);
+        glUseProgram(0);
+        return;
+    }
     _sl_light_matrices(r, scene, params);
     _sl_reset_state(0, width, height);
     int depth_lab = _sl_depth_pass(r, scene, params);
     info->moments_ready = false;
-    if (params->lab >= 5 && !params->vsm_off) { /* off: lab 4's filter alone, as fast as in lab 4 */
+    if (params->lab == 5 && !params->vsm_off) { /* off: lab 4's filter alone, as fast as in lab 4 */
         _sl_reset_state(0, width, height);
         sl_vsm_passes(r, scene, params);
     }

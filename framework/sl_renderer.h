@@ -45,6 +45,14 @@ typedef struct sl_frame_info {
     sl_shadow_map shadow_map;    /* lab 1's map, for inspection */
     bool moments_ready;          /* lab 5: moments drawn, blurred and filtered this frame */
     sl_moments_target moments_target; /* lab 5's targets, for inspection */
+    /* lab 6 (sl_lab6_cascades.c): the cascades of this frame */
+    bool cascades_ready;         /* lab 6's functions and lab 2's shadow matrix ran, the layers are drawn */
+    int cascade_count;
+    float cascade_splits[SL_MAX_CASCADES + 1];
+    vec4 cascade_spheres[SL_MAX_CASCADES];
+    mat4 cascade_view[SL_MAX_CASCADES], cascade_projection[SL_MAX_CASCADES], cascade_shadow_matrix[SL_MAX_CASCADES];
+    mat4 cascade_fit_view;       /* the view of the camera they were fitted to */
+    GLuint cascade_texture;      /* the depth texture array */
 } sl_frame_info;
 
 /* Per-pass times of one frame, from GL timer queries (glQueryCounter, GL 3.3).
@@ -76,6 +84,7 @@ typedef struct sl_program_stats {
 } sl_program_stats;
 
 struct _sl_programs; /* the program cache (sl_renderer.c) */
+struct _sl_lab6;     /* lab 6's targets and programs (sl_lab6_cascades.c) */
 
 typedef struct sl_renderer {
     const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab (this build's) */
@@ -102,6 +111,7 @@ typedef struct sl_renderer {
     const char *timer_names[SL_MAX_PASSES];
     int timer_count;
     struct sl_vsm *vsm; /* lab 5's targets and programs (sl_lab5_vsm.c), made by its first frame */
+    struct _sl_lab6 *lab6; /* lab 6's frame (sl_lab6_cascades.c), made by its first frame */
 } sl_renderer;
 
 /* Called before each call into lab code with the function's name, so a crash
@@ -148,6 +158,11 @@ bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
 void sl_renderer_lab_enter(const char *function);
 bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status);
 void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model_location);
+/* For the pass modules the renderer calls (sl_lab6_cascades.c): a call into
+ * lab code announced and recorded as the renderer's own (false: the step
+ * stops), and a timestamp after a pass. */
+void sl_renderer_enter_lab(const char *function);
+bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status);
 void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass);
 
 /* Read-backs, as top-down images. */

@@ -222,10 +222,24 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     }
     sl_render_params p = job->params;
     p.output = SL_OUTPUT_VISIBILITY;
+    /* lab 6's flicker: every frame's visibility, stacked top to bottom */
+    sl_image flicker = {0};
+    bool want_flicker = _sl_wants(job, SL_CAPTURE_FLICKER);
+    if (want_flicker) flicker = sl_image_alloc(job->width, job->height * job->frame_count, 1);
     for (int f = 0; f < job->frame_count; f++) {
         scene.light = job->frame_lights[f];
+        if (job->camera_path) { /* lab 6: the cascades follow the path; the picture's camera stays */
+            p.cascades.use_camera = true;
+            p.cascades.camera = job->frame_cameras[f];
+        }
         sl_renderer_draw(&r, &scene, &p, target.framebuffer, job->width, job->height);
         glFinish();
+        sl_image frame;
+        if (want_flicker && flicker.data && sl_capture_framebuffer(target.framebuffer, job->width, job->height, 1, &frame)) {
+            memcpy(flicker.data + (size_t)f * (size_t)job->width * (size_t)job->height, frame.data,
+                   (size_t)job->width * (size_t)job->height * sizeof(float));
+            sl_image_free(&frame);
+        }
     }
     const sl_frame_info *info = sl_renderer_info(&r);
     if (info->shader_error && info->shader_error_lab <= job->lab) {
@@ -242,6 +256,13 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     if (_sl_wants(job, SL_CAPTURE_IMAGE))
         _sl_capture_output(&r, job, &scene, &p, fb, SL_OUTPUT_SHADED, SL_CAPTURE_IMAGE, 3, true);
     _sl_capture_lab5(&r, job, &scene, &p, fb);
+    if (_sl_wants(job, SL_CAPTURE_CASCADE_INDEX))
+        _sl_capture_output(&r, job, &scene, &p, fb, SL_OUTPUT_CASCADE_INDEX, SL_CAPTURE_CASCADE_INDEX, 1, true);
+    if (want_flicker) {
+        if (flicker.data) _sl_send_image(SL_CAPTURE_FLICKER, &flicker);
+        else _sl_send_text(SL_MSG_CAPTURE_ERROR, sl_capture_name(SL_CAPTURE_FLICKER), "out of memory for the capture");
+        sl_image_free(&flicker);
+    }
     for (int i = 0; i < info->not_implemented_count; i++) _sl_missing_add(missing, info->not_implemented[i]);
     if (info->failed) _sl_send(SL_MSG_FAILED, info->failed, NULL, 0);
     if (_sl_wants(job, SL_CAPTURE_FBO) && info->shadow_map.framebuffer + info->shadow_map.depth_texture > 0)

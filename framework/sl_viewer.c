@@ -22,6 +22,10 @@ typedef struct _sl_viewer {
     bool dragging;
     double last_x, last_y;
     bool dirty_title;
+    /* lab 6: the frozen camera's frustum seen from above; the camera to return to */
+    bool frozen;
+    sl_camera walking_camera;
+    double last_frame_time;
 } _sl_viewer;
 
 /* The headless backends of this build, for messages: "osmesa or egl", "egl". */
@@ -33,9 +37,11 @@ static const char *_sl_backend_choices(void) {
 static void _sl_usage(FILE *f) {
     fprintf(f,
             "usage: shadowlab [options]\n"
-            "  --lab N             labs in use: 1 depth map, 2 shadows, 3 bias, 4 filtering, 5 VSM; default 5\n"
+            "  --lab N             labs in use: 1 depth map, 2 shadows, 3 bias, 4 filtering,\n"
+            "                      5 VSM, 6 cascades; default 4\n"
             "  --scene NAME|FILE   a built-in scene (boxes_on_floor, spot_on_floor, curved_grazing,\n"
-            "                      pole_on_floor, thin_caster, long_ground, closed_room) or a scene\n"
+            "                      pole_on_floor, thin_caster, long_ground, cascade_field, closed_room)\n"
+            "                      or a scene\n"
             "                      .json; default boxes_on_floor\n"
             "  --size WxH          window size; default 960x640\n"
             "  --map-size N        shadow map size in texels; default 1024\n"
@@ -52,6 +58,12 @@ static void _sl_usage(FILE *f) {
             "  --min-variance V    lab 5: minimum variance; default 2e-5\n"
             "  --moments-size N    lab 5: the moments maps' size; default 512, 0: --map-size's\n"
             "  --pcf               lab 5: lab 4's filter instead of VSM (key P)\n"
+            "  --cascades N        lab 6: cascades, 1..4; default 4\n"
+            "  --lambda X          lab 6: the split scheme's weight, 0 uniform .. 1 logarithmic; default 0.8\n"
+            "  --show-cascades     lab 6: tint each pixel by the cascade it uses\n"
+            "  --blend-band X      lab 6 (bonus): blend the last fraction X of each cascade with the next\n"
+            "  --freeze            lab 6: freeze the camera's frustum and look at it, its slices and\n"
+            "                      their light boxes from above\n"
             "  --visibility        show the visibility term alone (what the grader compares)\n"
             "  --show-map          show the shadow map in a corner\n"
             "  --frames K          render K frames, then exit (for scripts)\n"
@@ -67,6 +79,8 @@ static void _sl_usage(FILE *f) {
             "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
             "      lab 5: R T blur radius, K L bleeding reduction, N J min variance, P VSM / lab 4 filter,\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
+            "      lab 6: 6 lab 6, K cascade colours, N cascade count, , . lambda, J blend band, Z freeze the\n"
+            "      frustum (view from above), W A S D Q E fly (Shift: faster), M the cascades' layers;\n"
             "      shaders reload when their files change\n",
             sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
     sl_bench_usage(f);
@@ -91,11 +105,15 @@ static void _sl_update_title(_sl_viewer *v) {
         snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " r=%.1f", p->filter.poisson_radius);
     if (p->lab >= 4 && p->filter.mode == SL_FILTER_PCSS)
         snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " light %.2f", v->scene.light.size);
-    if (p->lab >= 5 && !p->vsm_off)
+    if (p->lab == 5 && !p->vsm_off)
         snprintf(settings, sizeof settings, "VSM: blur %d, bleeding %.2f, min variance %.1e", p->vsm.blur_radius,
                  p->vsm.bleeding, p->vsm.min_variance);
-    else if (p->lab >= 5)
+    else if (p->lab == 5)
         snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " (VSM off: P)");
+    if (p->lab == 6) /* lab 6: cascades */
+        snprintf(settings, sizeof settings, "%d cascades, lambda %.2f%s%s%s", p->cascades.count, p->cascades.lambda,
+                 p->cascades.blend_band > 0 ? ", blend band" : "", p->cascades.show_cascades ? ", coloured" : "",
+                 v->frozen ? ", frustum frozen (Z)" : "");
     int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s", p->lab, v->scene.name, settings,
                      p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "");
     if (info->not_implemented_count > 0 && n > 0 && (size_t)n < sizeof title)
@@ -115,26 +133,111 @@ static void _sl_move_light(sl_light *light, float yaw, float pitch) {
     light->direction[2] = cosf(p) * cosf(y);
 }
 
+/* Lab 6: freezes the cascades on the current camera and looks at its frustum
+ * from above (the slices and their light boxes are drawn as lines), or goes back. */
+static void _sl_freeze(_sl_viewer *v, bool on) {
+    if (on == v->frozen) return;
+    v->frozen = on;
+    sl_cascade_params *c = &v->params.cascades;
+    if (!on) {
+        v->scene.camera = v->walking_camera;
+        c->use_camera = c->show_frustum = false;
+        return;
+    }
+    v->walking_camera = v->scene.camera;
+    c->camera = v->scene.camera;
+    c->use_camera = c->show_frustum = true;
+    /* above the middle of the range the cascades cover, a little behind, looking down */
+    const sl_camera *w = &v->walking_camera;
+    float reach = c->max_distance > w->near && c->max_distance < w->far ? c->max_distance : w->far;
+    float d = fminf(reach, 400.0f) * 0.5f;
+    vec3 forward;
+    glm_vec3_sub((float *)w->target, (float *)w->position, forward);
+    forward[1] = 0;
+    if (glm_vec3_norm(forward) < 1e-4f) forward[2] = -1;
+    glm_vec3_normalize(forward);
+    sl_camera *top = &v->scene.camera;
+    glm_vec3_copy((float *)w->position, top->target);
+    glm_vec3_muladds(forward, d * 0.8f, top->target);
+    glm_vec3_copy(top->target, top->position);
+    top->position[1] += d * 2.2f;
+    glm_vec3_muladds(forward, -d * 0.35f, top->position);
+    top->near = 0.5f;
+    top->far = d * 6;
+}
+
+/* Lab 6's long scenes: W A S D fly along the view and across it, Q E down and up; Shift is five times faster. */
+static void _sl_fly(_sl_viewer *v, GLFWwindow *w, double now) {
+    double dt = v->last_frame_time > 0 ? now - v->last_frame_time : 0;
+    v->last_frame_time = now;
+    if (dt <= 0 || dt > 0.5) return;
+    float speed = (float)dt * 8.0f *
+                  (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS
+                       ? 5.0f : 1.0f);
+    sl_camera *cam = &v->scene.camera;
+    vec3 forward, right, move = {0, 0, 0};
+    glm_vec3_sub(cam->target, cam->position, forward);
+    glm_vec3_normalize(forward);
+    glm_vec3_cross(forward, (vec3){0, 1, 0}, right);
+    glm_vec3_normalize(right);
+    if (glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS) glm_vec3_muladds(forward, speed, move);
+    if (glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS) glm_vec3_muladds(forward, -speed, move);
+    if (glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS) glm_vec3_muladds(right, speed, move);
+    if (glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS) glm_vec3_muladds(right, -speed, move);
+    if (glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS) move[1] += speed;
+    if (glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) move[1] -= speed;
+    glm_vec3_add(cam->position, move, cam->position);
+    glm_vec3_add(cam->target, move, cam->target);
+}
+
+/* Keys of one lab, tried before the common ones: the labs' own settings may
+ * share letters. True if the key was taken. */
+static bool _sl_lab_key(_sl_viewer *v, int key) {
+    if (v->params.lab == 5) { /* P swaps VSM and lab 4's filter on the same scene; R/T blur, K/L bleeding, N/J min variance */
+        switch (key) {
+        case GLFW_KEY_P: v->params.vsm_off = !v->params.vsm_off; return true;
+        case GLFW_KEY_R: v->params.vsm.blur_radius = v->params.vsm.blur_radius > 0 ? v->params.vsm.blur_radius - 1 : 0; return true;
+        case GLFW_KEY_T: v->params.vsm.blur_radius = v->params.vsm.blur_radius < 32 ? v->params.vsm.blur_radius + 1 : 32; return true;
+        case GLFW_KEY_K: v->params.vsm.bleeding = glm_clamp(v->params.vsm.bleeding - 0.05f, 0, 0.95f); return true;
+        case GLFW_KEY_L: v->params.vsm.bleeding = glm_clamp(v->params.vsm.bleeding + 0.05f, 0, 0.95f); return true;
+        case GLFW_KEY_N: v->params.vsm.min_variance = glm_clamp(v->params.vsm.min_variance * 0.5f, 1e-7f, 0.01f); return true;
+        case GLFW_KEY_J: v->params.vsm.min_variance = glm_clamp(v->params.vsm.min_variance * 2.0f, 1e-7f, 0.01f); return true;
+        default: return false;
+        }
+    }
+    if (v->params.lab == 6) { /* K colours, N count, , . lambda, Z freeze, J blend band; W A S D Q E fly */
+        switch (key) {
+        case GLFW_KEY_K: v->params.cascades.show_cascades = !v->params.cascades.show_cascades; return true;
+        case GLFW_KEY_N: v->params.cascades.count = v->params.cascades.count % SL_MAX_CASCADES + 1; return true;
+        case GLFW_KEY_COMMA: v->params.cascades.lambda = glm_clamp(v->params.cascades.lambda - 0.1f, 0, 1); return true;
+        case GLFW_KEY_PERIOD: v->params.cascades.lambda = glm_clamp(v->params.cascades.lambda + 0.1f, 0, 1); return true;
+        case GLFW_KEY_Z: _sl_freeze(v, !v->frozen); return true;
+        case GLFW_KEY_J: v->params.cascades.blend_band = v->params.cascades.blend_band > 0 ? 0 : 0.2f; return true;
+        case GLFW_KEY_W: case GLFW_KEY_A: case GLFW_KEY_S: case GLFW_KEY_D: case GLFW_KEY_Q: case GLFW_KEY_E:
+            return true; /* flying: polled every frame (_sl_fly) */
+        default: return false;
+        }
+    }
+    return false;
+}
+
 static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
     (void)scancode;
     (void)mods;
     if (action == GLFW_RELEASE) return;
     _sl_viewer *v = glfwGetWindowUserPointer(w);
+    if (_sl_lab_key(v, key)) {
+        v->dirty_title = true;
+        return;
+    }
     switch (key) {
     case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
     case GLFW_KEY_1: v->params.lab = 1; break;
     case GLFW_KEY_2: v->params.lab = 2; break;
     case GLFW_KEY_3: v->params.lab = 3; break;
     case GLFW_KEY_4: v->params.lab = 4; break;
-    /* lab 5: P swaps VSM and lab 4's filter on the same scene; R/T blur radius, K/L bleeding, N/J min variance */
     case GLFW_KEY_5: v->params.lab = 5; break;
-    case GLFW_KEY_P: v->params.vsm_off = !v->params.vsm_off; break;
-    case GLFW_KEY_R: v->params.vsm.blur_radius = v->params.vsm.blur_radius > 0 ? v->params.vsm.blur_radius - 1 : 0; break;
-    case GLFW_KEY_T: v->params.vsm.blur_radius = v->params.vsm.blur_radius < 32 ? v->params.vsm.blur_radius + 1 : 32; break;
-    case GLFW_KEY_K: v->params.vsm.bleeding = glm_clamp(v->params.vsm.bleeding - 0.05f, 0, 0.95f); break;
-    case GLFW_KEY_L: v->params.vsm.bleeding = glm_clamp(v->params.vsm.bleeding + 0.05f, 0, 0.95f); break;
-    case GLFW_KEY_N: v->params.vsm.min_variance = glm_clamp(v->params.vsm.min_variance * 0.5f, 1e-7f, 0.01f); break;
-    case GLFW_KEY_J: v->params.vsm.min_variance = glm_clamp(v->params.vsm.min_variance * 2.0f, 1e-7f, 0.01f); break;
+    case GLFW_KEY_6: v->params.lab = 6; break;
     case GLFW_KEY_B: v->params.bias.mode = (sl_bias_mode)((v->params.bias.mode + 1) % SL_BIAS_MODE_COUNT); break;
     case GLFW_KEY_F: v->params.filter.mode = (sl_filter_mode)((v->params.filter.mode + 1) % SL_FILTER_MODE_COUNT); break;
     case GLFW_KEY_EQUAL:
@@ -193,6 +296,7 @@ int sl_viewer_main(int argc, char **argv) {
     bool headless = false;
     sl_backend backend = sl_backend_default_headless();
     float light_size = -1;
+    bool freeze = false; /* lab 6 */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *next = i + 1 < argc ? argv[i + 1] : NULL;
@@ -205,7 +309,8 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
                            strcmp(a, "--backend") == 0 || strcmp(a, "--blur") == 0 ||
                            strcmp(a, "--bleeding") == 0 || strcmp(a, "--min-variance") == 0 ||
-                           strcmp(a, "--moments-size") == 0;
+                           strcmp(a, "--moments-size") == 0 ||
+                           strcmp(a, "--cascades") == 0 || strcmp(a, "--lambda") == 0 || strcmp(a, "--blend-band") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -297,6 +402,28 @@ int sl_viewer_main(int argc, char **argv) {
             labs_dir = next;
         } else if (strcmp(a, "--case") == 0) {
             case_name = next;
+        } else if (strcmp(a, "--cascades") == 0) { /* lab 6 */
+            v.params.cascades.count = atoi(next);
+            if (v.params.cascades.count < 1 || v.params.cascades.count > SL_MAX_CASCADES) {
+                fprintf(stderr, "shadowlab: --cascades is 1..%d\n", SL_MAX_CASCADES);
+                return 2;
+            }
+        } else if (strcmp(a, "--lambda") == 0) {
+            v.params.cascades.lambda = (float)atof(next);
+            if (v.params.cascades.lambda < 0 || v.params.cascades.lambda > 1) {
+                fprintf(stderr, "shadowlab: --lambda is 0..1\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--blend-band") == 0) {
+            v.params.cascades.blend_band = (float)atof(next);
+            if (v.params.cascades.blend_band < 0 || v.params.cascades.blend_band > 1) {
+                fprintf(stderr, "shadowlab: --blend-band is 0..1\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--show-cascades") == 0) {
+            v.params.cascades.show_cascades = true;
+        } else if (strcmp(a, "--freeze") == 0) {
+            freeze = true;
         } else if (strcmp(a, "--visibility") == 0) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--show-map") == 0) {
@@ -334,6 +461,7 @@ int sl_viewer_main(int argc, char **argv) {
         return 1;
     }
     if (light_size > 0) v.scene.light.size = light_size;
+    if (freeze) _sl_freeze(&v, true);
     sl_context_desc cd = {
         .backend = headless ? backend : SL_BACKEND_GLFW,
         .width = width,
@@ -382,6 +510,7 @@ int sl_viewer_main(int argc, char **argv) {
             else if (reloaded)
                 printf("shadowlab: shaders reloaded\n");
         }
+        if (window) _sl_fly(&v, window, now);
         int fw, fh;
         sl_context_framebuffer_size(v.ctx, &fw, &fh);
         sl_renderer_draw(&v.renderer, &v.scene, &v.params, target, fw, fh);

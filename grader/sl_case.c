@@ -33,6 +33,10 @@ static const struct {
     [SL_CHECK_MOMENTS_BLURRED] = {"moments_blurred", "moments_blurred.exr", 1e-4, 0.005, 0, 2e-5},
     /* threshold: visibility above it in the reference's umbra is light bleeding */
     [SL_CHECK_BLEEDING] = {"bleeding", "visibility.exr", 0.1, 0, 0, 0},
+    /* cascade indices are whole numbers: a pixel differs when its index does */
+    [SL_CHECK_CASCADE_INDEX] = {"cascade_index", "cascade_index.exr", 0.5, 0.01, 0, 0.02},
+    /* threshold here: the largest flicker score, of world-fixed receiver pixels changing per frame */
+    [SL_CHECK_FLICKER] = {"flicker", "flicker.exr", 0.002, 0, 0, 0},
 };
 
 const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
@@ -102,7 +106,7 @@ uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
         /* from lab 2 on, acne is told from shadow on the surfaces that face the light */
         /* lab 5: the moments target's format too, the first suspect of a VSM picture that is off */
         return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0) |
-               (c->lab >= 5 ? 1u << SL_CAPTURE_MOMENTS_TARGET : 0);
+               (c->lab == 5 ? 1u << SL_CAPTURE_MOMENTS_TARGET : 0);
     case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
     case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
     case SL_CHECK_MOMENTS: return (1u << SL_CAPTURE_MOMENTS) | (1u << SL_CAPTURE_MOMENTS_TARGET);
@@ -110,6 +114,8 @@ uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
     case SL_CHECK_BLEEDING:
         return (1u << SL_CAPTURE_VISIBILITY) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED) | (1u << SL_CAPTURE_LIT_MASK) |
                (1u << SL_CAPTURE_MOMENTS_TARGET);
+    case SL_CHECK_CASCADE_INDEX: return 1u << SL_CAPTURE_CASCADE_INDEX;
+    case SL_CHECK_FLICKER: return (1u << SL_CAPTURE_FLICKER) | (1u << SL_CAPTURE_LIT_MASK);
     default: return 0;
     }
 }
@@ -190,6 +196,26 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
         return false;
     }
     if (!mode && c->lab < 4) f->mode = SL_FILTER_NONE;
+    /* lab 6: "cascades": {"count", "lambda", "max_distance", "caster_margin"} */
+    const cJSON *cascades = cJSON_GetObjectItemCaseSensitive(json, "cascades");
+    if (cascades) {
+        sl_cascade_params *cp = &c->params.cascades;
+        double count = cp->count, lambda = cp->lambda, max_distance = cp->max_distance, margin = cp->caster_margin;
+        double band = cp->blend_band;
+        if (!cJSON_IsObject(cascades) || !_sl_number(cascades, "count", &count, 1, SL_MAX_CASCADES, c->path, err, n) ||
+            !_sl_number(cascades, "lambda", &lambda, 0, 1, c->path, err, n) ||
+            !_sl_number(cascades, "max_distance", &max_distance, 0, 1e6, c->path, err, n) ||
+            !_sl_number(cascades, "caster_margin", &margin, 0, 1e6, c->path, err, n) ||
+            !_sl_number(cascades, "blend_band", &band, 0, 1, c->path, err, n)) {
+            if (!cJSON_IsObject(cascades)) snprintf(err, n, "%s: \"cascades\" must be an object", c->path);
+            return false;
+        }
+        cp->count = (int)count;
+        cp->lambda = (float)lambda;
+        cp->max_distance = (float)max_distance;
+        cp->caster_margin = (float)margin;
+        cp->blend_band = (float)band;
+    }
     const cJSON *compare = cJSON_GetObjectItemCaseSensitive(json, "compare");
     if (compare) {
         const char *s = cJSON_GetStringValue(compare);
@@ -294,7 +320,7 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
         if (strcmp(kind, _sl_kinds[i].name) == 0) found = i;
     if (found < 0) {
         snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility, image, penumbra, probe, "
-                    "moments, moments_blurred or bleeding",
+                    "moments, moments_blurred, bleeding, cascade_index or flicker",
                  c->path, index);
         return false;
     }
@@ -423,6 +449,29 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
                     if (!(ok = sl_light_from_json(&l, f, path, err, n))) break;
                     c->frame_lights[c->frame_count++] = l;
                 }
+            }
+        }
+        /* lab 6's "camera_path": per-frame changes to the camera the cascades are
+         * fitted to; the picture is drawn from "camera", so its pixels stay put. */
+        const cJSON *cameras = cJSON_GetObjectItemCaseSensitive(json, "camera_path");
+        if (ok && cameras) {
+            if (!cJSON_IsArray(cameras) || cJSON_GetArraySize(cameras) < 2 ||
+                cJSON_GetArraySize(cameras) > SL_CASE_MAX_FRAMES || (frames && cJSON_GetArraySize(frames) != cJSON_GetArraySize(cameras))) {
+                snprintf(err, n, "%s: \"camera_path\" must be an array of 2..%d cameras (as many as \"light_path\" has lights)",
+                         path, SL_CASE_MAX_FRAMES);
+                ok = false;
+            } else {
+                int count = 0;
+                const cJSON *f;
+                cJSON_ArrayForEach(f, cameras) {
+                    sl_camera cam = c->scene.camera;
+                    if (!(ok = sl_camera_from_json(&cam, f, path, err, n))) break;
+                    c->frame_cameras[count] = cam;
+                    if (!frames) c->frame_lights[count] = c->scene.light;
+                    count++;
+                }
+                c->frame_count = count;
+                c->camera_path = true;
             }
         }
         const cJSON *item;

@@ -27,6 +27,8 @@ typedef enum sl_check_kind {
     SL_CHECK_MOMENTS,         /* the moments before the blur vs reference (2-channel EXR, per channel), and their format */
     SL_CHECK_MOMENTS_BLURRED, /* the moments after the blur, likewise; blur widths along x and y */
     SL_CHECK_BLEEDING,        /* light bleeding in the reference's umbra, with and without the reduction */
+    SL_CHECK_CASCADE_INDEX, /* lab 6: the cascade each pixel used vs reference (EXR) */
+    SL_CHECK_FLICKER,    /* lab 6: visibility changes on world-fixed pixels along a camera path */
     SL_CHECK_KIND_COUNT
 } sl_check_kind;
 
@@ -83,6 +85,9 @@ typedef struct sl_case {
     sl_scene scene;
     sl_light frame_lights[SL_CASE_MAX_FRAMES]; /* the light of each frame; the last one is captured */
     int frame_count;
+    /* lab 6's "camera_path": the camera the cascades are fitted to, per frame */
+    bool camera_path;
+    sl_camera frame_cameras[SL_CASE_MAX_FRAMES];
     sl_render_params params;
     int width, height;
     double timeout_seconds;

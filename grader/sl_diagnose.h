@@ -86,6 +86,11 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
 bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out);
 bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *student, const sl_image *reference,
                                  const sl_image *lit_mask, sl_check_result *out);
+/* ---- lab 6 (grader/diagnose/lab6.c) ---- */
+void sl_diagnose_cascade_index(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                               sl_check_result *out);
+void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                         sl_check_result *out);
 
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,

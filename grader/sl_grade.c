@@ -173,9 +173,12 @@ void sl_diag_lookup_function(const sl_case *c, const char **function, const char
         {"shadow_compare_manual() (lab 2)", "lab2.5"}, {"pcf_hardware()", "lab4.2"}, {"pcf_grid()", "lab4.3"},
         {"pcf_poisson()", "lab4.4"}, {"pcss()", "lab4.5"},
     };
-    if (c->lab >= 5) {
+    if (c->lab == 5) {
         *function = "chebyshev_upper_bound()";
         *todo = "lab5.7";
+    } else if (c->lab == 6) { /* cascades: lab 6's own lookup */
+        *function = "cascade_compare()";
+        *todo = "lab6.5";
     } else if (c->lab >= 4) {
         *function = filters[c->params.filter.mode][0];
         *todo = filters[c->params.filter.mode][1];
@@ -202,6 +205,7 @@ static bool _sl_reference_fits(sl_reference *ref, const sl_case *c, const sl_che
         w = h = c->params.shadow_map_size;
         channels = 2;
     }
+    if (k->kind == SL_CHECK_FLICKER) h = c->height * c->frame_count; /* lab 6: every frame, stacked */
     if (img->width == w && img->height == h && img->channels == channels) return true;
     snprintf(ref->error, sizeof ref->error, "reference does not fit its case: %s is %dx%dx%d, the case makes %dx%dx%d",
              ref->path, img->width, img->height, img->channels, w, h, channels);
@@ -363,7 +367,7 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
     if (c->lab == 2 && sl_diagnose_lab2_visibility(c, s, t, mask, out)) return;
     if (c->lab == 3 && mask && sl_diagnose_lab3_visibility(c, s, t, mask, out)) return;
     if (c->lab == 4 && sl_diagnose_lab4_visibility(c, s, t, mask, out)) return;
-    if (c->lab >= 5 && sl_diagnose_lab5_visibility(c, s, t, mask, out)) return;
+    if (c->lab == 5 && sl_diagnose_lab5_visibility(c, s, t, mask, out)) return;
     if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
         sl_diag_say(out, "lit and shadowed are swapped (%.0f%% of shadows lit, %.0f%% of lit pixels shadowed)",
@@ -402,7 +406,7 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
     }
     if (sl_diag_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
     if (out->message[0]) return;                      /* only the mean is off: said */
-    if (k->kind == SL_CHECK_VISIBILITY && c->lab >= 5 && sl_diagnose_lab5_format(r, out)) return;
+    if (k->kind == SL_CHECK_VISIBILITY && c->lab == 5 && sl_diagnose_lab5_format(r, out)) return;
     if (k->kind == SL_CHECK_VISIBILITY) {
         const sl_capture *mask = sl_result_capture(r, "lit_mask");
         _sl_check_visibility(c, k, s, t, mask ? &mask->image : NULL, &st, out);
@@ -428,6 +432,12 @@ static const char *_sl_filter_function(sl_filter_mode mode) {
 static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_failure *failure, bool isolated) {
     const sl_probe_function *f = sl_probe_at(failure->function);
     if (!f || f->lab > c->lab) return false;
+    if (c->lab == 6) { /* lab 6 draws with lab 1's depth shaders, lab 2's shadow matrix and its own functions */
+        bool image = k->kind == SL_CHECK_VISIBILITY || k->kind == SL_CHECK_CASCADE_INDEX || k->kind == SL_CHECK_FLICKER;
+        if (f->lab < 6) return image && !isolated && strcmp(f->name, "lab2_shadow_matrix") == 0;
+        if (strcmp(f->name, "cascade_index") == 0) return image;
+        return image;
+    }
     if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE && k->kind != SL_CHECK_PENUMBRA &&
         k->kind != SL_CHECK_DEPTH_MAP && k->kind != SL_CHECK_MOMENTS && k->kind != SL_CHECK_MOMENTS_BLURRED &&
         k->kind != SL_CHECK_BLEEDING)
@@ -488,6 +498,7 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
                            size_t n) {
     if (!context || k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_FBO || k->kind == SL_CHECK_MATRICES) return false;
     for (int lab = 1; lab < c->lab && !context->isolated; lab++) {
+        if (c->lab == 6 && lab > 2) continue; /* lab 6 builds on labs 1 and 2 only */
         const sl_probe_failure *f = _sl_failed_probe_of(c, k, context, lab);
         if (f) {
             snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,
@@ -605,6 +616,8 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     case SL_CHECK_MOMENTS:
     case SL_CHECK_MOMENTS_BLURRED: sl_diagnose_moments(c, k, r, ref, out); break;
     case SL_CHECK_BLEEDING: sl_diagnose_bleeding(c, k, r, ref, out); break;
+    case SL_CHECK_CASCADE_INDEX: sl_diagnose_cascade_index(c, k, r, ref, out); break;
+    case SL_CHECK_FLICKER: sl_diagnose_flicker(c, k, r, ref, out); break;
     default: sl_diag_say(out, "unknown check kind"); break;
     }
     if (out->passed) {

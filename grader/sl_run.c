@@ -80,6 +80,9 @@ static uint64_t _sl_payload_limit(const _sl_stream *s, uint32_t type, int captur
     case SL_MSG_IMAGE:
         if (capture == SL_CAPTURE_DEPTH_MAP || capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED)
             return SL_IMAGE_HEADER_BYTES + 2 * (uint64_t)SL_IMAGE_SIDE_MAX * SL_IMAGE_SIDE_MAX * sizeof(float);
+        if (capture == SL_CAPTURE_FLICKER)
+            return SL_IMAGE_HEADER_BYTES + (uint64_t)s->c->width * (uint64_t)s->c->height *
+                                               (uint64_t)(s->c->frame_count > 0 ? s->c->frame_count : 1) * sizeof(float);
         return SL_IMAGE_HEADER_BYTES + (uint64_t)s->c->width * (uint64_t)s->c->height * 3 * sizeof(float);
     default: return 0;
     }
@@ -134,8 +137,9 @@ static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint
     bool moments = capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED;
     bool camera = capture != SL_CAPTURE_DEPTH_MAP && !moments;
     int channels = capture == SL_CAPTURE_IMAGE ? 3 : moments ? 2 : 1;
+    int rows = capture == SL_CAPTURE_FLICKER ? s->c->height * s->c->frame_count : s->c->height; /* frames stacked */
     bool ok = dims[0] > 0 && dims[1] > 0 && dims[0] <= SL_IMAGE_SIDE_MAX && dims[1] <= SL_IMAGE_SIDE_MAX &&
-              dims[2] == channels && (!camera || (dims[0] == s->c->width && dims[1] == s->c->height));
+              dims[2] == channels && (!camera || (dims[0] == s->c->width && dims[1] == rows));
     if (!ok || n != SL_IMAGE_HEADER_BYTES + (uint64_t)dims[0] * (uint64_t)dims[1] * (uint64_t)dims[2] * sizeof(float)) {
         _sl_protocol_error(s, "an image whose size does not add up");
         return;
@@ -326,6 +330,8 @@ static void _sl_build_job(sl_job *job, const sl_case *c, const sl_run_options *o
     job->scene = c->scene;
     job->frame_count = c->frame_count;
     memcpy(job->frame_lights, c->frame_lights, sizeof c->frame_lights[0] * (size_t)c->frame_count);
+    job->camera_path = c->camera_path;
+    if (c->camera_path) memcpy(job->frame_cameras, c->frame_cameras, sizeof c->frame_cameras[0] * (size_t)c->frame_count);
     job->params = c->params;
     job->captures = _sl_wanted_captures(c);
     for (int k = 0; k < SL_JOB_MAX_PROBES; k++) {
