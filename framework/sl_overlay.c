@@ -241,7 +241,7 @@ void sl_overlay_set_scale(sl_overlay *ov, int scale) { ov->scale = scale < 0 ? 0
 
 int sl_overlay_scale_for(const sl_overlay *ov, int height) {
     if (ov->scale > 0) return ov->scale;
-    return height >= 1080 ? 3 : height >= 480 ? 2 : 1;
+    return height >= 1080 ? 3 : height >= 400 ? 2 : 1;
 }
 
 bool sl_overlay_panel(sl_overlay *ov, sl_overlay_corner corner, const char *title) {

@@ -50,7 +50,7 @@ void sl_overlay_destroy(sl_overlay *ov);
 /* Forgets every panel, label and box (call at the start of each frame). */
 void sl_overlay_clear(sl_overlay *ov);
 /* Font pixel size on screen: 1, 2, 3 ...; 0 (the default) picks one from the
- * framebuffer's height so the text stays readable (2 from 480 pixels up). */
+ * framebuffer's height so the text stays readable (2 from 400 pixels up). */
 void sl_overlay_set_scale(sl_overlay *ov, int scale);
 int sl_overlay_scale_for(const sl_overlay *ov, int height);
 

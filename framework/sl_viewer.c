@@ -26,6 +26,7 @@ typedef struct _sl_viewer {
     /* Lecture aids: the overlay, the light's frustum, light animation, screenshots on a key. */
     sl_overlay *overlay;
     bool show_overlay, show_frustum, animate_light, screenshot_requested;
+    const char *caption; /* --caption: a line at the bottom, overlay or not (figures) */
     int screenshot_count;
     double pass_ms[SL_MAX_PASSES], frame_ms; /* smoothed, for reading */
     const char *pass_names[SL_MAX_PASSES];
@@ -79,6 +80,8 @@ static void _sl_usage(FILE *f) {
             "  --overlay           draw the on-screen text (lab, parameters, pass times); the default in a\n"
             "                      window without --frames\n"
             "  --no-overlay        no on-screen text; the default with --frames (screenshots, figures)\n"
+            "  --caption TEXT      a line of text at the bottom of the picture, with or without the\n"
+            "                      overlay (labels for slide figures)\n"
             "  --frustum           draw the light's frustum in the scene\n"
             "  --animate           turn the light around the scene (with --frames: a fixed step per frame)\n"
             "  --solutions         start with the solutions' code (builds that have solutions/: key A)\n"
@@ -373,7 +376,7 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
-                           strcmp(a, "--backend") == 0;
+                           strcmp(a, "--backend") == 0 || strcmp(a, "--caption") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -447,6 +450,8 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--overlay") == 0 || strcmp(a, "--no-overlay") == 0) {
             overlay_option = strcmp(a, "--overlay") == 0;
+        } else if (strcmp(a, "--caption") == 0) {
+            v.caption = next;
         } else if (strcmp(a, "--frustum") == 0) {
             v.show_frustum = true;
         } else if (strcmp(a, "--animate") == 0) {
@@ -579,7 +584,7 @@ int sl_viewer_main(int argc, char **argv) {
         last_frame_time = now;
         sl_renderer_draw(active, &v.scene, &v.params, target, fw, fh);
         const sl_frame_info *info = sl_renderer_info(active);
-        if (v.overlay && (v.show_overlay || v.show_frustum)) {
+        if (v.overlay && (v.show_overlay || v.show_frustum || v.caption)) {
             if (timing) _sl_update_timing(&v, active, frame_seconds, window != NULL);
             sl_overlay_clear(v.overlay);
             if (v.show_overlay) _sl_overlay_fill(&v, active, fw, fh, window != NULL);
@@ -588,6 +593,10 @@ int sl_viewer_main(int argc, char **argv) {
                 glm_mat4_mul((vec4 *)info->light_projection, (vec4 *)info->light_view, vp);
                 glm_mat4_inv(vp, inv);
                 sl_overlay_box(v.overlay, inv, _sl_frustum_rgb);
+            }
+            if (v.caption) {
+                sl_overlay_panel(v.overlay, SL_OVERLAY_BOTTOM_LEFT, NULL);
+                sl_overlay_line(v.overlay, (const float[3]){1, 1, 1}, "%s", v.caption);
             }
             mat4 camera;
             _sl_camera_view_projection(&v.scene, fw, fh, camera);
