@@ -28,6 +28,12 @@ decks)
       [ -s "$out/$shot" ] || problem "$name: figure $shot was not rendered"
     done < <(sed -nE 's/^<!-- (figure|animation).*--screenshot ([^ ]+) -->$/\2/p' "$deck")
     grep -q 'src="data:image' "$out/$name.html" || problem "$name.html does not embed its figures"
+    # A slide a page: a slide that runs over its page would add one (title page + one per "# ").
+    if command -v pdfinfo >/dev/null && [ -s "$out/$name.pdf" ]; then
+      pages=$(pdfinfo "$out/$name.pdf" | awk '/^Pages:/ {print $2}')
+      slides=$(($(grep -c '^# ' "$deck") + 1))
+      [ "$pages" = "$slides" ] || problem "$name.pdf has $pages pages for $slides slides: a slide runs over its page"
+    fi
   done
   n=$(ls "$src"/lab[0-9]*.md | wc -l)
   [ "$n" -eq 7 ] || problem "$n decks in slides/, expected 7"
