@@ -27,6 +27,7 @@ typedef struct _sl_viewer {
     sl_overlay *overlay;
     bool show_overlay, show_frustum, animate_light, screenshot_requested;
     const char *caption; /* --caption: a line at the bottom, overlay or not (figures) */
+    const char *frame_dir; /* --frame-dir: every frame saved there (animations for slides) */
     int screenshot_count;
     double pass_ms[SL_MAX_PASSES], frame_ms; /* smoothed, for reading */
     const char *pass_names[SL_MAX_PASSES];
@@ -82,6 +83,7 @@ static void _sl_usage(FILE *f) {
             "  --no-overlay        no on-screen text; the default with --frames (screenshots, figures)\n"
             "  --caption TEXT      a line of text at the bottom of the picture, with or without the\n"
             "                      overlay (labels for slide figures)\n"
+            "  --frame-dir DIR     save every frame as DIR/001.png, 002.png ... (with --frames: an animation)\n"
             "  --frustum           draw the light's frustum in the scene\n"
             "  --animate           turn the light around the scene (with --frames: a fixed step per frame)\n"
             "  --solutions         start with the solutions' code (builds that have solutions/: key A)\n"
@@ -376,7 +378,8 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
-                           strcmp(a, "--backend") == 0 || strcmp(a, "--caption") == 0;
+                           strcmp(a, "--backend") == 0 || strcmp(a, "--caption") == 0 ||
+                           strcmp(a, "--frame-dir") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -450,6 +453,8 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--overlay") == 0 || strcmp(a, "--no-overlay") == 0) {
             overlay_option = strcmp(a, "--overlay") == 0;
+        } else if (strcmp(a, "--frame-dir") == 0) {
+            v.frame_dir = next;
         } else if (strcmp(a, "--caption") == 0) {
             v.caption = next;
         } else if (strcmp(a, "--frustum") == 0) {
@@ -627,6 +632,14 @@ int sl_viewer_main(int argc, char **argv) {
             v.dirty_title = false;
         }
         rendered++;
+        if (v.frame_dir) {
+            char path[SL_PATH_MAX + 16];
+            snprintf(path, sizeof path, "%s/%03d.png", v.frame_dir, rendered);
+            if (!_sl_save(target, fw, fh, path)) {
+                status = 1;
+                break;
+            }
+        }
         if (frames > 0 && rendered >= frames) {
             if (screenshot && !_sl_save(target, fw, fh, screenshot)) status = 1;
             break;

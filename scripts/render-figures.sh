@@ -19,8 +19,8 @@
 # deck still builds; once the lab is in the viewer the real figure is made,
 # with no change to the deck. An animation (frames joined into a GIF where
 # ffmpeg is installed; otherwise its last frame) is named the same way with
-# "animation", --frames N and a --screenshot path ending in .gif: the script
-# saves each frame, then joins them.
+# "animation", --frames N and a --screenshot path ending in .gif: the viewer
+# saves each frame (--frame-dir), then the script joins them.
 set -euo pipefail
 [ $# -ge 3 ] || { echo "usage: render-figures.sh VIEWER OUT_DIR DECK.md..." >&2; exit 2; }
 viewer=$(realpath "$1") out=$2
@@ -72,14 +72,13 @@ for deck in "${decks[@]}"; do
       frames_dir=${shot%.*}-frames; rm -rf "$frames_dir"; mkdir -p "$frames_dir"
       n=0
       for ((i = 0; i < ${#args[@]}; i++)); do [ "${args[$i]}" = "--frames" ] && n=${args[$((i + 1))]}; done
-      for ((k = 1; k <= n; k++)); do
-        a=("${args[@]}")
-        for ((i = 0; i < ${#a[@]}; i++)); do
-          [ "${a[$i]}" = "--frames" ] && a[$((i + 1))]=$k
-          [ "${a[$i]}" = "--screenshot" ] && a[$((i + 1))]=$(printf '%s/%03d.png' "$frames_dir" "$k")
-        done
-        "$viewer" --headless "${a[@]}" >/dev/null || { failed=$((failed + 1)); continue 2; }
+      # The viewer saves every frame into the folder; the .gif path is not its to write.
+      a=()
+      for ((i = 0; i < ${#args[@]}; i++)); do
+        if [ "${args[$i]}" = "--screenshot" ]; then i=$((i + 1)); else a+=("${args[$i]}"); fi
       done
+      echo "render-figures: shadowlab $cmd"
+      "$viewer" --headless "${a[@]}" --frame-dir "$frames_dir" >/dev/null || { failed=$((failed + 1)); continue; }
       if command -v ffmpeg >/dev/null; then
         ffmpeg -loglevel error -y -framerate 10 -i "$frames_dir/%03d.png" "$shot" || failed=$((failed + 1))
       else
