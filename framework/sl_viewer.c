@@ -243,6 +243,15 @@ static void _sl_update_timing(_sl_viewer *v, sl_renderer *r, double frame_second
 static const float _sl_red[3] = {1.0f, 0.45f, 0.4f}, _sl_green[3] = {0.55f, 0.95f, 0.55f},
                    _sl_blue[3] = {0.55f, 0.75f, 1.0f}, _sl_frustum_rgb[3] = {1.0f, 0.85f, 0.2f};
 
+/* The light's frustum: the clip-space cube taken back to the world by the
+ * inverse of the matrices the frame used (lab 2's, or the framework's for lab 1). */
+static void _sl_add_frustum(sl_overlay *ov, const sl_frame_info *info) {
+    mat4 vp, inv;
+    glm_mat4_mul((vec4 *)info->light_projection, (vec4 *)info->light_view, vp);
+    glm_mat4_inv(vp, inv);
+    sl_overlay_box(ov, inv, _sl_frustum_rgb);
+}
+
 /* What the overlay says: the lab and technique with its parameters (top
  * left), the pass times (top right), the keys (bottom left). Labs 5-7 add
  * their parameters in the block marked with their number. */
@@ -319,12 +328,7 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
         sl_overlay_panel(ov, SL_OVERLAY_BOTTOM_LEFT, NULL);
         sl_overlay_line(ov, NULL, "O overlay  L frustum  P animate  S screenshot%s", _sl_second_functions ? "  A solutions" : "");
     }
-    if (v->show_frustum) {
-        mat4 vp, inv;
-        glm_mat4_mul((vec4 *)info->light_projection, (vec4 *)info->light_view, vp);
-        glm_mat4_inv(vp, inv);
-        sl_overlay_box(ov, inv, _sl_frustum_rgb);
-    }
+    if (v->show_frustum) _sl_add_frustum(ov, info);
 }
 
 static void _sl_camera_view_projection(const sl_scene *scene, int width, int height, mat4 out) {
@@ -593,12 +597,7 @@ int sl_viewer_main(int argc, char **argv) {
             if (timing) _sl_update_timing(&v, active, frame_seconds, window != NULL);
             sl_overlay_clear(v.overlay);
             if (v.show_overlay) _sl_overlay_fill(&v, active, fw, fh, window != NULL);
-            else if (v.show_frustum) {
-                mat4 vp, inv;
-                glm_mat4_mul((vec4 *)info->light_projection, (vec4 *)info->light_view, vp);
-                glm_mat4_inv(vp, inv);
-                sl_overlay_box(v.overlay, inv, _sl_frustum_rgb);
-            }
+            else if (v.show_frustum) _sl_add_frustum(v.overlay, info);
             if (v.caption) {
                 sl_overlay_panel(v.overlay, SL_OVERLAY_BOTTOM_LEFT, NULL);
                 sl_overlay_line(v.overlay, (const float[3]){1, 1, 1}, "%s", v.caption);
