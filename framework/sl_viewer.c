@@ -28,6 +28,7 @@ typedef struct _sl_viewer {
     bool show_overlay, show_frustum, animate_light, screenshot_requested;
     const char *caption; /* --caption: a line at the bottom, overlay or not (figures) */
     const char *frame_dir; /* --frame-dir: every frame saved there (animations for slides) */
+    const char *keys;      /* --keys: keys pressed before the first frame */
     int screenshot_count;
     double pass_ms[SL_MAX_PASSES], frame_ms; /* smoothed, for reading */
     const char *pass_names[SL_MAX_PASSES];
@@ -84,6 +85,8 @@ static void _sl_usage(FILE *f) {
             "  --caption TEXT      a line of text at the bottom of the picture, with or without the\n"
             "                      overlay (labels for slide figures)\n"
             "  --frame-dir DIR     save every frame as DIR/001.png, 002.png ... (with --frames: an animation)\n"
+            "  --keys KEYS         press these keys before the first frame, e.g. --keys 'OL' (overlay,\n"
+            "                      frustum) or --keys 'BB]' (letters, digits, [ ] - =; not Esc)\n"
             "  --frustum           draw the light's frustum in the scene\n"
             "  --animate           turn the light around the scene (with --frames: a fixed step per frame)\n"
             "  --solutions         start with the solutions' code (builds that have solutions/: key A)\n"
@@ -139,11 +142,14 @@ static void _sl_move_light(sl_light *light, float yaw, float pitch) {
     light->direction[2] = cosf(p) * cosf(y);
 }
 
+/* The viewer --keys presses keys for, with no window (w NULL) or before the first frame. */
+static _sl_viewer *_sl_keys_viewer;
+
 static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
     (void)scancode;
     (void)mods;
     if (action == GLFW_RELEASE) return;
-    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    _sl_viewer *v = w ? glfwGetWindowUserPointer(w) : _sl_keys_viewer;
     switch (key) {
     case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
     case GLFW_KEY_1: v->params.lab = 1; break;
@@ -383,7 +389,7 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
                            strcmp(a, "--backend") == 0 || strcmp(a, "--caption") == 0 ||
-                           strcmp(a, "--frame-dir") == 0;
+                           strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -457,6 +463,13 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--overlay") == 0 || strcmp(a, "--no-overlay") == 0) {
             overlay_option = strcmp(a, "--overlay") == 0;
+        } else if (strcmp(a, "--keys") == 0) {
+            for (const char *k = next; *k; k++)
+                if (!strchr("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789[]-=", *k)) {
+                    fprintf(stderr, "shadowlab: --keys takes letters, digits and [ ] - =, not '%c'\n", *k);
+                    return 2;
+                }
+            v.keys = next;
         } else if (strcmp(a, "--frame-dir") == 0) {
             v.frame_dir = next;
         } else if (strcmp(a, "--caption") == 0) {
@@ -533,6 +546,10 @@ int sl_viewer_main(int argc, char **argv) {
     v.show_overlay = overlay_option >= 0 ? overlay_option == 1 : (!headless && frames <= 0);
     v.overlay = sl_overlay_create(sl_framework_dir(), err, sizeof err);
     if (!v.overlay) fprintf(stderr, "shadowlab: no overlay: %s\n", err);
+    /* GLFW's key codes for letters, digits and [ ] - = are their ASCII codes (upper case). */
+    _sl_keys_viewer = &v;
+    for (const char *k = v.keys; k && *k; k++)
+        _sl_key(NULL, *k >= 'a' && *k <= 'z' ? *k - 'a' + 'A' : *k, 0, GLFW_PRESS, 0);
     /* 0 would do too (the EGL backend binds its own for it); the name says what is meant. */
     GLuint target = sl_context_default_framebuffer(v.ctx);
 

@@ -4,7 +4,8 @@
 # text where the panel is and the scene untouched elsewhere; by default with
 # --frames it is off, so screenshots and figures keep their pictures; the
 # light's frustum draws lines into the scene; and where the viewer carries the
-# solutions, --solutions draws exactly what the solutions' own viewer draws.
+# solutions, --solutions draws exactly what the solutions' own viewer draws;
+# the keys O, L and A do what their options do.
 set -u
 viewer=$1 solutions=$2 check=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
@@ -22,9 +23,18 @@ cmp -s "$work/plain.png" "$work/no-overlay.png" || problem "--frames without --o
 # Below the panels, the scene is as it was.
 "$check" text "$work/overlay.png" "$work/plain.png" 8 300 300 90 >/dev/null && problem "the overlay changed the scene below its panels"
 cmp -s "$work/plain.png" "$work/frustum.png" && problem "--frustum drew nothing"
+# The keys do what the options do (--keys presses them before the first frame).
+run "$solutions" "${common[@]}" --keys L --screenshot "$work/key-l.png"
+cmp -s "$work/key-l.png" "$work/frustum.png" || problem "key L does not draw what --frustum draws"
+run "$solutions" "${common[@]}" --keys O --screenshot "$work/key-o.png"
+"$check" text "$work/key-o.png" "$work/plain.png" 8 8 150 50 >/dev/null || problem "key O does not show the overlay"
+run "$solutions" "${common[@]}" --keys OO --screenshot "$work/key-oo.png"
+cmp -s "$work/key-oo.png" "$work/plain.png" || problem "key O twice does not hide the overlay again"
 if "$viewer" --help | grep -q -- "--solutions"; then
   if "$viewer" "${common[@]}" --solutions --screenshot "$work/ab.png" >"$work/log" 2>&1; then
     cmp -s "$work/ab.png" "$work/plain.png" || problem "--solutions does not draw what the solutions' viewer draws"
+    run "$viewer" "${common[@]}" --keys A --screenshot "$work/key-a.png"
+    cmp -s "$work/key-a.png" "$work/plain.png" || problem "key A does not switch to the solutions' code"
   elif grep -q "no solutions beside" "$work/log"; then
     echo "viewer_overlay: this build has no second lab code (a solutions build or a handout): A/B not checked"
   else
