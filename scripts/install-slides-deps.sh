@@ -52,9 +52,10 @@ for p in "${packages[@]}"; do
   name=${p%\?}
   installed "$name" && continue
   [ "$name" = "$p" ] && { missing+=("$name"); continue; }
-  update
   # An optional package is only worth it while weasyprint still has to come.
-  if offered "$name" && ! installed weasyprint; then missing+=("$name"); fi
+  installed weasyprint && continue
+  update
+  offered "$name" && missing+=("$name")
 done
 if [ ${#missing[@]} -eq 0 ]; then
   say "all packages already installed ($release)"
