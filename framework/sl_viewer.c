@@ -284,7 +284,7 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
         if (p->lab == 2 || p->bias.mode == SL_BIAS_CONSTANT)
             sl_overlay_line(ov, NULL, "bias: constant %.5f", p->bias.constant);
         else if (p->bias.mode == SL_BIAS_SLOPE_SCALED)
-            sl_overlay_line(ov, NULL, "bias: slope %.5f + %.2f tan, max %.3f", p->bias.constant, p->bias.slope,
+            sl_overlay_line(ov, NULL, "bias: slope %.4f + %.4f tan, max %.3f", p->bias.constant, p->bias.slope,
                             p->bias.max_bias);
         else if (p->bias.mode == SL_BIAS_POLYGON_OFFSET)
             sl_overlay_line(ov, NULL, "bias: polygon offset (%.1f, %.1f)", p->bias.polygon_offset_factor,
@@ -658,6 +658,12 @@ int sl_viewer_main(int argc, char **argv) {
         }
         if (frames > 0 && rendered >= frames) {
             if (screenshot && !_sl_save(target, fw, fh, screenshot)) status = 1;
+            /* The last frame's overlay in words, for logs and tests. */
+            if (v.overlay && v.show_overlay) {
+                char text[8192];
+                sl_overlay_text(v.overlay, text, sizeof text);
+                printf("shadowlab: overlay:\n%s", text);
+            }
             break;
         }
         sl_context_end_frame(v.ctx);

@@ -16,6 +16,14 @@ common=(--headless --lab 4 --scene spot_on_floor --size 640x400 --frames 2)
 run "$solutions" "${common[@]}" --screenshot "$work/plain.png"
 run "$solutions" "${common[@]}" --no-overlay --screenshot "$work/no-overlay.png"
 run "$solutions" "${common[@]}" --overlay --screenshot "$work/overlay.png"
+# What it says: the lab and its settings, and the pass times, with what they measure on llvmpipe.
+for line in "\[top left\] lab 4: PCF & PCSS" "\[top left\] filter: PCF grid 3x3" "\[top left\] shadow map: 1024x1024" \
+            "\[top right\] depth +[0-9]+\.[0-9]{2}" "\[top right\] camera +[0-9]+\.[0-9]{2}"; do
+  grep -qE "$line" "$work/log" || problem "the overlay does not say: $line"
+done
+if grep -q llvmpipe "$work/log"; then
+  grep -q "\[top right\] llvmpipe: rasteriser CPU time" "$work/log" || problem "the overlay does not say what llvmpipe's times are"
+fi
 run "$solutions" "${common[@]}" --frustum --screenshot "$work/frustum.png"
 cmp -s "$work/plain.png" "$work/no-overlay.png" || problem "--frames without --overlay does not give the plain picture"
 # The top-left panel (lab, scene, code, light, map, bias, filter) at scale 1 (400 px high).
