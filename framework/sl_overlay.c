@@ -239,9 +239,10 @@ void sl_overlay_clear(sl_overlay *ov) {
 
 void sl_overlay_set_scale(sl_overlay *ov, int scale) { ov->scale = scale < 0 ? 0 : scale; }
 
-int sl_overlay_scale_for(const sl_overlay *ov, int height) {
+int sl_overlay_scale_for(const sl_overlay *ov, int width, int height) {
     if (ov->scale > 0) return ov->scale;
-    return height >= 1080 ? 3 : height >= 400 ? 2 : 1;
+    /* Big enough to read across a lecture hall, small enough to leave the scene visible. */
+    return 1 + (width >= 800 && height >= 480) + (width >= 1600 && height >= 1000);
 }
 
 bool sl_overlay_panel(sl_overlay *ov, sl_overlay_corner corner, const char *title) {
@@ -385,7 +386,7 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
     glViewport(0, 0, width, height);
     _sl_draw_boxes(ov, camera_view_projection);
 
-    int s = sl_overlay_scale_for(ov, height);
+    int s = sl_overlay_scale_for(ov, width, height);
     const float cw = (float)(SL_OVERLAY_CELL_W * s), ch = (float)(SL_OVERLAY_CELL_H * s);
     const float margin = (float)(4 * s), pad = (float)(3 * s);
     int total = ov->line_count + ov->label_count;

@@ -50,9 +50,9 @@ void sl_overlay_destroy(sl_overlay *ov);
 /* Forgets every panel, label and box (call at the start of each frame). */
 void sl_overlay_clear(sl_overlay *ov);
 /* Font pixel size on screen: 1, 2, 3 ...; 0 (the default) picks one from the
- * framebuffer's height so the text stays readable (2 from 400 pixels up). */
+ * framebuffer's size: 1, 2 from 800x480 up, 3 from 1600x1000 up. */
 void sl_overlay_set_scale(sl_overlay *ov, int scale);
-int sl_overlay_scale_for(const sl_overlay *ov, int height);
+int sl_overlay_scale_for(const sl_overlay *ov, int width, int height);
 
 /* Starts a panel in a corner; the lines added next go into it. Panels in the
  * same corner stack away from it (down from the top, up from the bottom).

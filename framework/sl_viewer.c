@@ -29,6 +29,7 @@ typedef struct _sl_viewer {
     const char *caption; /* --caption: a line at the bottom, overlay or not (figures) */
     const char *frame_dir; /* --frame-dir: every frame saved there (animations for slides) */
     const char *keys;      /* --keys: keys pressed before the first frame */
+    int text_scale;        /* --text-scale: the overlay's font size; 0: from the frame's size */
     int screenshot_count;
     double pass_ms[SL_MAX_PASSES], frame_ms; /* smoothed, for reading */
     const char *pass_names[SL_MAX_PASSES];
@@ -84,6 +85,8 @@ static void _sl_usage(FILE *f) {
             "  --no-overlay        no on-screen text; the default with --frames (screenshots, figures)\n"
             "  --caption TEXT      a line of text at the bottom of the picture, with or without the\n"
             "                      overlay (labels for slide figures)\n"
+            "  --text-scale N      the overlay's and caption's font pixel size (1-8); default from the\n"
+            "                      frame's size: 1, 2 from 800x480 up, 3 from 1600x1000 up\n"
             "  --frame-dir DIR     save every frame as DIR/001.png, 002.png ... (with --frames: an animation)\n"
             "  --keys KEYS         press these keys before the first frame, e.g. --keys 'OL' (overlay,\n"
             "                      frustum) or --keys 'BB]' (letters, digits, [ ] - =; not Esc)\n"
@@ -389,7 +392,8 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
                            strcmp(a, "--backend") == 0 || strcmp(a, "--caption") == 0 ||
-                           strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0;
+                           strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0 ||
+                           strcmp(a, "--text-scale") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -463,6 +467,12 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--overlay") == 0 || strcmp(a, "--no-overlay") == 0) {
             overlay_option = strcmp(a, "--overlay") == 0;
+        } else if (strcmp(a, "--text-scale") == 0) {
+            v.text_scale = atoi(next);
+            if (v.text_scale < 1 || v.text_scale > 8) {
+                fprintf(stderr, "shadowlab: --text-scale is 1..8\n");
+                return 2;
+            }
         } else if (strcmp(a, "--keys") == 0) {
             for (const char *k = next; *k; k++)
                 if (!strchr("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789[]-=", *k)) {
@@ -546,6 +556,7 @@ int sl_viewer_main(int argc, char **argv) {
     v.show_overlay = overlay_option >= 0 ? overlay_option == 1 : (!headless && frames <= 0);
     v.overlay = sl_overlay_create(sl_framework_dir(), err, sizeof err);
     if (!v.overlay) fprintf(stderr, "shadowlab: no overlay: %s\n", err);
+    else sl_overlay_set_scale(v.overlay, v.text_scale);
     /* GLFW's key codes for letters, digits and [ ] - = are their ASCII codes (upper case). */
     _sl_keys_viewer = &v;
     for (const char *k = v.keys; k && *k; k++)
