@@ -10,6 +10,7 @@
 #include "sl_case_view.h"
 #include "sl_context.h"
 #include "sl_log.h"
+#include "sl_overlay.h"
 #include "sl_renderer.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -26,7 +27,31 @@ typedef struct _sl_viewer {
     bool frozen;
     sl_camera walking_camera;
     double last_frame_time;
+    /* Lecture aids: the overlay, the light's frustum, light animation, screenshots on a key. */
+    sl_overlay *overlay;
+    bool show_overlay, show_frustum, animate_light, screenshot_requested;
+    const char *caption; /* --caption: a line at the bottom, overlay or not (figures) */
+    const char *frame_dir; /* --frame-dir: every frame saved there (animations for slides) */
+    const char *keys;      /* --keys: keys pressed before the first frame */
+    int text_scale;        /* --text-scale: the overlay's font size; 0: from the frame's size */
+    int screenshot_count;
+    double pass_ms[SL_MAX_PASSES], frame_ms; /* smoothed, for reading */
+    const char *pass_names[SL_MAX_PASSES];
+    int pass_count;
+    /* Student vs solutions (A key): the second renderer draws with the second lab code. */
+    sl_renderer second;
+    bool second_ready, show_second;
 } _sl_viewer;
+
+/* The second lab code (sl_viewer_set_second_labs), NULL in builds without one. */
+static const sl_lab_functions *_sl_second_functions;
+static const char *_sl_second_dir, *_sl_second_kind;
+
+void sl_viewer_set_second_labs(const sl_lab_functions *functions, const char *labs_dir, const char *kind) {
+    _sl_second_functions = functions;
+    _sl_second_dir = labs_dir;
+    _sl_second_kind = kind;
+}
 
 /* The headless backends of this build, for messages: "osmesa or egl", "egl". */
 static const char *_sl_backend_choices(void) {
@@ -72,15 +97,30 @@ static void _sl_usage(FILE *f) {
             "                      backend (%s in this build)\n"
             "  --backend NAME      headless backend: %s (implies --headless)\n"
             "  --labs-dir DIR      lab sources to load shaders from; default this build's\n"
+            "  --overlay           draw the on-screen text (lab, parameters, pass times); the default in a\n"
+            "                      window without --frames\n"
+            "  --no-overlay        no on-screen text; the default with --frames (screenshots, figures)\n"
+            "  --caption TEXT      a line of text at the bottom of the picture, with or without the\n"
+            "                      overlay (labels for slide figures)\n"
+            "  --text-scale N      the overlay's and caption's font pixel size (1-8); default from the\n"
+            "                      frame's size: 1, 2 from 800x480 up, 3 from 1600x1000 up\n"
+            "  --frame-dir DIR     save every frame as DIR/001.png, 002.png ... (with --frames: an animation)\n"
+            "  --keys KEYS         press these keys before the first frame, e.g. --keys 'OG' (overlay,\n"
+            "                      frustum) or --keys 'BB]' (letters, digits, [ ] - =; not Esc)\n"
+            "  --frustum           draw the light's frustum in the scene\n"
+            "  --animate           turn the light around the scene (with --frames: a fixed step per frame)\n"
+            "  --solutions         start with the solutions' code (builds that have solutions/: key A)\n"
             "  --case NAME         render what the grader renders for case NAME (grader/cases/NAME.json),\n"
             "                      beside the reference and their difference (red: a shadow missing,\n"
             "                      blue: one too many); Tab, Space and D switch the view\n"
-            "keys: 1-5 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
+            "keys: 1-6 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
             "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
             "      lab 5: R T blur radius, K L bleeding reduction, N J min variance, P VSM / lab 4 filter,\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
             "      lab 6: 6 lab 6, K cascade colours, N cascade count, , . lambda, J blend band, Z freeze the\n"
             "      frustum (view from above), W A S D Q E fly (Shift: faster), M the cascades' layers;\n"
+            "      O overlay on/off, G light frustum, H light animation, X screenshot (shadowlab-NNN.png),\n"
+            "      U student / solutions code (where the build has both);\n"
             "      shaders reload when their files change\n",
             sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
     sl_bench_usage(f);
@@ -89,7 +129,7 @@ static void _sl_usage(FILE *f) {
 static void _sl_update_title(_sl_viewer *v) {
     GLFWwindow *w = sl_context_window(v->ctx);
     if (!w) return;
-    const sl_frame_info *info = sl_renderer_info(&v->renderer);
+    const sl_frame_info *info = sl_renderer_info(v->show_second ? &v->second : &v->renderer);
     char title[512], settings[160];
     const sl_render_params *p = &v->params;
     if (p->lab <= 2)
@@ -114,8 +154,9 @@ static void _sl_update_title(_sl_viewer *v) {
         snprintf(settings, sizeof settings, "%d cascades, lambda %.2f%s%s%s", p->cascades.count, p->cascades.lambda,
                  p->cascades.blend_band > 0 ? ", blend band" : "", p->cascades.show_cascades ? ", coloured" : "",
                  v->frozen ? ", frustum frozen (Z)" : "");
-    int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s", p->lab, v->scene.name, settings,
-                     p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "");
+    int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s%s%s", p->lab, v->scene.name, settings,
+                     p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "", v->show_second ? " — " : "",
+                     v->show_second ? _sl_second_kind : "");
     if (info->not_implemented_count > 0 && n > 0 && (size_t)n < sizeof title)
         snprintf(title + n, sizeof title - (size_t)n, " — not implemented: %s%s", info->not_implemented[0],
                  info->not_implemented_count > 1 ? ", ..." : "");
@@ -220,12 +261,14 @@ static bool _sl_lab_key(_sl_viewer *v, int key) {
     }
     return false;
 }
+/* The viewer --keys presses keys for, with no window (w NULL) or before the first frame. */
+static _sl_viewer *_sl_keys_viewer;
 
 static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
     (void)scancode;
     (void)mods;
     if (action == GLFW_RELEASE) return;
-    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    _sl_viewer *v = w ? glfwGetWindowUserPointer(w) : _sl_keys_viewer;
     if (_sl_lab_key(v, key)) {
         v->dirty_title = true;
         return;
@@ -258,6 +301,15 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     case GLFW_KEY_RIGHT: _sl_move_light(&v->scene.light, 0.05f, 0); break;
     case GLFW_KEY_UP: _sl_move_light(&v->scene.light, 0, 0.05f); break;
     case GLFW_KEY_DOWN: _sl_move_light(&v->scene.light, 0, -0.05f); break;
+    case GLFW_KEY_O: v->show_overlay = !v->show_overlay; break;
+    /* lecture keys: letters no lab uses for its own settings */
+    case GLFW_KEY_G: v->show_frustum = !v->show_frustum; break;
+    case GLFW_KEY_H: v->animate_light = !v->animate_light; break;
+    case GLFW_KEY_X: v->screenshot_requested = true; break;
+    case GLFW_KEY_U:
+        if (!_sl_second_functions) printf("shadowlab: this build has no second lab code to switch to (U)\n");
+        else v->show_second = !v->show_second;
+        break;
     default: return;
     }
     v->dirty_title = true;
@@ -286,6 +338,161 @@ static void _sl_scroll(GLFWwindow *w, double dx, double dy) {
     sl_camera_orbit(&v->scene.camera, 0, 0, powf(0.9f, (float)dy));
 }
 
+/* Turns the light about the vertical axis: a sun's direction; a spot or point
+ * light's position about the point it aims at on the ground, so it keeps
+ * lighting the same place. */
+static void _sl_animate_light(sl_light *l, float angle) {
+    vec3 target;
+    if (l->type != SL_LIGHT_DIRECTIONAL) {
+        float t = l->direction[1] < -0.05f ? -l->position[1] / l->direction[1] : 1.0f;
+        glm_vec3_copy(l->position, target);
+        glm_vec3_muladds(l->direction, t, target);
+        vec3 offset;
+        glm_vec3_sub(l->position, target, offset);
+        glm_vec3_rotate(offset, angle, (vec3){0, 1, 0});
+        glm_vec3_add(target, offset, l->position);
+    }
+    glm_vec3_rotate(l->direction, angle, (vec3){0, 1, 0});
+}
+
+/* Pass times read off the GL's timer queries, smoothed so they can be read
+ * (and not smoothed with --frames, where each frame stands alone). */
+static void _sl_update_timing(_sl_viewer *v, sl_renderer *r, double frame_seconds, bool smooth) {
+    sl_frame_timing t;
+    if (!sl_renderer_frame_timing(r, &t)) return;
+    bool same = t.pass_count == v->pass_count;
+    for (int i = 0; same && i < t.pass_count; i++) same = strcmp(t.passes[i].name, v->pass_names[i]) == 0;
+    double k = smooth && same ? 0.1 : 1.0;
+    for (int i = 0; i < t.pass_count; i++) {
+        v->pass_names[i] = t.passes[i].name;
+        v->pass_ms[i] = same ? v->pass_ms[i] + k * (t.passes[i].ms - v->pass_ms[i]) : t.passes[i].ms;
+    }
+    v->pass_count = t.pass_count;
+    if (frame_seconds > 0) v->frame_ms = v->frame_ms > 0 ? v->frame_ms + 0.1 * (frame_seconds * 1e3 - v->frame_ms)
+                                                         : frame_seconds * 1e3;
+}
+
+static const float _sl_red[3] = {1.0f, 0.45f, 0.4f}, _sl_green[3] = {0.55f, 0.95f, 0.55f},
+                   _sl_blue[3] = {0.55f, 0.75f, 1.0f}, _sl_frustum_rgb[3] = {1.0f, 0.85f, 0.2f};
+
+/* The light's frustum: the clip-space cube taken back to the world by the
+ * inverse of the matrices the frame used (lab 2's, or the framework's for lab 1). */
+static void _sl_add_frustum(sl_overlay *ov, const sl_frame_info *info) {
+    mat4 vp, inv;
+    glm_mat4_mul((vec4 *)info->light_projection, (vec4 *)info->light_view, vp);
+    glm_mat4_inv(vp, inv);
+    sl_overlay_box(ov, inv, _sl_frustum_rgb);
+}
+
+/* What the overlay says: the lab and technique with its parameters (top
+ * left), the pass times (top right), the keys (bottom left). Labs 5-7 add
+ * their parameters in the block marked with their number. */
+static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int height, bool windowed) {
+    sl_overlay *ov = v->overlay;
+    const sl_render_params *p = &v->params;
+    const sl_light *l = &v->scene.light;
+    const sl_frame_info *info = sl_renderer_info(r);
+    char title[96];
+    snprintf(title, sizeof title, "lab %d: %s", p->lab, sl_lab_title(p->lab));
+    sl_overlay_panel(ov, SL_OVERLAY_TOP_LEFT, title);
+    sl_overlay_line(ov, NULL, "scene: %s  %dx%d", v->scene.name, width, height);
+    if (_sl_second_functions)
+        sl_overlay_line(ov, v->show_second ? _sl_green : _sl_blue, "code: %s (A: %s)",
+                        v->show_second ? _sl_second_kind : sl_build_labs_kind,
+                        v->show_second ? sl_build_labs_kind : _sl_second_kind);
+    else
+        sl_overlay_line(ov, NULL, "code: %s", sl_build_labs_kind);
+    static const char *const light_types[] = {"directional", "spot", "point"};
+    sl_overlay_line(ov, NULL, "light: %s, size %.2f%s", light_types[l->type % 3], l->size,
+                    v->animate_light ? ", turning" : "");
+    sl_overlay_line(ov, NULL, "shadow map: %dx%d", p->shadow_map_size, p->shadow_map_size);
+    if (p->lab >= 2 && p->lab <= 4) {
+        if (p->lab == 2 || p->bias.mode == SL_BIAS_CONSTANT)
+            sl_overlay_line(ov, NULL, "bias: constant %.5f", p->bias.constant);
+        else if (p->bias.mode == SL_BIAS_SLOPE_SCALED)
+            sl_overlay_line(ov, NULL, "bias: slope %.4f + %.4f tan, max %.3f", p->bias.constant, p->bias.slope,
+                            p->bias.max_bias);
+        else if (p->bias.mode == SL_BIAS_POLYGON_OFFSET)
+            sl_overlay_line(ov, NULL, "bias: polygon offset (%.1f, %.1f)", p->bias.polygon_offset_factor,
+                            p->bias.polygon_offset_units);
+        else if (p->bias.mode == SL_BIAS_NORMAL_OFFSET)
+            sl_overlay_line(ov, NULL, "bias: normal offset %.2f texels + %.5f", p->bias.normal_offset, p->bias.constant);
+        else
+            sl_overlay_line(ov, NULL, "bias: %s", sl_bias_mode_name(p->bias.mode));
+        if (p->lab <= 3) sl_overlay_line(ov, NULL, "compare: %s", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual");
+    }
+    if (p->lab == 4) {
+        const sl_filter_settings *f = &p->filter;
+        if (f->mode == SL_FILTER_GRID)
+            sl_overlay_line(ov, NULL, "filter: PCF grid %dx%d (kernel radius %d)", 2 * f->grid_radius + 1,
+                            2 * f->grid_radius + 1, f->grid_radius);
+        else if (f->mode == SL_FILTER_POISSON)
+            sl_overlay_line(ov, NULL, "filter: Poisson disk, radius %.1f texels", f->poisson_radius);
+        else if (f->mode == SL_FILTER_PCSS)
+            sl_overlay_line(ov, NULL, "filter: PCSS, light size %.2f", l->size);
+        else
+            sl_overlay_line(ov, NULL, "filter: %s", sl_filter_mode_name(f->mode));
+    }
+    /* lab 5 (VSM): moments, blur radius, lambda */
+    /* lab 6 (cascades): cascade count, split lambda, one line per layer */
+    /* lab 7 (cube maps): the faces */
+    if (p->output == SL_OUTPUT_VISIBILITY) sl_overlay_line(ov, NULL, "view: visibility term");
+    for (int i = 0; i < info->not_implemented_count; i++)
+        sl_overlay_line(ov, _sl_red, "not implemented: %s()", info->not_implemented[i]);
+    if (info->shader_error) sl_overlay_line(ov, _sl_red, "lab %d's shaders do not compile", info->shader_error_lab);
+
+    if (v->pass_count > 0 || v->frame_ms > 0) {
+        const char *gpu = sl_context_renderer_name();
+        bool software = strstr(gpu, "llvmpipe") || strstr(gpu, "softpipe");
+        sl_overlay_panel(ov, SL_OVERLAY_TOP_RIGHT, software ? "pass times (ms): CPU" : "pass times (ms): GPU");
+        double total = 0;
+        for (int i = 0; i < v->pass_count; i++) {
+            sl_overlay_line(ov, NULL, "%-12s %7.2f", v->pass_names[i], v->pass_ms[i]);
+            total += v->pass_ms[i];
+        }
+        sl_overlay_line(ov, NULL, "%-12s %7.2f", "all passes", total);
+        if (v->frame_ms > 0) sl_overlay_line(ov, NULL, "%-12s %7.2f", "frame", v->frame_ms);
+        /* On Mesa's software rasteriser a GL timestamp is taken when its
+         * threads reach it: the times are CPU time, not a GPU's. */
+        if (software) sl_overlay_line(ov, _sl_blue, "llvmpipe: rasteriser CPU time");
+    }
+    if (windowed) {
+        sl_overlay_panel(ov, SL_OVERLAY_BOTTOM_LEFT, NULL);
+        sl_overlay_line(ov, NULL, "O overlay  G frustum  H animate  X screenshot%s", _sl_second_functions ? "  U solutions" : "");
+    }
+    if (v->show_frustum) _sl_add_frustum(ov, info);
+}
+
+static void _sl_camera_view_projection(const sl_scene *scene, int width, int height, mat4 out) {
+    mat4 view, proj;
+    sl_camera_view(&scene->camera, view);
+    sl_camera_projection(&scene->camera, height > 0 ? (float)width / (float)height : 1, proj);
+    glm_mat4_mul(proj, view, out);
+}
+
+static bool _sl_save(GLuint target, int width, int height, const char *path) {
+    sl_image shot;
+    char err[1024] = "";
+    glFinish();
+    bool ok = sl_capture_framebuffer(target, width, height, 3, &shot) && sl_image_write(path, &shot, err, sizeof err);
+    if (ok) printf("shadowlab: saved %s (%dx%d)\n", path, width, height);
+    else fprintf(stderr, "shadowlab: cannot save the screenshot: %s\n", err);
+    sl_image_free(&shot);
+    return ok;
+}
+
+/* The S key: shadowlab-001.png, -002 ... in the current folder, never overwriting. */
+static void _sl_screenshot_key(_sl_viewer *v, GLuint target, int width, int height) {
+    char path[64];
+    for (int tries = 0; tries < 1000; tries++) {
+        snprintf(path, sizeof path, "shadowlab-%03d.png", ++v->screenshot_count);
+        FILE *f = fopen(path, "r");
+        if (!f) break;
+        fclose(f);
+    }
+    _sl_save(target, width, height, path);
+}
+
 int sl_viewer_main(int argc, char **argv) {
     for (int i = 1; i < argc; i++)
         if (strcmp(argv[i], "--bench") == 0) return sl_bench_main(argc, argv);
@@ -297,6 +504,7 @@ int sl_viewer_main(int argc, char **argv) {
     sl_backend backend = sl_backend_default_headless();
     float light_size = -1;
     bool freeze = false; /* lab 6 */
+    int overlay_option = -1; /* --overlay 1, --no-overlay 0, default -1 */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *next = i + 1 < argc ? argv[i + 1] : NULL;
@@ -310,7 +518,9 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--backend") == 0 || strcmp(a, "--blur") == 0 ||
                            strcmp(a, "--bleeding") == 0 || strcmp(a, "--min-variance") == 0 ||
                            strcmp(a, "--moments-size") == 0 ||
-                           strcmp(a, "--cascades") == 0 || strcmp(a, "--lambda") == 0 || strcmp(a, "--blend-band") == 0;
+                           strcmp(a, "--cascades") == 0 || strcmp(a, "--lambda") == 0 || strcmp(a, "--blend-band") == 0 ||
+                           strcmp(a, "--caption") == 0 || strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0 ||
+                           strcmp(a, "--text-scale") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -426,6 +636,36 @@ int sl_viewer_main(int argc, char **argv) {
             freeze = true;
         } else if (strcmp(a, "--visibility") == 0) {
             v.params.output = SL_OUTPUT_VISIBILITY;
+        } else if (strcmp(a, "--overlay") == 0 || strcmp(a, "--no-overlay") == 0) {
+            overlay_option = strcmp(a, "--overlay") == 0;
+        } else if (strcmp(a, "--text-scale") == 0) {
+            v.text_scale = atoi(next);
+            if (v.text_scale < 1 || v.text_scale > 8) {
+                fprintf(stderr, "shadowlab: --text-scale is 1..8\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--keys") == 0) {
+            for (const char *k = next; *k; k++)
+                if (!strchr("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789[]-=", *k)) {
+                    fprintf(stderr, "shadowlab: --keys takes letters, digits and [ ] - =, not '%c'\n", *k);
+                    return 2;
+                }
+            v.keys = next;
+        } else if (strcmp(a, "--frame-dir") == 0) {
+            v.frame_dir = next;
+        } else if (strcmp(a, "--caption") == 0) {
+            v.caption = next;
+        } else if (strcmp(a, "--frustum") == 0) {
+            v.show_frustum = true;
+        } else if (strcmp(a, "--animate") == 0) {
+            v.animate_light = true;
+        } else if (strcmp(a, "--solutions") == 0) {
+            if (!_sl_second_functions) {
+                fprintf(stderr, "shadowlab: --solutions: this build has no solutions beside its labs (a student "
+                                "handout, or a build of the solutions themselves)\n");
+                return 2;
+            }
+            v.show_second = true;
         } else if (strcmp(a, "--show-map") == 0) {
             v.params.show_shadow_map = true;
         } else if (strcmp(a, "--headless") == 0) {
@@ -483,6 +723,16 @@ int sl_viewer_main(int argc, char **argv) {
     }
     printf("shadowlab: %s through %s, %s labs from %s\n", sl_context_renderer_name(), sl_backend_name(sl_context_backend(v.ctx)),
            sl_build_labs_kind, v.renderer.labs_dir);
+    /* The overlay is on in an interactive window and off in unattended runs,
+     * so screenshots and slide figures show the scene alone unless asked. */
+    v.show_overlay = overlay_option >= 0 ? overlay_option == 1 : (!headless && frames <= 0);
+    v.overlay = sl_overlay_create(sl_framework_dir(), err, sizeof err);
+    if (!v.overlay) fprintf(stderr, "shadowlab: no overlay: %s\n", err);
+    else sl_overlay_set_scale(v.overlay, v.text_scale);
+    /* GLFW's key codes for letters, digits and [ ] - = are their ASCII codes (upper case). */
+    _sl_keys_viewer = &v;
+    for (const char *k = v.keys; k && *k; k++)
+        _sl_key(NULL, *k >= 'a' && *k <= 'z' ? *k - 'a' + 'A' : *k, 0, GLFW_PRESS, 0);
     /* 0 would do too (the EGL backend binds its own for it); the name says what is meant. */
     GLuint target = sl_context_default_framebuffer(v.ctx);
 
@@ -495,7 +745,7 @@ int sl_viewer_main(int argc, char **argv) {
         glfwSetScrollCallback(window, _sl_scroll);
     }
     int rendered = 0;
-    double last_reload_check = 0;
+    double last_reload_check = 0, last_frame_time = 0;
     char reported_missing[512] = "-";
     const char *reported_shader_error = NULL;
     int status = 0;
@@ -505,7 +755,8 @@ int sl_viewer_main(int argc, char **argv) {
         if (window && now - last_reload_check > 0.25) {
             last_reload_check = now;
             bool reloaded = false;
-            if (!sl_renderer_reload_changed(&v.renderer, &reloaded, err, sizeof err))
+            if (!sl_renderer_reload_changed(v.show_second && v.second_ready ? &v.second : &v.renderer, &reloaded, err,
+                                            sizeof err))
                 fprintf(stderr, "shadowlab: shader reload failed, keeping the previous version:\n%s\n", err);
             else if (reloaded)
                 printf("shadowlab: shaders reloaded\n");
@@ -513,8 +764,53 @@ int sl_viewer_main(int argc, char **argv) {
         if (window) _sl_fly(&v, window, now);
         int fw, fh;
         sl_context_framebuffer_size(v.ctx, &fw, &fh);
-        sl_renderer_draw(&v.renderer, &v.scene, &v.params, target, fw, fh);
-        const sl_frame_info *info = sl_renderer_info(&v.renderer);
+        if (v.show_second && !v.second_ready) {
+            /* The second code draws with its own renderer: its own shaders, its own maps. */
+            sl_renderer_desc sd = {.labs_dir = _sl_second_dir};
+            if (!sl_renderer_init(&v.second, &sd, err, sizeof err) ||
+                !sl_renderer_set_scene(&v.second, &v.scene, err, sizeof err)) {
+                fprintf(stderr, "shadowlab: cannot draw with the %s: %s\n", _sl_second_kind, err);
+                v.show_second = false;
+            } else {
+                for (int lab = 1; lab <= SL_LAB_COUNT; lab++) v.second.fns[lab] = _sl_second_functions;
+                v.second_ready = true;
+            }
+        }
+        sl_renderer *active = v.show_second ? &v.second : &v.renderer;
+        static bool last_second;
+        if (last_second != v.show_second) {
+            printf("shadowlab: drawing with the %s code\n", v.show_second ? _sl_second_kind : sl_build_labs_kind);
+            last_second = v.show_second;
+            v.dirty_title = true;
+        }
+        /* Per-pass GL timer queries only while the overlay shows them. */
+        bool timing = v.overlay && v.show_overlay;
+        if (active->timing != timing) sl_renderer_set_timing(active, timing);
+        if (v.animate_light) {
+            double dt = window ? now - last_frame_time : 1.0 / 30.0;
+            _sl_animate_light(&v.scene.light, (float)(0.4 * (dt > 0.2 ? 0.2 : dt)));
+        }
+        double frame_seconds = window && last_frame_time > 0 ? now - last_frame_time : 0;
+        last_frame_time = now;
+        sl_renderer_draw(active, &v.scene, &v.params, target, fw, fh);
+        const sl_frame_info *info = sl_renderer_info(active);
+        if (v.overlay && (v.show_overlay || v.show_frustum || v.caption)) {
+            if (timing) _sl_update_timing(&v, active, frame_seconds, window != NULL);
+            sl_overlay_clear(v.overlay);
+            if (v.show_overlay) _sl_overlay_fill(&v, active, fw, fh, window != NULL);
+            else if (v.show_frustum) _sl_add_frustum(v.overlay, info);
+            if (v.caption) {
+                sl_overlay_panel(v.overlay, SL_OVERLAY_BOTTOM_LEFT, NULL);
+                sl_overlay_line(v.overlay, (const float[3]){1, 1, 1}, "%s", v.caption);
+            }
+            mat4 camera;
+            _sl_camera_view_projection(&v.scene, fw, fh, camera);
+            sl_overlay_draw(v.overlay, camera, target, fw, fh);
+        }
+        if (v.screenshot_requested) {
+            v.screenshot_requested = false;
+            _sl_screenshot_key(&v, target, fw, fh);
+        }
         if (info->shader_error != reported_shader_error) {
             reported_shader_error = info->shader_error;
             if (info->shader_error)
@@ -536,22 +832,28 @@ int sl_viewer_main(int argc, char **argv) {
             v.dirty_title = false;
         }
         rendered++;
+        if (v.frame_dir) {
+            char path[SL_PATH_MAX + 16];
+            snprintf(path, sizeof path, "%s/%03d.png", v.frame_dir, rendered);
+            if (!_sl_save(target, fw, fh, path)) {
+                status = 1;
+                break;
+            }
+        }
         if (frames > 0 && rendered >= frames) {
-            if (screenshot) {
-                sl_image shot;
-                glFinish();
-                if (!sl_capture_framebuffer(target, fw, fh, 3, &shot) || !sl_image_write(screenshot, &shot, err, sizeof err)) {
-                    fprintf(stderr, "shadowlab: cannot save the screenshot: %s\n", err);
-                    status = 1;
-                } else {
-                    printf("shadowlab: saved %s (%dx%d)\n", screenshot, fw, fh);
-                }
-                sl_image_free(&shot);
+            if (screenshot && !_sl_save(target, fw, fh, screenshot)) status = 1;
+            /* The last frame's overlay in words, for logs and tests. */
+            if (v.overlay && v.show_overlay) {
+                char text[8192];
+                sl_overlay_text(v.overlay, text, sizeof text);
+                printf("shadowlab: overlay:\n%s", text);
             }
             break;
         }
         sl_context_end_frame(v.ctx);
     }
+    sl_overlay_destroy(v.overlay);
+    if (v.second_ready) sl_renderer_destroy(&v.second);
     sl_renderer_destroy(&v.renderer);
     sl_context_destroy(v.ctx);
     return status;

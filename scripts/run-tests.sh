@@ -5,6 +5,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
+# The lecture decks' tools (pandoc, WeasyPrint, pdftoppm), so the slides' tests
+# run here and in CI; SL_SLIDES=0 leaves them out (those tests are then skipped).
+[ "${SL_SLIDES:-1}" = 0 ] || ./scripts/install-slides-deps.sh
 cmake -S . -B build -DSL_LABS="${SL_LABS:-student}"
 cmake --build build -j "$(nproc)"
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900

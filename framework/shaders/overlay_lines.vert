@@ -1,0 +1,5 @@
+#version 330 core
+// The overlay's wire boxes (a light's frustum), in world space.
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_view_projection;
+void main() { gl_Position = u_view_projection * vec4(a_position, 1.0); }

@@ -1,0 +1,496 @@
+#include "sl_overlay.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_shader.h"
+
+/* ---- The font ------------------------------------------------------------
+ * 5x8 glyphs for ASCII 32..126, drawn for this project: '#' is ink. Row 7 is
+ * for descenders. Glyph 95 (after '~') is solid: panels' backings use it, so
+ * text and backings are one draw call. */
+#define _SL_GLYPH_W 5
+#define _SL_GLYPH_H 8
+#define _SL_GLYPHS 96
+#define _SL_SOLID 95
+
+static const char *const _sl_font[_SL_GLYPHS][_SL_GLYPH_H] = {
+    {".....", ".....", ".....", ".....", ".....", ".....", ".....", "....."}, /* space */
+    {"..#..", "..#..", "..#..", "..#..", "..#..", ".....", "..#..", "....."}, /* ! */
+    {".#.#.", ".#.#.", ".#.#.", ".....", ".....", ".....", ".....", "....."}, /* " */
+    {".#.#.", ".#.#.", "#####", ".#.#.", "#####", ".#.#.", ".#.#.", "....."}, /* # */
+    {"..#..", ".####", "#.#..", ".###.", "..#.#", "####.", "..#..", "....."}, /* $ */
+    {"##...", "##..#", "...#.", "..#..", ".#...", "#..##", "...##", "....."}, /* % */
+    {".##..", "#..#.", "#.#..", ".#...", "#.#.#", "#..#.", ".##.#", "....."}, /* & */
+    {"..#..", "..#..", ".#...", ".....", ".....", ".....", ".....", "....."}, /* ' */
+    {"...#.", "..#..", ".#...", ".#...", ".#...", "..#..", "...#.", "....."}, /* ( */
+    {".#...", "..#..", "...#.", "...#.", "...#.", "..#..", ".#...", "....."}, /* ) */
+    {".....", "..#..", "#.#.#", ".###.", "#.#.#", "..#..", ".....", "....."}, /* * */
+    {".....", "..#..", "..#..", "#####", "..#..", "..#..", ".....", "....."}, /* + */
+    {".....", ".....", ".....", ".....", ".....", "..#..", "..#..", ".#..."}, /* , */
+    {".....", ".....", ".....", "#####", ".....", ".....", ".....", "....."}, /* - */
+    {".....", ".....", ".....", ".....", ".....", ".##..", ".##..", "....."}, /* . */
+    {".....", "....#", "...#.", "..#..", ".#...", "#....", ".....", "....."}, /* / */
+    {".###.", "#...#", "#..##", "#.#.#", "##..#", "#...#", ".###.", "....."}, /* 0 */
+    {"..#..", ".##..", "..#..", "..#..", "..#..", "..#..", ".###.", "....."}, /* 1 */
+    {".###.", "#...#", "....#", "...#.", "..#..", ".#...", "#####", "....."}, /* 2 */
+    {"#####", "...#.", "..#..", "...#.", "....#", "#...#", ".###.", "....."}, /* 3 */
+    {"...#.", "..##.", ".#.#.", "#..#.", "#####", "...#.", "...#.", "....."}, /* 4 */
+    {"#####", "#....", "####.", "....#", "....#", "#...#", ".###.", "....."}, /* 5 */
+    {"..##.", ".#...", "#....", "####.", "#...#", "#...#", ".###.", "....."}, /* 6 */
+    {"#####", "....#", "...#.", "..#..", ".#...", ".#...", ".#...", "....."}, /* 7 */
+    {".###.", "#...#", "#...#", ".###.", "#...#", "#...#", ".###.", "....."}, /* 8 */
+    {".###.", "#...#", "#...#", ".####", "....#", "...#.", ".##..", "....."}, /* 9 */
+    {".....", ".##..", ".##..", ".....", ".##..", ".##..", ".....", "....."}, /* : */
+    {".....", ".##..", ".##..", ".....", ".##..", ".##..", ".#...", "....."}, /* ; */
+    {"...#.", "..#..", ".#...", "#....", ".#...", "..#..", "...#.", "....."}, /* < */
+    {".....", ".....", "#####", ".....", "#####", ".....", ".....", "....."}, /* = */
+    {".#...", "..#..", "...#.", "....#", "...#.", "..#..", ".#...", "....."}, /* > */
+    {".###.", "#...#", "....#", "...#.", "..#..", ".....", "..#..", "....."}, /* ? */
+    {".###.", "#...#", "....#", ".##.#", "#.#.#", "#.#.#", ".###.", "....."}, /* @ */
+    {".###.", "#...#", "#...#", "#####", "#...#", "#...#", "#...#", "....."}, /* A */
+    {"####.", "#...#", "#...#", "####.", "#...#", "#...#", "####.", "....."}, /* B */
+    {".###.", "#...#", "#....", "#....", "#....", "#...#", ".###.", "....."}, /* C */
+    {"###..", "#..#.", "#...#", "#...#", "#...#", "#..#.", "###..", "....."}, /* D */
+    {"#####", "#....", "#....", "####.", "#....", "#....", "#####", "....."}, /* E */
+    {"#####", "#....", "#....", "####.", "#....", "#....", "#....", "....."}, /* F */
+    {".###.", "#...#", "#....", "#.###", "#...#", "#...#", ".####", "....."}, /* G */
+    {"#...#", "#...#", "#...#", "#####", "#...#", "#...#", "#...#", "....."}, /* H */
+    {".###.", "..#..", "..#..", "..#..", "..#..", "..#..", ".###.", "....."}, /* I */
+    {"..###", "...#.", "...#.", "...#.", "...#.", "#..#.", ".##..", "....."}, /* J */
+    {"#...#", "#..#.", "#.#..", "##...", "#.#..", "#..#.", "#...#", "....."}, /* K */
+    {"#....", "#....", "#....", "#....", "#....", "#....", "#####", "....."}, /* L */
+    {"#...#", "##.##", "#.#.#", "#.#.#", "#...#", "#...#", "#...#", "....."}, /* M */
+    {"#...#", "#...#", "##..#", "#.#.#", "#..##", "#...#", "#...#", "....."}, /* N */
+    {".###.", "#...#", "#...#", "#...#", "#...#", "#...#", ".###.", "....."}, /* O */
+    {"####.", "#...#", "#...#", "####.", "#....", "#....", "#....", "....."}, /* P */
+    {".###.", "#...#", "#...#", "#...#", "#.#.#", "#..#.", ".##.#", "....."}, /* Q */
+    {"####.", "#...#", "#...#", "####.", "#.#..", "#..#.", "#...#", "....."}, /* R */
+    {".####", "#....", "#....", ".###.", "....#", "....#", "####.", "....."}, /* S */
+    {"#####", "..#..", "..#..", "..#..", "..#..", "..#..", "..#..", "....."}, /* T */
+    {"#...#", "#...#", "#...#", "#...#", "#...#", "#...#", ".###.", "....."}, /* U */
+    {"#...#", "#...#", "#...#", "#...#", "#...#", ".#.#.", "..#..", "....."}, /* V */
+    {"#...#", "#...#", "#...#", "#.#.#", "#.#.#", "#.#.#", ".#.#.", "....."}, /* W */
+    {"#...#", "#...#", ".#.#.", "..#..", ".#.#.", "#...#", "#...#", "....."}, /* X */
+    {"#...#", "#...#", ".#.#.", "..#..", "..#..", "..#..", "..#..", "....."}, /* Y */
+    {"#####", "....#", "...#.", "..#..", ".#...", "#....", "#####", "....."}, /* Z */
+    {".###.", ".#...", ".#...", ".#...", ".#...", ".#...", ".###.", "....."}, /* [ */
+    {".....", "#....", ".#...", "..#..", "...#.", "....#", ".....", "....."}, /* \ */
+    {".###.", "...#.", "...#.", "...#.", "...#.", "...#.", ".###.", "....."}, /* ] */
+    {"..#..", ".#.#.", "#...#", ".....", ".....", ".....", ".....", "....."}, /* ^ */
+    {".....", ".....", ".....", ".....", ".....", ".....", ".....", "#####"}, /* _ */
+    {".#...", "..#..", ".....", ".....", ".....", ".....", ".....", "....."}, /* ` */
+    {".....", ".....", ".###.", "....#", ".####", "#...#", ".####", "....."}, /* a */
+    {"#....", "#....", "####.", "#...#", "#...#", "#...#", "####.", "....."}, /* b */
+    {".....", ".....", ".###.", "#....", "#....", "#...#", ".###.", "....."}, /* c */
+    {"....#", "....#", ".####", "#...#", "#...#", "#...#", ".####", "....."}, /* d */
+    {".....", ".....", ".###.", "#...#", "#####", "#....", ".###.", "....."}, /* e */
+    {"..##.", ".#..#", ".#...", "###..", ".#...", ".#...", ".#...", "....."}, /* f */
+    {".....", ".....", ".####", "#...#", "#...#", ".####", "....#", ".###."}, /* g */
+    {"#....", "#....", "#.##.", "##..#", "#...#", "#...#", "#...#", "....."}, /* h */
+    {"..#..", ".....", ".##..", "..#..", "..#..", "..#..", ".###.", "....."}, /* i */
+    {"...#.", ".....", "..##.", "...#.", "...#.", "...#.", "#..#.", ".##.."}, /* j */
+    {"#....", "#....", "#..#.", "#.#..", "##...", "#.#..", "#..#.", "....."}, /* k */
+    {".##..", "..#..", "..#..", "..#..", "..#..", "..#..", ".###.", "....."}, /* l */
+    {".....", ".....", "##.#.", "#.#.#", "#.#.#", "#.#.#", "#.#.#", "....."}, /* m */
+    {".....", ".....", "#.##.", "##..#", "#...#", "#...#", "#...#", "....."}, /* n */
+    {".....", ".....", ".###.", "#...#", "#...#", "#...#", ".###.", "....."}, /* o */
+    {".....", ".....", "####.", "#...#", "#...#", "####.", "#....", "#...."}, /* p */
+    {".....", ".....", ".####", "#...#", "#...#", ".####", "....#", "....#"}, /* q */
+    {".....", ".....", "#.##.", "##..#", "#....", "#....", "#....", "....."}, /* r */
+    {".....", ".....", ".####", "#....", ".###.", "....#", "####.", "....."}, /* s */
+    {".#...", ".#...", "###..", ".#...", ".#...", ".#..#", "..##.", "....."}, /* t */
+    {".....", ".....", "#...#", "#...#", "#...#", "#..##", ".##.#", "....."}, /* u */
+    {".....", ".....", "#...#", "#...#", "#...#", ".#.#.", "..#..", "....."}, /* v */
+    {".....", ".....", "#...#", "#...#", "#.#.#", "#.#.#", ".#.#.", "....."}, /* w */
+    {".....", ".....", "#...#", ".#.#.", "..#..", ".#.#.", "#...#", "....."}, /* x */
+    {".....", ".....", "#...#", "#...#", "#...#", ".####", "....#", ".###."}, /* y */
+    {".....", ".....", "#####", "...#.", "..#..", ".#...", "#####", "....."}, /* z */
+    {"...#.", "..#..", "..#..", ".#...", "..#..", "..#..", "...#.", "....."}, /* { */
+    {"..#..", "..#..", "..#..", "..#..", "..#..", "..#..", "..#..", "....."}, /* | */
+    {".#...", "..#..", "..#..", "...#.", "..#..", "..#..", ".#...", "....."}, /* } */
+    {".....", ".....", ".#...", "#.#.#", "...#.", ".....", ".....", "....."}, /* ~ */
+    {"#####", "#####", "#####", "#####", "#####", "#####", "#####", "#####"}, /* solid */
+};
+
+/* ---- What a frame's overlay holds ---------------------------------------- */
+#define _SL_MAX_PANELS 16
+#define _SL_MAX_LINES 96
+#define _SL_MAX_LABELS 32
+#define _SL_MAX_BOXES 16
+#define _SL_LINE_CHARS 121
+
+typedef struct _sl_text_line {
+    char text[_SL_LINE_CHARS];
+    float rgb[3];
+    int panel; /* index into panels, or -1 for a label */
+    int x, y;  /* a label's position */
+} _sl_text_line;
+
+typedef struct _sl_panel {
+    sl_overlay_corner corner;
+} _sl_panel;
+
+struct sl_overlay {
+    sl_program text_program, line_program;
+    GLuint font_texture, text_vao, text_vbo, line_vao, line_vbo;
+    int scale;
+    _sl_panel panels[_SL_MAX_PANELS];
+    int panel_count;
+    _sl_text_line lines[_SL_MAX_LINES + _SL_MAX_LABELS];
+    int line_count, label_count;
+    mat4 boxes[_SL_MAX_BOXES];
+    float box_rgb[_SL_MAX_BOXES][3];
+    int box_count;
+    float *vertices; /* text quads: x, y, u, v, r, g, b, a */
+    size_t vertex_capacity;
+};
+
+static const float _sl_default_rgb[3] = {0.85f, 0.85f, 0.85f};
+static const float _sl_title_rgb[3] = {1.0f, 0.85f, 0.35f};
+
+sl_overlay *sl_overlay_create(const char *framework_dir, char *err, size_t err_size) {
+    sl_overlay *ov = calloc(1, sizeof *ov);
+    if (!ov) {
+        snprintf(err, err_size, "out of memory");
+        return NULL;
+    }
+    char shaders[SL_PATH_MAX], vs[SL_PATH_MAX + 32], fs[SL_PATH_MAX + 32];
+    snprintf(shaders, sizeof shaders, "%s/shaders", framework_dir);
+    snprintf(vs, sizeof vs, "%s/overlay_text.vert", shaders);
+    snprintf(fs, sizeof fs, "%s/overlay_text.frag", shaders);
+    sl_shader_desc td = {.vertex_path = vs, .fragment_path = fs, .search_dirs = {shaders}};
+    if (!sl_program_build(&ov->text_program, &td, err, err_size)) {
+        free(ov);
+        return NULL;
+    }
+    snprintf(vs, sizeof vs, "%s/overlay_lines.vert", shaders);
+    snprintf(fs, sizeof fs, "%s/overlay_lines.frag", shaders);
+    sl_shader_desc ld = {.vertex_path = vs, .fragment_path = fs, .search_dirs = {shaders}};
+    if (!sl_program_build(&ov->line_program, &ld, err, err_size)) {
+        sl_program_destroy(&ov->text_program);
+        free(ov);
+        return NULL;
+    }
+    /* The font as one row of glyphs, each followed by a blank column so
+     * neighbours never bleed into each other. */
+    enum { W = _SL_GLYPHS * (_SL_GLYPH_W + 1), H = _SL_GLYPH_H };
+    static unsigned char texels[W * H];
+    memset(texels, 0, sizeof texels);
+    for (int g = 0; g < _SL_GLYPHS; g++)
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < _SL_GLYPH_W; x++)
+                if (_sl_font[g][y][x] == '#') texels[y * W + g * (_SL_GLYPH_W + 1) + x] = 255;
+    glGenTextures(1, &ov->font_texture);
+    glBindTexture(GL_TEXTURE_2D, ov->font_texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, W, H, 0, GL_RED, GL_UNSIGNED_BYTE, texels);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+
+    glGenVertexArrays(1, &ov->text_vao);
+    glGenBuffers(1, &ov->text_vbo);
+    glBindVertexArray(ov->text_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, ov->text_vbo);
+    GLsizei stride = 8 * sizeof(float);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, (void *)0);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride, (void *)(2 * sizeof(float)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, (void *)(4 * sizeof(float)));
+    glGenVertexArrays(1, &ov->line_vao);
+    glGenBuffers(1, &ov->line_vbo);
+    glBindVertexArray(ov->line_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, ov->line_vbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (void *)0);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    return ov;
+}
+
+void sl_overlay_destroy(sl_overlay *ov) {
+    if (!ov) return;
+    sl_program_destroy(&ov->text_program);
+    sl_program_destroy(&ov->line_program);
+    glDeleteTextures(1, &ov->font_texture);
+    glDeleteBuffers(1, &ov->text_vbo);
+    glDeleteBuffers(1, &ov->line_vbo);
+    glDeleteVertexArrays(1, &ov->text_vao);
+    glDeleteVertexArrays(1, &ov->line_vao);
+    free(ov->vertices);
+    free(ov);
+}
+
+void sl_overlay_clear(sl_overlay *ov) {
+    ov->panel_count = 0;
+    ov->line_count = 0;
+    ov->label_count = 0;
+    ov->box_count = 0;
+}
+
+void sl_overlay_set_scale(sl_overlay *ov, int scale) { ov->scale = scale < 0 ? 0 : scale; }
+
+int sl_overlay_scale_for(const sl_overlay *ov, int width, int height) {
+    if (ov->scale > 0) return ov->scale;
+    /* Big enough to read across a lecture hall, small enough to leave the scene visible. */
+    return 1 + (width >= 800 && height >= 480) + (width >= 1600 && height >= 1000);
+}
+
+bool sl_overlay_panel(sl_overlay *ov, sl_overlay_corner corner, const char *title) {
+    if (ov->panel_count >= _SL_MAX_PANELS || corner < 0 || corner >= SL_OVERLAY_CORNER_COUNT) return false;
+    ov->panels[ov->panel_count++] = (_sl_panel){.corner = corner};
+    if (title) sl_overlay_line(ov, _sl_title_rgb, "%s", title);
+    return true;
+}
+
+static _sl_text_line *_sl_new_line(sl_overlay *ov, const float *rgb, int panel, const char *fmt, va_list ap) {
+    if (ov->line_count + ov->label_count >= _SL_MAX_LINES + _SL_MAX_LABELS) return NULL;
+    _sl_text_line *l = &ov->lines[ov->line_count + ov->label_count];
+    vsnprintf(l->text, sizeof l->text, fmt, ap);
+    memcpy(l->rgb, rgb ? rgb : _sl_default_rgb, sizeof l->rgb);
+    l->panel = panel;
+    return l;
+}
+
+void sl_overlay_line(sl_overlay *ov, const float *rgb, const char *fmt, ...) {
+    if (ov->panel_count == 0) sl_overlay_panel(ov, SL_OVERLAY_TOP_LEFT, NULL);
+    if (ov->line_count >= _SL_MAX_LINES) return;
+    va_list ap;
+    va_start(ap, fmt);
+    _sl_text_line *l = _sl_new_line(ov, rgb, ov->panel_count - 1, fmt, ap);
+    va_end(ap);
+    if (l) ov->line_count++;
+}
+
+void sl_overlay_label(sl_overlay *ov, int x, int y, const float *rgb, const char *fmt, ...) {
+    if (ov->label_count >= _SL_MAX_LABELS) return;
+    va_list ap;
+    va_start(ap, fmt);
+    _sl_text_line *l = _sl_new_line(ov, rgb, -1, fmt, ap);
+    va_end(ap);
+    if (!l) return;
+    l->x = x;
+    l->y = y;
+    ov->label_count++;
+}
+
+bool sl_overlay_box(sl_overlay *ov, mat4 to_world, const float *rgb) {
+    if (ov->box_count >= _SL_MAX_BOXES) return false;
+    for (int c = 0; c < 4; c++)
+        for (int r = 0; r < 4; r++)
+            if (!isfinite(to_world[c][r])) return false;
+    glm_mat4_copy(to_world, ov->boxes[ov->box_count]);
+    memcpy(ov->box_rgb[ov->box_count], rgb ? rgb : _sl_title_rgb, sizeof ov->box_rgb[0]);
+    ov->box_count++;
+    return true;
+}
+
+/* ---- Drawing -------------------------------------------------------------- */
+static bool _sl_reserve(sl_overlay *ov, size_t floats) {
+    if (floats <= ov->vertex_capacity) return true;
+    size_t cap = ov->vertex_capacity ? ov->vertex_capacity : 4096;
+    while (cap < floats) cap *= 2;
+    float *v = realloc(ov->vertices, cap * sizeof *v);
+    if (!v) return false;
+    ov->vertices = v;
+    ov->vertex_capacity = cap;
+    return true;
+}
+
+/* One quad (two triangles) from pixel rect (x0,y0)-(x1,y1) showing glyph g. */
+static size_t _sl_quad(float *out, float x0, float y0, float x1, float y1, int g, const float rgb[3], float alpha) {
+    const float tex_w = (float)(_SL_GLYPHS * (_SL_GLYPH_W + 1));
+    float u0 = (float)(g * (_SL_GLYPH_W + 1)) / tex_w, u1 = (float)(g * (_SL_GLYPH_W + 1) + _SL_GLYPH_W) / tex_w;
+    const float corners[6][4] = {{x0, y0, u0, 0}, {x1, y0, u1, 0}, {x1, y1, u1, 1},
+                                 {x0, y0, u0, 0}, {x1, y1, u1, 1}, {x0, y1, u0, 1}};
+    for (int i = 0; i < 6; i++) {
+        float *v = out + i * 8;
+        memcpy(v, corners[i], 4 * sizeof(float));
+        v[4] = rgb[0];
+        v[5] = rgb[1];
+        v[6] = rgb[2];
+        v[7] = alpha;
+    }
+    return 6 * 8;
+}
+
+static size_t _sl_text(float *out, const char *text, float x, float y, int s, const float rgb[3]) {
+    size_t n = 0;
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++, x += SL_OVERLAY_CELL_W * s) {
+        if (*c == ' ') continue;
+        int g = *c >= 32 && *c <= 126 ? *c - 32 : '?' - 32;
+        n += _sl_quad(out + n, x, y, x + _SL_GLYPH_W * s, y + _SL_GLYPH_H * s, g, rgb, 1);
+    }
+    return n;
+}
+
+static const float _sl_backing_rgb[3] = {0.05f, 0.05f, 0.07f};
+#define _SL_BACKING_ALPHA 0.7f
+
+static void _sl_draw_boxes(sl_overlay *ov, mat4 camera_view_projection) {
+    if (ov->box_count == 0) return;
+    /* The cube's 12 edges as pairs of corners (bit 0: x, bit 1: y, bit 2: z). */
+    static const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                     {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    float points[_SL_MAX_BOXES][24][3];
+    for (int b = 0; b < ov->box_count; b++) {
+        vec3 corner[8];
+        for (int i = 0; i < 8; i++) {
+            vec4 ndc = {i & 1 ? 1.f : -1.f, i & 2 ? 1.f : -1.f, i & 4 ? 1.f : -1.f, 1}, w;
+            glm_mat4_mulv(ov->boxes[b], ndc, w);
+            float inv = fabsf(w[3]) > 1e-12f ? 1.0f / w[3] : 0.0f;
+            glm_vec3_scale(w, inv, corner[i]);
+        }
+        for (int e = 0; e < 12; e++)
+            for (int k = 0; k < 2; k++) memcpy(points[b][2 * e + k], corner[edges[e][k]], sizeof(vec3));
+    }
+    glUseProgram(ov->line_program.id);
+    glUniformMatrix4fv(sl_program_uniform(&ov->line_program, "u_view_projection"), 1, GL_FALSE,
+                       (const float *)camera_view_projection);
+    GLint color = sl_program_uniform(&ov->line_program, "u_color");
+    glBindVertexArray(ov->line_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, ov->line_vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(ov->box_count * sizeof points[0]), points, GL_STREAM_DRAW);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    /* Twice: faint through everything (so a frustum behind the scene is still
+     * seen), then full strength where nothing in the scene is in front. */
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 0) glDisable(GL_DEPTH_TEST);
+        else {
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LEQUAL);
+        }
+        for (int b = 0; b < ov->box_count; b++) {
+            const float *c = ov->box_rgb[b];
+            glUniform4f(color, c[0], c[1], c[2], pass == 0 ? 0.35f : 1.0f);
+            glDrawArrays(GL_LINES, b * 24, 24);
+        }
+    }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+}
+
+void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target, int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width, height);
+    _sl_draw_boxes(ov, camera_view_projection);
+
+    int s = sl_overlay_scale_for(ov, width, height);
+    const float cw = (float)(SL_OVERLAY_CELL_W * s), ch = (float)(SL_OVERLAY_CELL_H * s);
+    const float margin = (float)(4 * s), pad = (float)(3 * s);
+    int total = ov->line_count + ov->label_count;
+    /* Per glyph a quad, per panel and label a backing: 48 floats each. */
+    size_t chars = 0;
+    for (int i = 0; i < total; i++) chars += strlen(ov->lines[i].text) + 1;
+    if (!_sl_reserve(ov, (chars + (size_t)ov->panel_count + 1) * 48)) return;
+    /* Backings first (they are drawn under the text), then the glyphs. */
+    float *v = ov->vertices;
+    size_t n = 0;
+    float next_y[SL_OVERLAY_CORNER_COUNT]; /* how far each corner's stack has grown */
+    for (int c = 0; c < SL_OVERLAY_CORNER_COUNT; c++) next_y[c] = margin;
+    float panel_x[_SL_MAX_PANELS], panel_y[_SL_MAX_PANELS], panel_w[_SL_MAX_PANELS], panel_h[_SL_MAX_PANELS];
+    float left_width[2] = {0, 0}; /* widest left panel at the top and at the bottom */
+    for (int p = 0; p < ov->panel_count; p++) {
+        int rows = 0;
+        size_t cols = 0;
+        for (int i = 0; i < total; i++)
+            if (ov->lines[i].panel == p) {
+                rows++;
+                size_t len = strlen(ov->lines[i].text);
+                if (len > cols) cols = len;
+            }
+        panel_w[p] = rows ? (float)cols * cw - (float)s + 2 * pad : 0;
+        panel_h[p] = rows ? (float)rows * ch - 2.0f * (float)s + 2 * pad : 0;
+        sl_overlay_corner corner = ov->panels[p].corner;
+        if (corner == SL_OVERLAY_TOP_LEFT && panel_w[p] > left_width[0]) left_width[0] = panel_w[p];
+        if (corner == SL_OVERLAY_BOTTOM_LEFT && panel_w[p] > left_width[1]) left_width[1] = panel_w[p];
+    }
+    /* Left stacks first, so a right-hand panel too wide to sit beside them
+     * can start below (or above) them instead of covering them. */
+    for (int pass = 0; pass < 2; pass++) {
+      for (int p = 0; p < ov->panel_count; p++) {
+        sl_overlay_corner corner = ov->panels[p].corner;
+        bool right = corner == SL_OVERLAY_TOP_RIGHT || corner == SL_OVERLAY_BOTTOM_RIGHT;
+        if (right != (pass == 1)) continue;
+        if (panel_w[p] == 0) {
+            panel_x[p] = panel_y[p] = -1;
+            continue;
+        }
+        float w = panel_w[p], h = panel_h[p];
+        bool bottom = corner == SL_OVERLAY_BOTTOM_LEFT || corner == SL_OVERLAY_BOTTOM_RIGHT;
+        float x = right ? (float)width - margin - w : margin;
+        if (right) {
+            int band = bottom ? 1 : 0;
+            sl_overlay_corner beside = bottom ? SL_OVERLAY_BOTTOM_LEFT : SL_OVERLAY_TOP_LEFT;
+            if (left_width[band] > 0 && x < margin + left_width[band] + margin && next_y[corner] < next_y[beside])
+                next_y[corner] = next_y[beside];
+        }
+        float y = bottom ? (float)height - next_y[corner] - h : next_y[corner];
+        next_y[corner] += h + margin;
+        panel_x[p] = x + pad;
+        panel_y[p] = y + pad;
+        n += _sl_quad(v + n, x, y, x + w, y + h, _SL_SOLID, _sl_backing_rgb, _SL_BACKING_ALPHA);
+      }
+    }
+    for (int i = 0; i < total; i++) {
+        const _sl_text_line *l = &ov->lines[i];
+        if (l->panel >= 0) continue;
+        float w = (float)strlen(l->text) * cw - (float)s + 2 * pad, h = ch - 2.0f * (float)s + 2 * pad;
+        n += _sl_quad(v + n, (float)l->x, (float)l->y, (float)l->x + w, (float)l->y + h, _SL_SOLID, _sl_backing_rgb,
+                      _SL_BACKING_ALPHA);
+    }
+    int row[_SL_MAX_PANELS] = {0};
+    for (int i = 0; i < total; i++) {
+        const _sl_text_line *l = &ov->lines[i];
+        if (l->panel >= 0) {
+            if (panel_x[l->panel] < 0) continue;
+            n += _sl_text(v + n, l->text, panel_x[l->panel], panel_y[l->panel] + (float)row[l->panel]++ * ch, s, l->rgb);
+        } else {
+            n += _sl_text(v + n, l->text, (float)l->x + pad, (float)l->y + pad, s, l->rgb);
+        }
+    }
+    if (n == 0) return;
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(ov->text_program.id);
+    glUniform2f(sl_program_uniform(&ov->text_program, "u_viewport"), (float)width, (float)height);
+    glUniform1i(sl_program_uniform(&ov->text_program, "u_font"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, ov->font_texture);
+    glBindVertexArray(ov->text_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, ov->text_vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * sizeof(float)), v, GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, (GLsizei)(n / 8));
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glUseProgram(0);
+}
+
+size_t sl_overlay_text(const sl_overlay *ov, char *out, size_t out_size) {
+    static const char *const names[] = {"top left", "top right", "bottom left", "bottom right"};
+    size_t used = 0;
+    if (out_size) out[0] = '\0';
+    for (int i = 0; i < ov->line_count + ov->label_count; i++) {
+        const _sl_text_line *l = &ov->lines[i];
+        const char *where = l->panel >= 0 ? names[ov->panels[l->panel].corner] : "label";
+        int k = used < out_size ? snprintf(out + used, out_size - used, "[%s] %s\n", where, l->text)
+                                : snprintf(NULL, 0, "[%s] %s\n", where, l->text);
+        if (k > 0) used += (size_t)k;
+    }
+    return used;
+}

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Installs what `cmake --build build --target slides` needs to build the
+# lecture decks, as Debian packages (Debian 12 bookworm, 13 trixie, testing):
+#   pandoc         Markdown -> HTML slides (dzslides: one self-contained file)
+#                  and -> the HTML the PDF is printed from
+#   weasyprint     HTML + CSS -> PDF (no LaTeX: a fraction of TeX Live's size)
+#   poppler-utils  pdftoppm, which the slides' test uses to look at a page
+#   fonts-dejavu-core  the fonts the PDF is set in
+# Kept apart from install-deps.sh: the grader and the labs need none of it.
+# scripts/run-tests.sh (CI) runs it; without these tools the slides target
+# says what is missing and the slides' tests are skipped.
+# Idempotent; run as root (or with sudo).
+set -euo pipefail
+
+# A name ending in '?' is installed where the release has it.
+packages=(
+  pandoc
+  # Debian 12's python3-fonttools (weasyprint's) needs python3-scipy OR
+  # python3-munkres: naming the small one keeps SciPy, Pythran and the Boost
+  # headers (about 250 MB) off the machine.
+  python3-munkres?
+  weasyprint
+  poppler-utils
+  fonts-dejavu-core
+)
+
+say() { echo "install-slides-deps: $*"; }
+
+if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
+  say "this script knows Debian's packages only (no apt-get here). Install pandoc, WeasyPrint and" >&2
+  say "poppler's pdftoppm by other means; see slides/README.md." >&2
+  exit 2
+fi
+release=$( (. /etc/os-release 2>/dev/null && echo "${PRETTY_NAME:-unknown}") || echo unknown)
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+offered() {
+  local candidate
+  candidate=$(apt-cache policy "$1" 2>/dev/null | awk '/Candidate:/ {print $2; exit}')
+  [ -n "$candidate" ] && [ "$candidate" != "(none)" ]
+}
+sudo=""
+if [ "$(id -u)" != 0 ]; then
+  command -v sudo >/dev/null || { say "run as root (or install sudo)" >&2; exit 2; }
+  sudo=sudo
+fi
+export DEBIAN_FRONTEND=noninteractive
+updated=""
+update() { [ -n "$updated" ] || { $sudo apt-get update -q; updated=1; }; }
+
+missing=()
+for p in "${packages[@]}"; do
+  name=${p%\?}
+  installed "$name" && continue
+  [ "$name" = "$p" ] && { missing+=("$name"); continue; }
+  # An optional package is only worth it while weasyprint still has to come.
+  installed weasyprint && continue
+  update
+  offered "$name" && missing+=("$name")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  say "all packages already installed ($release)"
+  exit 0
+fi
+update
+say "installing on $release: ${missing[*]}"
+if ! $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"; then
+  say "apt-get could not install: ${missing[*]}" >&2
+  exit 1
+fi
+say "done"

@@ -1,0 +1,75 @@
+/* image_check: what a picture must show, for the viewer's overlay and the
+ * slides' tests.
+ *   image_check text WITH.png WITHOUT.png X Y W H
+ *     the rectangle of WITH holds text on a dark backing that WITHOUT lacks:
+ *     at least 20% of its pixels differ from WITHOUT, at least 25% are dark
+ *     (the backing) and 2-40% are bright (the glyphs).
+ *   image_check not-blank IMAGE.png
+ *     at least 1% of the pixels differ from the top-left one (a page that is
+ *     not empty). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_image.h"
+
+static float _luma(const sl_image *im, int x, int y) {
+    const float *p = sl_image_pixel(im, x, y);
+    return im->channels >= 3 ? 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2] : p[0];
+}
+
+static bool _differs(const sl_image *a, const sl_image *b, int x, int y, int bx, int by) {
+    const float *p = sl_image_pixel(a, x, y), *q = sl_image_pixel(b, bx, by);
+    int n = a->channels < b->channels ? a->channels : b->channels;
+    if (n > 3) n = 3;
+    for (int c = 0; c < n; c++)
+        if (fabsf(p[c] - q[c]) > 0.1f) return true;
+    return false;
+}
+
+int main(int argc, char **argv) {
+    char err[1024];
+    if (argc == 3 && strcmp(argv[1], "not-blank") == 0) {
+        sl_image im;
+        if (!sl_image_read(argv[2], &im, err, sizeof err)) {
+            fprintf(stderr, "image_check: %s\n", err);
+            return 2;
+        }
+        long differ = 0;
+        for (int y = 0; y < im.height; y++)
+            for (int x = 0; x < im.width; x++) differ += _differs(&im, &im, x, y, 0, 0);
+        double pct = 100.0 * (double)differ / ((double)im.width * im.height);
+        printf("image_check: %s (%dx%d): %.2f%% of the pixels differ from the corner's colour\n", argv[2], im.width,
+               im.height, pct);
+        return pct >= 1.0 ? 0 : 1;
+    }
+    if (argc == 8 && strcmp(argv[1], "text") == 0) {
+        sl_image with, without;
+        if (!sl_image_read(argv[2], &with, err, sizeof err) || !sl_image_read(argv[3], &without, err, sizeof err)) {
+            fprintf(stderr, "image_check: %s\n", err);
+            return 2;
+        }
+        int x0 = atoi(argv[4]), y0 = atoi(argv[5]), w = atoi(argv[6]), h = atoi(argv[7]);
+        if (with.width != without.width || with.height != without.height || x0 < 0 || y0 < 0 || w <= 0 || h <= 0 ||
+            x0 + w > with.width || y0 + h > with.height) {
+            fprintf(stderr, "image_check: the sizes do not fit (%dx%d, %dx%d, rectangle %d,%d %dx%d)\n", with.width,
+                    with.height, without.width, without.height, x0, y0, w, h);
+            return 2;
+        }
+        long differ = 0, dark = 0, bright = 0;
+        for (int y = y0; y < y0 + h; y++)
+            for (int x = x0; x < x0 + w; x++) {
+                differ += _differs(&with, &without, x, y, x, y);
+                float l = _luma(&with, x, y);
+                dark += l < 0.3f;
+                bright += l > 0.6f;
+            }
+        double n = (double)w * h, d = 100 * differ / n, k = 100 * dark / n, b = 100 * bright / n;
+        printf("image_check: %s, rectangle %d,%d %dx%d: %.1f%% of pixels differ from %s, %.1f%% dark, %.1f%% bright\n",
+               argv[2], x0, y0, w, h, d, argv[3], k, b);
+        return d >= 20 && k >= 25 && b >= 2 && b <= 40 ? 0 : 1;
+    }
+    fprintf(stderr, "usage: image_check text WITH.png WITHOUT.png X Y W H | image_check not-blank IMAGE.png\n");
+    return 2;
+}
