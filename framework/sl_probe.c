@@ -99,6 +99,12 @@ static const sl_probe_function _sl_functions[] = {
     {.name = "reduce_light_bleeding", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/vsm.glsl", .todo = "lab5.8",
      .outputs = "visibility", .output_count = 1, .params = {_SL_F("p_max"), _SL_F("amount")}, .param_count = 2,
      .stub_param = 0},
+    {.name = "esm_visibility", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/vsm.glsl", .todo = "lab5.9",
+     .outputs = "visibility", .output_count = 1, .params = {_SL_F("moment"), _SL_F("t"), _SL_F("c")},
+     .param_count = 3, .stub_param = -1, .stub_value = 1.0, .bonus = true},
+    {.name = "evsm_warp", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/vsm.glsl", .todo = "lab5.10",
+     .outputs = "positive,negative", .output_count = 2, .params = {_SL_F("depth"), _SL_V2("exponents")},
+     .param_count = 2, .stub_param = -1, .stub_value = 0.0, .bonus = true},
     /* lab 6: splits (unused ones 0), a slice's sphere from a camera the probe builds, one cascade's light camera
      * (its projection * view: the light's camera is free to sit anywhere along the light's ray) */
     {.name = "lab6_split_distances", .lab = 6, .file = "lab6_cascades/lab6.c", .todo = "lab6.1",

@@ -322,6 +322,97 @@ static void test_grade_names_peter_panning(void) {
     sl_reference_free(&ref);
 }
 
+/* Lab 5: moments (a square of depth 0.3 on 0.8), blurred along x, y or both by a box of radius 3. */
+static sl_image moments_image(bool square_depth, bool blur_x, bool blur_y) {
+    sl_image d = square(64, 64, 0.3f, 0.8f, 20, 20, 44, 44), t = sl_image_alloc(64, 64, 1);
+    for (int pass = 0; pass < 2; pass++) {
+        bool on = pass == 0 ? blur_x : blur_y;
+        for (int y = 0; y < 64; y++)
+            for (int x = 0; x < 64; x++) {
+                float sum = 0;
+                for (int i = -3; i <= 3; i++) {
+                    int xx = pass == 0 && on ? x + i : x, yy = pass == 1 && on ? y + i : y;
+                    xx = xx < 0 ? 0 : xx > 63 ? 63 : xx;
+                    yy = yy < 0 ? 0 : yy > 63 ? 63 : yy;
+                    sum += d.data[yy * 64 + xx];
+                }
+                t.data[y * 64 + x] = on ? sum / 7 : d.data[y * 64 + x];
+            }
+        memcpy(d.data, t.data, sizeof(float) * 64 * 64);
+    }
+    sl_image m = sl_image_alloc(64, 64, 2);
+    for (int i = 0; i < 64 * 64; i++) {
+        m.data[2 * i] = d.data[i];
+        m.data[2 * i + 1] = square_depth ? d.data[i] * d.data[i] : d.data[i];
+    }
+    sl_image_free(&d);
+    sl_image_free(&t);
+    return m;
+}
+
+static void add_moments_target(sl_case_result *r, double format, double bits, bool is_float) {
+    sl_capture *cap = &r->captures[r->capture_count++];
+    snprintf(cap->name, sizeof cap->name, "moments_target");
+    double v[SL_MOMENTS_TARGET_NUMBERS] = {0x8CD5 /* GL_FRAMEBUFFER_COMPLETE */, format, 64, 64, bits, bits, is_float,
+                                           0x8D41 /* GL_RENDERBUFFER */};
+    memcpy(cap->numbers, v, sizeof v);
+    cap->number_count = SL_MOMENTS_TARGET_NUMBERS;
+}
+
+static void test_grade_names_vsm_mistakes(void) {
+    struct { bool square_depth, blur_x, blur_y; double format, bits; bool is_float; const char *says; } mistakes[] = {
+        {true, true, true, 0x822F /* GL_RG16F */, 16, true, "stored as GL_RG16F (16-bit float"},
+        {false, true, true, 0x8230 /* GL_RG32F */, 32, true, "the second moment equals the first"},
+        {true, true, false, 0x8230, 32, true, "blurred along x only"},
+        {true, false, false, 0x8230, 32, true, "sharper than the reference's along both x and y"},
+        {true, true, true, 0x8230, 32, true, NULL},
+    };
+    for (size_t m = 0; m < sizeof mistakes / sizeof mistakes[0]; m++) {
+        sl_case c = grade_case(5, SL_CHECK_MOMENTS_BLURRED);
+        c.checks[0].threshold = 1e-4;
+        sl_case_result r = {.finished = true};
+        add_capture(&r, "moments_blurred", moments_image(mistakes[m].square_depth, mistakes[m].blur_x, mistakes[m].blur_y));
+        add_moments_target(&r, mistakes[m].format, mistakes[m].bits, mistakes[m].is_float);
+        sl_reference ref = image_reference(moments_image(true, true, true));
+        sl_check_result out;
+        sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
+        if (!mistakes[m].says) {
+            CHECK(out.passed);
+        } else {
+            CHECK(!out.passed);
+            CHECK(strstr(out.message, mistakes[m].says) != NULL);
+            if (!strstr(out.message, mistakes[m].says)) fprintf(stderr, "  said: %s\n", out.message);
+        }
+        sl_image_free(&out.diff);
+        sl_case_result_free(&r);
+        sl_reference_free(&ref);
+    }
+    /* light bleeding: the reference's umbra is a square; lit at 0.4 on a ring with the reduction, 0.2 without */
+    for (int swapped = 0; swapped < 2; swapped++) {
+        sl_case c = grade_case(5, SL_CHECK_BLEEDING);
+        c.params.vsm.bleeding = 0.3f;
+        sl_case_result r = {.finished = true};
+        sl_image with = square(64, 64, 0, 1, 10, 10, 54, 54), without = square(64, 64, 0, 1, 10, 10, 54, 54);
+        for (int y = 20; y < 44; y++)
+            for (int x = 20; x < 44; x++)
+                if (x < 24 || x >= 40 || y < 24 || y >= 40) {
+                    without.data[y * 64 + x] = swapped ? 0.0f : 0.4f;
+                    with.data[y * 64 + x] = swapped ? 0.4f : 0.0f;
+                }
+        add_capture(&r, "visibility", with);
+        add_capture(&r, "visibility_unreduced", without);
+        add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
+        sl_reference ref = image_reference(square(64, 64, 0, 1, 10, 10, 54, 54));
+        sl_check_result out;
+        sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
+        CHECK(swapped ? !out.passed : out.passed);
+        if (swapped) CHECK(strstr(out.message, "the reduction adds light to the umbra instead") != NULL);
+        sl_image_free(&out.diff);
+        sl_case_result_free(&r);
+        sl_reference_free(&ref);
+    }
+}
+
 /* A failed check a later one builds on leads its message; a hint shows only with its own symptom, and
  * never over a known cause. */
 static void test_grade_leads_with_root_cause(void) {
@@ -603,6 +694,7 @@ int main(int argc, char **argv) {
         {"meshes", test_meshes},
         {"grade_names_acne", test_grade_names_acne},
         {"grade_names_peter_panning", test_grade_names_peter_panning},
+        {"grade_names_vsm_mistakes", test_grade_names_vsm_mistakes},
         {"grade_penumbra_inverted", test_grade_penumbra_inverted},
         {"grade_leads_with_root_cause", test_grade_leads_with_root_cause},
         {"grade_probe_verdicts", test_grade_probe_verdicts},

@@ -26,3 +26,20 @@ float reduce_light_bleeding(float p_max, float amount) {
     // below `amount` and stretch the rest back to [0, 1], with linstep.
     return p_max;
 }
+
+// ---- Extension (bonus): exponential warps ------------------------------------------
+// Exponential shadow maps (Annen et al. 2008; Salvi 2008): the map stores exp(c * d),
+// filtered like the moments; `moment` is that filtered E[exp(c * d)], `t` the point's
+// depth, `c` the exponent (at most about 80 with 32-bit floats: README.md, "Extensions").
+float esm_visibility(float moment, float t, float c) {
+    // TODO(lab5.9), optional: exp(-c * t) * moment, clamped to [0, 1].
+    return 1.0;
+}
+
+// EVSM's warp (Lauritzen & McCool 2008): the depth mapped to a positive and a negative
+// exponential, (exp(c+ * depth), -exp(-c- * depth)), exponents = (c+, c-); each warped
+// depth then gets VSM's two moments.
+vec2 evsm_warp(float depth, vec2 exponents) {
+    // TODO(lab5.10), optional: the two warped depths.
+    return vec2(0.0);
+}

@@ -25,3 +25,19 @@ float reduce_light_bleeding(float p_max, float amount) {
     // cut the tail below `amount` off and stretch the rest back to [0, 1]
     return linstep(amount, 1.0, p_max);
 }
+
+// ---- Extension (bonus): exponential warps ------------------------------------------
+// Exponential shadow maps (Annen et al. 2008; Salvi 2008): the map stores exp(c * d),
+// filtered like the moments; `moment` is that filtered E[exp(c * d)], `t` the point's
+// depth, `c` the exponent (at most about 80 with 32-bit floats: README.md, "Extensions").
+float esm_visibility(float moment, float t, float c) {
+    // E[exp(c (d - t))]: 1 on the occluder's own surface, falling off exponentially behind it
+    return clamp(moment * exp(-c * t), 0.0, 1.0);
+}
+
+// EVSM's warp (Lauritzen & McCool 2008): the depth mapped to a positive and a negative
+// exponential, (exp(c+ * depth), -exp(-c- * depth)), exponents = (c+, c-); each warped
+// depth then gets VSM's two moments.
+vec2 evsm_warp(float depth, vec2 exponents) {
+    return vec2(exp(exponents.x * depth), -exp(-exponents.y * depth));
+}
