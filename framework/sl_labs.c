@@ -5,4 +5,7 @@ const sl_lab_functions sl_build_lab_functions = {
     lab2_light_view,        lab2_light_projection, lab2_shadow_matrix,
     lab3_depth_pass_state,  lab3_second_depth_state,
     lab4_configure_shadow_texture,
+    .lab7_create_cube_map = lab7_create_cube_map, .lab7_begin_cube_pass = lab7_begin_cube_pass,
+    .lab7_destroy_cube_map = lab7_destroy_cube_map, .lab7_face_view = lab7_face_view,
+    .lab7_face_projection = lab7_face_projection,
 };

@@ -17,6 +17,12 @@ typedef struct sl_lab_functions {
     sl_status (*lab3_depth_pass_state)(const sl_bias_settings *bias);
     sl_status (*lab3_second_depth_state)(void);
     sl_status (*lab4_configure_shadow_texture)(GLuint depth_texture, sl_filter_mode mode);
+    /* lab 7 */
+    sl_status (*lab7_create_cube_map)(int size, sl_cube_map *map);
+    sl_status (*lab7_begin_cube_pass)(const sl_cube_map *map, int face);
+    void (*lab7_destroy_cube_map)(sl_cube_map *map);
+    sl_status (*lab7_face_view)(vec3 light_position, int face, mat4 dest);
+    sl_status (*lab7_face_projection)(float near, float far, mat4 dest);
 } sl_lab_functions;
 
 /* The labs this binary was built from (labs/, solutions/, or for the

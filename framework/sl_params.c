@@ -18,6 +18,7 @@ void sl_render_params_defaults(sl_render_params *p) {
         },
         .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f},
         .output = SL_OUTPUT_SHADED,
+        .cube = {.map_size = 512, .bias = 0.004f, .soft = false, .soft_radius = 0.6f, .pass = SL_CUBE_PASS_AUTO},
     };
 }
 
@@ -59,7 +60,7 @@ bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
 
 const char *sl_lab_folder(int lab) {
     static const char *const folders[SL_LAB_COUNT + 1] = {NULL, "lab1_depth_fbo", "lab2_projective", "lab3_bias",
-                                                          "lab4_pcf"};
+                                                          "lab4_pcf", [7] = "lab7_cube"};
     return lab >= 1 && lab <= SL_LAB_COUNT ? folders[lab] : NULL;
 }
 
@@ -73,4 +74,26 @@ const char *sl_lab_title(int lab) {
                                                        "cascaded shadow maps",
                                                        "cube-map shadows"};
     return lab >= 1 && lab <= SL_LAB_MAX ? titles[lab] : "?";
+}
+
+static const char *const _sl_cube_pass_names[SL_CUBE_PASS_COUNT] = {"auto", "six", "layered"};
+
+const char *sl_cube_pass_name(sl_cube_pass pass) {
+    return (unsigned)pass < SL_CUBE_PASS_COUNT ? _sl_cube_pass_names[pass] : "?";
+}
+
+bool sl_cube_pass_parse(const char *name, sl_cube_pass *pass) {
+    int i;
+    if (!_sl_find_name(_sl_cube_pass_names, SL_CUBE_PASS_COUNT, name, &i)) return false;
+    *pass = (sl_cube_pass)i;
+    return true;
+}
+
+static const char *const _sl_cube_face_names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+
+const char *sl_cube_face_name(int face) { return face >= 0 && face < 6 ? _sl_cube_face_names[face] : "?"; }
+
+int sl_cube_face_parse(const char *name) {
+    int i;
+    return _sl_find_name(_sl_cube_face_names, 6, name, &i) ? i : -1;
 }

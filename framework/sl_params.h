@@ -9,12 +9,28 @@
 
 #include "shadowlab.h"
 
-#define SL_LAB_COUNT 4  /* labs with code in this project */
+#define SL_LAB_COUNT 7  /* the highest lab with code in this project (a lab in between may be absent: sl_lab_folder) */
 #define SL_LAB_MAX 7    /* labs the course plans: case files may name 1..7 */
 
 typedef enum sl_compare_mode { SL_COMPARE_MANUAL = 0, SL_COMPARE_HARDWARE = 1 } sl_compare_mode;
 /* SL_OUTPUT_LIT_MASK: white where a surface faces the light (the grader's "lit surfaces"). */
 typedef enum sl_output { SL_OUTPUT_SHADED = 0, SL_OUTPUT_VISIBILITY = 1, SL_OUTPUT_LIT_MASK = 2 } sl_output;
+
+/* Lab 7: how the six faces of the cube map are rendered. */
+typedef enum sl_cube_pass {
+    SL_CUBE_PASS_AUTO = 0, /* one layered pass if lab7_begin_cube_pass does SL_CUBE_ALL_FACES, else six */
+    SL_CUBE_PASS_SIX,      /* six passes, one per face */
+    SL_CUBE_PASS_LAYERED,  /* one layered pass (geometry shader); six if the lab does not do it */
+    SL_CUBE_PASS_COUNT
+} sl_cube_pass;
+
+typedef struct sl_cube_settings {
+    int map_size;        /* texels per face side; default 512 */
+    float bias;          /* in units of distance / far */
+    bool soft;           /* point_shadow_soft: 20 samples around the direction */
+    float soft_radius;   /* the disk's radius in world units at distance far (grows with distance) */
+    sl_cube_pass pass;
+} sl_cube_settings;
 
 typedef struct sl_render_params {
     int lab;                 /* labs in use, 1..SL_LAB_COUNT: 1 = depth pass only */
@@ -23,7 +39,8 @@ typedef struct sl_render_params {
     sl_bias_settings bias;   /* lab 2 uses bias.constant; lab 3 all of it */
     sl_filter_settings filter; /* lab 4 */
     sl_output output;
-    bool show_shadow_map;    /* debug view of the depth map in a corner */
+    bool show_shadow_map;    /* debug view of the depth map in a corner (lab 7: the six faces as a cross) */
+    sl_cube_settings cube;   /* lab 7 */
 } sl_render_params;
 
 void sl_render_params_defaults(sl_render_params *params);
@@ -34,7 +51,14 @@ bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode);
 const char *sl_filter_mode_name(sl_filter_mode mode);
 bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode);
 
-/* Folder of lab N under a labs tree ("lab1_depth_fbo"), N = 1..SL_LAB_COUNT; NULL otherwise. */
+const char *sl_cube_pass_name(sl_cube_pass pass);
+bool sl_cube_pass_parse(const char *name, sl_cube_pass *pass);
+/* "+x", "-x", "+y", "-y", "+z", "-z" for faces 0..5; "?" otherwise. */
+const char *sl_cube_face_name(int face);
+int sl_cube_face_parse(const char *name); /* -1 when no face's */
+
+/* Folder of lab N under a labs tree ("lab1_depth_fbo"), N = 1..SL_LAB_COUNT; NULL otherwise,
+ * and NULL for a lab this tree does not have (labs are numbered for the course). */
 const char *sl_lab_folder(int lab);
 /* "depth FBO", ..., N = 1..SL_LAB_MAX; "?" otherwise. */
 const char *sl_lab_title(int lab);

@@ -37,6 +37,9 @@ typedef enum sl_capture_kind {
     SL_CAPTURE_VISIBILITY, /* image, 1 channel: the visibility term, camera size */
     SL_CAPTURE_LIT_MASK,   /* image, 1 channel: surfaces facing the light, camera size */
     SL_CAPTURE_IMAGE,      /* image, 3 channels: the shaded picture, camera size */
+    /* lab 7: image, 1 channel: one face of the cube map (face f = SL_CAPTURE_CUBE_FACE + f), face size */
+    SL_CAPTURE_CUBE_FACE,
+    SL_CAPTURE_CUBE_FACE_LAST = SL_CAPTURE_CUBE_FACE + 5,
     SL_CAPTURE_KIND_COUNT,
     /* numbers: the outputs of probe table k, "probe_k"; rows x outputs */
     SL_CAPTURE_PROBE = SL_CAPTURE_KIND_COUNT,

@@ -7,6 +7,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "sl_lab7_cube.h"
+
 #ifndef SL_FRAMEWORK_DIR
 #define SL_FRAMEWORK_DIR "framework"
 #endif
@@ -36,6 +38,11 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
         r->info.failed = function;
     }
     return false;
+}
+
+void sl_renderer_lab_enter(const char *function) { _sl_enter(function); }
+bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status) {
+    return _sl_lab_result(r, function, status);
 }
 
 /* Calls lab N's function fn through the renderer's table, recording what it returned. */
@@ -281,6 +288,11 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
         if (ok) snprintf(err, err_size, "%s", r->shader_errors[now[i].lab]);
         ok = false;
     }
+    char lab7_err[1024];
+    if (!sl_lab7_cube_reload_changed(r, reloaded, lab7_err, sizeof lab7_err)) {
+        if (ok) snprintf(err, err_size, "%s", lab7_err);
+        ok = false;
+    }
     return ok;
 }
 
@@ -291,6 +303,7 @@ static void _sl_destroy_meshes(sl_renderer *r) {
 
 void sl_renderer_destroy(sl_renderer *r) {
     _sl_destroy_meshes(r);
+    sl_lab7_cube_destroy(r);
     if (r->shadow_map_attempted && r->shadow_map_status == SL_OK) {
         _sl_enter("lab1_destroy_shadow_map");
         r->fns[1]->lab1_destroy_shadow_map(&r->shadow_map);
@@ -357,6 +370,8 @@ static void _sl_timer_mark(sl_renderer *r, const char *finished_pass) {
     }
 }
 
+void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass) { _sl_timer_mark(r, finished_pass); }
+
 bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out) {
     *out = (sl_frame_timing){0};
     if (!r->timing || r->timer_count == 0) return false;
@@ -410,6 +425,23 @@ static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_r
     /* Lab 1 alone (or lab 2 not done yet): a loose light camera so the depth map can be seen. */
     sl_light_default_matrices(&light, &bounds, info->light_view, info->light_projection);
     glm_mat4_identity(info->shadow_matrix);
+}
+
+void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model, GLint normal_matrix, GLint albedo) {
+    for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
+        const sl_object *o = &scene->objects[i];
+        glUniformMatrix4fv(model, 1, GL_FALSE, (const float *)o->model);
+        if (normal_matrix >= 0 || albedo >= 0) {
+            mat3 normal;
+            mat4 inv;
+            glm_mat4_inv((vec4 *)o->model, inv);
+            glm_mat4_transpose(inv);
+            glm_mat4_pick3(inv, normal);
+            glUniformMatrix3fv(normal_matrix, 1, GL_FALSE, (const float *)normal);
+            glUniform3fv(albedo, 1, o->color);
+        }
+        sl_mesh_draw(&r->meshes[i]);
+    }
 }
 
 static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const _sl_uniforms *u, bool colours) {
@@ -551,13 +583,21 @@ static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const
     return NULL;
 }
 
+/* The highest lab up to `lab` with a camera pass of a shadow map (lab 7's
+ * cube maps draw their own frame: a later lab on a spot or sun is the labs' before). */
+static int _sl_planar_lab(int lab) {
+    if (lab > SL_RENDERER_MAX_LAB) lab = SL_RENDERER_MAX_LAB;
+    while (lab > 2 && !_sl_scene_fragment[lab]) lab--;
+    return lab;
+}
+
 static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab, int width,
                            int height) {
     sl_frame_info *info = &r->info;
     /* The highest lab whose code can run this frame. */
     int lab = 0;
     if (info->shadow_map_ready && info->lab2_ready) {
-        lab = p->lab < SL_RENDERER_MAX_LAB ? p->lab : SL_RENDERER_MAX_LAB;
+        lab = _sl_planar_lab(p->lab);
         if (depth_lab < 3 && lab > 2) lab = 2;
     }
     if (lab >= 4) {
@@ -676,8 +716,16 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->shadow_map_ready = false;
     info->second_map_ready = false;
     info->lab_in_use = 0;
+    info->cube_frame = info->cube_matrices_ready = info->cube_map_ready = info->cube_layered = false;
     r->programs->frame++;
     _sl_timer_mark(r, NULL);
+    if (sl_lab7_cube_applies(scene, params)) {
+        /* a point light: lab 7's cube map instead of labs 1-4's shadow map */
+        sl_lab7_cube_draw(r, scene, params, target, width, height);
+        glBindVertexArray(0);
+        glUseProgram(0);
+        return;
+    }
     _sl_light_matrices(r, scene, params);
     _sl_reset_state(0, width, height);
     int depth_lab = _sl_depth_pass(r, scene, params);

@@ -23,6 +23,7 @@ typedef enum sl_check_kind {
     SL_CHECK_IMAGE,      /* the shaded image vs reference (PNG) */
     SL_CHECK_PENUMBRA,   /* penumbra widths along probe lines, vs the reference visibility */
     SL_CHECK_PROBE,      /* a student function called on a table of inputs, vs the solution's outputs */
+    SL_CHECK_CUBE_FACE,  /* lab 7: one face of the cube map (distance / far) vs reference (EXR) */
     SL_CHECK_KIND_COUNT
 } sl_check_kind;
 
@@ -69,6 +70,7 @@ typedef struct sl_check {
     char about[SL_PROBE_MAX_ROWS][256];
     float row_tolerance[SL_PROBE_MAX_ROWS]; /* a row's own tolerance (0: the check's) */
     double tolerance, relative; /* an output passes within tolerance + relative * |expected| */
+    int face;             /* cube_face: 0..5, GL's order (+x, -x, +y, -y, +z, -z) */
 } sl_check;
 
 typedef struct sl_case {

@@ -33,6 +33,10 @@ static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
     {"lab3_depth_pass_state", "TODO(lab3.1)", "labs/lab3_bias/lab3.c"},
     {"lab3_second_depth_state", "TODO(lab3.4), the optional extension,", "labs/lab3_bias/lab3.c"},
     {"lab4_configure_shadow_texture", "TODO(lab4.1)", "labs/lab4_pcf/lab4.c"},
+    {"lab7_create_cube_map", "TODO(lab7.1)", "labs/lab7_cube/lab7.c"},
+    {"lab7_begin_cube_pass", "TODO(lab7.2)", "labs/lab7_cube/lab7.c"},
+    {"lab7_face_view", "TODO(lab7.3)", "labs/lab7_cube/lab7.c"},
+    {"lab7_face_projection", "TODO(lab7.4)", "labs/lab7_cube/lab7.c"},
 };
 
 void sl_diag_say(sl_check_result *out, const char *fmt, ...) {
@@ -160,7 +164,10 @@ void sl_diag_lookup_function(const sl_case *c, const char **function, const char
         {"shadow_compare_manual() (lab 2)", "lab2.5"}, {"pcf_hardware()", "lab4.2"}, {"pcf_grid()", "lab4.3"},
         {"pcf_poisson()", "lab4.4"}, {"pcss()", "lab4.5"},
     };
-    if (c->lab >= 4) {
+    if (c->lab == 7) {
+        *function = c->params.cube.soft ? "point_shadow_soft()" : "point_shadow()";
+        *todo = c->params.cube.soft ? "lab7.7" : "lab7.6";
+    } else if (c->lab >= 4) {
         *function = filters[c->params.filter.mode][0];
         *todo = filters[c->params.filter.mode][1];
     } else if (c->lab == 3 && c->params.bias.mode == SL_BIAS_MIDPOINT) {
@@ -182,6 +189,7 @@ static bool _sl_reference_fits(sl_reference *ref, const sl_case *c, const sl_che
     const sl_image *img = &ref->image;
     int w = c->width, h = c->height, channels = k->kind == SL_CHECK_IMAGE ? 3 : 1;
     if (k->kind == SL_CHECK_DEPTH_MAP) w = h = c->params.shadow_map_size;
+    if (k->kind == SL_CHECK_CUBE_FACE) w = h = c->params.cube.map_size;
     if (img->width == w && img->height == h && img->channels == channels) return true;
     snprintf(ref->error, sizeof ref->error, "reference does not fit its case: %s is %dx%dx%d, the case makes %dx%dx%d",
              ref->path, img->width, img->height, img->channels, w, h, channels);
@@ -329,7 +337,7 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
     }
     if (has_shadows && stu_shadowed < 0.1 * ref_shadowed) {
         out->symptoms |= 1u << SL_SYMPTOM_NO_SHADOWS;
-        if (c->lab >= 4 && exactly_lit < ref_dark / 2) {
+        if (c->lab >= 4 && c->lab != 7 && exactly_lit < ref_dark / 2) {
             sl_diag_say(out, "shadows far too faint: where the reference is shadowed, %s leaves most pixels nearly lit", fn);
             sl_diag_cause(out, "most samples land off the map, where the border counts as lit — are the offsets scaled "
                                "by the texel size, 1.0 / textureSize(map, 0) (TODO %s)?", todo);
@@ -342,7 +350,8 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
     }
     if (c->lab == 2 && sl_diagnose_lab2_visibility(c, s, t, mask, out)) return;
     if (c->lab == 3 && mask && sl_diagnose_lab3_visibility(c, s, t, mask, out)) return;
-    if (c->lab >= 4 && sl_diagnose_lab4_visibility(c, s, t, mask, out)) return;
+    if (c->lab >= 4 && c->lab < 7 && sl_diagnose_lab4_visibility(c, s, t, mask, out)) return;
+    if (c->lab == 7 && sl_diagnose_lab7_visibility(c, s, t, mask, out)) return;
     if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
         sl_diag_say(out, "lit and shadowed are swapped (%.0f%% of shadows lit, %.0f%% of lit pixels shadowed)",
@@ -407,11 +416,12 @@ static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_f
     const sl_probe_function *f = sl_probe_at(failure->function);
     if (!f || f->lab > c->lab) return false;
     if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE && k->kind != SL_CHECK_PENUMBRA &&
-        k->kind != SL_CHECK_DEPTH_MAP)
+        k->kind != SL_CHECK_DEPTH_MAP && k->kind != SL_CHECK_CUBE_FACE)
         return false;
     const char *name = f->name;
     sl_bias_mode bias = c->params.bias.mode;
     sl_filter_mode filter = c->params.filter.mode;
+    if (f->lab < c->lab && !sl_lab_builds_on(c->lab, f->lab)) return false;
     if (f->lab < c->lab) {
         /* labs build on each other: an earlier lab's function draws this case too, unless the solutions stand in */
         if (isolated) return false;
@@ -437,6 +447,7 @@ static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_f
     case 4:
         if (strcmp(name, "lab4_configure_shadow_texture") == 0) return (failure->failing_modes >> filter) & 1u;
         return strcmp(name, _sl_filter_function(filter)) == 0;
+    case 7: return sl_lab7_case_calls(c, k, name);
     default: return false;
     }
 }
@@ -461,6 +472,7 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
                            size_t n) {
     if (!context || k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_FBO || k->kind == SL_CHECK_MATRICES) return false;
     for (int lab = 1; lab < c->lab && !context->isolated; lab++) {
+        if (!sl_lab_builds_on(c->lab, lab)) continue;
         const sl_probe_failure *f = _sl_failed_probe_of(c, k, context, lab);
         if (f) {
             snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,
@@ -479,6 +491,11 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
         if (er->passed || er->reference_problem || er->bonus) continue;
         if (e->kind == SL_CHECK_MATRICES) {
             snprintf(lead, n, "the light's matrices are wrong (%s / %s: %s): fix the matrices first", c->name, e->name,
+                     er->summary);
+            return true;
+        }
+        if (e->kind == SL_CHECK_CUBE_FACE && k->kind != SL_CHECK_CUBE_FACE) {
+            snprintf(lead, n, "the cube map is wrong (%s / %s: %s): fix the cube map first", c->name, e->name,
                      er->summary);
             return true;
         }
@@ -575,6 +592,7 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     case SL_CHECK_IMAGE: _sl_check_image(c, k, r, ref, out); break;
     case SL_CHECK_PENUMBRA: sl_diagnose_penumbra(c, k, r, ref, out); break;
     case SL_CHECK_PROBE: sl_diagnose_probe(c, k, r, ref, out); break;
+    case SL_CHECK_CUBE_FACE: sl_diagnose_cube_face(c, k, r, ref, out); break;
     default: sl_diag_say(out, "unknown check kind"); break;
     }
     if (out->passed) {

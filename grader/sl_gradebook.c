@@ -161,7 +161,7 @@ bool sl_gradebook_write(const char *dir, const char *csv_path, char *err, size_t
             any |= rows[i].have_lab[lab];
         }
     }
-    for (int lab = 1; !any && lab <= SL_LAB_COUNT; lab++) labs[lab] = true;
+    for (int lab = 1; !any && lab <= SL_LAB_COUNT; lab++) labs[lab] = sl_lab_folder(lab) != NULL;
 
     sl_atomic_file file;
     if (!sl_atomic_open(&file, csv_path, err, n)) {

@@ -120,6 +120,7 @@ static bool _sl_is_executable(const char *path) {
 /* A labs tree has every lab's folder with its shaders/. */
 static bool _sl_check_labs_tree(const char *dir, char *err, size_t n) {
     for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        if (!sl_lab_folder(lab)) continue; /* a lab number this course tree does not have */
         char path[1200];
         snprintf(path, sizeof path, "%s/%s/shaders", dir, sl_lab_folder(lab));
         if (!_sl_is_dir(path)) {
@@ -169,9 +170,11 @@ static bool _sl_make_isolation_trees(char root[64], const char *graded, char tre
     }
     chmod(root, 0755);
     for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        if (!sl_lab_folder(lab)) continue;
         snprintf(trees[lab], 96, "%s/lab%d", root, lab);
         if (mkdir(trees[lab], 0755) != 0) return false;
         for (int other = 1; other <= SL_LAB_COUNT; other++) {
+            if (!sl_lab_folder(other)) continue;
             char target[2048], link_path[256];
             snprintf(target, sizeof target, "%s/%s", other == lab ? graded : sl_config_solutions_dir, sl_lab_folder(other));
             snprintf(link_path, sizeof link_path, "%s/%s", trees[lab], sl_lab_folder(other));
@@ -187,8 +190,10 @@ static bool _sl_make_isolation_trees(char root[64], const char *graded, char tre
 static void _sl_remove_isolation_trees(const char *root) {
     if (!root[0]) return;
     for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        if (!sl_lab_folder(lab)) continue;
         char path[256];
         for (int other = 1; other <= SL_LAB_COUNT; other++) {
+            if (!sl_lab_folder(other)) continue;
             snprintf(path, sizeof path, "%s/lab%d/%s", root, lab, sl_lab_folder(other));
             unlink(path);
         }
@@ -527,19 +532,21 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     if (o.isolate) {
         if (!_sl_make_isolation_trees(isolation_root, o.labs_dir, trees)) return SL_EXIT_ERROR;
         for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+            if (!sl_lab_folder(lab)) continue;
             snprintf(runner_paths[lab], sizeof runner_paths[lab], "%s/shadowlab-runner-isolate-lab%d", o.runners_dir, lab);
             sl_runner_setup *s = &run.setups[lab];
             s->runner = runner_paths[lab];
             s->labs_tree = trees[lab];
             for (int other = 1; other <= SL_LAB_COUNT; other++)
-                s->lab_dirs[other] = other == lab ? o.labs_dir : sl_config_solutions_dir;
+                if (sl_lab_folder(other)) s->lab_dirs[other] = other == lab ? o.labs_dir : sl_config_solutions_dir;
         }
     } else {
         if (o.update) snprintf(runner_paths[0], sizeof runner_paths[0], "%s", sl_config_solutions_runner);
         else snprintf(runner_paths[0], sizeof runner_paths[0], "%s/shadowlab-runner", o.runners_dir);
         run.setups[0].runner = runner_paths[0];
         run.setups[0].labs_tree = graded_tree;
-        for (int lab = 1; lab <= SL_LAB_COUNT; lab++) run.setups[0].lab_dirs[lab] = graded_tree;
+        for (int lab = 1; lab <= SL_LAB_COUNT; lab++)
+            if (sl_lab_folder(lab)) run.setups[0].lab_dirs[lab] = graded_tree;
     }
 
     sl_grade_report rep = {.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree};
@@ -564,7 +571,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     if (o.not_built) return _sl_grade_not_built(&o, cases, count, &rep);
     for (int i = 0; i < count; i++) {
         const sl_runner_setup *s = run.setups[cases[i].lab].runner ? &run.setups[cases[i].lab] : &run.setups[0];
-        if (cases[i].lab > SL_LAB_COUNT) {
+        if (cases[i].lab > SL_LAB_COUNT || !sl_lab_folder(cases[i].lab)) {
             fprintf(stderr, "shadowlab-grade: %s grades lab %d, which this build does not have\n", cases[i].path,
                     cases[i].lab);
             return SL_EXIT_ERROR;
@@ -628,7 +635,8 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         memset(solutions_run.setups, 0, sizeof solutions_run.setups);
         solutions_run.setups[0].runner = sl_config_solutions_runner;
         solutions_run.setups[0].labs_tree = sl_config_solutions_dir;
-        for (int lab = 1; lab <= SL_LAB_COUNT; lab++) solutions_run.setups[0].lab_dirs[lab] = sl_config_solutions_dir;
+        for (int lab = 1; lab <= SL_LAB_COUNT; lab++)
+            if (sl_lab_folder(lab)) solutions_run.setups[0].lab_dirs[lab] = sl_config_solutions_dir;
         if (!sl_hidden_render_references(hidden, cases, count, &solutions_run, &_sl_stop, err, sizeof err)) {
             fprintf(stderr, "shadowlab-grade: %s\n", err);
             return SL_EXIT_ERROR;

@@ -78,7 +78,7 @@ static uint64_t _sl_payload_limit(const _sl_stream *s, uint32_t type, int captur
     case SL_MSG_NUMBERS: return SL_MSG_NUMBERS_MAX * sizeof(double);
     case SL_MSG_RENDER_TIME: return sizeof(double);
     case SL_MSG_IMAGE:
-        if (capture == SL_CAPTURE_DEPTH_MAP)
+        if (capture == SL_CAPTURE_DEPTH_MAP || (capture >= SL_CAPTURE_CUBE_FACE && capture <= SL_CAPTURE_CUBE_FACE_LAST))
             return SL_IMAGE_HEADER_BYTES + (uint64_t)SL_IMAGE_SIDE_MAX * SL_IMAGE_SIDE_MAX * sizeof(float);
         return SL_IMAGE_HEADER_BYTES + (uint64_t)s->c->width * (uint64_t)s->c->height * 3 * sizeof(float);
     default: return 0;
@@ -131,7 +131,8 @@ static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint
         return;
     }
     memcpy(dims, payload, sizeof dims);
-    bool camera = capture != SL_CAPTURE_DEPTH_MAP;
+    bool camera = capture != SL_CAPTURE_DEPTH_MAP &&
+                  !(capture >= SL_CAPTURE_CUBE_FACE && capture <= SL_CAPTURE_CUBE_FACE_LAST);
     int channels = capture == SL_CAPTURE_IMAGE ? 3 : 1;
     bool ok = dims[0] > 0 && dims[1] > 0 && dims[0] <= SL_IMAGE_SIDE_MAX && dims[1] <= SL_IMAGE_SIDE_MAX &&
               dims[2] == channels && (!camera || (dims[0] == s->c->width && dims[1] == s->c->height));
