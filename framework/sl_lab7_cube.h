@@ -34,6 +34,8 @@ void sl_lab7_cube_draw(struct sl_renderer *r, const sl_scene *scene, const sl_re
 /* Rebuilds lab 7's programs whose files changed (hot reload); false with err set on a failed build. */
 bool sl_lab7_cube_reload_changed(struct sl_renderer *r, bool *reloaded, char *err, size_t err_size);
 void sl_lab7_cube_destroy(struct sl_renderer *r);
+/* Lab 7's programs: how many were built (first builds only) and how many are held now. */
+void sl_lab7_cube_program_counts(const struct sl_renderer *r, int *built, int *held);
 
 /* One face of a depth cube map as a top-down image (1 channel, face size
  * squared); false with err set if the texture is no depth cube map. */

@@ -266,6 +266,10 @@ void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out) {
     out->build_ms = ps->build_ms;
     out->cached = (ps->depth.program.id != 0) + (ps->debug.program.id != 0);
     for (int i = 0; i < ps->variant_count; i++) out->cached += ps->variants[i].slot.program.id != 0;
+    int built, held;
+    sl_lab7_cube_program_counts(r, &built, &held);
+    out->builds += built;
+    out->cached += held;
 }
 
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
