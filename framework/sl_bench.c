@@ -193,6 +193,7 @@ static void _sl_params_for(const _sl_technique *t, int map_size, sl_render_param
     }
     p->cube.map_size = 512;
     p->cube.soft = t->cube_soft;
+    if (t->cube_soft) p->cube.bias = SL_CUBE_SOFT_BIAS;
     p->cube.pass = t->cube_pass;
 }
 

@@ -18,7 +18,8 @@ void sl_render_params_defaults(sl_render_params *p) {
         },
         .filter = {.mode = SL_FILTER_GRID, .grid_radius = 1, .poisson_radius = 2.5f},
         .output = SL_OUTPUT_SHADED,
-        .cube = {.map_size = 512, .bias = 0.004f, .soft = false, .soft_radius = 0.6f, .pass = SL_CUBE_PASS_AUTO},
+        .cube = {.map_size = 512, .bias = SL_CUBE_HARD_BIAS, .soft = false, .soft_radius = 0.35f,
+                 .pass = SL_CUBE_PASS_AUTO},
     };
 }
 

@@ -24,9 +24,14 @@ typedef enum sl_cube_pass {
     SL_CUBE_PASS_COUNT
 } sl_cube_pass;
 
+/* The biases the viewer uses: the soft lookup's samples off the centre direction land on the
+ * same surface, nearer the light where it is tilted, so it needs a larger one. */
+#define SL_CUBE_HARD_BIAS 0.004f
+#define SL_CUBE_SOFT_BIAS 0.01f
+
 typedef struct sl_cube_settings {
     int map_size;        /* texels per face side; default 512 */
-    float bias;          /* in units of distance / far */
+    float bias;          /* in units of distance / far (the soft lookup needs more: SL_CUBE_SOFT_BIAS) */
     bool soft;           /* point_shadow_soft: 20 samples around the direction */
     float soft_radius;   /* the disk's radius in world units at distance far (grows with distance) */
     sl_cube_pass pass;

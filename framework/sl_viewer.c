@@ -51,6 +51,8 @@ static void _sl_usage(FILE *f) {
             "  --visibility        show the visibility term alone (what the grader compares)\n"
             "  --show-map          show the shadow map in a corner (lab 7: the six cube faces as a cross)\n"
             "  --soft              lab 7: the soft lookup (20 directions)\n"
+            "  --soft-radius R     lab 7: its disk at the far plane, world units; default 0.35\n"
+            "  --cube-bias B       lab 7: the lookup's bias, in distance / far; default 0.004 (0.01 soft)\n"
             "  --cube-pass MODE    lab 7: auto, six or layered (auto: layered where the lab does it)\n"
             "  --frames K          render K frames, then exit (for scripts)\n"
             "  --screenshot FILE   save the last frame as PNG (with --frames)\n"
@@ -126,7 +128,12 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     case GLFW_KEY_4: v->params.lab = 4; break;
     /* lab 7 */
     case GLFW_KEY_7: v->params.lab = 7; break;
-    case GLFW_KEY_S: v->params.cube.soft = !v->params.cube.soft; break;
+    case GLFW_KEY_S:
+        /* soft or hard, each with the bias it needs unless the bias was changed by hand */
+        v->params.cube.soft = !v->params.cube.soft;
+        if (v->params.cube.soft && v->params.cube.bias == SL_CUBE_HARD_BIAS) v->params.cube.bias = SL_CUBE_SOFT_BIAS;
+        else if (!v->params.cube.soft && v->params.cube.bias == SL_CUBE_SOFT_BIAS) v->params.cube.bias = SL_CUBE_HARD_BIAS;
+        break;
     case GLFW_KEY_L: v->params.cube.pass = (sl_cube_pass)((v->params.cube.pass + 1) % SL_CUBE_PASS_COUNT); break;
     case GLFW_KEY_PAGE_UP:
     case GLFW_KEY_PAGE_DOWN:
@@ -215,7 +222,8 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
-                           strcmp(a, "--backend") == 0 || strcmp(a, "--cube-pass") == 0;
+                           strcmp(a, "--backend") == 0 || strcmp(a, "--cube-pass") == 0 ||
+                           strcmp(a, "--soft-radius") == 0 || strcmp(a, "--cube-bias") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -291,6 +299,19 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--soft") == 0) {
             v.params.cube.soft = true;
+            if (v.params.cube.bias == SL_CUBE_HARD_BIAS) v.params.cube.bias = SL_CUBE_SOFT_BIAS;
+        } else if (strcmp(a, "--soft-radius") == 0) {
+            v.params.cube.soft_radius = (float)atof(next);
+            if (!(v.params.cube.soft_radius >= 0 && v.params.cube.soft_radius <= 100)) {
+                fprintf(stderr, "shadowlab: --soft-radius is 0..100 world units\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--cube-bias") == 0) {
+            v.params.cube.bias = (float)atof(next);
+            if (!(v.params.cube.bias >= 0 && v.params.cube.bias <= 1)) {
+                fprintf(stderr, "shadowlab: --cube-bias is 0..1 (distance / far)\n");
+                return 2;
+            }
         } else if (strcmp(a, "--cube-pass") == 0) {
             if (!sl_cube_pass_parse(next, &v.params.cube.pass)) {
                 fprintf(stderr, "shadowlab: --cube-pass is auto, six or layered\n");
