@@ -154,5 +154,38 @@ sl_status lab6_slice_sphere(mat4 inv_view_projection, float near, float far, flo
  * texel grid of a map_size x map_size map (texel snapping). */
 sl_status lab6_cascade_matrices(const sl_light *light, vec4 sphere, float caster_margin, int map_size, mat4 light_view,
                                 mat4 light_projection);
+/* ---- Lab 7: cube-map shadows (labs/lab7_cube/lab7.c) -------------------- */
+/* A point light's shadow map: a depth cube map (six square faces) and a
+ * framebuffer to render into it. Each texel stores the distance from the
+ * light to the nearest surface divided by the light's far plane. */
+typedef struct sl_cube_map {
+    GLuint framebuffer;
+    GLuint depth_cube; /* GL_TEXTURE_CUBE_MAP, depth format */
+    int size;          /* each face is size x size texels */
+} sl_cube_map;
+
+/* The faces in GL's order: face f is GL_TEXTURE_CUBE_MAP_POSITIVE_X + f. */
+typedef enum sl_cube_face {
+    SL_CUBE_POSITIVE_X = 0,
+    SL_CUBE_NEGATIVE_X,
+    SL_CUBE_POSITIVE_Y,
+    SL_CUBE_NEGATIVE_Y,
+    SL_CUBE_POSITIVE_Z,
+    SL_CUBE_NEGATIVE_Z,
+    SL_CUBE_FACE_COUNT
+} sl_cube_face;
+/* lab7_begin_cube_pass's face for one layered pass (a geometry shader picks gl_Layer). */
+#define SL_CUBE_ALL_FACES (-1)
+
+sl_status lab7_create_cube_map(int size, sl_cube_map *map);
+/* Binds the map's framebuffer for face 0..5 (six passes), or the whole cube
+ * for SL_CUBE_ALL_FACES (one layered pass; return SL_NOT_IMPLEMENTED there if
+ * you render six passes, and the framework does). Viewport, depth state, clear. */
+sl_status lab7_begin_cube_pass(const sl_cube_map *map, int face);
+void lab7_destroy_cube_map(sl_cube_map *map);
+/* The view matrix of one face: the eye at the light, looking down the face's axis. */
+sl_status lab7_face_view(vec3 light_position, int face, mat4 dest);
+/* The projection every face shares: 90 degrees, aspect 1. */
+sl_status lab7_face_projection(float near, float far, mat4 dest);
 
 #endif

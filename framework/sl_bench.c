@@ -33,6 +33,9 @@ typedef struct _sl_technique {
     bool set_vsm;       /* lab 5 */
     int blur_radius;
     int cascades;       /* lab 6: the cascade count (0: the default's) */
+    /* lab 7: a 6 x 512^2 cube map (whatever --map-size says, which is the 2D labs') */
+    bool cube_soft;
+    sl_cube_pass cube_pass;
 } _sl_technique;
 
 #define _SL_ROW(n, w, s, l, d) .name = n, .what = w, .scene = s, .lab = l, .lab_default = d
@@ -102,6 +105,14 @@ static const _sl_technique _sl_techniques[] = {
     {_SL_ROW("lab6-2-cascades", "2 cascades, lambda 0.8", "cascade_field", 6, false), .cascades = 2},
     {_SL_ROW("lab6-1-cascade", "1 cascade: one map over the view (for scale)", "cascade_field", 6, false),
      .cascades = 1},
+    /* lab 7: cube maps for a point light, each face 512^2 */
+    {_SL_ROW("lab7", "cube map 6x512^2, hard lookup; layered pass where the lab has one", "closed_room", 7, true)},
+    {_SL_ROW("lab7-six-pass", "cube map 6x512^2, six passes (one face each)", "closed_room", 7, false),
+     .cube_pass = SL_CUBE_PASS_SIX},
+    {_SL_ROW("lab7-layered", "cube map 6x512^2, one layered pass (geometry shader)", "closed_room", 7, false),
+     .cube_pass = SL_CUBE_PASS_LAYERED},
+    {_SL_ROW("lab7-soft", "cube map 6x512^2, soft lookup (20 directions)", "closed_room", 7, false),
+     .cube_soft = true},
 };
 #undef _SL_ROW
 #define _SL_TECHNIQUE_COUNT ((int)(sizeof _sl_techniques / sizeof _sl_techniques[0]))
@@ -234,12 +245,20 @@ static void _sl_params_for(const _sl_technique *t, int map_size, sl_render_param
         p->vsm.map_size = 0; /* the shadow map's size, as lab 4's grid: the same texels, the same footprint */
     }
     if (t->cascades > 0) p->cascades.count = t->cascades;
+    p->cube.map_size = 512;
+    p->cube.soft = t->cube_soft;
+    if (t->cube_soft) p->cube.bias = SL_CUBE_SOFT_BIAS;
+    p->cube.pass = t->cube_pass;
 }
 
 /* Says what kept a frame from drawing the technique in full: stubs, errors, a lower lab. */
-static void _sl_describe_problem(const sl_frame_info *info, int lab, char *out, size_t n) {
+static void _sl_describe_problem(const sl_frame_info *info, const _sl_technique *t, char *out, size_t n) {
+    int lab = t->lab;
     out[0] = '\0';
     size_t len = 0;
+    if (lab == 7 && t->cube_pass == SL_CUBE_PASS_LAYERED && info->cube_map_ready && !info->cube_layered)
+        len += (size_t)snprintf(out + len, n - len, "drew six passes: these labs' lab7_begin_cube_pass has no "
+                                                    "layered pass (SL_CUBE_ALL_FACES)");
     if (info->lab_in_use == 0)
         len += (size_t)snprintf(out + len, n - len, "drew without shadows: no lab's code ran");
     else if (info->lab_in_use < lab)
@@ -356,7 +375,7 @@ static bool _sl_run_technique(sl_context *ctx, const _sl_bench_options *o, const
     _sl_median_min(frames, o->frames, &res->frame_median, &res->frame_min);
     for (int i = 0; i < res->pass_count; i++)
         _sl_median_min(passes + i * o->frames, o->frames, &res->pass_median[i], &res->pass_min[i]);
-    _sl_describe_problem(sl_renderer_info(&renderer), t->lab, res->problem, sizeof res->problem);
+    _sl_describe_problem(sl_renderer_info(&renderer), t, res->problem, sizeof res->problem);
     sl_program_stats stats;
     sl_renderer_program_stats(&renderer, &stats);
     res->programs = stats.builds;

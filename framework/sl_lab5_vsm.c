@@ -122,7 +122,7 @@ bool sl_vsm_passes(sl_renderer *r, const sl_scene *scene, const sl_render_params
     glUniformMatrix4fv(m->light_view_projection, 1, GL_FALSE, (const float *)view_proj);
     glUniform1f(m->light_near, scene->light.near);
     glUniform1f(m->light_far, scene->light.far);
-    sl_renderer_draw_objects(r, scene, m->model);
+    sl_renderer_draw_objects(r, scene, m->model, -1, -1);
     sl_renderer_timer_mark(r, "moments");
     /* 2. the blur, horizontal then vertical */
     int radius = p->vsm.blur_radius < _SL_MAX_BLUR_RADIUS ? p->vsm.blur_radius : _SL_MAX_BLUR_RADIUS;

@@ -9,4 +9,7 @@ const sl_lab_functions sl_build_lab_functions = {
     lab5_create_moments_target, lab5_begin_moments_pass, lab5_begin_blur_pass, lab5_filter_moments,
     lab5_destroy_moments_target,
     lab6_split_distances,   lab6_slice_sphere,     lab6_cascade_matrices,
+    .lab7_create_cube_map = lab7_create_cube_map, .lab7_begin_cube_pass = lab7_begin_cube_pass,
+    .lab7_destroy_cube_map = lab7_destroy_cube_map, .lab7_face_view = lab7_face_view,
+    .lab7_face_projection = lab7_face_projection,
 };

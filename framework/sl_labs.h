@@ -29,6 +29,12 @@ typedef struct sl_lab_functions {
                                    vec4 dest);
     sl_status (*lab6_cascade_matrices)(const sl_light *light, vec4 sphere, float caster_margin, int map_size,
                                        mat4 light_view, mat4 light_projection);
+    /* lab 7 */
+    sl_status (*lab7_create_cube_map)(int size, sl_cube_map *map);
+    sl_status (*lab7_begin_cube_pass)(const sl_cube_map *map, int face);
+    void (*lab7_destroy_cube_map)(sl_cube_map *map);
+    sl_status (*lab7_face_view)(vec3 light_position, int face, mat4 dest);
+    sl_status (*lab7_face_projection)(float near, float far, mat4 dest);
 } sl_lab_functions;
 
 /* The labs this binary was built from (labs/, solutions/, or for the

@@ -22,6 +22,8 @@ void sl_render_params_defaults(sl_render_params *p) {
         .vsm = {.blur_radius = 2, .min_variance = 0.00002f, .bleeding = 0.3f, .map_size = 512},
         .output = SL_OUTPUT_SHADED,
         .cascades = {.count = 4, .lambda = 0.8f, .max_distance = 0, .caster_margin = 40.0f},
+        .cube = {.map_size = 512, .bias = SL_CUBE_HARD_BIAS, .soft = false, .soft_radius = 0.35f,
+                 .pass = SL_CUBE_PASS_AUTO},
     };
 }
 
@@ -63,7 +65,7 @@ bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode) {
 
 const char *sl_lab_folder(int lab) {
     static const char *const folders[SL_LAB_COUNT + 1] = {NULL, "lab1_depth_fbo", "lab2_projective", "lab3_bias",
-                                                          "lab4_pcf", "lab5_vsm", "lab6_cascades"};
+                                                          "lab4_pcf", "lab5_vsm", "lab6_cascades", "lab7_cube"};
     return lab >= 1 && lab <= SL_LAB_COUNT ? folders[lab] : NULL;
 }
 
@@ -77,4 +79,26 @@ const char *sl_lab_title(int lab) {
                                                        "cascaded shadow maps",
                                                        "cube-map shadows"};
     return lab >= 1 && lab <= SL_LAB_MAX ? titles[lab] : "?";
+}
+
+static const char *const _sl_cube_pass_names[SL_CUBE_PASS_COUNT] = {"auto", "six", "layered"};
+
+const char *sl_cube_pass_name(sl_cube_pass pass) {
+    return (unsigned)pass < SL_CUBE_PASS_COUNT ? _sl_cube_pass_names[pass] : "?";
+}
+
+bool sl_cube_pass_parse(const char *name, sl_cube_pass *pass) {
+    int i;
+    if (!_sl_find_name(_sl_cube_pass_names, SL_CUBE_PASS_COUNT, name, &i)) return false;
+    *pass = (sl_cube_pass)i;
+    return true;
+}
+
+static const char *const _sl_cube_face_names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+
+const char *sl_cube_face_name(int face) { return face >= 0 && face < 6 ? _sl_cube_face_names[face] : "?"; }
+
+int sl_cube_face_parse(const char *name) {
+    int i;
+    return _sl_find_name(_sl_cube_face_names, 6, name, &i) ? i : -1;
 }

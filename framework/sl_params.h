@@ -10,7 +10,7 @@
 #include "shadowlab.h"
 #include "sl_scene.h"
 
-#define SL_LAB_COUNT 6  /* the highest lab with code in this project (sl_lab_folder: the ones present) */
+#define SL_LAB_COUNT 7  /* the highest lab with code in this project (a lab in between may be absent: sl_lab_folder) */
 #define SL_LAB_MAX 7    /* labs the course plans: case files may name 1..7 */
 
 typedef enum sl_compare_mode { SL_COMPARE_MANUAL = 0, SL_COMPARE_HARDWARE = 1 } sl_compare_mode;
@@ -39,6 +39,27 @@ typedef struct sl_cascade_params {
     sl_camera camera;
 } sl_cascade_params;
 
+/* Lab 7: how the six faces of the cube map are rendered. */
+typedef enum sl_cube_pass {
+    SL_CUBE_PASS_AUTO = 0, /* one layered pass if lab7_begin_cube_pass does SL_CUBE_ALL_FACES, else six */
+    SL_CUBE_PASS_SIX,      /* six passes, one per face */
+    SL_CUBE_PASS_LAYERED,  /* one layered pass (geometry shader); six if the lab does not do it */
+    SL_CUBE_PASS_COUNT
+} sl_cube_pass;
+
+/* The biases the viewer uses: the soft lookup's samples off the centre direction land on the
+ * same surface, nearer the light where it is tilted, so it needs a larger one. */
+#define SL_CUBE_HARD_BIAS 0.004f
+#define SL_CUBE_SOFT_BIAS 0.01f
+
+typedef struct sl_cube_settings {
+    int map_size;        /* texels per face side; default 512 */
+    float bias;          /* in units of distance / far (the soft lookup needs more: SL_CUBE_SOFT_BIAS) */
+    bool soft;           /* point_shadow_soft: 20 samples around the direction */
+    float soft_radius;   /* the disk's radius in world units at distance far (grows with distance) */
+    sl_cube_pass pass;
+} sl_cube_settings;
+
 typedef struct sl_render_params {
     int lab;                 /* labs in use, 1..SL_LAB_COUNT: 1 = depth pass only */
     int shadow_map_size;     /* texels; default 1024 */
@@ -48,8 +69,9 @@ typedef struct sl_render_params {
     sl_vsm_settings vsm;     /* lab 5 */
     bool vsm_off;            /* lab 5 in use, but lab 4's filter instead (the viewer's VSM vs PCF key) */
     sl_output output;
-    bool show_shadow_map;    /* debug view of the depth map in a corner */
+    bool show_shadow_map;    /* debug view of the depth map in a corner (lab 7: the six faces as a cross) */
     sl_cascade_params cascades; /* lab 6 */
+    sl_cube_settings cube;   /* lab 7 */
 } sl_render_params;
 
 void sl_render_params_defaults(sl_render_params *params);
@@ -60,8 +82,14 @@ bool sl_bias_mode_parse(const char *name, sl_bias_mode *mode);
 const char *sl_filter_mode_name(sl_filter_mode mode);
 bool sl_filter_mode_parse(const char *name, sl_filter_mode *mode);
 
-/* Folder of lab N under a labs tree ("lab1_depth_fbo"), N = 1..SL_LAB_COUNT; NULL otherwise, and NULL for a
- * lab number this project has no code for (yet): loops over labs skip those. */
+const char *sl_cube_pass_name(sl_cube_pass pass);
+bool sl_cube_pass_parse(const char *name, sl_cube_pass *pass);
+/* "+x", "-x", "+y", "-y", "+z", "-z" for faces 0..5; "?" otherwise. */
+const char *sl_cube_face_name(int face);
+int sl_cube_face_parse(const char *name); /* -1 when no face's */
+
+/* Folder of lab N under a labs tree ("lab1_depth_fbo"), N = 1..SL_LAB_COUNT; NULL otherwise,
+ * and NULL for a lab this tree does not have (labs are numbered for the course). */
 const char *sl_lab_folder(int lab);
 /* "depth FBO", ..., N = 1..SL_LAB_MAX; "?" otherwise. */
 const char *sl_lab_title(int lab);

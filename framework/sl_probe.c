@@ -11,6 +11,7 @@
 #define _SL_M4(n) {n, SL_PROBE_MAT4}
 #define _SL_MAP(n) {n, SL_PROBE_MAP}
 #define _SL_SHADOW(n) {n, SL_PROBE_SHADOW_MAP}
+#define _SL_CUBE(n) {n, SL_PROBE_CUBE_MAP}
 #define _SL_MATRIX_OUT "m00,m10,m20,m30,m01,m11,m21,m31,m02,m12,m22,m32,m03,m13,m23,m33"
 
 /* Every function the labs ask students to write, with its signature as the
@@ -128,6 +129,31 @@ static const sl_probe_function _sl_functions[] = {
      .outputs = "weight", .output_count = 1,
      .params = {_SL_F("view_depth"), _SL_F("split_near"), _SL_F("split_far"), _SL_F("band")}, .param_count = 4,
      .stub_param = -1, .stub_value = 0.0, .bonus = true},
+    /* lab 7 */
+    {.name = "lab7_create_cube_map", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.1",
+     .outputs = "a cube map,face width,face height,a depth format,faces with storage,filters nearest,clamp to edge,"
+                "framebuffer complete,colour buffers off",
+     .output_count = 9, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
+    {.name = "lab7_begin_cube_pass", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.2",
+     .outputs = "map's framebuffer bound,attached face,viewport width,viewport height,depth test,depth writes,"
+                "depth after the call",
+     .output_count = 7, .params = {_SL_I("face"), _SL_I("size")}, .param_count = 2, .stub_param = -1,
+     .stub_value = NAN},
+    {.name = "lab7_face_view", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.3", .outputs = _SL_MATRIX_OUT,
+     .output_count = 16, .params = {_SL_I("face"), _SL_V3("light_position")}, .param_count = 2, .stub_param = -1,
+     .stub_value = NAN},
+    {.name = "lab7_face_projection", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.4",
+     .outputs = _SL_MATRIX_OUT, .output_count = 16, .params = {_SL_F("near"), _SL_F("far")}, .param_count = 2,
+     .stub_param = -1, .stub_value = NAN},
+    {.name = "point_shadow", .lab = 7, .glsl = true, .file = "lab7_cube/shaders/point_shadow.glsl", .todo = "lab7.6",
+     .outputs = "visibility", .output_count = 1,
+     .params = {_SL_CUBE("cube_map"), _SL_V3("light_to_fragment"), _SL_F("far_plane"), _SL_F("bias")},
+     .param_count = 4, .stub_param = -1, .stub_value = 1.0},
+    {.name = "point_shadow_soft", .lab = 7, .glsl = true, .file = "lab7_cube/shaders/point_shadow.glsl",
+     .todo = "lab7.7", .outputs = "visibility", .output_count = 1,
+     .params = {_SL_CUBE("cube_map"), _SL_V3("light_to_fragment"), _SL_F("far_plane"), _SL_F("bias"),
+                _SL_F("radius")},
+     .param_count = 5, .stub_param = -1, .stub_value = 1.0},
 };
 
 #define _SL_FUNCTION_COUNT ((int)(sizeof _sl_functions / sizeof _sl_functions[0]))
@@ -146,7 +172,8 @@ int sl_probe_index(const sl_probe_function *f) { return (int)(f - _sl_functions)
 
 int sl_probe_type_size(sl_probe_type type) {
     static const int sizes[] = {[SL_PROBE_FLOAT] = 1, [SL_PROBE_INT] = 1, [SL_PROBE_VEC2] = 2, [SL_PROBE_VEC3] = 3,
-                                [SL_PROBE_VEC4] = 4, [SL_PROBE_MAT4] = 16, [SL_PROBE_MAP] = 1, [SL_PROBE_SHADOW_MAP] = 1};
+                                [SL_PROBE_VEC4] = 4, [SL_PROBE_MAT4] = 16, [SL_PROBE_MAP] = 1, [SL_PROBE_SHADOW_MAP] = 1,
+                                [SL_PROBE_CUBE_MAP] = 1};
     return sizes[type];
 }
 
@@ -156,7 +183,9 @@ int sl_probe_input_count(const sl_probe_function *f) {
     return n;
 }
 
-static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit", "occluded", "step", "ramp"};
+static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit",      "occluded",      "step",
+                                                              "ramp",     "cube_lit",      "cube_occluded",
+                                                              "cube_room", "cube_positive"};
 
 const char *sl_probe_map_name(sl_probe_map map) {
     return (unsigned)map < SL_PROBE_MAP_COUNT ? _sl_map_names[map] : "?";
@@ -175,6 +204,26 @@ float sl_probe_map_depth(sl_probe_map map, int x, int y) {
     case SL_PROBE_MAP_OCCLUDED: return 0.25f;
     case SL_PROBE_MAP_STEP: return u < 0.5f ? 0.25f : 1.0f;
     case SL_PROBE_MAP_RAMP: return u;
+    default: return 1.0f;
+    }
+}
+
+bool sl_probe_map_is_cube(sl_probe_map map) { return map >= SL_PROBE_MAP_CUBE_LIT && map < SL_PROBE_MAP_COUNT; }
+
+float sl_probe_cube_depth(sl_probe_map map, int face, int x, int y) {
+    /* The direction through texel (x, y) of the face: GL's table of cube map
+     * faces read backwards (s, t in [-1, 1]; row 0 is t = -1). */
+    float s = 2.0f * ((float)x + 0.5f) / SL_PROBE_MAP_SIZE - 1.0f;
+    float t = 2.0f * ((float)y + 0.5f) / SL_PROBE_MAP_SIZE - 1.0f;
+    float d[6][3] = {{1, -t, -s}, {-1, -t, s}, {s, 1, t}, {s, -1, -t}, {s, -t, 1}, {-s, -t, -1}};
+    const float *v = d[face < 0 || face > 5 ? 0 : face];
+    switch (map) {
+    case SL_PROBE_MAP_CUBE_OCCLUDED: return 0.25f;
+    case SL_PROBE_MAP_CUBE_ROOM: {
+        float largest = fmaxf(fabsf(v[0]), fmaxf(fabsf(v[1]), fabsf(v[2])));
+        return 2.0f * sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) / largest / 10.0f;
+    }
+    case SL_PROBE_MAP_CUBE_POSITIVE: return face % 2 == 0 ? 0.1f : 1.0f;
     default: return 1.0f;
     }
 }

@@ -23,7 +23,10 @@ typedef enum sl_probe_type {
     SL_PROBE_MAT4,
     SL_PROBE_MAP,        /* GLSL sampler2D over a synthetic depth map (sl_probe_map) */
     SL_PROBE_SHADOW_MAP, /* GLSL sampler2DShadow over one (compare mode on, GL_LEQUAL) */
+    SL_PROBE_CUBE_MAP,   /* GLSL samplerCube over a synthetic depth cube map (lab 7; the cube_* maps) */
 } sl_probe_type;
+/* A parameter that names a synthetic map (its one float is the sl_probe_map). */
+#define SL_PROBE_IS_MAP(type) ((type) == SL_PROBE_MAP || (type) == SL_PROBE_SHADOW_MAP || (type) == SL_PROBE_CUBE_MAP)
 
 /* Synthetic depth maps, 64 x 64 texels, for the functions that read one. */
 typedef enum sl_probe_map {
@@ -31,6 +34,11 @@ typedef enum sl_probe_map {
     SL_PROBE_MAP_OCCLUDED, /* 0.25 everywhere: an occluder in front of everything */
     SL_PROBE_MAP_STEP,     /* 0.25 where u < 0.5, 1.0 where u >= 0.5: one occluder's edge */
     SL_PROBE_MAP_RAMP,     /* depth = u: a surface tilted away from the light */
+    /* lab 7's cube maps, distance / far for a light at the centre and far = 10 */
+    SL_PROBE_MAP_CUBE_LIT,      /* 1.0 everywhere: nothing around the light */
+    SL_PROBE_MAP_CUBE_OCCLUDED, /* 0.25 everywhere: a closed shell 2.5 units around the light */
+    SL_PROBE_MAP_CUBE_ROOM,     /* the walls of a cube room of half-size 2: 2 |d| / max|d_i| / 10, seamless */
+    SL_PROBE_MAP_CUBE_POSITIVE, /* 0.1 on the +X, +Y, +Z faces (an occluder 1 unit away), 1.0 on the others */
     SL_PROBE_MAP_COUNT
 } sl_probe_map;
 #define SL_PROBE_MAP_SIZE 64
@@ -70,6 +78,10 @@ const char *sl_probe_map_name(sl_probe_map map);
 int sl_probe_map_parse(const char *name);
 /* The depth of a synthetic map at texel (x, y). */
 float sl_probe_map_depth(sl_probe_map map, int x, int y);
+/* A cube map's stored value on face 0..5 at texel (x, y), GL's face orientations. */
+float sl_probe_cube_depth(sl_probe_map map, int face, int x, int y);
+/* Whether a map is one of the cube maps (for samplerCube parameters) or a 2D one. */
+bool sl_probe_map_is_cube(sl_probe_map map);
 
 /* A table of inputs as the runner receives it. */
 typedef struct sl_probe_table {

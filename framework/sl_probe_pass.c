@@ -68,14 +68,17 @@ static char *_sl_probe_source(const sl_probe_function *f, const _sl_maps *maps, 
         for (int k = 0; k < SL_PROBE_MAP_COUNT; k++)
             if (maps[m].used[k])
                 _sl_add(&t, "uniform %s u_p%d_m%d;\n",
-                        f->params[maps[m].param].type == SL_PROBE_SHADOW_MAP ? "sampler2DShadow" : "sampler2D", m, k);
+                        f->params[maps[m].param].type == SL_PROBE_SHADOW_MAP ? "sampler2DShadow"
+                        : f->params[maps[m].param].type == SL_PROBE_CUBE_MAP ? "samplerCube"
+                                                                             : "sampler2D",
+                        m, k);
     _sl_add(&t, "float sl_in(int i) { return texelFetch(u_inputs, ivec2(i >> 2, int(gl_FragCoord.y)), 0)[i & 3]; }\n");
     _sl_add(&t, "void main() {\n");
     int offset = 0;
     for (int i = 0; i < f->param_count; i++) {
         sl_probe_type type = f->params[i].type;
         int size = sl_probe_type_size(type);
-        if (type == SL_PROBE_MAP || type == SL_PROBE_SHADOW_MAP) {
+        if (SL_PROBE_IS_MAP(type)) {
             _sl_add(&t, "    int a%d = int(sl_in(%d));\n", i, offset);
         } else if (type == SL_PROBE_INT || type == SL_PROBE_FLOAT) {
             _sl_add(&t, "    %s a%d = %s(sl_in(%d));\n", _sl_glsl_type(type), i, _sl_glsl_type(type), offset);
@@ -99,7 +102,7 @@ static char *_sl_probe_source(const sl_probe_function *f, const _sl_maps *maps, 
             for (int m = 0; m < map_params; m++) _sl_add(&t, " && a%d == %d", maps[m].param, choice[m]);
             _sl_add(&t, ") r = %s(", f->name);
             for (int i = 0, m = 0; i < f->param_count; i++) {
-                bool is_map = f->params[i].type == SL_PROBE_MAP || f->params[i].type == SL_PROBE_SHADOW_MAP;
+                bool is_map = SL_PROBE_IS_MAP(f->params[i].type);
                 if (is_map) {
                     _sl_add(&t, "%su_p%d_m%d", i ? ", " : "", m, choice[m]);
                     m++;
@@ -117,6 +120,28 @@ static char *_sl_probe_source(const sl_probe_function *f, const _sl_maps *maps, 
     static const char *const padding[] = {"", ", 0.0, 0.0, 0.0", ", 0.0, 0.0", ", 0.0", ""};
     _sl_add(&t, "    o_result = vec4(r%s);\n}\n", padding[f->output_count]);
     return t.data;
+}
+
+static GLuint _sl_cube_texture(sl_probe_map map) {
+    static float texels[SL_PROBE_MAP_SIZE * SL_PROBE_MAP_SIZE];
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    for (int face = 0; face < 6; face++) {
+        for (int y = 0; y < SL_PROBE_MAP_SIZE; y++)
+            for (int x = 0; x < SL_PROBE_MAP_SIZE; x++)
+                texels[y * SL_PROBE_MAP_SIZE + x] = sl_probe_cube_depth(map, face, x, y);
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, 0, GL_DEPTH_COMPONENT32F, SL_PROBE_MAP_SIZE,
+                     SL_PROBE_MAP_SIZE, 0, GL_DEPTH_COMPONENT, GL_FLOAT, texels);
+    }
+    /* as lab 7's maps are set up: exact distances, no fetch across an edge */
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    return tex;
 }
 
 static GLuint _sl_map_texture(sl_probe_map map, bool shadow, bool linear) {
@@ -147,7 +172,7 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     int map_params = 0, offset = 0;
     for (int i = 0; i < f->param_count; i++) {
         sl_probe_type type = f->params[i].type;
-        if (type == SL_PROBE_MAP || type == SL_PROBE_SHADOW_MAP) {
+        if (SL_PROBE_IS_MAP(type)) {
             maps[map_params] = (_sl_maps){.param = i, .offset = offset};
             for (int r = 0; r < t->rows; r++) {
                 int m = (int)t->inputs[r][offset];
@@ -209,7 +234,9 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
         for (int k = 0; k < SL_PROBE_MAP_COUNT; k++) {
             if (!maps[m].used[k]) continue;
             glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
-            textures[texture_count++] = _sl_map_texture((sl_probe_map)k, shadow, shadow && f->linear_maps);
+            bool cube = f->params[maps[m].param].type == SL_PROBE_CUBE_MAP;
+            textures[texture_count++] = cube ? _sl_cube_texture((sl_probe_map)k)
+                                             : _sl_map_texture((sl_probe_map)k, shadow, shadow && f->linear_maps);
             char name[32];
             snprintf(name, sizeof name, "u_p%d_m%d", m, k);
             glUniform1i(sl_program_uniform(&program, name), unit++);
@@ -317,6 +344,119 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     return status;
 }
 
+/* lab7_create_cube_map(size): what it made, as glGet* reports it. */
+static sl_status _sl_call_create_cube_map(const sl_lab_functions *labs, int size, double *out) {
+    sl_cube_map map = {0};
+    sl_status status = labs->lab7_create_cube_map(size, &map);
+    while (glGetError() != GL_NO_ERROR) {}
+    bool cube = map.depth_cube && glIsTexture(map.depth_cube);
+    if (cube) {
+        glBindTexture(GL_TEXTURE_CUBE_MAP, map.depth_cube);
+        cube = glGetError() == GL_NO_ERROR; /* a texture first bound as 2D cannot become a cube map */
+    }
+    out[0] = cube;
+    for (int o = 1; o < 9; o++) out[o] = 0;
+    if (cube) {
+        GLint w = 0, h = 0, bits = 0, faces = 0, min = 0, mag = 0, s = 0, t = 0, r = 0;
+        glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_TEXTURE_WIDTH, &w);
+        glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_TEXTURE_HEIGHT, &h);
+        glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_TEXTURE_DEPTH_SIZE, &bits);
+        for (int face = 0; face < 6; face++) {
+            GLint fw = 0, fb = 0;
+            glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, 0, GL_TEXTURE_WIDTH, &fw);
+            glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, 0, GL_TEXTURE_DEPTH_SIZE, &fb);
+            faces += fw == size && fb > 0;
+        }
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, &min);
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, &mag);
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, &s);
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, &t);
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, &r);
+        out[1] = w;
+        out[2] = h;
+        out[3] = bits > 0; /* 16, 24 or 32 bits, integer or float: distance / far fits any */
+        out[4] = faces;
+        out[5] = min == GL_NEAREST && mag == GL_NEAREST;
+        out[6] = s == GL_CLAMP_TO_EDGE && t == GL_CLAMP_TO_EDGE && r == GL_CLAMP_TO_EDGE;
+        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    }
+    if (map.framebuffer && glIsFramebuffer(map.framebuffer)) {
+        GLint draw = -1, read = -1;
+        glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
+        out[7] = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+        glGetIntegerv(GL_DRAW_BUFFER, &draw);
+        glGetIntegerv(GL_READ_BUFFER, &read);
+        out[8] = draw == GL_NONE && read == GL_NONE;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    if (map.framebuffer) glDeleteFramebuffers(1, &map.framebuffer);
+    if (map.depth_cube) glDeleteTextures(1, &map.depth_cube);
+    return status;
+}
+
+/* lab7_begin_cube_pass(face) on a cube map of `size` made here, from a state
+ * wrong in every way the function must fix (as lab 1's probe), every face's
+ * depths at 0.5 so a clear shows as 1.0. */
+static sl_status _sl_call_begin_cube_pass(const sl_lab_functions *labs, int face, int size, double *out) {
+    sl_cube_map map = {.size = size};
+    glGenTextures(1, &map.depth_cube);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, map.depth_cube);
+    for (int f = 0; f < 6; f++)
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_DEPTH_COMPONENT24, size, size, 0,
+                     GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    glGenFramebuffers(1, &map.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    glDepthMask(GL_TRUE);
+    glClearDepth(0.5);
+    for (int f = 0; f < 6; f++) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f,
+                               map.depth_cube, 0);
+        glClear(GL_DEPTH_BUFFER_BIT);
+    }
+    glClearDepth(1.0);
+    /* the wrong face attached: the function must attach its own */
+    int other = face >= 0 && face < 6 ? (face + 3) % 6 : 0;
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)other,
+                           map.depth_cube, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, 7, 5);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    sl_status status = labs->lab7_begin_cube_pass(&map, face);
+    GLint bound = 0, viewport[4] = {0}, attached = 0;
+    GLboolean writes = GL_FALSE;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &writes);
+    out[0] = (GLuint)bound == map.framebuffer;
+    out[2] = viewport[2];
+    out[3] = viewport[3];
+    out[4] = glIsEnabled(GL_DEPTH_TEST);
+    out[5] = writes;
+    out[1] = 0;
+    out[6] = -1;
+    if (out[0]) {
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                              GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, &attached);
+        out[1] = attached;
+        float depth = -1;
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, map.framebuffer);
+        glReadPixels(size / 2, size / 2, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+        out[6] = depth;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &map.framebuffer);
+    glDeleteTextures(1, &map.depth_cube);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    return status;
+}
+
 static sl_status _sl_call_c(const sl_probe_function *f, const float *in, double *out) {
     const sl_lab_functions *labs = &sl_build_lab_functions;
     mat4 m;
@@ -405,6 +545,18 @@ static sl_status _sl_call_c(const sl_probe_function *f, const float *in, double 
         status = labs->lab6_cascade_matrices(&light, sphere, in[7], (int)in[8], view, proj);
         glm_mat4_mul(proj, view, vp);
         _sl_store_matrix(vp, out);
+    } else if (strcmp(f->name, "lab7_create_cube_map") == 0) {
+        status = _sl_call_create_cube_map(labs, (int)in[0], out);
+    } else if (strcmp(f->name, "lab7_begin_cube_pass") == 0) {
+        status = _sl_call_begin_cube_pass(labs, (int)in[0], (int)in[1], out);
+    } else if (strcmp(f->name, "lab7_face_view") == 0) {
+        vec3 position;
+        _sl_vec3(in + 1, position);
+        status = labs->lab7_face_view(position, (int)in[0], m);
+        _sl_store_matrix(m, out);
+    } else if (strcmp(f->name, "lab7_face_projection") == 0) {
+        status = labs->lab7_face_projection(in[0], in[1], m);
+        _sl_store_matrix(m, out);
     } else if (strcmp(f->name, "lab4_configure_shadow_texture") == 0) {
         GLuint tex;
         glGenTextures(1, &tex);

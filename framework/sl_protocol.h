@@ -44,6 +44,9 @@ typedef enum sl_capture_kind {
     SL_CAPTURE_VISIBILITY_UNREDUCED, /* image, 1 channel: the visibility without light-bleeding reduction */
     SL_CAPTURE_CASCADE_INDEX, /* lab 6: image, 1 channel: the cascade each pixel used (-1: none), camera size */
     SL_CAPTURE_FLICKER,    /* lab 6: image, 1 channel: every frame's visibility, stacked: camera width x height * frames */
+    /* lab 7: image, 1 channel: one face of the cube map (face f = SL_CAPTURE_CUBE_FACE + f), face size */
+    SL_CAPTURE_CUBE_FACE,
+    SL_CAPTURE_CUBE_FACE_LAST = SL_CAPTURE_CUBE_FACE + 5,
     SL_CAPTURE_KIND_COUNT,
     /* numbers: the outputs of probe table k, "probe_k"; rows x outputs */
     SL_CAPTURE_PROBE = SL_CAPTURE_KIND_COUNT,

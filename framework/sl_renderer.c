@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include "sl_lab5_vsm.h"
+#include "sl_lab7_cube.h"
 
 #ifndef SL_FRAMEWORK_DIR
 #define SL_FRAMEWORK_DIR "framework"
@@ -42,9 +43,7 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
     return false;
 }
 
-void sl_renderer_lab_enter(const char *function) {
-    if (sl_lab_call_hook) sl_lab_call_hook(function);
-}
+void sl_renderer_lab_enter(const char *function) { _sl_enter(function); }
 
 void sl_renderer_enter_lab(const char *function) { _sl_enter(function); }
 bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status) {
@@ -274,6 +273,10 @@ void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out) {
     out->build_ms = ps->build_ms;
     out->cached = (ps->depth.program.id != 0) + (ps->debug.program.id != 0);
     for (int i = 0; i < ps->variant_count; i++) out->cached += ps->variants[i].slot.program.id != 0;
+    int built, held;
+    sl_lab7_cube_program_counts(r, &built, &held);
+    out->builds += built;
+    out->cached += held;
 }
 
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
@@ -307,6 +310,11 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
         if (ok) snprintf(err, err_size, "%s", lab6_err);
         ok = false;
     }
+    char lab7_err[1024];
+    if (!sl_lab7_cube_reload_changed(r, reloaded, lab7_err, sizeof lab7_err)) {
+        if (ok) snprintf(err, err_size, "%s", lab7_err);
+        ok = false;
+    }
     return ok;
 }
 
@@ -317,6 +325,7 @@ static void _sl_destroy_meshes(sl_renderer *r) {
 
 void sl_renderer_destroy(sl_renderer *r) {
     _sl_destroy_meshes(r);
+    sl_lab7_cube_destroy(r);
     if (r->shadow_map_attempted && r->shadow_map_status == SL_OK) {
         _sl_enter("lab1_destroy_shadow_map");
         r->fns[1]->lab1_destroy_shadow_map(&r->shadow_map);
@@ -434,9 +443,19 @@ static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_r
     glm_mat4_identity(info->shadow_matrix);
 }
 
-void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model_location) {
+void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model, GLint normal_matrix, GLint albedo) {
     for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
-        glUniformMatrix4fv(model_location, 1, GL_FALSE, (const float *)scene->objects[i].model);
+        const sl_object *o = &scene->objects[i];
+        glUniformMatrix4fv(model, 1, GL_FALSE, (const float *)o->model);
+        if (normal_matrix >= 0 || albedo >= 0) {
+            mat3 normal;
+            mat4 inv;
+            glm_mat4_inv((vec4 *)o->model, inv);
+            glm_mat4_transpose(inv);
+            glm_mat4_pick3(inv, normal);
+            glUniformMatrix3fv(normal_matrix, 1, GL_FALSE, (const float *)normal);
+            glUniform3fv(albedo, 1, o->color);
+        }
         sl_mesh_draw(&r->meshes[i]);
     }
 }
@@ -581,14 +600,22 @@ static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const
     return NULL;
 }
 
+/* The highest lab up to `lab` with a camera pass of a shadow map (lab 7's
+ * cube maps draw their own frame: a later lab on a spot or sun is the labs' before). */
+static int _sl_planar_lab(int lab) {
+    if (lab > SL_RENDERER_MAX_LAB) lab = SL_RENDERER_MAX_LAB;
+    while (lab > 2 && !_sl_scene_fragment[lab]) lab--;
+    return lab;
+}
+
 static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab, int width,
                            int height) {
     sl_frame_info *info = &r->info;
     /* The highest lab whose code can run this frame. */
     int lab = 0;
     if (info->shadow_map_ready && info->lab2_ready) {
-        lab = p->lab < SL_RENDERER_MAX_LAB ? p->lab : SL_RENDERER_MAX_LAB;
-        if (lab > 5) lab = 4; /* the single-map pipeline ends at lab 5 (VSM); lab 6 draws in sl_lab6_cascades.c */
+        /* labs 6 and 7 draw in their own modules; asked for otherwise (a light they do not cast from), labs 1-4 draw */
+        lab = _sl_planar_lab(p->lab > 5 ? 4 : p->lab);
         if (depth_lab < 3 && lab > 2) lab = 2;
         /* lab 5: its moments, or lab 4's filters when they are not there (or VSM is switched off) */
         if (lab == 5 && (!info->moments_ready || p->vsm_off)) lab = 4;
@@ -715,10 +742,18 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->shadow_map_ready = false;
     info->second_map_ready = false;
     info->lab_in_use = 0;
+    info->cube_frame = info->cube_matrices_ready = info->cube_map_ready = info->cube_layered = false;
     r->programs->frame++;
     _sl_timer_mark(r, NULL);
     if (params->lab == 6) { /* cascades: a frame of their own (sl_lab6_cascades.c) */
         sl_lab6_draw(r, scene, params, target, width, height);
+        glBindVertexArray(0);
+        glUseProgram(0);
+        return;
+    }
+    if (sl_lab7_cube_applies(scene, params)) {
+        /* a point light: lab 7's cube map instead of labs 1-4's shadow map */
+        sl_lab7_cube_draw(r, scene, params, target, width, height);
         glBindVertexArray(0);
         glUseProgram(0);
         return;

@@ -53,6 +53,13 @@ typedef struct sl_frame_info {
     mat4 cascade_view[SL_MAX_CASCADES], cascade_projection[SL_MAX_CASCADES], cascade_shadow_matrix[SL_MAX_CASCADES];
     mat4 cascade_fit_view;       /* the view of the camera they were fitted to */
     GLuint cascade_texture;      /* the depth texture array */
+    /* lab 7 (sl_lab7_cube.c) */
+    bool cube_frame;             /* this frame was lab 7's (a point light) */
+    bool cube_matrices_ready;    /* lab 7's face views and projection are in use */
+    bool cube_map_ready;         /* lab 7 created the cube map and its depth passes ran */
+    bool cube_layered;           /* the faces were rendered in one layered pass (else six) */
+    mat4 cube_views[6], cube_projection;
+    sl_cube_map cube_map;        /* lab 7's map, for inspection */
 } sl_frame_info;
 
 /* Per-pass times of one frame, from GL timer queries (glQueryCounter, GL 3.3).
@@ -85,6 +92,7 @@ typedef struct sl_program_stats {
 
 struct _sl_programs; /* the program cache (sl_renderer.c) */
 struct _sl_lab6;     /* lab 6's targets and programs (sl_lab6_cascades.c) */
+struct _sl_lab7;     /* lab 7's passes (sl_lab7_cube.c) */
 
 typedef struct sl_renderer {
     const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab (this build's) */
@@ -105,6 +113,7 @@ typedef struct sl_renderer {
     sl_status second_map_status;
     bool second_map_attempted;
     sl_frame_info info;
+    struct _sl_lab7 *lab7; /* lab 7's cube map and programs, made by its first frame */
     /* timing (sl_renderer_set_timing): one timestamp before the frame and one after each pass */
     bool timing;
     GLuint timer_queries[SL_MAX_PASSES + 1];
@@ -151,19 +160,16 @@ void sl_renderer_set_timing(sl_renderer *r, bool enabled);
  * has finished that frame. False if no such frame was drawn. */
 bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
 
-/* For the passes of later labs in modules of their own (sl_lab5_vsm.c): a
- * lab call's name before it (NULL after), and its result recorded as the
- * renderer's own calls are (true: the step may go on); every object drawn
- * with the program in use (only its model matrix set); a pass's timestamp. */
+/* For the labs' own pass modules (sl_lab5_vsm.c, sl_lab6_cascades.c, sl_lab7_cube.c): a call into lab
+ * code is announced, then its result recorded, as the renderer does with its own (the result is true when
+ * the step may go on); a pass's end is timed. sl_renderer_enter_lab is the same as sl_renderer_lab_enter. */
 void sl_renderer_lab_enter(const char *function);
-bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status);
-void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model_location);
-/* For the pass modules the renderer calls (sl_lab6_cascades.c): a call into
- * lab code announced and recorded as the renderer's own (false: the step
- * stops), and a timestamp after a pass. */
 void sl_renderer_enter_lab(const char *function);
 bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status);
 void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass);
+/* Draws every object of the scene with the bound program (u_model, and with
+ * colours also u_normal_matrix and u_albedo, at these locations; -1: not set). */
+void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model, GLint normal_matrix, GLint albedo);
 
 /* Read-backs, as top-down images. */
 bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out);

@@ -11,6 +11,7 @@
 
 #include "sl_context.h"
 #include "sl_lab5_vsm.h"
+#include "sl_lab7_cube.h"
 #include "sl_probe_pass.h"
 #include "sl_protocol.h"
 #include "sl_renderer.h"
@@ -274,6 +275,16 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
             sl_image_free(&img);
         } else {
             _sl_send_text(SL_MSG_CAPTURE_ERROR, sl_capture_name(SL_CAPTURE_DEPTH_MAP), err);
+        }
+    }
+    for (int face = 0; face < 6; face++) {
+        if (!_sl_wants(job, SL_CAPTURE_CUBE_FACE + face) || !info->cube_map_ready) continue;
+        sl_image img;
+        if (sl_capture_cube_face(info->cube_map.depth_cube, face, &img, err, sizeof err)) {
+            _sl_send_image(SL_CAPTURE_CUBE_FACE + face, &img);
+            sl_image_free(&img);
+        } else {
+            _sl_send_text(SL_MSG_CAPTURE_ERROR, sl_capture_name(SL_CAPTURE_CUBE_FACE + face), err);
         }
     }
     if (_sl_wants(job, SL_CAPTURE_MATRICES) && info->lab2_ready) {

@@ -62,14 +62,14 @@ static const char *_sl_backend_choices(void) {
 static void _sl_usage(FILE *f) {
     fprintf(f,
             "usage: shadowlab [options]\n"
-            "  --lab N             labs in use: 1 depth map, 2 shadows, 3 bias, 4 filtering,\n"
-            "                      5 VSM, 6 cascades; default 4\n"
+            "  --lab N             labs in use: 1 depth map, 2 shadows, 3 bias, 4 filtering, 5 VSM,\n"
+            "                      6 cascades, 7 cube maps (a point light); default 7 for a point light, else 4\n"
             "  --scene NAME|FILE   a built-in scene (boxes_on_floor, spot_on_floor, curved_grazing,\n"
             "                      pole_on_floor, thin_caster, long_ground, cascade_field, closed_room,\n"
             "                      stacked_occluders) or a scene\n"
             "                      .json; default boxes_on_floor\n"
             "  --size WxH          window size; default 960x640\n"
-            "  --map-size N        shadow map size in texels; default 1024\n"
+            "  --map-size N        shadow map size in texels; default 1024 (lab 7: each cube face, 512)\n"
             "  --compare MODE      manual (sampler2D) or hardware (sampler2DShadow)\n"
             "  --bias X            constant depth bias; default 0.005\n"
             "  --bias-mode MODE    lab 3: none, constant, slope, polygon-offset, front-culling,\n"
@@ -90,7 +90,11 @@ static void _sl_usage(FILE *f) {
             "  --freeze            lab 6: freeze the camera's frustum and look at it, its slices and\n"
             "                      their light boxes from above\n"
             "  --visibility        show the visibility term alone (what the grader compares)\n"
-            "  --show-map          show the shadow map in a corner\n"
+            "  --show-map          show the shadow map in a corner (lab 7: the six cube faces as a cross)\n"
+            "  --soft              lab 7: the soft lookup (20 directions)\n"
+            "  --soft-radius R     lab 7: its disk at the far plane, world units; default 0.35\n"
+            "  --cube-bias B       lab 7: the lookup's bias, in distance / far; default 0.004 (0.01 soft)\n"
+            "  --cube-pass MODE    lab 7: auto, six or layered (auto: layered where the lab does it)\n"
             "  --frames K          render K frames, then exit (for scripts)\n"
             "  --screenshot FILE   save the last frame as PNG (with --frames)\n"
             "  --headless          render without a window or display, with the default headless\n"
@@ -113,7 +117,9 @@ static void _sl_usage(FILE *f) {
             "  --case NAME         render what the grader renders for case NAME (grader/cases/NAME.json),\n"
             "                      beside the reference and their difference (red: a shadow missing,\n"
             "                      blue: one too many); Tab, Space and D switch the view\n"
-            "keys: 1-6 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
+            "lab 7 keys: 7 lab 7, M the six faces as a cross, S soft/hard, L six passes/layered/auto,\n"
+            "      [ ] cube bias, arrows move the point light (x, z), PgUp PgDn (y)\n"
+            "keys: 1-7 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
             "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
             "      lab 5: R T blur radius, K L bleeding reduction, N J min variance, P VSM / lab 4 filter,\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
@@ -132,7 +138,11 @@ static void _sl_update_title(_sl_viewer *v) {
     const sl_frame_info *info = sl_renderer_info(v->show_second ? &v->second : &v->renderer);
     char title[512], settings[160];
     const sl_render_params *p = &v->params;
-    if (p->lab <= 2)
+    if (p->lab == 7 && v->scene.light.type == SL_LIGHT_POINT)
+        snprintf(settings, sizeof settings, "cube map %d, bias %.4f, %s, %s", p->cube.map_size, p->cube.bias,
+                 p->cube.soft ? "soft (20 directions)" : "hard",
+                 info->cube_layered ? "one layered pass" : "six passes");
+    else if (p->lab <= 2)
         snprintf(settings, sizeof settings, "%s compare, bias %.4f", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual",
                  p->bias.constant);
     else
@@ -259,6 +269,22 @@ static bool _sl_lab_key(_sl_viewer *v, int key) {
         default: return false;
         }
     }
+    if (v->params.lab == 7) { /* S soft/hard, L six passes/layered/auto, PgUp PgDn move the point light up and down */
+        switch (key) {
+        case GLFW_KEY_S:
+            /* soft or hard, each with the bias it needs unless the bias was changed by hand */
+            v->params.cube.soft = !v->params.cube.soft;
+            if (v->params.cube.soft && v->params.cube.bias == SL_CUBE_HARD_BIAS) v->params.cube.bias = SL_CUBE_SOFT_BIAS;
+            else if (!v->params.cube.soft && v->params.cube.bias == SL_CUBE_SOFT_BIAS) v->params.cube.bias = SL_CUBE_HARD_BIAS;
+            return true;
+        case GLFW_KEY_L: v->params.cube.pass = (sl_cube_pass)((v->params.cube.pass + 1) % SL_CUBE_PASS_COUNT); return true;
+        case GLFW_KEY_PAGE_UP:
+        case GLFW_KEY_PAGE_DOWN:
+            if (v->scene.light.type == SL_LIGHT_POINT) v->scene.light.position[1] += key == GLFW_KEY_PAGE_UP ? 0.2f : -0.2f;
+            return true;
+        default: return false;
+        }
+    }
     return false;
 }
 /* The viewer --keys presses keys for, with no window (w NULL) or before the first frame. */
@@ -281,6 +307,7 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     case GLFW_KEY_4: v->params.lab = 4; break;
     case GLFW_KEY_5: v->params.lab = 5; break;
     case GLFW_KEY_6: v->params.lab = 6; break;
+    case GLFW_KEY_7: v->params.lab = 7; break;
     case GLFW_KEY_B: v->params.bias.mode = (sl_bias_mode)((v->params.bias.mode + 1) % SL_BIAS_MODE_COUNT); break;
     case GLFW_KEY_F: v->params.filter.mode = (sl_filter_mode)((v->params.filter.mode + 1) % SL_FILTER_MODE_COUNT); break;
     case GLFW_KEY_EQUAL:
@@ -295,12 +322,26 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     case GLFW_KEY_V: v->params.output = v->params.output == SL_OUTPUT_SHADED ? SL_OUTPUT_VISIBILITY : SL_OUTPUT_SHADED; break;
     case GLFW_KEY_M: v->params.show_shadow_map = !v->params.show_shadow_map; break;
     case GLFW_KEY_C: v->params.compare = v->params.compare == SL_COMPARE_MANUAL ? SL_COMPARE_HARDWARE : SL_COMPARE_MANUAL; break;
-    case GLFW_KEY_LEFT_BRACKET: v->params.bias.constant *= 0.5f; break;
-    case GLFW_KEY_RIGHT_BRACKET: v->params.bias.constant = v->params.bias.constant > 0 ? v->params.bias.constant * 2 : 0.0005f; break;
-    case GLFW_KEY_LEFT: _sl_move_light(&v->scene.light, -0.05f, 0); break;
-    case GLFW_KEY_RIGHT: _sl_move_light(&v->scene.light, 0.05f, 0); break;
-    case GLFW_KEY_UP: _sl_move_light(&v->scene.light, 0, 0.05f); break;
-    case GLFW_KEY_DOWN: _sl_move_light(&v->scene.light, 0, -0.05f); break;
+    case GLFW_KEY_LEFT_BRACKET:
+    case GLFW_KEY_RIGHT_BRACKET: {
+        bool up = key == GLFW_KEY_RIGHT_BRACKET;
+        float *bias = v->params.lab == 7 ? &v->params.cube.bias : &v->params.bias.constant;
+        *bias = up ? (*bias > 0 ? *bias * 2 : 0.0005f) : *bias * 0.5f;
+        break;
+    }
+    case GLFW_KEY_LEFT:
+    case GLFW_KEY_RIGHT:
+    case GLFW_KEY_UP:
+    case GLFW_KEY_DOWN:
+        if (v->scene.light.type == SL_LIGHT_POINT) {
+            /* a point light moves in the room (x, z); PgUp/PgDn move it up and down */
+            v->scene.light.position[0] += key == GLFW_KEY_LEFT ? -0.2f : key == GLFW_KEY_RIGHT ? 0.2f : 0;
+            v->scene.light.position[2] += key == GLFW_KEY_UP ? -0.2f : key == GLFW_KEY_DOWN ? 0.2f : 0;
+        } else {
+            _sl_move_light(&v->scene.light, key == GLFW_KEY_LEFT ? -0.05f : key == GLFW_KEY_RIGHT ? 0.05f : 0,
+                           key == GLFW_KEY_UP ? 0.05f : key == GLFW_KEY_DOWN ? -0.05f : 0);
+        }
+        break;
     case GLFW_KEY_O: v->show_overlay = !v->show_overlay; break;
     /* lecture keys: letters no lab uses for its own settings */
     case GLFW_KEY_G: v->show_frustum = !v->show_frustum; break;
@@ -505,6 +546,7 @@ int sl_viewer_main(int argc, char **argv) {
     float light_size = -1;
     bool freeze = false; /* lab 6 */
     int overlay_option = -1; /* --overlay 1, --no-overlay 0, default -1 */
+    bool lab_given = false;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *next = i + 1 < argc ? argv[i + 1] : NULL;
@@ -520,7 +562,8 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--moments-size") == 0 ||
                            strcmp(a, "--cascades") == 0 || strcmp(a, "--lambda") == 0 || strcmp(a, "--blend-band") == 0 ||
                            strcmp(a, "--caption") == 0 || strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0 ||
-                           strcmp(a, "--text-scale") == 0;
+                           strcmp(a, "--text-scale") == 0 ||
+                           strcmp(a, "--cube-pass") == 0 || strcmp(a, "--soft-radius") == 0 || strcmp(a, "--cube-bias") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -530,9 +573,10 @@ int sl_viewer_main(int argc, char **argv) {
             return 0;
         } else if (strcmp(a, "--lab") == 0) {
             v.params.lab = atoi(next);
-            if (v.params.lab < 1 || v.params.lab > SL_RENDERER_MAX_LAB) {
-                fprintf(stderr, "shadowlab: --lab must be 1..%d (labs %d-7 are not in this build yet)\n",
-                        SL_RENDERER_MAX_LAB, SL_RENDERER_MAX_LAB + 1);
+            lab_given = true;
+            if (v.params.lab < 1 || v.params.lab > SL_RENDERER_MAX_LAB || !sl_lab_folder(v.params.lab)) {
+                fprintf(stderr, "shadowlab: --lab must be one of this build's labs (1..%d; a lab number whose "
+                                "folder is missing is not in this build yet)\n", SL_RENDERER_MAX_LAB);
                 return 2;
             }
         } else if (strcmp(a, "--scene") == 0) {
@@ -548,6 +592,7 @@ int sl_viewer_main(int argc, char **argv) {
                 fprintf(stderr, "shadowlab: --map-size must be 16..8192\n");
                 return 2;
             }
+            v.params.cube.map_size = v.params.shadow_map_size < 2048 ? v.params.shadow_map_size : 2048;
         } else if (strcmp(a, "--compare") == 0) {
             if (strcmp(next, "manual") == 0) v.params.compare = SL_COMPARE_MANUAL;
             else if (strcmp(next, "hardware") == 0) v.params.compare = SL_COMPARE_HARDWARE;
@@ -666,6 +711,26 @@ int sl_viewer_main(int argc, char **argv) {
                 return 2;
             }
             v.show_second = true;
+        } else if (strcmp(a, "--soft") == 0) {
+            v.params.cube.soft = true;
+            if (v.params.cube.bias == SL_CUBE_HARD_BIAS) v.params.cube.bias = SL_CUBE_SOFT_BIAS;
+        } else if (strcmp(a, "--soft-radius") == 0) {
+            v.params.cube.soft_radius = (float)atof(next);
+            if (!(v.params.cube.soft_radius >= 0 && v.params.cube.soft_radius <= 100)) {
+                fprintf(stderr, "shadowlab: --soft-radius is 0..100 world units\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--cube-bias") == 0) {
+            v.params.cube.bias = (float)atof(next);
+            if (!(v.params.cube.bias >= 0 && v.params.cube.bias <= 1)) {
+                fprintf(stderr, "shadowlab: --cube-bias is 0..1 (distance / far)\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--cube-pass") == 0) {
+            if (!sl_cube_pass_parse(next, &v.params.cube.pass)) {
+                fprintf(stderr, "shadowlab: --cube-pass is auto, six or layered\n");
+                return 2;
+            }
         } else if (strcmp(a, "--show-map") == 0) {
             v.params.show_shadow_map = true;
         } else if (strcmp(a, "--headless") == 0) {
@@ -702,6 +767,11 @@ int sl_viewer_main(int argc, char **argv) {
     }
     if (light_size > 0) v.scene.light.size = light_size;
     if (freeze) _sl_freeze(&v, true);
+    if (!lab_given) {
+        /* the highest lab for the scene's light: lab 7 casts from a point light, the others from a sun or a spot */
+        v.params.lab = v.scene.light.type == SL_LIGHT_POINT && sl_lab_folder(7) ? 7 : 4;
+        while (v.params.lab > 1 && !sl_lab_folder(v.params.lab)) v.params.lab--;
+    }
     sl_context_desc cd = {
         .backend = headless ? backend : SL_BACKEND_GLFW,
         .width = width,

@@ -37,6 +37,8 @@ static const struct {
     [SL_CHECK_CASCADE_INDEX] = {"cascade_index", "cascade_index.exr", 0.5, 0.01, 0, 0.02},
     /* threshold here: the largest flicker score, of world-fixed receiver pixels changing per frame */
     [SL_CHECK_FLICKER] = {"flicker", "flicker.exr", 0.002, 0, 0, 0},
+    /* distance / far in [0,1], as a depth map: silhouettes may move by a texel */
+    [SL_CHECK_CUBE_FACE] = {"cube_face", ".exr", 0.002, 0.005, 0, 0.0005},
 };
 
 const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
@@ -87,12 +89,14 @@ static bool _sl_hint_when(const sl_case *c, sl_check *k, const cJSON *json, char
 bool sl_check_reference_file(const sl_check *k, char *out, size_t n) {
     const char *file = _sl_kinds[k->kind].reference;
     if (!file) return false;
-    if (k->kind == SL_CHECK_PROBE) snprintf(out, n, "%s%s", k->name, file); /* one file per probe check */
+    if (k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_CUBE_FACE)
+        snprintf(out, n, "%s%s", k->name, file); /* one file per probe check, per face */
     else snprintf(out, n, "%s", file);
     return true;
 }
 const char *sl_check_capture_name(const sl_case *c, const sl_check *k) {
     if (k->kind == SL_CHECK_PROBE) return sl_capture_name(SL_CAPTURE_PROBE + (int)(k - c->checks));
+    if (k->kind == SL_CHECK_CUBE_FACE) return sl_capture_name(SL_CAPTURE_CUBE_FACE + k->face);
     return k->kind == SL_CHECK_PENUMBRA || k->kind == SL_CHECK_BLEEDING ? "visibility" : _sl_kinds[k->kind].name;
 }
 
@@ -116,6 +120,7 @@ uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
                (1u << SL_CAPTURE_MOMENTS_TARGET);
     case SL_CHECK_CASCADE_INDEX: return 1u << SL_CAPTURE_CASCADE_INDEX;
     case SL_CHECK_FLICKER: return (1u << SL_CAPTURE_FLICKER) | (1u << SL_CAPTURE_LIT_MASK);
+    case SL_CHECK_CUBE_FACE: return 1u << (SL_CAPTURE_CUBE_FACE + k->face);
     default: return 0;
     }
 }
@@ -216,6 +221,23 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
         cp->caster_margin = (float)margin;
         cp->blend_band = (float)band;
     }
+    /* lab 7 */
+    sl_cube_settings *cube = &c->params.cube;
+    double cube_size = cube->map_size, cube_bias = cube->bias, soft_radius = cube->soft_radius;
+    if (!_sl_number(json, "cube_map_size", &cube_size, 16, 2048, c->path, err, n) ||
+        !_sl_number(json, "cube_bias", &cube_bias, 0, 1, c->path, err, n) ||
+        !_sl_number(json, "soft_radius", &soft_radius, 0, 100, c->path, err, n))
+        return false;
+    cube->map_size = (int)cube_size;
+    cube->bias = (float)cube_bias;
+    cube->soft_radius = (float)soft_radius;
+    const cJSON *soft = cJSON_GetObjectItemCaseSensitive(json, "soft");
+    if (soft) cube->soft = cJSON_IsTrue(soft);
+    mode = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "cube_pass"));
+    if (mode && !sl_cube_pass_parse(mode, &cube->pass)) {
+        snprintf(err, n, "%s: \"cube_pass\" must be auto, six or layered", c->path);
+        return false;
+    }
     const cJSON *compare = cJSON_GetObjectItemCaseSensitive(json, "compare");
     if (compare) {
         const char *s = cJSON_GetStringValue(compare);
@@ -257,9 +279,10 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
         const cJSON *v = cJSON_GetObjectItemCaseSensitive(row, p->name);
         int size = sl_probe_type_size(p->type);
         bool ok;
-        if (p->type == SL_PROBE_MAP || p->type == SL_PROBE_SHADOW_MAP) {
+        if (SL_PROBE_IS_MAP(p->type)) {
             int map = cJSON_IsString(v) ? sl_probe_map_parse(v->valuestring) : -1;
-            ok = map >= 0;
+            /* a samplerCube takes the cube maps, a 2D sampler the others */
+            ok = map >= 0 && sl_probe_map_is_cube((sl_probe_map)map) == (p->type == SL_PROBE_CUBE_MAP);
             k->inputs[r][offset] = (float)map;
         } else if (size == 1) {
             ok = cJSON_IsNumber(v);
@@ -273,7 +296,10 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
             }
         }
         if (!ok) {
-            if (p->type == SL_PROBE_MAP || p->type == SL_PROBE_SHADOW_MAP)
+            if (p->type == SL_PROBE_CUBE_MAP)
+                snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a cube map: cube_lit, cube_occluded, "
+                         "cube_room or cube_positive", c->path, k->name, r, p->name);
+            else if (SL_PROBE_IS_MAP(p->type))
                 snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a map: lit, occluded, step or ramp",
                          c->path, k->name, r, p->name);
             else
@@ -320,7 +346,7 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
         if (strcmp(kind, _sl_kinds[i].name) == 0) found = i;
     if (found < 0) {
         snprintf(err, n, "%s: checks[%d]: \"kind\" must be fbo, depth_map, matrices, visibility, image, penumbra, probe, "
-                    "moments, moments_blurred, bleeding, cascade_index or flicker",
+                    "moments, moments_blurred, bleeding, cascade_index, flicker or cube_face",
                  c->path, index);
         return false;
     }
@@ -366,6 +392,15 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
         return false;
     }
     if (k->kind == SL_CHECK_PROBE && !_sl_probe_check(c, k, json, err, n)) return false;
+    if (k->kind == SL_CHECK_CUBE_FACE) {
+        const char *face = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "face"));
+        k->face = face ? sl_cube_face_parse(face) : -1;
+        if (k->face < 0) {
+            snprintf(err, n, "%s: checks[%d] (%s) needs \"face\": \"+x\", \"-x\", \"+y\", \"-y\", \"+z\" or \"-z\"",
+                     c->path, index, k->name);
+            return false;
+        }
+    }
     const cJSON *probe_list = k->kind == SL_CHECK_PENUMBRA ? probes : NULL;
     cJSON_ArrayForEach(p, probe_list) {
         sl_probe *probe = &k->probes[k->probe_count];

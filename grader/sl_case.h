@@ -29,6 +29,7 @@ typedef enum sl_check_kind {
     SL_CHECK_BLEEDING,        /* light bleeding in the reference's umbra, with and without the reduction */
     SL_CHECK_CASCADE_INDEX, /* lab 6: the cascade each pixel used vs reference (EXR) */
     SL_CHECK_FLICKER,    /* lab 6: visibility changes on world-fixed pixels along a camera path */
+    SL_CHECK_CUBE_FACE,  /* lab 7: one face of the cube map (distance / far) vs reference (EXR) */
     SL_CHECK_KIND_COUNT
 } sl_check_kind;
 
@@ -75,6 +76,7 @@ typedef struct sl_check {
     char about[SL_PROBE_MAX_ROWS][256];
     float row_tolerance[SL_PROBE_MAX_ROWS]; /* a row's own tolerance (0: the check's) */
     double tolerance, relative; /* an output passes within tolerance + relative * |expected| */
+    int face;             /* cube_face: 0..5, GL's order (+x, -x, +y, -y, +z, -z) */
 } sl_check;
 
 typedef struct sl_case {

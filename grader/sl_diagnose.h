@@ -91,6 +91,19 @@ void sl_diagnose_cascade_index(const sl_case *c, const sl_check *k, const sl_cas
                                sl_check_result *out);
 void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                          sl_check_result *out);
+/* ---- lab 7 (grader/diagnose/lab7.c) ---- */
+/* Whether lab `lab`'s cases draw with lab `earlier`'s code (lab 7 makes its own map: none). */
+bool sl_lab_builds_on(int lab, int earlier);
+/* Whether a lab 7 case calls the function `name` that failed its probe. */
+bool sl_lab7_case_calls(const sl_case *c, const sl_check *k, const char *name);
+void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                           sl_check_result *out);
+bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *student, const sl_image *reference,
+                                 const sl_image *lit_mask, sl_check_result *out);
+/* A probe of a lab 7 function: what its failing rows say ("face +Y: the up vector should be
+ * (0,0,1)") into text, and the row that shows it; text left empty when there is nothing more specific. */
+int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double *expected, uint32_t failing_rows,
+                          char *text, size_t text_size);
 
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,

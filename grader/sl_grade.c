@@ -37,6 +37,10 @@ static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
     {"lab5_begin_moments_pass", "TODO(lab5.2)", "labs/lab5_vsm/lab5.c"},
     {"lab5_begin_blur_pass", "TODO(lab5.4)", "labs/lab5_vsm/lab5.c"},
     {"lab5_filter_moments", "TODO(lab5.6)", "labs/lab5_vsm/lab5.c"},
+    {"lab7_create_cube_map", "TODO(lab7.1)", "labs/lab7_cube/lab7.c"},
+    {"lab7_begin_cube_pass", "TODO(lab7.2)", "labs/lab7_cube/lab7.c"},
+    {"lab7_face_view", "TODO(lab7.3)", "labs/lab7_cube/lab7.c"},
+    {"lab7_face_projection", "TODO(lab7.4)", "labs/lab7_cube/lab7.c"},
 };
 
 void sl_diag_say(sl_check_result *out, const char *fmt, ...) {
@@ -179,6 +183,9 @@ void sl_diag_lookup_function(const sl_case *c, const char **function, const char
     } else if (c->lab == 6) { /* cascades: lab 6's own lookup */
         *function = "cascade_compare()";
         *todo = "lab6.5";
+    } else if (c->lab == 7) {
+        *function = c->params.cube.soft ? "point_shadow_soft()" : "point_shadow()";
+        *todo = c->params.cube.soft ? "lab7.7" : "lab7.6";
     } else if (c->lab >= 4) {
         *function = filters[c->params.filter.mode][0];
         *todo = filters[c->params.filter.mode][1];
@@ -206,6 +213,7 @@ static bool _sl_reference_fits(sl_reference *ref, const sl_case *c, const sl_che
         channels = 2;
     }
     if (k->kind == SL_CHECK_FLICKER) h = c->height * c->frame_count; /* lab 6: every frame, stacked */
+    if (k->kind == SL_CHECK_CUBE_FACE) w = h = c->params.cube.map_size;
     if (img->width == w && img->height == h && img->channels == channels) return true;
     snprintf(ref->error, sizeof ref->error, "reference does not fit its case: %s is %dx%dx%d, the case makes %dx%dx%d",
              ref->path, img->width, img->height, img->channels, w, h, channels);
@@ -353,7 +361,7 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
     }
     if (has_shadows && stu_shadowed < 0.1 * ref_shadowed) {
         out->symptoms |= 1u << SL_SYMPTOM_NO_SHADOWS;
-        if (c->lab >= 4 && exactly_lit < ref_dark / 2) {
+        if (c->lab >= 4 && c->lab != 7 && exactly_lit < ref_dark / 2) {
             sl_diag_say(out, "shadows far too faint: where the reference is shadowed, %s leaves most pixels nearly lit", fn);
             sl_diag_cause(out, "most samples land off the map, where the border counts as lit — are the offsets scaled "
                                "by the texel size, 1.0 / textureSize(map, 0) (TODO %s)?", todo);
@@ -368,6 +376,7 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
     if (c->lab == 3 && mask && sl_diagnose_lab3_visibility(c, s, t, mask, out)) return;
     if (c->lab == 4 && sl_diagnose_lab4_visibility(c, s, t, mask, out)) return;
     if (c->lab == 5 && sl_diagnose_lab5_visibility(c, s, t, mask, out)) return;
+    if (c->lab == 7 && sl_diagnose_lab7_visibility(c, s, t, mask, out)) return;
     if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
         sl_diag_say(out, "lit and shadowed are swapped (%.0f%% of shadows lit, %.0f%% of lit pixels shadowed)",
@@ -440,11 +449,13 @@ static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_f
     }
     if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE && k->kind != SL_CHECK_PENUMBRA &&
         k->kind != SL_CHECK_DEPTH_MAP && k->kind != SL_CHECK_MOMENTS && k->kind != SL_CHECK_MOMENTS_BLURRED &&
-        k->kind != SL_CHECK_BLEEDING)
+        k->kind != SL_CHECK_BLEEDING &&
+        k->kind != SL_CHECK_CUBE_FACE)
         return false;
     const char *name = f->name;
     sl_bias_mode bias = c->params.bias.mode;
     sl_filter_mode filter = c->params.filter.mode;
+    if (f->lab < c->lab && !sl_lab_builds_on(c->lab, f->lab)) return false;
     if (f->lab < c->lab) {
         /* labs build on each other: an earlier lab's function draws this case too, unless the solutions stand in */
         if (isolated) return false;
@@ -474,6 +485,7 @@ static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_f
         /* the moments feed every check; the lookup only what the camera sees */
         if (strcmp(name, "compute_moments") == 0) return true;
         return k->kind != SL_CHECK_MOMENTS && k->kind != SL_CHECK_MOMENTS_BLURRED;
+    case 7: return sl_lab7_case_calls(c, k, name);
     default: return false;
     }
 }
@@ -498,7 +510,7 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
                            size_t n) {
     if (!context || k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_FBO || k->kind == SL_CHECK_MATRICES) return false;
     for (int lab = 1; lab < c->lab && !context->isolated; lab++) {
-        if (c->lab == 6 && lab > 2) continue; /* lab 6 builds on labs 1 and 2 only */
+        if (!sl_lab_builds_on(c->lab, lab)) continue;
         const sl_probe_failure *f = _sl_failed_probe_of(c, k, context, lab);
         if (f) {
             snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,
@@ -517,6 +529,11 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
         if (er->passed || er->reference_problem || er->bonus) continue;
         if (e->kind == SL_CHECK_MATRICES) {
             snprintf(lead, n, "the light's matrices are wrong (%s / %s: %s): fix the matrices first", c->name, e->name,
+                     er->summary);
+            return true;
+        }
+        if (e->kind == SL_CHECK_CUBE_FACE && k->kind != SL_CHECK_CUBE_FACE) {
+            snprintf(lead, n, "the cube map is wrong (%s / %s: %s): fix the cube map first", c->name, e->name,
                      er->summary);
             return true;
         }
@@ -618,6 +635,7 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     case SL_CHECK_BLEEDING: sl_diagnose_bleeding(c, k, r, ref, out); break;
     case SL_CHECK_CASCADE_INDEX: sl_diagnose_cascade_index(c, k, r, ref, out); break;
     case SL_CHECK_FLICKER: sl_diagnose_flicker(c, k, r, ref, out); break;
+    case SL_CHECK_CUBE_FACE: sl_diagnose_cube_face(c, k, r, ref, out); break;
     default: sl_diag_say(out, "unknown check kind"); break;
     }
     if (out->passed) {

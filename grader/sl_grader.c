@@ -122,7 +122,7 @@ static bool _sl_is_executable(const char *path) {
 /* A labs tree has every lab's folder with its shaders/. */
 static bool _sl_check_labs_tree(const char *dir, char *err, size_t n) {
     for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
-        if (!sl_lab_folder(lab)) continue; /* a lab number with no code in this project */
+        if (!sl_lab_folder(lab)) continue; /* a lab number this course tree does not have */
         char path[1200];
         snprintf(path, sizeof path, "%s/%s/shaders", dir, sl_lab_folder(lab));
         if (!_sl_is_dir(path)) {

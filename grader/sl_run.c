@@ -83,6 +83,8 @@ static uint64_t _sl_payload_limit(const _sl_stream *s, uint32_t type, int captur
         if (capture == SL_CAPTURE_FLICKER)
             return SL_IMAGE_HEADER_BYTES + (uint64_t)s->c->width * (uint64_t)s->c->height *
                                                (uint64_t)(s->c->frame_count > 0 ? s->c->frame_count : 1) * sizeof(float);
+        if (capture >= SL_CAPTURE_CUBE_FACE && capture <= SL_CAPTURE_CUBE_FACE_LAST)
+            return SL_IMAGE_HEADER_BYTES + (uint64_t)SL_IMAGE_SIDE_MAX * SL_IMAGE_SIDE_MAX * sizeof(float);
         return SL_IMAGE_HEADER_BYTES + (uint64_t)s->c->width * (uint64_t)s->c->height * 3 * sizeof(float);
     default: return 0;
     }
@@ -135,7 +137,8 @@ static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint
     }
     memcpy(dims, payload, sizeof dims);
     bool moments = capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED;
-    bool camera = capture != SL_CAPTURE_DEPTH_MAP && !moments;
+    bool cube_face = capture >= SL_CAPTURE_CUBE_FACE && capture <= SL_CAPTURE_CUBE_FACE_LAST;
+    bool camera = capture != SL_CAPTURE_DEPTH_MAP && !moments && !cube_face;
     int channels = capture == SL_CAPTURE_IMAGE ? 3 : moments ? 2 : 1;
     int rows = capture == SL_CAPTURE_FLICKER ? s->c->height * s->c->frame_count : s->c->height; /* frames stacked */
     bool ok = dims[0] > 0 && dims[1] > 0 && dims[0] <= SL_IMAGE_SIDE_MAX && dims[1] <= SL_IMAGE_SIDE_MAX &&

@@ -49,7 +49,7 @@ static void _sl_inputs(const sl_probe_function *f, const float *in, char *out, s
         const sl_probe_param *p = &f->params[i];
         int size = sl_probe_type_size(p->type);
         char value[160] = "";
-        if (p->type == SL_PROBE_MAP || p->type == SL_PROBE_SHADOW_MAP) {
+        if (SL_PROBE_IS_MAP(p->type)) {
             snprintf(value, sizeof value, "the \"%s\" map", sl_probe_map_name((sl_probe_map)(int)in[offset]));
         } else if (p->type == SL_PROBE_MAT4) {
             snprintf(value, sizeof value, "a matrix");
@@ -210,10 +210,13 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         return;
     }
     /* What the rows say together, then the row that shows it (or the first that differs). */
-    char verdict[600];
+    char verdict[600] = "";
     sl_verdict_rows rows = {.f = f, .k = k, .student = cap->numbers, .expected = ref->numbers,
                             .failing = out->failing_rows};
-    int shown = sl_probe_verdict(&rows, verdict, sizeof verdict);
+    int shown = f->lab == 7 ? sl_lab7_probe_verdict(k, cap->numbers, ref->numbers, out->failing_rows, verdict,
+                                                    sizeof verdict)
+                            : -1;
+    if (!verdict[0]) shown = sl_probe_verdict(&rows, verdict, sizeof verdict);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
     char evidence[1500];
     _sl_row_evidence(f, k, shown, &cap->numbers[shown * f->output_count], &ref->numbers[shown * f->output_count],

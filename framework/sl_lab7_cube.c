@@ -1,0 +1,413 @@
+#include "sl_lab7_cube.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_renderer.h"
+#include "sl_shader.h"
+
+/* The programs lab 7 draws with, each built the first time a frame needs it. */
+typedef struct _sl_cube_program {
+    sl_program program;
+    bool attempted;
+    GLuint located; /* the program id the locations below belong to */
+    GLint model, normal_matrix, albedo, view, projection, light_view_projection, face_view_projection, light_position,
+        light_far, light_radiance, light_direction, output, shadows, cube_map, cube_bias, soft_radius, spot_cos;
+} _sl_cube_program;
+
+enum {
+    _SL_DEPTH_SIX,     /* cube_depth.vert + cube_depth.frag */
+    _SL_DEPTH_LAYERED, /* + cube_depth.geom */
+    _SL_CAMERA_PLAIN,  /* scene_cube.frag without shadows */
+    _SL_CAMERA_HARD,   /* point_shadow */
+    _SL_CAMERA_SOFT,   /* point_shadow_soft */
+    _SL_CROSS,         /* the faces as a cross */
+    _SL_PROGRAM_COUNT
+};
+
+struct _sl_lab7 {
+    _sl_cube_program programs[_SL_PROGRAM_COUNT];
+    bool used[_SL_PROGRAM_COUNT]; /* by the last frame: rebuilt at once when their files change */
+    sl_cube_map map;
+    sl_status map_status;
+    bool map_attempted;
+};
+
+bool sl_lab7_cube_applies(const sl_scene *scene, const sl_render_params *params) {
+    return params->lab == 7 && scene->light.type == SL_LIGHT_POINT;
+}
+
+static struct _sl_lab7 *_sl_state(sl_renderer *r) {
+    if (!r->lab7) r->lab7 = calloc(1, sizeof *r->lab7);
+    return r->lab7;
+}
+
+/* Builds program `which` if no frame has tried yet; NULL if it does not compile (error in shader_errors[7]). */
+static _sl_cube_program *_sl_program(sl_renderer *r, int which) {
+    struct _sl_lab7 *s = r->lab7;
+    _sl_cube_program *p = &s->programs[which];
+    s->used[which] = true;
+    if (!p->attempted) {
+        p->attempted = true;
+        char vs[SL_PATH_MAX * 2], fs[SL_PATH_MAX * 2], gs[SL_PATH_MAX * 2];
+        const char *defines = "#define SL_LIGHT_TYPE 2\n";
+        bool lab = which == _SL_DEPTH_SIX || which == _SL_DEPTH_LAYERED;
+        if (lab) {
+            snprintf(vs, sizeof vs, "%s/lab7_cube/shaders/cube_depth.vert", r->labs_dir);
+            snprintf(fs, sizeof fs, "%s/lab7_cube/shaders/cube_depth.frag", r->labs_dir);
+            snprintf(gs, sizeof gs, "%s/lab7_cube/shaders/cube_depth.geom", r->labs_dir);
+        } else if (which == _SL_CROSS) {
+            snprintf(vs, sizeof vs, "%s/debug_quad.vert", r->shaders_dir);
+            snprintf(fs, sizeof fs, "%s/cube_cross.frag", r->shaders_dir);
+        } else {
+            snprintf(vs, sizeof vs, "%s/plain.vert", r->shaders_dir);
+            snprintf(fs, sizeof fs, "%s/scene_cube.frag", r->shaders_dir);
+            defines = which == _SL_CAMERA_PLAIN  ? "#define SL_LIGHT_TYPE 2\n#define SL_CUBE_SHADOWS 0\n"
+                      : which == _SL_CAMERA_HARD ? "#define SL_LIGHT_TYPE 2\n#define SL_CUBE_SHADOWS 1\n"
+                                                   "#define SL_CUBE_SOFT 0\n"
+                                                 : "#define SL_LIGHT_TYPE 2\n#define SL_CUBE_SHADOWS 1\n"
+                                                   "#define SL_CUBE_SOFT 1\n";
+        }
+        sl_shader_desc desc = {
+            .vertex_path = vs,
+            .fragment_path = fs,
+            .geometry_path = which == _SL_DEPTH_LAYERED ? gs : NULL,
+            .search_dirs = {r->labs_dir, r->shaders_dir},
+            .defines = defines,
+        };
+        /* The plain pass must work whatever lab 7's GLSL says: its errors are the framework's. */
+        int owner = which == _SL_CAMERA_PLAIN || which == _SL_CROSS ? 0 : 7;
+        sl_program_build(&p->program, &desc, r->shader_errors[owner], sizeof r->shader_errors[owner]);
+    }
+    if (!p->program.id) return NULL;
+    if (p->located == p->program.id) return p;
+    GLuint id = p->located = p->program.id;
+#define _SL_LOC(field, name) p->field = glGetUniformLocation(id, name)
+    _SL_LOC(model, "u_model");
+    _SL_LOC(normal_matrix, "u_normal_matrix");
+    _SL_LOC(albedo, "u_albedo");
+    _SL_LOC(view, "u_view");
+    _SL_LOC(projection, "u_projection");
+    _SL_LOC(light_view_projection, "u_light_view_projection");
+    _SL_LOC(face_view_projection, "u_face_view_projection");
+    _SL_LOC(light_position, "u_light_position");
+    _SL_LOC(light_far, "u_light_far");
+    _SL_LOC(light_radiance, "u_light_radiance");
+    _SL_LOC(light_direction, "u_light_direction");
+    _SL_LOC(output, "u_output");
+    _SL_LOC(shadows, "u_shadows");
+    _SL_LOC(cube_map, "u_cube_map");
+    _SL_LOC(cube_bias, "u_cube_bias");
+    _SL_LOC(soft_radius, "u_soft_radius");
+    _SL_LOC(spot_cos, "u_spot_cos");
+#undef _SL_LOC
+    return p;
+}
+
+#define _SL_CALL(r, fn, ...) \
+    (sl_renderer_lab_enter(#fn), sl_renderer_lab_result((r), #fn, (r)->fns[7]->fn(__VA_ARGS__)))
+
+/* Step 1: the face matrices. */
+static bool _sl_face_matrices(sl_renderer *r, const sl_light *light) {
+    sl_frame_info *info = &r->info;
+    mat4 projection, views[6];
+    glm_mat4_identity(projection);
+    bool ok = _SL_CALL(r, lab7_face_projection, light->near, light->far, projection);
+    vec3 position;
+    glm_vec3_copy((float *)light->position, position);
+    for (int f = 0; f < 6 && ok; f++) {
+        glm_mat4_identity(views[f]);
+        ok = _SL_CALL(r, lab7_face_view, position, f, views[f]);
+    }
+    if (!ok) return false;
+    glm_mat4_copy(projection, info->cube_projection);
+    for (int f = 0; f < 6; f++) glm_mat4_copy(views[f], info->cube_views[f]);
+    info->cube_matrices_ready = true;
+    return true;
+}
+
+/* Step 2: the cube map, made once per size. */
+static bool _sl_cube_map(sl_renderer *r, int size) {
+    struct _sl_lab7 *s = r->lab7;
+    if (s->map_attempted && s->map_status == SL_OK && s->map.size != size) {
+        sl_renderer_lab_enter("lab7_destroy_cube_map");
+        r->fns[7]->lab7_destroy_cube_map(&s->map);
+        sl_renderer_lab_enter(NULL);
+        s->map_attempted = false;
+    }
+    if (!s->map_attempted) {
+        memset(&s->map, 0, sizeof s->map);
+        sl_renderer_lab_enter("lab7_create_cube_map");
+        s->map_status = r->fns[7]->lab7_create_cube_map(size, &s->map);
+        s->map_attempted = true;
+    }
+    r->info.cube_map = s->map; /* even on failure: the grader inspects what was made */
+    return sl_renderer_lab_result(r, "lab7_create_cube_map", s->map_status);
+}
+
+/* Back faces are culled in the depth passes, before the lab's begin (which may change it): every
+ * mesh is closed, so the nearest surface along a ray from the light is a front face, and the
+ * fragment shader, which writes gl_FragDepth and so runs for every fragment (no early depth
+ * test), runs on half as many. The stored distances are the same; the pass is about 30% cheaper. */
+static void _sl_depth_pass_culling(void) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+}
+
+/* Step 2: the depth passes, layered when asked for (or on "auto") and the lab does it, else six. */
+static bool _sl_depth_passes(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
+    sl_frame_info *info = &r->info;
+    const sl_light *light = &scene->light;
+    struct _sl_lab7 *s = r->lab7;
+    mat4 view_projection[6];
+    for (int f = 0; f < 6; f++) glm_mat4_mul(info->cube_projection, info->cube_views[f], view_projection[f]);
+    vec3 position;
+    glm_vec3_copy((float *)light->position, position);
+    if (p->cube.pass != SL_CUBE_PASS_SIX) {
+        /* Asked directly: a lab that renders six passes answers SL_NOT_IMPLEMENTED here, which is no mistake. */
+        _sl_depth_pass_culling();
+        sl_renderer_lab_enter("lab7_begin_cube_pass");
+        sl_status layered = r->fns[7]->lab7_begin_cube_pass(&s->map, SL_CUBE_ALL_FACES);
+        sl_renderer_lab_enter(NULL);
+        if (layered == SL_FAILED) return sl_renderer_lab_result(r, "lab7_begin_cube_pass", layered);
+        if (layered == SL_OK) {
+            _sl_cube_program *prog = _sl_program(r, _SL_DEPTH_LAYERED);
+            if (!prog) {
+                info->shader_error = r->shader_errors[7];
+                info->shader_error_lab = 7;
+                return false;
+            }
+            mat4 identity = GLM_MAT4_IDENTITY_INIT;
+            glUseProgram(prog->program.id);
+            glUniformMatrix4fv(prog->light_view_projection, 1, GL_FALSE, (const float *)identity);
+            glUniformMatrix4fv(prog->face_view_projection, 6, GL_FALSE, (const float *)view_projection);
+            glUniform3fv(prog->light_position, 1, position);
+            glUniform1f(prog->light_far, light->far);
+            sl_renderer_draw_objects(r, scene, prog->model, -1, -1);
+            info->cube_layered = true;
+            sl_renderer_timer_mark(r, "cube layered");
+            return true;
+        }
+    }
+    _sl_cube_program *prog = NULL;
+    for (int f = 0; f < 6; f++) {
+        _sl_depth_pass_culling();
+        if (!_SL_CALL(r, lab7_begin_cube_pass, &s->map, f)) return false;
+        if (!prog) {
+            prog = _sl_program(r, _SL_DEPTH_SIX);
+            if (!prog) {
+                info->shader_error = r->shader_errors[7];
+                info->shader_error_lab = 7;
+                return false;
+            }
+            glUseProgram(prog->program.id);
+            glUniform3fv(prog->light_position, 1, position);
+            glUniform1f(prog->light_far, light->far);
+        }
+        glUniformMatrix4fv(prog->light_view_projection, 1, GL_FALSE, (const float *)view_projection[f]);
+        sl_renderer_draw_objects(r, scene, prog->model, -1, -1);
+    }
+    sl_renderer_timer_mark(r, "cube 6-pass");
+    return true;
+}
+
+/* GL state a lab may change, put back (as the renderer does between its passes). */
+static void _sl_reset_state(GLuint target, int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0, 0);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+/* Step 3: the camera pass. */
+static void _sl_camera_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int width, int height) {
+    sl_frame_info *info = &r->info;
+    struct _sl_lab7 *s = r->lab7;
+    _sl_cube_program *prog = NULL;
+    bool shadows = info->cube_map_ready;
+    if (shadows) {
+        prog = _sl_program(r, p->cube.soft ? _SL_CAMERA_SOFT : _SL_CAMERA_HARD);
+        if (!prog && !info->shader_error) {
+            info->shader_error = r->shader_errors[7];
+            info->shader_error_lab = 7;
+        }
+    }
+    if (!prog) {
+        shadows = false;
+        prog = _sl_program(r, _SL_CAMERA_PLAIN);
+        if (!prog && !info->shader_error) {
+            info->shader_error = r->shader_errors[0];
+            info->shader_error_lab = 0;
+        }
+    }
+    info->lab_in_use = shadows ? 7 : 0;
+    if (p->output == SL_OUTPUT_SHADED) glClearColor(0.55f, 0.62f, 0.70f, 1);
+    else if (p->output == SL_OUTPUT_VISIBILITY) glClearColor(1, 1, 1, 1);
+    else glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!prog) return;
+    const sl_light *l = &scene->light;
+    mat4 view, projection;
+    sl_camera_view(&scene->camera, view);
+    sl_camera_projection(&scene->camera, height > 0 ? (float)width / (float)height : 1, projection);
+    glUseProgram(prog->program.id);
+    glUniformMatrix4fv(prog->view, 1, GL_FALSE, (const float *)view);
+    glUniformMatrix4fv(prog->projection, 1, GL_FALSE, (const float *)projection);
+    glUniform3fv(prog->light_position, 1, l->position);
+    glUniform3fv(prog->light_direction, 1, l->direction);
+    vec3 radiance;
+    glm_vec3_scale((float *)l->color, l->intensity, radiance);
+    glUniform3fv(prog->light_radiance, 1, radiance);
+    glUniform1f(prog->spot_cos, 0);
+    glUniform1i(prog->output, (int)p->output);
+    glUniform1f(prog->light_far, l->far);
+    glUniform1f(prog->cube_bias, p->cube.bias);
+    glUniform1f(prog->soft_radius, p->cube.soft_radius);
+    glUniform1i(prog->cube_map, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, shadows ? s->map.depth_cube : 0);
+    if (shadows) {
+        /* the lookup compares by hand: the texture returns distances, not comparison results */
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    }
+    sl_renderer_draw_objects(r, scene, prog->model, prog->normal_matrix, prog->albedo);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    sl_renderer_timer_mark(r, "camera");
+}
+
+/* The six faces as a cross in the lower right corner. */
+static void _sl_cross_view(sl_renderer *r, int width, int height) {
+    if (!r->info.cube_map_ready) return;
+    _sl_cube_program *prog = _sl_program(r, _SL_CROSS);
+    if (!prog) return;
+    int cell = (width / 4 < height / 3 ? width / 4 : height / 3) / 2;
+    glViewport(width - 4 * cell - 8, 8, 4 * cell, 3 * cell);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(prog->program.id);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, r->lab7->map.depth_cube);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glUniform1i(prog->cube_map, 0);
+    glBindVertexArray(r->empty_vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+    sl_renderer_timer_mark(r, "debug view");
+}
+
+void sl_lab7_cube_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, GLuint target, int width,
+                       int height) {
+    sl_frame_info *info = &r->info;
+    info->cube_frame = true;
+    struct _sl_lab7 *s = _sl_state(r);
+    if (!s) return;
+    memset(s->used, 0, sizeof s->used);
+    int size = p->cube.map_size > 0 ? p->cube.map_size : 512;
+    _sl_reset_state(0, width, height);
+    bool ready = _sl_face_matrices(r, &scene->light);
+    /* The map's stubs are asked even without matrices, so the grader can say which of them are not done yet. */
+    bool map = _sl_cube_map(r, size);
+    if (ready && map) info->cube_map_ready = _sl_depth_passes(r, scene, p);
+    else if (map) _SL_CALL(r, lab7_begin_cube_pass, &s->map, 0);
+    _sl_reset_state(target, width, height);
+    _sl_camera_pass(r, scene, p, width, height);
+    if (p->show_shadow_map) _sl_cross_view(r, width, height);
+}
+
+bool sl_lab7_cube_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
+    struct _sl_lab7 *s = r->lab7;
+    if (!s) return true;
+    bool ok = true;
+    for (int i = 0; i < _SL_PROGRAM_COUNT; i++) {
+        _sl_cube_program *p = &s->programs[i];
+        if (!p->attempted) continue;
+        if (!p->program.id) {
+            /* never compiled: try again, so a fix switches the lab back on */
+            p->attempted = false;
+            if (s->used[i]) *reloaded = true;
+            continue;
+        }
+        if (!s->used[i]) continue;
+        char e[4096];
+        if (sl_program_reload_if_changed(&p->program, e, sizeof e)) {
+            *reloaded = true;
+        } else if (e[0]) {
+            if (ok) snprintf(err, err_size, "%s", e);
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+void sl_lab7_cube_program_counts(const sl_renderer *r, int *built, int *held) {
+    *built = *held = 0;
+    if (!r->lab7) return;
+    for (int i = 0; i < _SL_PROGRAM_COUNT; i++) {
+        *built += r->lab7->programs[i].attempted;
+        *held += r->lab7->programs[i].program.id != 0;
+    }
+}
+
+void sl_lab7_cube_destroy(sl_renderer *r) {
+    struct _sl_lab7 *s = r->lab7;
+    if (!s) return;
+    if (s->map_attempted && s->map_status == SL_OK) {
+        sl_renderer_lab_enter("lab7_destroy_cube_map");
+        r->fns[7]->lab7_destroy_cube_map(&s->map);
+        sl_renderer_lab_enter(NULL);
+    }
+    for (int i = 0; i < _SL_PROGRAM_COUNT; i++) sl_program_destroy(&s->programs[i].program);
+    free(s);
+    r->lab7 = NULL;
+}
+
+bool sl_capture_cube_face(GLuint cube, int face, sl_image *out, char *err, size_t err_size) {
+    *out = (sl_image){0};
+    if (!cube || !glIsTexture(cube) || face < 0 || face > 5) {
+        snprintf(err, err_size, "depth_cube (%u) is not a texture name", cube);
+        return false;
+    }
+    while (glGetError() != GL_NO_ERROR) {}
+    glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
+    if (glGetError() != GL_NO_ERROR) {
+        snprintf(err, err_size, "depth_cube (%u) is not a GL_TEXTURE_CUBE_MAP (was it first bound to another target?)",
+                 cube);
+        return false;
+    }
+    GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
+    GLint w = 0, h = 0, fmt = 0, depth_bits = 0;
+    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_HEIGHT, &h);
+    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
+    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_DEPTH_SIZE, &depth_bits);
+    if (glGetError() != GL_NO_ERROR || w <= 0 || h <= 0) {
+        snprintf(err, err_size, "face %s of depth_cube has no storage (glTexImage2D for each of the six faces)",
+                 sl_cube_face_name(face));
+        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+        return false;
+    }
+    if (depth_bits == 0) {
+        snprintf(err, err_size, "face %s of depth_cube has internal format %s (0x%x), not a depth format",
+                 sl_cube_face_name(face), sl_gl_enum_name((GLenum)fmt), fmt);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+        return false;
+    }
+    *out = sl_image_alloc(w, h, 1);
+    if (!out->data) return false;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(target, 0, GL_DEPTH_COMPONENT, GL_FLOAT, out->data);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    sl_image_flip_rows(out);
+    return true;
+}

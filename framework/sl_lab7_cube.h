@@ -1,0 +1,44 @@
+/* sl_lab7_cube: lab 7's frame, omnidirectional shadows for a point light.
+ *
+ *   1. lab 7 gives the shared 90-degree projection and the six face views
+ *   2. lab 7 creates the depth cube map (once per size) and begins each pass:
+ *      six passes (one face each, lab7_begin_cube_pass(map, 0..5)) or, when
+ *      lab7_begin_cube_pass(map, SL_CUBE_ALL_FACES) says it can, one layered
+ *      pass where the lab's geometry shader sends each triangle to six layers;
+ *      the framework draws every object with lab 7's depth shaders, which
+ *      store distance / far
+ *   3. the camera pass looks each pixel up in the cube map with lab 7's
+ *      point_shadow() (or point_shadow_soft())
+ *
+ * The renderer hands a frame to this module when params.lab is 7 and the
+ * scene's light is a point light; every call into lab code goes through the
+ * renderer's table, so a crash or a stub is pinned on the function. */
+#ifndef SL_LAB7_CUBE_H
+#define SL_LAB7_CUBE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "sl_image.h"
+#include "sl_params.h"
+#include "sl_scene.h"
+
+struct sl_renderer;
+
+/* Whether lab 7's frame applies: lab 7 asked for and a point light to cast from. */
+bool sl_lab7_cube_applies(const sl_scene *scene, const sl_render_params *params);
+/* Draws the frame (depth passes, camera pass, the faces as a cross when
+ * params.show_shadow_map) into framebuffer `target`. */
+void sl_lab7_cube_draw(struct sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
+                       int width, int height);
+/* Rebuilds lab 7's programs whose files changed (hot reload); false with err set on a failed build. */
+bool sl_lab7_cube_reload_changed(struct sl_renderer *r, bool *reloaded, char *err, size_t err_size);
+void sl_lab7_cube_destroy(struct sl_renderer *r);
+/* Lab 7's programs: how many were built (first builds only) and how many are held now. */
+void sl_lab7_cube_program_counts(const struct sl_renderer *r, int *built, int *held);
+
+/* One face of a depth cube map as a top-down image (1 channel, face size
+ * squared); false with err set if the texture is no depth cube map. */
+bool sl_capture_cube_face(GLuint cube, int face, sl_image *out, char *err, size_t err_size);
+
+#endif

@@ -1,0 +1,340 @@
+/* Lab 7's diagnoses: the cube map's faces, the face matrices, the lookup. */
+#define _POSIX_C_SOURCE 200809L
+#include "sl_diagnose.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_compare.h"
+#include "sl_probe.h"
+
+/* The standard orientation of each face (GL's table of cube map faces): the axis it looks down and its up vector. */
+static const float _sl_axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+static const float _sl_ups[6][3] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+static const char *const _sl_face_names[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+
+static const char *_sl_face(int face) { return face >= 0 && face < 6 ? _sl_face_names[face] : "?"; }
+
+bool sl_lab_builds_on(int lab, int earlier) {
+    if (earlier >= lab) return false;
+    if (lab == 7) return false;        /* its own cube map, matrices and lookup: no earlier lab's code draws its cases */
+    if (lab == 6) return earlier <= 2; /* lab 1's depth pass and lab 2's shadow matrix, per cascade */
+    return true;
+}
+
+bool sl_lab7_case_calls(const sl_case *c, const sl_check *k, const char *name) {
+    if (strncmp(name, "lab7_", 5) == 0) return true; /* every frame of lab 7 makes and fills the cube map */
+    if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE) return false;
+    return strcmp(name, c->params.cube.soft ? "point_shadow_soft" : "point_shadow") == 0;
+}
+
+/* ---- the faces ---- */
+
+/* Fraction of the reference's texels (those in front of the far plane) that
+ * `s` matches within `threshold` after mapping each texel of s to the
+ * reference by `map` (face coordinates in [-1, 1], x right, y up); texels
+ * mapped outside the face are left out. */
+typedef void (*_sl_face_map)(double x, double y, double *rx, double *ry, double param);
+
+static double _sl_match(const sl_image *s, const sl_image *t, _sl_face_map map, double param, double threshold) {
+    int n = s->width;
+    long counted = 0, matched = 0;
+    for (int j = 0; j < n; j += 2)
+        for (int i = 0; i < n; i += 2) {
+            double x = 2.0 * (i + 0.5) / n - 1.0, y = 1.0 - 2.0 * (j + 0.5) / n, rx, ry;
+            map(x, y, &rx, &ry, param);
+            int ri = (int)floor((rx + 1.0) * 0.5 * n), rj = (int)floor((1.0 - ry) * 0.5 * n);
+            if (ri < 0 || rj < 0 || ri >= n || rj >= n) continue;
+            float sv = s->data[(long)j * n + i];
+            /* the best of the reference's 3x3 neighbourhood: silhouettes may move by a texel */
+            double best = INFINITY;
+            for (int dj = -1; dj <= 1; dj++)
+                for (int di = -1; di <= 1; di++) {
+                    int a = ri + di, b = rj + dj;
+                    if (a < 0 || b < 0 || a >= n || b >= n) continue;
+                    double d = fabs((double)sv - (double)t->data[(long)b * n + a]);
+                    if (d < best) best = d;
+                }
+            counted++;
+            matched += best <= threshold;
+        }
+    return counted ? (double)matched / (double)counted : 0;
+}
+
+static void _sl_mirror_x(double x, double y, double *rx, double *ry, double p) { (void)p; *rx = -x; *ry = y; }
+static void _sl_mirror_y(double x, double y, double *rx, double *ry, double p) { (void)p; *rx = x; *ry = -y; }
+static void _sl_rotate_180(double x, double y, double *rx, double *ry, double p) { (void)p; *rx = -x; *ry = -y; }
+static void _sl_rotate_90(double x, double y, double *rx, double *ry, double p) { (void)p; *rx = -y; *ry = x; }
+static void _sl_rotate_270(double x, double y, double *rx, double *ry, double p) { (void)p; *rx = y; *ry = -x; }
+/* a face rendered with field of view f sees direction (x tan(f/2), y tan(f/2), 1): the reference's (x, y) scaled */
+static void _sl_scale(double x, double y, double *rx, double *ry, double scale) { *rx = x * scale; *ry = y * scale; }
+
+/* The texel's distance along the face axis over its distance from the light. */
+static double _sl_cos_axis(int n, int i, int j) {
+    double x = 2.0 * (i + 0.5) / n - 1.0, y = 1.0 - 2.0 * (j + 0.5) / n;
+    return 1.0 / sqrt(1.0 + x * x + y * y);
+}
+
+/* Do the student's values follow `predict` of the reference's (distance / far) on most texels? */
+typedef double (*_sl_predict)(double r, double cos_axis, double near, double far);
+
+static double _sl_ndc_depth(double r, double c, double near, double far) {
+    double z = r * far * c; /* the distance along the face's axis */
+    return z <= near ? 0.0 : far * (z - near) / ((far - near) * z);
+}
+static double _sl_not_divided(double r, double c, double near, double far) {
+    (void)c;
+    (void)near;
+    return fmin(1.0, r * far);
+}
+
+static double _sl_follows(const sl_image *s, const sl_image *t, _sl_predict predict, double near, double far) {
+    int n = s->width;
+    long counted = 0, matched = 0;
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            double r = t->data[(long)j * n + i];
+            if (r >= 0.999) continue;
+            counted++;
+            matched += fabs((double)s->data[(long)j * n + i] - predict(r, _sl_cos_axis(n, i, j), near, far)) < 0.01;
+        }
+    return counted ? (double)matched / (double)counted : 0;
+}
+
+static void _sl_vector(const float *v, char *out, size_t n) { snprintf(out, n, "(%g,%g,%g)", v[0], v[1], v[2]); }
+
+void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                           sl_check_result *out) {
+    const char *face = _sl_face(k->face);
+    const sl_capture *cap = sl_result_capture(r, sl_check_capture_name(c, k));
+    if (!cap) {
+        if (r->capture_error[0]) sl_diag_say(out, "%s", r->capture_error);
+        else if (!sl_diag_explain_missing(c, r, out))
+            sl_diag_say(out, "face %s: no cube map was captured (did the depth passes run?)", face);
+        out->settled = true;
+        return;
+    }
+    const sl_image *s = &cap->image, *t = &ref->image;
+    sl_compare_stats st = sl_compare_images(s, t, k->threshold, &out->diff);
+    if (st.size_mismatch) {
+        sl_diag_say(out, "face %s is %dx%d, the reference %dx%d: each face is size x size texels", face, s->width,
+                    s->height, t->width, t->height);
+        out->settled = true;
+        return;
+    }
+    char what[32];
+    snprintf(what, sizeof what, "face %s", face);
+    if (sl_diag_image_passes(k, &st, what, out)) {
+        out->passed = true;
+        return;
+    }
+    if (out->message[0]) return; /* only the mean is off: said */
+    double near = c->scene.light.near, far = c->scene.light.far;
+    double empty = sl_fraction_equal(s, 1.0f, 1e-6f), ref_empty = sl_fraction_equal(t, 1.0f, 1e-6f);
+    char up[40];
+    _sl_vector(_sl_ups[k->face], up, sizeof up);
+    if (empty > 0.999 && ref_empty < 0.99) {
+        sl_diag_say(out, "face %s holds 1.0 everywhere (\"nothing there\") where the reference holds distance / far",
+                    face);
+        sl_diag_cause(out, "is the far plane missing on the depth pass's side? Distances not divided by u_light_far in "
+                           "shaders/cube_depth.frag are clamped to 1.0 (TODO lab7.5). Or nothing was drawn into the "
+                           "face: is it attached in lab7_begin_cube_pass (TODO lab7.2)?");
+    } else if (_sl_follows(s, t, _sl_not_divided, near, far) > 0.95) {
+        sl_diag_say(out, "face %s holds the distance itself, clamped to 1.0, where the reference holds distance / far",
+                    face);
+        sl_diag_cause(out, "the far plane is missing on the depth pass's side: divide by u_light_far in "
+                           "shaders/cube_depth.frag (TODO lab7.5), as point_shadow() divides the fragment's distance");
+    } else if (_sl_follows(s, t, _sl_ndc_depth, near, far) > 0.9) {
+        sl_diag_say(out, "face %s holds the depth buffer's own values (gl_FragCoord.z, the projection's non-linear "
+                         "depth along the face's axis), not distance / far", face);
+        sl_diag_cause(out, "the lookup compares distances: write length(world position - light) / u_light_far into "
+                           "gl_FragDepth in shaders/cube_depth.frag (TODO lab7.5)");
+    } else if (_sl_match(s, t, _sl_scale, tan(glm_rad(22.5f)), k->threshold * 5) > 0.95) {
+        sl_diag_say(out, "face %s shows a narrower view than the reference: the reference's middle %.0f%%, magnified",
+                    face, 100 * tan(glm_rad(22.5f)));
+        sl_diag_cause(out, "a field of view of 45 degrees: each face needs 90 (glm_rad(90.0f)) to meet its neighbours "
+                           "edge to edge (lab7_face_projection, TODO lab7.4)");
+    } else if (_sl_match(s, t, _sl_rotate_180, 0, k->threshold * 5) > 0.95) {
+        sl_diag_say(out, "face %s is the reference turned upside down (rotated 180 degrees)", face);
+        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+    } else if (_sl_match(s, t, _sl_mirror_y, 0, k->threshold * 5) > 0.95) {
+        sl_diag_say(out, "face %s is the reference flipped upside down (mirrored top to bottom)", face);
+        sl_diag_cause(out, "face %s: the up vector should be %s, and the face looks down %s (lab7_face_view, TODO "
+                           "lab7.3)", face, up, face);
+    } else if (_sl_match(s, t, _sl_mirror_x, 0, k->threshold * 5) > 0.95) {
+        sl_diag_say(out, "face %s is the reference mirrored left to right", face);
+        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+    } else if (_sl_match(s, t, _sl_rotate_90, 0, k->threshold * 5) > 0.95 ||
+               _sl_match(s, t, _sl_rotate_270, 0, k->threshold * 5) > 0.95) {
+        sl_diag_say(out, "face %s is the reference turned by 90 degrees", face);
+        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+    } else {
+        long nearer = 0, farther = 0, n = (long)s->width * s->height;
+        for (long i = 0; i < n; i++) {
+            double d = (double)s->data[i] - (double)t->data[i];
+            nearer += d < -k->threshold;
+            farther += d > k->threshold;
+        }
+        sl_diag_say(out, "face %s differs from the reference on %.1f%% of texels (allowed %.1f%%): %.1f%% hold nearer "
+                         "distances than the reference's, %.1f%% farther", face, 100 * st.failing_fraction,
+                    100 * k->fail_fraction, 100.0 * nearer / n, 100.0 * farther / n);
+        sl_diag_cause(out, "does the face look down %s with the up vector %s (lab7_face_view), and does "
+                           "shaders/cube_depth.frag store length(world position - light) / far?", face, up);
+    }
+    if (st.nan_pixels) sl_diag_append(out, "; %ld texels are NaN", st.nan_pixels);
+}
+
+/* ---- the visibility ---- */
+
+bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
+                                 sl_check_result *out) {
+    sl_visibility_stats v = sl_visibility_compare(s, t);
+    const char *fn = c->params.cube.soft ? "point_shadow_soft()" : "point_shadow()";
+    const char *todo = c->params.cube.soft ? "lab7.7" : "lab7.6";
+    (void)mask;
+    if (v.extra_shadow > 0.5 && v.missing_shadow < 0.2) {
+        out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
+        sl_diag_say(out, "almost everything is in shadow (%.0f%% of the reference's lit pixels)", 100 * v.extra_shadow);
+        sl_diag_cause(out, "does %s compare like with like — the fragment's distance divided by far_plane with the "
+                           "stored distance / far (TODO %s)?", fn, todo);
+        return true;
+    }
+    if (v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
+        out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
+        sl_diag_say(out, "shadows fall on the wrong side of the room (%.0f%% of the reference's shadows lit, %.0f%% of "
+                         "its lit pixels shadowed)", 100 * v.missing_shadow, 100 * v.extra_shadow);
+        sl_diag_cause(out, "is the lookup direction fragment - light (%s, TODO %s), and do the faces look the right "
+                           "way (lab7_face_view)?", fn, todo);
+        return true;
+    }
+    return false;
+}
+
+/* ---- the probes ---- */
+
+/* Row `row` of a matrix output (column-major, as stored): m[col * 4 + row]. */
+static void _sl_matrix_row(const double *m, int row, double out[3]) {
+    for (int i = 0; i < 3; i++) out[i] = m[i * 4 + row];
+}
+
+static bool _sl_same3(const double a[3], const double b[3], double eps) {
+    return fabs(a[0] - b[0]) <= eps && fabs(a[1] - b[1]) <= eps && fabs(a[2] - b[2]) <= eps;
+}
+
+static int _sl_face_view_verdict(const sl_check *k, const double *s, const double *e, uint32_t failing, char *text,
+                                 size_t n) {
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        const double *sm = s + row * 16, *em = e + row * 16;
+        int face = (int)k->inputs[row][0];
+        if (face < 0 || face > 5) continue;
+        double s_up[3], e_up[3], s_back[3], e_back[3];
+        _sl_matrix_row(sm, 1, s_up);
+        _sl_matrix_row(em, 1, e_up);
+        _sl_matrix_row(sm, 2, s_back);
+        _sl_matrix_row(em, 2, e_back);
+        char up[40];
+        _sl_vector(_sl_ups[face], up, sizeof up);
+        if (!_sl_same3(s_back, e_back, 1e-3)) {
+            char axis[40];
+            _sl_vector(_sl_axes[face], axis, sizeof axis);
+            snprintf(text, n, "face %s: the camera should look down %s, it looks down (%.3g,%.3g,%.3g)",
+                     _sl_face(face), axis, -s_back[0], -s_back[1], -s_back[2]);
+        } else if (!_sl_same3(s_up, e_up, 1e-3)) {
+            snprintf(text, n, "face %s: the up vector should be %s, not (%.3g,%.3g,%.3g)", _sl_face(face), up,
+                     s_up[0], s_up[1], s_up[2]);
+        } else {
+            snprintf(text, n, "face %s: the axes are right but the eye is not at the light (the translation, "
+                              "column 3, differs)", _sl_face(face));
+        }
+        return row;
+    }
+    return -1;
+}
+
+static int _sl_projection_verdict(const sl_check *k, const double *s, const double *e, uint32_t failing, char *text,
+                                  size_t n) {
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        const double *sm = s + row * 16, *em = e + row * 16;
+        double s_fov = 2 * atan(1.0 / sm[5]) * 180 / GLM_PI, aspect = sm[5] / sm[0];
+        if (fabs(sm[5] - em[5]) > 1e-3 * fabs(em[5]))
+            snprintf(text, n, "the field of view is %.3g degrees: a cube face needs 90 (in radians: glm_rad(90.0f)), "
+                              "so the six frusta meet edge to edge", s_fov);
+        else if (fabs(sm[0] - em[0]) > 1e-3 * fabs(em[0]))
+            snprintf(text, n, "the aspect ratio is %.3g: a cube face is square, aspect 1", aspect);
+        else
+            snprintf(text, n, "the depth range differs: use the light's near and far planes as given");
+        return row;
+    }
+    return -1;
+}
+
+static double _sl_length3(const float *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+static int _sl_lookup_verdict(const sl_check *k, const double *s, const double *e, uint32_t failing, char *text,
+                              size_t n) {
+    /* rows of the lit map inside the far plane: a lookup that forgets to divide the distance by far shadows them */
+    int lit_rows = 0, lit_dark = 0, first_lit = -1;
+    /* rows of the cube_positive map, where light_to_fragment and its opposite give different answers */
+    int pos_rows = 0, pos_flipped = 0, first_pos = -1;
+    int flipped = 0, first_failing = -1, failing_count = 0;
+    for (int row = 0; row < k->rows; row++) {
+        sl_probe_map map = (sl_probe_map)(int)k->inputs[row][0];
+        double sv = s[row], ev = e[row];
+        bool fails = (failing >> row) & 1u;
+        if (fails) {
+            failing_count++;
+            if (first_failing < 0) first_failing = row;
+        }
+        flipped += fabs(sv - (1.0 - ev)) < 0.05;
+        double distance = _sl_length3(&k->inputs[row][1]), far = k->inputs[row][4];
+        if (map == SL_PROBE_MAP_CUBE_LIT && distance < far && distance > 1.0) {
+            lit_rows++;
+            if (sv < 0.5) {
+                lit_dark++;
+                if (first_lit < 0) first_lit = row;
+            }
+        }
+        if (map == SL_PROBE_MAP_CUBE_POSITIVE) {
+            pos_rows++;
+            if (fails && fabs(sv - (1.0 - ev)) < 0.05) {
+                pos_flipped++;
+                if (first_pos < 0) first_pos = row;
+            }
+        }
+    }
+    if (failing_count == 0) return -1;
+    if (flipped == k->rows) {
+        snprintf(text, n, "every answer is the opposite of the reference's: the comparison is inverted (shadowed "
+                          "where the fragment is FARTHER than the stored distance, minus the bias)");
+        return first_failing;
+    }
+    if (lit_rows > 0 && lit_dark == lit_rows) {
+        snprintf(text, n, "an empty map (1.0 everywhere) still shadows: the fragment's distance is compared in world "
+                          "units with the stored distance / far — divide it by far_plane too (the far plane is "
+                          "missing on the lookup's side)");
+        return first_lit;
+    }
+    if (pos_rows > 0 && pos_flipped == pos_rows && pos_flipped == failing_count) {
+        snprintf(text, n, "the lookup reads the opposite side of the cube map: its direction is reversed — sample with "
+                          "light_to_fragment (from the light to the fragment), not fragment-to-light");
+        return first_pos;
+    }
+    return -1;
+}
+
+int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double *expected, uint32_t failing,
+                          char *text, size_t n) {
+    text[0] = '\0';
+    const sl_probe_function *f = sl_probe_at(k->function);
+    if (!f) return -1;
+    if (strcmp(f->name, "lab7_face_view") == 0) return _sl_face_view_verdict(k, student, expected, failing, text, n);
+    if (strcmp(f->name, "lab7_face_projection") == 0)
+        return _sl_projection_verdict(k, student, expected, failing, text, n);
+    if (strcmp(f->name, "point_shadow") == 0 || strcmp(f->name, "point_shadow_soft") == 0)
+        return _sl_lookup_verdict(k, student, expected, failing, text, n);
+    return -1;
+}
