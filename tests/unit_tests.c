@@ -593,7 +593,7 @@ static void test_channel_rejects_lies(void) {
     static stream s;
     /* well-formed */
     s.size = 0;
-    put(&s, SL_MSG_HELLO, NULL, "osmesa\nllvmpipe \033[2Jx", 23, 23);
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nllvmpipe \033[2Jx", 21, 21);
     put_visibility(&s, 16, 16, 1);
     put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
     sl_run_parse_stream(&c, s.data, s.size, &r);
