@@ -266,6 +266,7 @@ void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out) {
     out->build_ms = ps->build_ms;
     out->cached = (ps->depth.program.id != 0) + (ps->debug.program.id != 0);
     for (int i = 0; i < ps->variant_count; i++) out->cached += ps->variants[i].slot.program.id != 0;
+    sl_lab6_program_stats(r, out); /* lab 6's programs, kept in sl_lab6_cascades.c */
 }
 
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
