@@ -1,9 +1,11 @@
+#define _POSIX_C_SOURCE 200809L
 #include "sl_lab6_cascades.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 /* Calls lab N's function through the renderer's table, recorded as the renderer records its own calls. */
 #define _SL_LAB6_CALL(r, N, fn, ...)                                                                              \
@@ -23,6 +25,8 @@ struct _sl_lab6 {
     _sl_lab6_program debug;      /* one layer of the array, in the overlay */
     _sl_lab6_program lines;      /* the frozen frustum's slices and light boxes */
     GLuint line_vao, line_buffer;
+    int builds;      /* programs built (sl_renderer_program_stats) */
+    double build_ms;
 };
 
 static struct _sl_lab6 *_sl_lab6_state(sl_renderer *r) {
@@ -72,6 +76,16 @@ bool sl_lab6_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t er
     return ok;
 }
 
+void sl_lab6_program_stats(const sl_renderer *r, sl_program_stats *out) {
+    const struct _sl_lab6 *s = r->lab6;
+    if (!s) return;
+    out->builds += s->builds;
+    out->build_ms += s->build_ms;
+    const _sl_lab6_program *all[] = {&s->depth, &s->scene[0], &s->scene[1], &s->scene[2], &s->plain[0],
+                                     &s->plain[1], &s->plain[2], &s->debug, &s->lines};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) out->cached += all[i]->program.id != 0;
+}
+
 const sl_camera *sl_lab6_fit_camera(const sl_scene *scene, const sl_render_params *params) {
     return params->cascades.use_camera ? &params->cascades.camera : &scene->camera;
 }
@@ -91,7 +105,12 @@ static sl_program *_sl_lab6_build(sl_renderer *r, _sl_lab6_program *p, const cha
             .defines = defines,
         };
         p->attempted = true;
+        struct timespec t0, t1;
+        clock_gettime(CLOCK_MONOTONIC, &t0);
         sl_program_build(&p->program, &desc, r->shader_errors[lab], sizeof r->shader_errors[lab]);
+        clock_gettime(CLOCK_MONOTONIC, &t1);
+        r->lab6->builds++;
+        r->lab6->build_ms += (double)(t1.tv_sec - t0.tv_sec) * 1e3 + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-6;
     }
     return p->program.id ? &p->program : NULL;
 }

@@ -22,6 +22,8 @@ void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params 
 /* The cascades' layers side by side along the bottom of the picture (viewer overlay). */
 void sl_lab6_debug_view(sl_renderer *r, int width, int height);
 void sl_lab6_release(sl_renderer *r);
+/* Adds lab 6's program builds (and their time) and the programs it holds to out. */
+void sl_lab6_program_stats(const sl_renderer *r, sl_program_stats *out);
 /* Rebuilds lab 6's programs whose files changed (the viewer's hot reload); false with err set if one failed. */
 bool sl_lab6_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size);
 

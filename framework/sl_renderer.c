@@ -277,6 +277,7 @@ void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out) {
     sl_lab7_cube_program_counts(r, &built, &held);
     out->builds += built;
     out->cached += held;
+    sl_lab6_program_stats(r, out); /* lab 6's programs, kept in sl_lab6_cascades.c */
 }
 
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {

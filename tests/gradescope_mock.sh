@@ -30,7 +30,8 @@ for f in setup.sh run_autograder run_prairielearn grader/references/MANIFEST.jso
   [ -e "$work/bundle/$f" ] || problem "the bundle has no $f"
 done
 if command -v unzip >/dev/null && [ -f "$work/bundle.zip" ]; then
-  unzip -l "$work/bundle.zip" | grep -Eq ' setup\.sh$' || problem "setup.sh is not at the zip's root"
+  # grep reads the whole listing (no -q): under pipefail, unzip killed by SIGPIPE would fail the pipe
+  unzip -l "$work/bundle.zip" | grep -E ' setup\.sh$' >/dev/null || problem "setup.sh is not at the zip's root"
 fi
 
 # ---- the image: /autograder/source, and setup.sh ----
