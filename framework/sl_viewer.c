@@ -438,7 +438,7 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
     sl_overlay_panel(ov, SL_OVERLAY_TOP_LEFT, title);
     sl_overlay_line(ov, NULL, "scene: %s  %dx%d", v->scene.name, width, height);
     if (_sl_second_functions)
-        sl_overlay_line(ov, v->show_second ? _sl_green : _sl_blue, "code: %s (A: %s)",
+        sl_overlay_line(ov, v->show_second ? _sl_green : _sl_blue, "code: %s (U: %s)",
                         v->show_second ? _sl_second_kind : sl_build_labs_kind,
                         v->show_second ? sl_build_labs_kind : _sl_second_kind);
     else

@@ -353,10 +353,18 @@ static int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report 
     return count;
 }
 
-/* The same renderer family: the first word ("llvmpipe", "softpipe", a GPU's maker). */
+/* Whether frame times of two renderers compare: the same family (the first
+ * word: "llvmpipe", "softpipe", a GPU's maker) and, for llvmpipe, the same
+ * vector width ("256 bits"): without AVX, or with SSE switched off, the same
+ * shaders run several tens of times slower, as slow as a loop that does not end. */
 static bool _sl_same_renderer(const char *a, const char *b) {
     size_t n = strcspn(a, " ");
-    return n > 0 && n == strcspn(b, " ") && strncmp(a, b, n) == 0;
+    if (n == 0 || n != strcspn(b, " ") || strncmp(a, b, n) != 0) return false;
+    const char *wa = strstr(a, " bits"), *wb = strstr(b, " bits");
+    if (!wa || !wb) return !wa && !wb;
+    while (wa > a && wa[-1] >= '0' && wa[-1] <= '9') wa--;
+    while (wb > b && wb[-1] >= '0' && wb[-1] <= '9') wb--;
+    return atoi(wa) == atoi(wb);
 }
 
 static void _sl_list(const sl_case *cases, int count, const sl_grade_report *rep, const char (*hidden_notes)[400]) {

@@ -21,6 +21,7 @@ bool sl_lab_builds_on(int lab, int earlier) {
     if (earlier >= lab) return false;
     if (lab == 7) return false;        /* its own cube map, matrices and lookup: no earlier lab's code draws its cases */
     if (lab == 6) return earlier <= 2; /* lab 1's depth pass and lab 2's shadow matrix, per cascade */
+    if (lab == 5) return earlier == 2; /* lab 2's light matrices; its own moments instead of lab 1's map and lab 3's bias */
     return true;
 }
 
