@@ -78,7 +78,8 @@ static bool _sl_image_io_try(const char *path) {
     sl_image_io_entry_fn entry = NULL;
     if (symbol) memcpy(&entry, &symbol, sizeof entry);
     const sl_image_io_api *api = entry ? entry() : NULL;
-    if (!api || api->version != SL_IMAGE_IO_VERSION || api->struct_size != sizeof *api || !api->read || !api->write) {
+    if (!api || api->version != SL_IMAGE_IO_VERSION || api->struct_size != sizeof *api || !api->read || !api->write ||
+        !api->animation_open || !api->animation_add || !api->animation_close) {
         snprintf(_sl_image_io_error, sizeof _sl_image_io_error,
                  "the image module %s is from another build of shadowlab (rebuild it: cmake --build build)", path);
         return true;
@@ -131,4 +132,23 @@ bool sl_image_read(const char *path, sl_image *out, char *err, size_t err_size) 
     if (out) *out = (sl_image){0, 0, 0, NULL};
     const sl_image_io_api *io = _sl_image_io_get(path, err, err_size);
     return io && io->read(path, out, err, err_size);
+}
+
+sl_animation *sl_animation_open(const char *path, int fps, char *err, size_t err_size) {
+    const sl_image_io_api *io = _sl_image_io_get(path, err, err_size);
+    return io ? io->animation_open(path, fps, err, err_size) : NULL;
+}
+
+/* Only reached with an animation the module made, so the module is loaded. */
+bool sl_animation_add(sl_animation *animation, const sl_image *frame, char *err, size_t err_size) {
+    if (!animation || !_sl_image_io) {
+        if (err && err_size) snprintf(err, err_size, "no animation to add a frame to");
+        return false;
+    }
+    return _sl_image_io->animation_add(animation, frame, err, err_size);
+}
+
+bool sl_animation_close(sl_animation *animation, char *err, size_t err_size) {
+    if (!animation || !_sl_image_io) return animation == NULL;
+    return _sl_image_io->animation_close(animation, err, err_size);
 }

@@ -35,6 +35,16 @@ bool sl_image_write(const char *path, const sl_image *image, char *err, size_t e
  * file returns false with a message naming the file and the reason. */
 bool sl_image_read(const char *path, sl_image *out, char *err, size_t err_size);
 
+/* An animated GIF written one frame at a time (slide figures: frames of the
+ * viewer), so a long animation never holds more than one frame in memory.
+ * Every frame must have the first one's size and 1 or 3 channels (0..1,
+ * clamped). On failure each returns false / NULL with a message naming the
+ * file; close frees the animation whatever it returns. */
+typedef struct sl_animation sl_animation;
+sl_animation *sl_animation_open(const char *path, int fps, char *err, size_t err_size);
+bool sl_animation_add(sl_animation *animation, const sl_image *frame, char *err, size_t err_size);
+bool sl_animation_close(sl_animation *animation, char *err, size_t err_size);
+
 /* Reverses the row order in place (GL's bottom-up <-> files' top-down). */
 void sl_image_flip_rows(sl_image *image);
 

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -210,11 +211,137 @@ static bool _sl_image_io_read(const char *path, sl_image *out, char *err, size_t
     return false;
 }
 
+// ---- animated GIF, one frame at a time ------------------------------------
+
+struct sl_animation {
+    std::string path;
+    int fps = 10;
+    int frames = 0;
+    std::unique_ptr<OIIO::ImageOutput> out;
+    OIIO::ImageSpec spec;
+    bool failed = false;
+};
+
+static bool _sl_gif_path(const char *path) {
+    const char *slash = std::strrchr(path, '/');
+    const char *dot = std::strrchr(slash ? slash + 1 : path, '.');
+    if (!dot)
+        return false;
+    std::string ext(dot + 1);
+    for (char &c : ext)
+        c = (char)std::tolower((unsigned char)c);
+    return ext == "gif";
+}
+
+static sl_animation *_sl_image_io_animation_open(const char *path, int fps, char *err, size_t err_size) {
+    if (!path) {
+        _sl_image_error(err, err_size, "(null): no path");
+        return nullptr;
+    }
+    if (!_sl_gif_path(path)) {
+        _sl_image_error(err, err_size, "%s: an animation is written as GIF (name it .gif)", path);
+        return nullptr;
+    }
+    try {
+        auto out = OIIO::ImageOutput::create(path);
+        if (!out || !out->supports("appendsubimage")) {
+            _sl_image_error(err, err_size, "%s: this OpenImageIO cannot write animated GIFs%s%s", path,
+                            out ? "" : ": ", out ? "" : _sl_image_reason(OIIO::geterror()).c_str());
+            return nullptr;
+        }
+        auto *a = new sl_animation;
+        a->path = path;
+        a->fps = fps < 1 ? 1 : fps > 50 ? 50 : fps; // GIF's delays are in 1/100 s; viewers cap at 50
+        a->out = std::move(out);
+        return a;
+    } catch (const std::exception &e) {
+        _sl_image_error(err, err_size, "%s: %s", path, e.what());
+    } catch (...) {
+        _sl_image_error(err, err_size, "%s: unknown exception", path);
+    }
+    return nullptr;
+}
+
+static bool _sl_animation_add(sl_animation *a, const sl_image *frame, char *err, size_t err_size) {
+    const char *path = a->path.c_str();
+    size_t count = 0;
+    if (!frame || !frame->data || (frame->channels != 1 && frame->channels != 3) ||
+        !_sl_image_size(frame->width, frame->height, frame->channels, &count)) {
+        _sl_image_error(err, err_size, "%s: frame %d is empty or not grey or RGB", path, a->frames + 1);
+        return false;
+    }
+    if (a->frames > 0 && (frame->width != a->spec.width || frame->height != a->spec.height)) {
+        _sl_image_error(err, err_size, "%s: frame %d is %dx%d, the first was %dx%d", path, a->frames + 1,
+                        frame->width, frame->height, a->spec.width, a->spec.height);
+        return false;
+    }
+    // GIF holds 8-bit RGB: grey frames are widened, values clamped and rounded as for PNG.
+    size_t pixels = (size_t)frame->width * (size_t)frame->height;
+    std::vector<unsigned char> bytes(pixels * 3);
+    for (size_t i = 0; i < pixels; i++)
+        for (int c = 0; c < 3; c++) {
+            float v = frame->data[i * (size_t)frame->channels + (frame->channels == 3 ? (size_t)c : 0)];
+            v = std::isnan(v) ? 0.0f : (v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v));
+            bytes[i * 3 + (size_t)c] = (unsigned char)(v * 255.0f + 0.5f);
+        }
+    if (a->frames == 0) {
+        a->spec = OIIO::ImageSpec(frame->width, frame->height, 3, OIIO::TypeDesc::UINT8);
+        int rate[2] = {a->fps, 1};
+        a->spec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
+        a->spec.attribute("gif:LoopCount", 0); // loop for ever, as slides expect
+    }
+    auto mode = a->frames == 0 ? OIIO::ImageOutput::Create : OIIO::ImageOutput::AppendSubimage;
+    if (!a->out->open(path, a->spec, mode) || !a->out->write_image(OIIO::TypeDesc::UINT8, bytes.data())) {
+        a->failed = true;
+        _sl_image_error(err, err_size, "%s: %s", path, _sl_image_reason(a->out->geterror()).c_str());
+        return false;
+    }
+    a->frames++;
+    return true;
+}
+
+static bool _sl_image_io_animation_add(sl_animation *a, const sl_image *frame, char *err, size_t err_size) {
+    if (!a)
+        return false;
+    try {
+        return _sl_animation_add(a, frame, err, err_size);
+    } catch (const std::exception &e) {
+        _sl_image_error(err, err_size, "%s: %s", a->path.c_str(), e.what());
+    } catch (...) {
+        _sl_image_error(err, err_size, "%s: unknown exception", a->path.c_str());
+    }
+    a->failed = true;
+    return false;
+}
+
+static bool _sl_image_io_animation_close(sl_animation *a, char *err, size_t err_size) {
+    if (!a)
+        return true;
+    bool ok = !a->failed;
+    try {
+        if (a->frames == 0) {
+            _sl_image_error(err, err_size, "%s: no frames", a->path.c_str());
+            ok = false;
+        } else if (!a->out->close()) {
+            _sl_image_error(err, err_size, "%s: %s", a->path.c_str(), _sl_image_reason(a->out->geterror()).c_str());
+            ok = false;
+        }
+    } catch (...) {
+        _sl_image_error(err, err_size, "%s: cannot finish the file", a->path.c_str());
+        ok = false;
+    }
+    delete a;
+    return ok;
+}
+
 static const sl_image_io_api _sl_image_io_api = {
     SL_IMAGE_IO_VERSION,
     sizeof(sl_image_io_api),
     _sl_image_io_write,
     _sl_image_io_read,
+    _sl_image_io_animation_open,
+    _sl_image_io_animation_add,
+    _sl_image_io_animation_close,
 };
 
 // The module's only exported symbol (built with hidden visibility).

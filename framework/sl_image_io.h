@@ -21,7 +21,7 @@ extern "C" {
 
 /* Raised whenever the table or the meaning of its functions changes, so a
  * module left over from another build is refused rather than misused. */
-#define SL_IMAGE_IO_VERSION 1
+#define SL_IMAGE_IO_VERSION 2
 #define SL_IMAGE_IO_ENTRY "sl_image_io_module"
 /* The module's file name; sl_image.c looks for it next to the executable. */
 #define SL_IMAGE_IO_MODULE "libshadowlab_image.so"
@@ -32,6 +32,10 @@ typedef struct sl_image_io_api {
     /* Same contracts as sl_image_write and sl_image_read (sl_image.h). */
     bool (*write)(const char *path, const sl_image *image, char *err, size_t err_size);
     bool (*read)(const char *path, sl_image *out, char *err, size_t err_size);
+    /* Same contracts as sl_animation_open, _add and _close (sl_image.h). */
+    sl_animation *(*animation_open)(const char *path, int fps, char *err, size_t err_size);
+    bool (*animation_add)(sl_animation *animation, const sl_image *frame, char *err, size_t err_size);
+    bool (*animation_close)(sl_animation *animation, char *err, size_t err_size);
 } sl_image_io_api;
 
 typedef const sl_image_io_api *(*sl_image_io_entry_fn)(void);
