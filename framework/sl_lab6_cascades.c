@@ -162,6 +162,20 @@ static void _sl_lab6_draw_objects(sl_renderer *r, const sl_scene *scene, GLuint 
     }
 }
 
+/* The shimmer demo: moves the light box so that the sphere's centre lands exactly
+ * on the middle of the map, as it does before snapping. Snapping moved it by a
+ * fraction of a texel, in the projection or in the view; this takes that away in
+ * either case, so the demo works with any correct lab code. */
+static void _sl_lab6_unsnap(const vec4 sphere, mat4 light_view, mat4 light_projection) {
+    mat4 view_projection, shift;
+    vec4 centre = {sphere[0], sphere[1], sphere[2], 1}, ndc;
+    glm_mat4_mul(light_projection, light_view, view_projection);
+    glm_mat4_mulv(view_projection, centre, ndc);
+    if (!(fabsf(ndc[3]) > 1e-12f)) return;
+    glm_translate_make(shift, (vec3){-ndc[0] / ndc[3], -ndc[1] / ndc[3], 0});
+    glm_mat4_mul(shift, light_projection, light_projection);
+}
+
 /* Lab 6's C functions and lab 2's shadow matrix, for every cascade; false if one of them is not done.
  * Every function is asked even after one fails, so the grader can name each stub. */
 static bool _sl_lab6_matrices(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, float aspect) {
@@ -191,7 +205,10 @@ static bool _sl_lab6_matrices(sl_renderer *r, const sl_scene *scene, const sl_re
         glm_mat4_identity(lp);
         glm_mat4_identity(shadow);
         ok &= _SL_LAB6_CALL(r, 6, lab6_slice_sphere, inv, cam->near, cam->far, splits[i], splits[i + 1], sphere);
+        vec4 fitted; /* the sphere as fitted, whatever lab6_cascade_matrices does to its argument */
+        glm_vec4_copy(sphere, fitted);
         ok &= _SL_LAB6_CALL(r, 6, lab6_cascade_matrices, &light, sphere, p->cascades.caster_margin, size, lv, lp);
+        if (ok && p->cascades.unsnapped) _sl_lab6_unsnap(fitted, lv, lp);
         ok &= _SL_LAB6_CALL(r, 2, lab2_shadow_matrix, lp, lv, shadow);
         glm_vec4_copy(sphere, info->cascade_spheres[i]);
         glm_mat4_copy(lv, info->cascade_view[i]);

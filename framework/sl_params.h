@@ -35,6 +35,9 @@ typedef struct sl_cascade_params {
     float blend_band;    /* bonus: the last fraction of each cascade's range blended with the next (0: off) */
     bool show_cascades;  /* shaded output tinted by cascade (viewer) */
     bool show_frustum;   /* with use_camera: the slices of `camera`'s frustum and their light boxes, as lines */
+    /* viewer (the shimmer demo): each light box recentred on its sphere after lab6_cascade_matrices,
+     * which undoes texel snapping however the lab code did it */
+    bool unsnapped;
     bool use_camera;
     sl_camera camera;
 } sl_cascade_params;

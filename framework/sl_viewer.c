@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "sl_bench.h"
 #include "sl_case_view.h"
@@ -32,6 +33,17 @@ typedef struct _sl_viewer {
     bool show_overlay, show_frustum, animate_light, screenshot_requested;
     const char *caption; /* --caption: a line at the bottom, overlay or not (figures) */
     const char *frame_dir; /* --frame-dir: every frame saved there (animations for slides) */
+    sl_animation *animation; /* --screenshot FILE.gif: every frame into one animated GIF */
+    /* --camera-path: the camera moves back and forth by itself (lab 6's shimmer demo). What
+     * it added last frame is taken away first, so flying and orbiting still work. */
+    int camera_path;       /* _SL_PATH_NONE, _SL_PATH_SLIDE, _SL_PATH_TURN */
+    vec3 path_shift;       /* slide: added to the camera's position and target */
+    float path_yaw;        /* turn: radians the target is turned about the camera's position */
+    bool path_fit_only;    /* --path-fits-cascades: the path moves only the camera lab 6 fits to */
+    /* --mark-changes: the first frame, and where a later one differed from it */
+    bool mark_changes;
+    sl_image first_frame;
+    unsigned char *changed;
     const char *keys;      /* --keys: keys pressed before the first frame */
     int text_scale;        /* --text-scale: the overlay's font size; 0: from the frame's size */
     int screenshot_count;
@@ -42,6 +54,14 @@ typedef struct _sl_viewer {
     sl_renderer second;
     bool second_ready, show_second;
 } _sl_viewer;
+
+enum { _SL_PATH_NONE = 0, _SL_PATH_SLIDE, _SL_PATH_TURN };
+static const char *const _sl_path_names[] = {"none", "slide", "turn"};
+/* One period of the path: a GIF of --frames K frames loops without a jump. */
+#define _SL_PATH_SECONDS 6.0
+#define _SL_PATH_SLIDE_METRES 0.25f /* half the sideways travel */
+#define _SL_PATH_TURN_DEGREES 3.0f  /* half the turn */
+
 
 /* The second lab code (sl_viewer_set_second_labs), NULL in builds without one. */
 static const sl_lab_functions *_sl_second_functions;
@@ -89,6 +109,14 @@ static void _sl_usage(FILE *f) {
             "  --blend-band X      lab 6 (bonus): blend the last fraction X of each cascade with the next\n"
             "  --freeze            lab 6: freeze the camera's frustum and look at it, its slices and\n"
             "                      their light boxes from above\n"
+            "  --no-snap           lab 6: undo texel snapping (each light box recentred on its sphere): the\n"
+            "                      shimmer that snapping removes (key T)\n"
+            "  --camera-path PATH  the camera moves back and forth by itself: slide (%.2f m each way) or\n"
+            "                      turn (%.0f degrees each way); one period is %.0f s, or --frames K frames\n"
+            "  --path-fits-cascades lab 6: the path moves only the camera the cascades are fitted to; the\n"
+            "                      picture stays, so what changes is what the shadows do\n"
+            "  --mark-changes      with --frames K and --screenshot FILE.png: the first frame, with every\n"
+            "                      pixel a later frame changed painted red (shimmer, on paper)\n"
             "  --visibility        show the visibility term alone (what the grader compares)\n"
             "  --show-map          show the shadow map in a corner (lab 7: the six cube faces as a cross)\n"
             "  --soft              lab 7: the soft lookup (20 directions)\n"
@@ -96,7 +124,8 @@ static void _sl_usage(FILE *f) {
             "  --cube-bias B       lab 7: the lookup's bias, in distance / far; default 0.004 (0.01 soft)\n"
             "  --cube-pass MODE    lab 7: auto, six or layered (auto: layered where the lab does it)\n"
             "  --frames K          render K frames, then exit (for scripts)\n"
-            "  --screenshot FILE   save the last frame as PNG (with --frames)\n"
+            "  --screenshot FILE   save the last frame as PNG (with --frames); FILE.gif: every frame, as\n"
+            "                      an animated GIF (10 frames a second, looping)\n"
             "  --headless          render without a window or display, with the default headless\n"
             "                      backend (%s in this build)\n"
             "  --backend NAME      headless backend: %s (implies --headless)\n"
@@ -124,11 +153,12 @@ static void _sl_usage(FILE *f) {
             "      lab 5: R T blur radius, K L bleeding reduction, N J min variance, P VSM / lab 4 filter,\n"
             "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
             "      lab 6: 6 lab 6, K cascade colours, N cascade count, , . lambda, J blend band, Z freeze the\n"
-            "      frustum (view from above), W A S D Q E fly (Shift: faster), M the cascades' layers;\n"
+            "      frustum (view from above), T texel snapping, P camera path (slide, turn, off),\n"
+            "      W A S D Q E fly (Shift: faster), M the cascades' layers;\n"
             "      O overlay on/off, G light frustum, H light animation, X screenshot (shadowlab-NNN.png),\n"
             "      U student / solutions code (where the build has both);\n"
             "      shaders reload when their files change\n",
-            sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
+            (double)_SL_PATH_SLIDE_METRES, (double)_SL_PATH_TURN_DEGREES, _SL_PATH_SECONDS, sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
     sl_bench_usage(f);
 }
 
@@ -256,7 +286,8 @@ static bool _sl_lab_key(_sl_viewer *v, int key) {
         default: return false;
         }
     }
-    if (v->params.lab == 6) { /* K colours, N count, , . lambda, Z freeze, J blend band; W A S D Q E fly */
+    if (v->params.lab == 6) { /* K colours, N count, , . lambda, Z freeze, J blend band, T snapping, P camera path;
+                                 W A S D Q E fly */
         switch (key) {
         case GLFW_KEY_K: v->params.cascades.show_cascades = !v->params.cascades.show_cascades; return true;
         case GLFW_KEY_N: v->params.cascades.count = v->params.cascades.count % SL_MAX_CASCADES + 1; return true;
@@ -264,6 +295,8 @@ static bool _sl_lab_key(_sl_viewer *v, int key) {
         case GLFW_KEY_PERIOD: v->params.cascades.lambda = glm_clamp(v->params.cascades.lambda + 0.1f, 0, 1); return true;
         case GLFW_KEY_Z: _sl_freeze(v, !v->frozen); return true;
         case GLFW_KEY_J: v->params.cascades.blend_band = v->params.cascades.blend_band > 0 ? 0 : 0.2f; return true;
+        case GLFW_KEY_T: v->params.cascades.unsnapped = !v->params.cascades.unsnapped; return true;
+        case GLFW_KEY_P: v->camera_path = (v->camera_path + 1) % 3; return true;
         case GLFW_KEY_W: case GLFW_KEY_A: case GLFW_KEY_S: case GLFW_KEY_D: case GLFW_KEY_Q: case GLFW_KEY_E:
             return true; /* flying: polled every frame (_sl_fly) */
         default: return false;
@@ -446,7 +479,13 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
     static const char *const light_types[] = {"directional", "spot", "point"};
     sl_overlay_line(ov, NULL, "light: %s, size %.2f%s", light_types[l->type % 3], l->size,
                     v->animate_light ? ", turning" : "");
-    sl_overlay_line(ov, NULL, "shadow map: %dx%d", p->shadow_map_size, p->shadow_map_size);
+    if (info->cube_frame)
+        sl_overlay_line(ov, NULL, "cube map: 6 faces of %dx%d", p->cube.map_size, p->cube.map_size);
+    else if (p->lab == 6)
+        sl_overlay_line(ov, NULL, "shadow maps: %d layers of %dx%d", p->cascades.count, p->shadow_map_size,
+                        p->shadow_map_size);
+    else
+        sl_overlay_line(ov, NULL, "shadow map: %dx%d", p->shadow_map_size, p->shadow_map_size);
     if (p->lab >= 2 && p->lab <= 4) {
         if (p->lab == 2 || p->bias.mode == SL_BIAS_CONSTANT)
             sl_overlay_line(ov, NULL, "bias: constant %.5f", p->bias.constant);
@@ -462,7 +501,7 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
             sl_overlay_line(ov, NULL, "bias: %s", sl_bias_mode_name(p->bias.mode));
         if (p->lab <= 3) sl_overlay_line(ov, NULL, "compare: %s", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual");
     }
-    if (p->lab == 4) {
+    if (p->lab == 4 || (p->lab == 5 && p->vsm_off)) {
         const sl_filter_settings *f = &p->filter;
         if (f->mode == SL_FILTER_GRID)
             sl_overlay_line(ov, NULL, "filter: PCF grid %dx%d (kernel radius %d)", 2 * f->grid_radius + 1,
@@ -474,9 +513,34 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
         else
             sl_overlay_line(ov, NULL, "filter: %s", sl_filter_mode_name(f->mode));
     }
-    /* lab 5 (VSM): moments, blur radius, lambda */
-    /* lab 6 (cascades): cascade count, split lambda, one line per layer */
-    /* lab 7 (cube maps): the faces */
+    if (p->lab == 5 && p->vsm_off) {
+        sl_overlay_line(ov, _sl_blue, "VSM off: lab 4's filter (P: VSM)");
+    } else if (p->lab == 5) {
+        int moments = p->vsm.map_size > 0 ? p->vsm.map_size : p->shadow_map_size;
+        sl_overlay_line(ov, NULL, "VSM: moments %dx%d, blur radius %d", moments, moments, p->vsm.blur_radius);
+        sl_overlay_line(ov, NULL, "bleeding reduction %.2f, min variance %.1e", p->vsm.bleeding, p->vsm.min_variance);
+    }
+    if (p->lab == 6) {
+        const sl_cascade_params *c = &p->cascades;
+        sl_overlay_line(ov, NULL, "cascades: %d, lambda %.2f%s", c->count, c->lambda,
+                        c->blend_band > 0 ? ", blend band" : "");
+        if (info->cascades_ready) {
+            char splits[160] = "";
+            for (int i = 0; i <= info->cascade_count && i <= SL_MAX_CASCADES; i++)
+                snprintf(splits + strlen(splits), sizeof splits - strlen(splits), "%s%.1f", i ? " " : "",
+                         info->cascade_splits[i]);
+            sl_overlay_line(ov, NULL, "splits (view depth): %s", splits);
+        }
+        sl_overlay_line(ov, c->unsnapped ? _sl_red : NULL, "texel snapping: %s (T)%s%s", c->unsnapped ? "off" : "on",
+                        v->camera_path ? ", camera path: " : "", v->camera_path ? _sl_path_names[v->camera_path] : "");
+        if (v->frozen) sl_overlay_line(ov, _sl_blue, "frustum frozen, seen from above (Z)");
+    }
+    if (info->cube_frame) {
+        const sl_cube_settings *c = &p->cube;
+        sl_overlay_line(ov, NULL, "lookup: %s, bias %.4f (distance / far)",
+                        c->soft ? "soft, 20 directions" : "hard", c->bias);
+        sl_overlay_line(ov, NULL, "faces: %s", info->cube_layered ? "one layered pass" : "six passes");
+    }
     if (p->output == SL_OUTPUT_VISIBILITY) sl_overlay_line(ov, NULL, "view: visibility term");
     for (int i = 0; i < info->not_implemented_count; i++)
         sl_overlay_line(ov, _sl_red, "not implemented: %s()", info->not_implemented[i]);
@@ -504,11 +568,117 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
     if (v->show_frustum) _sl_add_frustum(ov, info);
 }
 
+static void _sl_camera_turn(sl_camera *cam, float yaw) {
+    vec3 look;
+    glm_vec3_sub(cam->target, cam->position, look);
+    glm_vec3_rotate(look, yaw, (vec3){0, 1, 0});
+    glm_vec3_add(cam->position, look, cam->target);
+}
+
+/* Moves `cam` to where the path is at `phase` (0..1, one period); what it added goes to shift and yaw. */
+static void _sl_path_step(int path, double phase, sl_camera *cam, vec3 shift, float *yaw) {
+    glm_vec3_zero(shift);
+    *yaw = 0;
+    float s = (float)sin(2 * GLM_PI * phase);
+    if (path == _SL_PATH_SLIDE) {
+        vec3 forward, right;
+        glm_vec3_sub(cam->target, cam->position, forward);
+        glm_vec3_cross(forward, (vec3){0, 1, 0}, right);
+        if (glm_vec3_norm(right) < 1e-6f) glm_vec3_copy((vec3){1, 0, 0}, right);
+        glm_vec3_normalize(right);
+        glm_vec3_scale(right, s * _SL_PATH_SLIDE_METRES, shift);
+        glm_vec3_add(cam->position, shift, cam->position);
+        glm_vec3_add(cam->target, shift, cam->target);
+    } else if (path == _SL_PATH_TURN) {
+        *yaw = glm_rad(_SL_PATH_TURN_DEGREES) * s;
+        _sl_camera_turn(cam, *yaw);
+    }
+}
+
+/* The camera path of this frame. With path_fit_only (lab 6) the picture's
+ * camera stays and only the camera the cascades are fitted to moves, so what
+ * changes in the picture is what the shadows do (as the grader's flicker check
+ * sees it); otherwise the camera itself moves: last frame's step is taken back
+ * first, so flying and orbiting still work. */
+static void _sl_camera_path(_sl_viewer *v, double phase) {
+    sl_cascade_params *c = &v->params.cascades;
+    if (v->path_fit_only && !v->frozen) {
+        vec3 shift;
+        float yaw;
+        c->camera = v->scene.camera;
+        c->use_camera = true;
+        _sl_path_step(v->camera_path, phase, &c->camera, shift, &yaw);
+        return;
+    }
+    sl_camera *cam = &v->scene.camera;
+    glm_vec3_sub(cam->position, v->path_shift, cam->position);
+    glm_vec3_sub(cam->target, v->path_shift, cam->target);
+    _sl_camera_turn(cam, -v->path_yaw);
+    _sl_path_step(v->camera_path, phase, cam, v->path_shift, &v->path_yaw);
+}
+
 static void _sl_camera_view_projection(const sl_scene *scene, int width, int height, mat4 out) {
     mat4 view, proj;
     sl_camera_view(&scene->camera, view);
     sl_camera_projection(&scene->camera, height > 0 ? (float)width / (float)height : 1, proj);
     glm_mat4_mul(proj, view, out);
+}
+
+/* --screenshot FILE.gif: every frame goes into the animation. */
+static bool _sl_is_gif(const char *path) {
+    size_t n = path ? strlen(path) : 0;
+    return n > 4 && strcasecmp(path + n - 4, ".gif") == 0;
+}
+
+static bool _sl_add_frame(_sl_viewer *v, GLuint target, int width, int height, const char *path) {
+    char err[1024] = "";
+    sl_image shot = {0};
+    glFinish();
+    if (!v->animation) v->animation = sl_animation_open(path, 10, err, sizeof err);
+    bool ok = v->animation && sl_capture_framebuffer(target, width, height, 3, &shot) &&
+              sl_animation_add(v->animation, &shot, err, sizeof err);
+    if (!ok) fprintf(stderr, "shadowlab: cannot save the animation: %s\n", err[0] ? err : "cannot read the frame");
+    sl_image_free(&shot);
+    return ok;
+}
+
+/* --mark-changes: remembers the first frame, then marks every pixel a later frame
+ * differs on (more than 0.1 summed over R, G, B: a shadow edge that moved, not
+ * noise). False if a frame cannot be read or has another size. */
+static bool _sl_mark_changes(_sl_viewer *v, GLuint target, int width, int height) {
+    sl_image frame;
+    glFinish();
+    if (!sl_capture_framebuffer(target, width, height, 3, &frame)) return false;
+    if (!v->first_frame.data) {
+        v->first_frame = frame;
+        v->changed = calloc((size_t)width * (size_t)height, 1);
+        return v->changed != NULL;
+    }
+    bool same_size = frame.width == v->first_frame.width && frame.height == v->first_frame.height;
+    for (size_t i = 0; same_size && i < (size_t)width * (size_t)height; i++) {
+        float d = 0;
+        for (int c = 0; c < 3; c++) d += fabsf(frame.data[i * 3 + c] - v->first_frame.data[i * 3 + c]);
+        if (d > 0.1f) v->changed[i] = 1;
+    }
+    sl_image_free(&frame);
+    return same_size;
+}
+
+/* The first frame with the pixels that changed painted red, into `path`. */
+static bool _sl_save_changes(_sl_viewer *v, const char *path, int frames) {
+    char err[1024] = "";
+    sl_image *img = &v->first_frame;
+    size_t count = 0, n = (size_t)img->width * (size_t)img->height;
+    for (size_t i = 0; i < n; i++)
+        if (v->changed[i]) {
+            img->data[i * 3] = 1, img->data[i * 3 + 1] = 0.05f, img->data[i * 3 + 2] = 0.05f;
+            count++;
+        }
+    bool ok = sl_image_write(path, img, err, sizeof err);
+    if (ok) printf("shadowlab: saved %s: %zu pixels (%.3f%%) changed over %d frames, in red\n", path, count,
+                   n ? 100.0 * (double)count / (double)n : 0.0, frames);
+    else fprintf(stderr, "shadowlab: cannot save the screenshot: %s\n", err);
+    return ok;
 }
 
 static bool _sl_save(GLuint target, int width, int height, const char *path) {
@@ -557,6 +727,7 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
+                           strcmp(a, "--camera-path") == 0 ||
                            strcmp(a, "--backend") == 0 || strcmp(a, "--blur") == 0 ||
                            strcmp(a, "--bleeding") == 0 || strcmp(a, "--min-variance") == 0 ||
                            strcmp(a, "--moments-size") == 0 ||
@@ -679,6 +850,20 @@ int sl_viewer_main(int argc, char **argv) {
             v.params.cascades.show_cascades = true;
         } else if (strcmp(a, "--freeze") == 0) {
             freeze = true;
+        } else if (strcmp(a, "--mark-changes") == 0) {
+            v.mark_changes = true;
+        } else if (strcmp(a, "--path-fits-cascades") == 0) {
+            v.path_fit_only = true;
+        } else if (strcmp(a, "--no-snap") == 0) {
+            v.params.cascades.unsnapped = true;
+        } else if (strcmp(a, "--camera-path") == 0) {
+            v.camera_path = _SL_PATH_NONE;
+            for (int k = 1; k < 3; k++)
+                if (strcmp(next, _sl_path_names[k]) == 0) v.camera_path = k;
+            if (v.camera_path == _SL_PATH_NONE) {
+                fprintf(stderr, "shadowlab: --camera-path is slide or turn\n");
+                return 2;
+            }
         } else if (strcmp(a, "--visibility") == 0) {
             v.params.output = SL_OUTPUT_VISIBILITY;
         } else if (strcmp(a, "--overlay") == 0 || strcmp(a, "--no-overlay") == 0) {
@@ -752,6 +937,15 @@ int sl_viewer_main(int argc, char **argv) {
     if (screenshot && frames <= 0) frames = 3;
     if (headless && frames <= 0) {
         fprintf(stderr, "shadowlab: --headless needs --frames K (and usually --screenshot FILE)\n");
+        return 2;
+    }
+    bool gif = _sl_is_gif(screenshot);
+    if (v.mark_changes && (gif || !screenshot || frames < 2)) {
+        fprintf(stderr, "shadowlab: --mark-changes needs --frames K (2 or more) and --screenshot FILE.png\n");
+        return 2;
+    }
+    if (gif && case_name) {
+        fprintf(stderr, "shadowlab: --case saves one picture: --screenshot FILE.png\n");
         return 2;
     }
 
@@ -862,6 +1056,7 @@ int sl_viewer_main(int argc, char **argv) {
         }
         double frame_seconds = window && last_frame_time > 0 ? now - last_frame_time : 0;
         last_frame_time = now;
+        if (v.camera_path) _sl_camera_path(&v, frames > 0 ? (double)rendered / frames : now / _SL_PATH_SECONDS);
         sl_renderer_draw(active, &v.scene, &v.params, target, fw, fh);
         const sl_frame_info *info = sl_renderer_info(active);
         if (v.overlay && (v.show_overlay || v.show_frustum || v.caption)) {
@@ -902,6 +1097,15 @@ int sl_viewer_main(int argc, char **argv) {
             v.dirty_title = false;
         }
         rendered++;
+        if (v.mark_changes && frames > 0 && !_sl_mark_changes(&v, target, fw, fh)) {
+            fprintf(stderr, "shadowlab: --mark-changes: cannot read frame %d (or its size changed)\n", rendered);
+            status = 1;
+            break;
+        }
+        if (gif && frames > 0 && !_sl_add_frame(&v, target, fw, fh, screenshot)) {
+            status = 1;
+            break;
+        }
         if (v.frame_dir) {
             char path[SL_PATH_MAX + 16];
             snprintf(path, sizeof path, "%s/%03d.png", v.frame_dir, rendered);
@@ -911,7 +1115,11 @@ int sl_viewer_main(int argc, char **argv) {
             }
         }
         if (frames > 0 && rendered >= frames) {
-            if (screenshot && !_sl_save(target, fw, fh, screenshot)) status = 1;
+            if (screenshot && !gif && v.mark_changes) {
+                if (!_sl_save_changes(&v, screenshot, rendered)) status = 1;
+            } else if (screenshot && !gif && !_sl_save(target, fw, fh, screenshot)) {
+                status = 1;
+            }
             /* The last frame's overlay in words, for logs and tests. */
             if (v.overlay && v.show_overlay) {
                 char text[8192];
@@ -922,6 +1130,17 @@ int sl_viewer_main(int argc, char **argv) {
         }
         sl_context_end_frame(v.ctx);
     }
+    if (v.animation) {
+        char aerr[1024] = "";
+        if (sl_animation_close(v.animation, aerr, sizeof aerr))
+            printf("shadowlab: saved %s (%d frames)\n", screenshot, rendered);
+        else {
+            fprintf(stderr, "shadowlab: cannot save the animation: %s\n", aerr);
+            status = 1;
+        }
+    }
+    sl_image_free(&v.first_frame);
+    free(v.changed);
     sl_overlay_destroy(v.overlay);
     if (v.second_ready) sl_renderer_destroy(&v.second);
     sl_renderer_destroy(&v.renderer);

@@ -24,6 +24,22 @@ done
 if grep -q llvmpipe "$work/log"; then
   grep -q "\[top right\] llvmpipe: rasteriser CPU time" "$work/log" || problem "the overlay does not say what llvmpipe's times are"
 fi
+# Labs 5-7 say their own settings: the moments, the cascades and their splits, the cube map.
+run "$solutions" --headless --lab 5 --scene stacked_occluders --size 640x400 --frames 1 --overlay --blur 3
+for line in "\[top left\] VSM: moments 512x512, blur radius 3" "\[top left\] bleeding reduction 0\.30"; do
+  grep -qE "$line" "$work/log" || problem "the lab 5 overlay does not say: $line"
+done
+run "$solutions" --headless --lab 6 --scene cascade_field --size 640x400 --frames 1 --overlay --cascades 3 --no-snap
+for line in "\[top left\] shadow maps: 3 layers of 1024x1024" "\[top left\] cascades: 3, lambda 0\.80" \
+            "\[top left\] splits \(view depth\): [0-9.]+ [0-9.]+ [0-9.]+ [0-9.]+$" "\[top left\] texel snapping: off"; do
+  grep -qE "$line" "$work/log" || problem "the lab 6 overlay does not say: $line"
+done
+run "$solutions" --headless --lab 7 --scene closed_room --size 640x400 --frames 1 --overlay --soft
+for line in "\[top left\] cube map: 6 faces of 512x512" "\[top left\] lookup: soft, 20 directions" \
+            "\[top left\] faces: (one layered pass|six passes)"; do
+  grep -qE "$line" "$work/log" || problem "the lab 7 overlay does not say: $line"
+done
+grep -q "shadow map: 1024x1024" "$work/log" && problem "the lab 7 overlay names the 2D map's size"
 run "$solutions" "${common[@]}" --frustum --screenshot "$work/frustum.png"
 cmp -s "$work/plain.png" "$work/no-overlay.png" || problem "--frames without --overlay does not give the plain picture"
 # The top-left panel (lab, scene, code, light, map, bias, filter) at scale 1 (400 px high).
