@@ -19,10 +19,10 @@
 # deck still builds; once the lab is in the viewer the real figure is made,
 # with no change to the deck. If its command then fails (options the lab's
 # viewer does not take), the figure stays a placeholder with a warning; once
-# it renders, drop the mark, so that a broken command fails the build. An animation (frames joined into a GIF where
-# ffmpeg is installed; otherwise its last frame) is named the same way with
-# "animation", --frames N and a --screenshot path ending in .gif: the viewer
-# saves each frame (--frame-dir), then the script joins them.
+# it renders, drop the mark, so that a broken command fails the build. An
+# animation is named the same way with "animation", --frames N and a
+# --screenshot path ending in .gif: the viewer writes every frame into one
+# looping GIF (browsers play it; a PDF shows its first frame).
 set -euo pipefail
 [ $# -ge 3 ] || { echo "usage: render-figures.sh VIEWER OUT_DIR DECK.md..." >&2; exit 2; }
 viewer=$(realpath "$1") out=$2
@@ -42,12 +42,8 @@ viewer_has_lab() {
   ! grep -q -- "--lab must be" <<<"$said"
 }
 
-placeholder() { # PATH KIND TEXT
-  local png=$1
-  # The viewer writes PNG only; browsers and WeasyPrint go by the content, not the name.
-  [ "$2" = animation ] && png=${1%.*}.png
-  "$viewer" --headless --frames 1 --lab 1 --size 640x400 --caption "placeholder: $3" --screenshot "$png" >/dev/null &&
-    { [ "$png" = "$1" ] || mv "$png" "$1"; }
+placeholder() { # PATH KIND TEXT (a .gif path gets a one-frame GIF)
+  "$viewer" --headless --frames 1 --lab 1 --size 640x400 --caption "placeholder: $3" --screenshot "$1" >/dev/null
 }
 warned=0
 # A figure marked as needing a lab whose command fails (the lab is in, but the
@@ -79,34 +75,11 @@ for deck in "${decks[@]}"; do
       placeholders=$((placeholders + 1))
       continue
     fi
-    if [ "$kind" = animation ]; then
-      # Every frame of the run, then one animated GIF (ffmpeg) or the last frame alone.
-      frames_dir=${shot%.*}-frames; rm -rf "$frames_dir"; mkdir -p "$frames_dir"
-      n=0
-      for ((i = 0; i < ${#args[@]}; i++)); do [ "${args[$i]}" = "--frames" ] && n=${args[$((i + 1))]}; done
-      # The viewer saves every frame into the folder; the .gif path is not its to write.
-      a=()
-      for ((i = 0; i < ${#args[@]}; i++)); do
-        if [ "${args[$i]}" = "--screenshot" ]; then i=$((i + 1)); else a+=("${args[$i]}"); fi
-      done
-      echo "render-figures: shadowlab $cmd"
-      if ! "$viewer" --headless "${a[@]}" --frame-dir "$frames_dir" >/dev/null 2>"$errors"; then
-        head -n 3 "$errors" >&2
-        if [ -n "$needs" ]; then pending_failed "$shot" "$kind" "$needs"; else failed=$((failed + 1)); fi
-        continue
-      fi
-      if command -v ffmpeg >/dev/null; then
-        ffmpeg -loglevel error -y -framerate 10 -i "$frames_dir/%03d.png" "$shot" || failed=$((failed + 1))
-      else
-        # Without ffmpeg the deck shows the last frame (PNG data under the animation's name).
-        echo "render-figures: no ffmpeg: $shot is its last frame; the frames are in $frames_dir"
-        cp "$(printf '%s/%03d.png' "$frames_dir" "$n")" "$shot" || failed=$((failed + 1))
-      fi
-      made=$((made + 1))
-      continue
-    fi
     echo "render-figures: shadowlab $cmd"
-    if "$viewer" --headless --frames 1 "${args[@]}" >/dev/null 2>"$errors"; then
+    # A figure is one frame unless its command asks for more; an animation names its --frames.
+    first=(--frames 1)
+    [ "$kind" = animation ] && first=()
+    if "$viewer" --headless "${first[@]}" "${args[@]}" >/dev/null 2>"$errors"; then
       made=$((made + 1))
     else
       head -n 3 "$errors" >&2
