@@ -8,6 +8,8 @@
 #include "sl_case.h"
 #include "sl_compare.h"
 #include "sl_context.h"
+#include "sl_lab5_vsm.h"
+#include "sl_lab7_cube.h"
 #include "sl_renderer.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -18,10 +20,16 @@
 
 enum { _SL_STUDENT, _SL_REFERENCE, _SL_DIFF, _SL_PANELS };
 
+#define _SL_MAX_SHOWN 16
+
 typedef struct _sl_case_view {
     sl_case c;
-    const sl_check *check;        /* the image check shown */
+    const sl_check *check;        /* the check shown */
+    const sl_check *shown[_SL_MAX_SHOWN]; /* every check with a picture, in the case's order (C cycles) */
+    int shown_count, shown_index;
+    const char *references_dir;
     sl_image reference;
+    int panel_size[_SL_PANELS][2]; /* each panel's picture size, drawn with its aspect kept */
     sl_context *ctx;
     sl_renderer renderer;
     sl_program panel_program;
@@ -31,27 +39,60 @@ typedef struct _sl_case_view {
     char summary[256];
 } _sl_case_view;
 
-/* The image check to show: the first whose capture is a picture. */
-static const sl_check *_sl_shown_check(const sl_case *c) {
-    for (int pass = 0; pass < 3; pass++)
-        for (int i = 0; i < c->check_count; i++) {
-            sl_check_kind k = c->checks[i].kind;
-            if ((pass == 0 && (k == SL_CHECK_VISIBILITY || k == SL_CHECK_PENUMBRA)) ||
-                (pass == 1 && k == SL_CHECK_DEPTH_MAP) || (pass == 2 && k == SL_CHECK_IMAGE))
-                return &c->checks[i];
-        }
-    return NULL;
+/* Checks whose capture is a picture the reference can be set beside. Probes and
+ * matrices are numbers; flicker's capture is every frame of a path stacked. */
+static bool _sl_has_picture(sl_check_kind k) {
+    switch (k) {
+    case SL_CHECK_VISIBILITY: case SL_CHECK_PENUMBRA: case SL_CHECK_BLEEDING: case SL_CHECK_DEPTH_MAP:
+    case SL_CHECK_IMAGE: case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: case SL_CHECK_CASCADE_INDEX:
+    case SL_CHECK_CUBE_FACE:
+        return true;
+    default:
+        return false;
+    }
 }
 
-/* An image as RGB texels for a panel, bottom row first (GL's order). */
-static void _sl_upload(GLuint texture, const sl_image *img) {
+/* Maps and per-texel buffers are square and shown scaled; pictures at the camera's size. */
+static bool _sl_is_map(sl_check_kind k) {
+    return k == SL_CHECK_DEPTH_MAP || k == SL_CHECK_MOMENTS || k == SL_CHECK_MOMENTS_BLURRED || k == SL_CHECK_CUBE_FACE;
+}
+
+/* What the panels show, for the title and the terminal. */
+static const char *_sl_legend(sl_check_kind k) {
+    switch (k) {
+    case SL_CHECK_DEPTH_MAP: return "depth (black near, white far)";
+    case SL_CHECK_CUBE_FACE: return "distance / far (black near, white far)";
+    case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: return "moments (red: depth, green: depth squared)";
+    case SL_CHECK_CASCADE_INDEX: return "cascade (red 0, green 1, blue 2, yellow 3, grey none)";
+    case SL_CHECK_IMAGE: return "shaded image";
+    default: return "visibility (white lit, black shadow)";
+    }
+}
+
+/* An image as RGB texels for a panel, bottom row first (GL's order), in the
+ * check's colours: cascade numbers as the viewer's K key colours them, the two
+ * moments as red and green; the difference panel (kind < 0) as it is. */
+static void _sl_upload(_sl_case_view *v, int panel, const sl_image *img, int kind) {
+    static const float cascade_rgb[5][3] = {{0.3f, 0.3f, 0.3f}, {1, 0.3f, 0.25f}, {0.2f, 0.9f, 0.3f},
+                                           {0.3f, 0.45f, 1}, {1, 0.85f, 0.2f}};
+    GLuint texture = v->textures[panel];
+    v->panel_size[panel][0] = img->width;
+    v->panel_size[panel][1] = img->height;
     float *rgb = malloc(sizeof(float) * 3 * (size_t)img->width * (size_t)img->height);
     if (!rgb) return;
     for (int y = 0; y < img->height; y++)
         for (int x = 0; x < img->width; x++) {
             const float *p = sl_image_pixel(img, x, img->height - 1 - y);
             float *q = rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
-            for (int c = 0; c < 3; c++) q[c] = p[img->channels >= 3 ? c : 0];
+            if (kind == SL_CHECK_CASCADE_INDEX) {
+                int i = (int)floorf(p[0] + 0.5f) + 1; /* -1: no cascade */
+                if (i < 0 || i > 4) i = 0;
+                for (int c = 0; c < 3; c++) q[c] = cascade_rgb[i][c];
+            } else if (img->channels == 2) {
+                q[0] = p[0], q[1] = p[1], q[2] = 0;
+            } else {
+                for (int c = 0; c < 3; c++) q[c] = p[img->channels >= 3 ? c : 0];
+            }
         }
     glBindTexture(GL_TEXTURE_2D, texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -66,7 +107,10 @@ static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
     const sl_case *c = &v->c;
     sl_scene scene = c->scene;
     sl_render_params p = c->params;
-    p.output = v->check->kind == SL_CHECK_IMAGE ? SL_OUTPUT_SHADED : SL_OUTPUT_VISIBILITY;
+    sl_check_kind kind = v->check->kind;
+    p.output = kind == SL_CHECK_IMAGE ? SL_OUTPUT_SHADED : kind == SL_CHECK_CASCADE_INDEX ? SL_OUTPUT_CASCADE_INDEX
+                                                                                       : SL_OUTPUT_VISIBILITY;
+    if (kind == SL_CHECK_MOMENTS) p.vsm.blur_radius = 0; /* the moments pass alone, as the runner takes it */
     for (int f = 0; f < c->frame_count; f++) {
         scene.light = c->frame_lights[f];
         if (c->camera_path) { /* lab 6: the cascades follow the path, the picture stays */
@@ -76,15 +120,22 @@ static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
         sl_renderer_draw(&v->renderer, &scene, &p, v->target_fbo, c->width, c->height);
     }
     const sl_frame_info *info = sl_renderer_info(&v->renderer);
-    if (v->check->kind == SL_CHECK_DEPTH_MAP) {
+    if (_sl_is_map(kind)) {
         char err[256];
-        if (!info->shadow_map_ready || !sl_capture_depth_texture(info->shadow_map.depth_texture, out, err, sizeof err)) {
-            *out = sl_image_alloc(v->reference.width, v->reference.height, 1); /* nothing drawn yet: black */
+        bool ok = false;
+        if (kind == SL_CHECK_DEPTH_MAP)
+            ok = info->shadow_map_ready && sl_capture_depth_texture(info->shadow_map.depth_texture, out, err, sizeof err);
+        else if (kind == SL_CHECK_CUBE_FACE)
+            ok = info->cube_map_ready && sl_capture_cube_face(info->cube_map.depth_cube, v->check->face, out, err, sizeof err);
+        else
+            ok = info->moments_ready && sl_vsm_capture_moments(info->moments_target.moments[0], out, err, sizeof err);
+        if (!ok) { /* nothing drawn yet: black, the reference's size */
+            *out = sl_image_alloc(v->reference.width, v->reference.height, v->reference.channels);
             return false;
         }
         return true;
     }
-    return sl_capture_framebuffer(v->target_fbo, c->width, c->height, v->check->kind == SL_CHECK_IMAGE ? 3 : 1, out);
+    return sl_capture_framebuffer(v->target_fbo, c->width, c->height, kind == SL_CHECK_IMAGE ? 3 : 1, out);
 }
 
 static void _sl_update(_sl_case_view *v) {
@@ -100,14 +151,20 @@ static void _sl_update(_sl_case_view *v) {
                  v->check->name, 100 * st.failing_fraction, 100 * v->check->fail_fraction,
                  info->not_implemented_count ? "; not implemented: " : "",
                  info->not_implemented_count ? info->not_implemented[0] : "");
-    if (student.data) _sl_upload(v->textures[_SL_STUDENT], &student);
-    if (diff.data) _sl_upload(v->textures[_SL_DIFF], &diff);
+    if (student.data) _sl_upload(v, _SL_STUDENT, &student, v->check->kind);
+    if (diff.data) _sl_upload(v, _SL_DIFF, &diff, -1);
     sl_image_free(&student);
     sl_image_free(&diff);
 }
 
 static void _sl_draw_panel(_sl_case_view *v, int panel, int slot, int width, int height) {
-    glViewport(slot * width, 0, width, height);
+    /* the picture's aspect kept: a square map in a wide panel is centred */
+    int pw = v->panel_size[panel][0], ph = v->panel_size[panel][1], w = width, h = height;
+    if (pw > 0 && ph > 0) {
+        if ((long)width * ph > (long)height * pw) w = (int)((long)height * pw / ph);
+        else h = (int)((long)width * ph / pw);
+    }
+    glViewport(slot * width + (width - w) / 2, (height - h) / 2, w, h);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, v->textures[panel]);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -138,20 +195,45 @@ static void _sl_title(_sl_case_view *v) {
     const char *layout = v->side_by_side ? "yours | reference | difference (red: shadow missing, blue: extra)"
                          : v->show_diff  ? "difference (red: shadow missing, blue: extra)"
                          : v->show_reference ? "reference" : "yours";
-    snprintf(title, sizeof title, "shadowlab — %s — %s", v->summary, layout);
+    snprintf(title, sizeof title, "shadowlab — %s — %s — %s%s", v->summary, layout, _sl_legend(v->check->kind),
+             v->shown_count > 1 ? " — C: next check" : "");
     glfwSetWindowTitle(w, title);
 }
 
-/* Keys, read by polling: Tab layout, Space yours/reference, D difference, Esc quit. */
+/* Shows check `index` of the shown ones: its reference, and a summary for it. */
+static bool _sl_show_check(_sl_case_view *v, int index) {
+    char err[1024], file[200], reference[1400];
+    const sl_check *k = v->shown[index];
+    sl_check_reference_file(k, file, sizeof file);
+    snprintf(reference, sizeof reference, "%s/%s/%s", v->references_dir, v->c.name, file);
+    sl_image img;
+    if (!sl_image_read(reference, &img, err, sizeof err)) {
+        fprintf(stderr, "shadowlab: --case: %s\n", err);
+        return false;
+    }
+    sl_image_free(&v->reference);
+    v->reference = img;
+    v->check = k;
+    v->shown_index = index;
+    if (v->textures[_SL_REFERENCE]) _sl_upload(v, _SL_REFERENCE, &v->reference, k->kind);
+    printf("shadowlab: showing check %s (%d of %d): %s\n", k->name, index + 1, v->shown_count, _sl_legend(k->kind));
+    return true;
+}
+
+/* Keys, read by polling: Tab layout, Space yours/reference, D difference, C next check, Esc quit. */
 static bool _sl_keys(_sl_case_view *v) {
     GLFWwindow *w = sl_context_window(v->ctx);
     static int previous[GLFW_KEY_LAST + 1];
-    static const int keys[] = {GLFW_KEY_TAB, GLFW_KEY_SPACE, GLFW_KEY_D, GLFW_KEY_A};
+    static const int keys[] = {GLFW_KEY_TAB, GLFW_KEY_SPACE, GLFW_KEY_D, GLFW_KEY_A, GLFW_KEY_C};
     bool changed = false;
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
         int now = glfwGetKey(w, keys[i]);
         if (now == GLFW_PRESS && previous[keys[i]] != GLFW_PRESS) {
             changed = true;
+            if (keys[i] == GLFW_KEY_C) {
+                _sl_show_check(v, (v->shown_index + 1) % v->shown_count);
+                continue;
+            }
             if (keys[i] == GLFW_KEY_TAB) v->side_by_side = !v->side_by_side;
             else if (keys[i] == GLFW_KEY_SPACE || keys[i] == GLFW_KEY_A) {
                 v->show_reference = !v->show_reference;
@@ -166,25 +248,44 @@ static bool _sl_keys(_sl_case_view *v) {
 }
 
 static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, size_t n) {
-    static char path[1200], reference[1400];
+    static char path[1200];
     const char *cases = d->cases_dir ? d->cases_dir : SL_GRADER_DIR "/cases";
     const char *refs = d->references_dir ? d->references_dir : SL_GRADER_DIR "/references";
     bool is_path = strchr(d->case_name, '/') || strstr(d->case_name, ".json");
     if (is_path) snprintf(path, sizeof path, "%s", d->case_name);
     else snprintf(path, sizeof path, "%s/%s.json", cases, d->case_name);
     if (!sl_case_load(&v->c, path, err, n)) return false;
-    v->check = _sl_shown_check(&v->c);
-    if (!v->check) {
-        snprintf(err, n, "%s has no picture to show (its checks are probes or numbers): run shadowlab-grade --case %s",
-                 v->c.name, v->c.name);
+    v->references_dir = refs;
+    int first = -1;
+    bool maps_only = true;
+    for (int i = 0; i < v->c.check_count && v->shown_count < _SL_MAX_SHOWN; i++) {
+        const sl_check *k = &v->c.checks[i];
+        if (!_sl_has_picture(k->kind)) continue;
+        if (d->check_name && strcmp(k->name, d->check_name) == 0) first = v->shown_count;
+        maps_only &= _sl_is_map(k->kind);
+        v->shown[v->shown_count++] = k;
+    }
+    if (v->shown_count == 0) {
+        snprintf(err, n, "%s has no picture to show (its checks are probes, numbers or a camera path's flicker): "
+                 "run shadowlab-grade --case %s", v->c.name, v->c.name);
         return false;
     }
-    char file[200];
-    sl_check_reference_file(v->check, file, sizeof file);
-    snprintf(reference, sizeof reference, "%s/%s/%s", refs, v->c.name, file);
-    if (!sl_image_read(reference, &v->reference, err, n)) return false;
+    if (d->check_name && first < 0) {
+        char names[600] = "";
+        for (int i = 0; i < v->shown_count; i++)
+            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", i ? ", " : "", v->shown[i]->name);
+        snprintf(err, n, "%s has no check with a picture named %s (it has: %s)", v->c.name, d->check_name, names);
+        return false;
+    }
+    for (int i = 0; first < 0 && i < v->shown_count; i++) /* what the camera sees first, then the maps */
+        if (v->shown[i]->kind == SL_CHECK_VISIBILITY || v->shown[i]->kind == SL_CHECK_PENUMBRA) first = i;
+    if (first < 0) first = 0;
+    if (!_sl_show_check(v, first)) {
+        snprintf(err, n, "the reference of %s / %s does not load (said above)", v->c.name, v->shown[first]->name);
+        return false;
+    }
     int panel_w = v->c.width, panel_h = v->c.height;
-    if (v->check->kind == SL_CHECK_DEPTH_MAP) panel_w = panel_h = 384; /* shown scaled */
+    if (maps_only) panel_w = panel_h = 384; /* maps alone: square panels, shown scaled */
     v->scale = panel_w * 3 * 2 <= 1800 ? 2 : 1;
     sl_context_desc cd = {
         .backend = d->headless ? (sl_backend)d->backend : SL_BACKEND_GLFW,
@@ -216,7 +317,7 @@ static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, s
     if (!sl_program_build(&v->panel_program, &sd, err, n)) return false;
     glGenTextures(_SL_PANELS, v->textures);
     glGenVertexArrays(1, &v->vao);
-    _sl_upload(v->textures[_SL_REFERENCE], &v->reference);
+    _sl_upload(v, _SL_REFERENCE, &v->reference, v->check->kind);
     return true;
 }
 
@@ -233,7 +334,7 @@ int sl_case_view_main(const sl_case_view_desc *d) {
         printf("shadowlab: case %s (%s), lab %d: %s\n", v.c.name, v.c.title, v.c.lab, sl_context_renderer_name());
         GLFWwindow *window = sl_context_window(v.ctx);
         if (window) printf("shadowlab: keys: Tab yours | reference | difference, or one at a time; Space yours or the "
-                           "reference; D the difference; Esc quit\n");
+                           "reference; D the difference;%s Esc quit\n", v.shown_count > 1 ? " C the next check;" : "");
         int rendered = 0;
         double last_reload = 0;
         const char *reported_error = NULL;

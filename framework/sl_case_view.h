@@ -2,8 +2,10 @@
  * renders for one grading case (scene, camera, light path, parameters, image
  * size, the term it captures), with this build's labs, and shows it beside
  * the shipped reference and their difference, coloured by kind: red where a
- * shadow is missing, blue where there is one too many. It re-renders every
- * frame, so an edited shader shows at once. */
+ * shadow is missing, blue where there is one too many. Every check with a
+ * picture can be shown (C cycles them): visibility, shaded image, depth map,
+ * lab 5's moments, lab 6's cascade index, lab 7's cube faces. It re-renders
+ * every frame, so an edited shader shows at once. */
 #ifndef SL_CASE_VIEW_H
 #define SL_CASE_VIEW_H
 
@@ -18,6 +20,7 @@ typedef struct sl_case_view_desc {
     int backend;                /* sl_backend, headless only */
     int frames;                 /* > 0: render that many frames and stop */
     const char *screenshot;     /* with frames: save the last one */
+    const char *check_name;     /* the check to show first (NULL: the case's first with a picture) */
 } sl_case_view_desc;
 
 /* A process exit status: 0, 1 on failure (said on stderr), 2 on a usage error. */

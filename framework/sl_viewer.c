@@ -145,7 +145,9 @@ static void _sl_usage(FILE *f) {
             "  --solutions         start with the solutions' code (builds that have solutions/: key A)\n"
             "  --case NAME         render what the grader renders for case NAME (grader/cases/NAME.json),\n"
             "                      beside the reference and their difference (red: a shadow missing,\n"
-            "                      blue: one too many); Tab, Space and D switch the view\n"
+            "                      blue: one too many); Tab, Space and D switch the view, C the check\n"
+            "                      (labs 5-7: moments, cascade index, cube faces)\n"
+            "  --check NAME        with --case: the check to show first (as the case file names it)\n"
             "lab 7 keys: 7 lab 7, M the six faces as a cross, S soft/hard, L six passes/layered/auto,\n"
             "      [ ] cube bias, arrows move the point light (x, z), PgUp PgDn (y)\n"
             "keys: 1-7 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
@@ -709,7 +711,8 @@ int sl_viewer_main(int argc, char **argv) {
         if (strcmp(argv[i], "--bench") == 0) return sl_bench_main(argc, argv);
     _sl_viewer v = {0};
     sl_render_params_defaults(&v.params);
-    const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL, *case_name = NULL;
+    const char *scene_name = "boxes_on_floor", *screenshot = NULL, *labs_dir = NULL, *case_name = NULL,
+               *check_name = NULL;
     int frames = 0, width = 960, height = 640;
     bool headless = false;
     sl_backend backend = sl_backend_default_headless();
@@ -727,7 +730,7 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--bias-mode") == 0 || strcmp(a, "--filter") == 0 ||
                            strcmp(a, "--kernel") == 0 || strcmp(a, "--light-size") == 0 ||
                            strcmp(a, "--poisson-radius") == 0 || strcmp(a, "--case") == 0 ||
-                           strcmp(a, "--camera-path") == 0 ||
+                           strcmp(a, "--camera-path") == 0 || strcmp(a, "--check") == 0 ||
                            strcmp(a, "--backend") == 0 || strcmp(a, "--blur") == 0 ||
                            strcmp(a, "--bleeding") == 0 || strcmp(a, "--min-variance") == 0 ||
                            strcmp(a, "--moments-size") == 0 ||
@@ -828,6 +831,8 @@ int sl_viewer_main(int argc, char **argv) {
             labs_dir = next;
         } else if (strcmp(a, "--case") == 0) {
             case_name = next;
+        } else if (strcmp(a, "--check") == 0) {
+            check_name = next;
         } else if (strcmp(a, "--cascades") == 0) { /* lab 6 */
             v.params.cascades.count = atoi(next);
             if (v.params.cascades.count < 1 || v.params.cascades.count > SL_MAX_CASCADES) {
@@ -951,7 +956,8 @@ int sl_viewer_main(int argc, char **argv) {
 
     if (case_name) {
         sl_case_view_desc cv = {.case_name = case_name, .labs_dir = labs_dir, .headless = headless,
-                                .backend = backend, .frames = frames, .screenshot = screenshot};
+                                .backend = backend, .frames = frames, .screenshot = screenshot,
+                                .check_name = check_name};
         return sl_case_view_main(&cv);
     }
     char err[16384];
