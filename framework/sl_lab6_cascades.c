@@ -9,7 +9,7 @@
 
 /* Calls lab N's function through the renderer's table, recorded as the renderer records its own calls. */
 #define _SL_LAB6_CALL(r, N, fn, ...)                                                                              \
-    (sl_renderer_enter_lab(#fn), sl_renderer_lab_result((r), #fn, (r)->fns[N]->fn(__VA_ARGS__)))
+    (sl_renderer_lab_enter(#fn), sl_renderer_lab_result((r), #fn, (r)->fns[N]->fn(__VA_ARGS__)))
 
 typedef struct _sl_lab6_program {
     sl_program program;

@@ -45,7 +45,6 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
 
 void sl_renderer_lab_enter(const char *function) { _sl_enter(function); }
 
-void sl_renderer_enter_lab(const char *function) { _sl_enter(function); }
 bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status) {
     return _sl_lab_result(r, function, status);
 }

@@ -162,9 +162,8 @@ bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
 
 /* For the labs' own pass modules (sl_lab5_vsm.c, sl_lab6_cascades.c, sl_lab7_cube.c): a call into lab
  * code is announced, then its result recorded, as the renderer does with its own (the result is true when
- * the step may go on); a pass's end is timed. sl_renderer_enter_lab is the same as sl_renderer_lab_enter. */
+ * the step may go on); a pass's end is timed. */
 void sl_renderer_lab_enter(const char *function);
-void sl_renderer_enter_lab(const char *function);
 bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status);
 void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass);
 /* Draws every object of the scene with the bound program (u_model, and with

@@ -100,6 +100,32 @@ sl_visibility_stats sl_visibility_compare(const sl_image *student, const sl_imag
     return v;
 }
 
+double sl_visibility_shadow_lost(const sl_image *student, const sl_image *reference, const sl_image *lit_mask,
+                                 long *shadowed) {
+    *shadowed = 0;
+    if (!student->data || !reference->data || student->width != reference->width ||
+        student->height != reference->height)
+        return 0;
+    if (lit_mask && (!lit_mask->data || lit_mask->width != reference->width || lit_mask->height != reference->height))
+        lit_mask = NULL;
+    int w = reference->width, h = reference->height;
+    long lost = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            if (!(sl_image_pixel(reference, x, y)[0] < 0.5f)) continue;
+            if (lit_mask && sl_image_pixel(lit_mask, x, y)[0] < 0.5f) continue;
+            (*shadowed)++;
+            bool near = false;
+            for (int dy = -1; dy <= 1 && !near; dy++)
+                for (int dx = -1; dx <= 1 && !near; dx++) {
+                    int sx = x + dx, sy = y + dy;
+                    if (sx >= 0 && sy >= 0 && sx < w && sy < h) near = !(sl_image_pixel(student, sx, sy)[0] >= 0.5f);
+                }
+            lost += !near;
+        }
+    return *shadowed ? (double)lost / (double)*shadowed : 0;
+}
+
 double sl_fraction_equal(const sl_image *image, float value, float tolerance) {
     long n = (long)image->width * image->height, count = 0;
     if (!image->data || n == 0) return 0;

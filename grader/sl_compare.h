@@ -39,6 +39,14 @@ typedef struct sl_visibility_stats {
 
 sl_visibility_stats sl_visibility_compare(const sl_image *student, const sl_image *reference);
 
+/* Of the reference's shadowed pixels (below 0.5; only where `lit_mask`, if
+ * given, is lit: surfaces facing the light), the fraction with no shadowed
+ * pixel of the student's within one pixel: shadow missing, not moved.
+ * `shadowed` receives how many the reference has. The pixel count of a check
+ * cannot see a missing shadow that is small next to the image; this can. */
+double sl_visibility_shadow_lost(const sl_image *student, const sl_image *reference, const sl_image *lit_mask,
+                                 long *shadowed);
+
 /* Depth maps: the fraction of texels at (about) `value`, and whether all
  * texels different from `clear` lie inside the lower-left w x h rectangle
  * (GL's origin; images are stored top row first). */

@@ -683,6 +683,45 @@ static void test_sha256_known_answers(void) {
     CHECK(strcmp(hex, "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0") == 0);
 }
 
+/* A shadow too small for the pixel count: missing, the check still fails and
+ * says so; moved by a pixel, or with the whole shadow present, it passes. */
+static void test_grade_small_shadow_missing(void) {
+    sl_case c = grade_case(2, SL_CHECK_VISIBILITY);
+    c.width = c.height = 200; /* a 6x6 shadow: 0.09% of the image, under the 0.5% allowed */
+    sl_image reference = square(200, 200, 0, 1, 100, 100, 106, 106);
+    struct { sl_image student; bool passes; const char *says; } tries[] = {
+        {square(200, 200, 1, 1, 0, 0, 0, 0), false, "the reference's shadows are missing: 100% of its 36 shadowed pixels"},
+        {square(200, 200, 0, 1, 101, 100, 107, 106), true, NULL}, /* one pixel over: renderer noise */
+        {square(200, 200, 0, 1, 100, 100, 106, 106), true, NULL},
+        /* a quarter of it left: 20 of 36 pixels more than a pixel away from it */
+        {square(200, 200, 0, 1, 100, 100, 103, 103), false, "missing: 56% of its 36 shadowed pixels"},
+    };
+    for (size_t i = 0; i < sizeof tries / sizeof tries[0]; i++) {
+        sl_case_result r = {.finished = true};
+        add_capture(&r, "visibility", tries[i].student);
+        sl_image ref_copy = sl_image_alloc(200, 200, 1);
+        memcpy(ref_copy.data, reference.data, sizeof(float) * 200 * 200);
+        sl_reference ref = image_reference(ref_copy);
+        sl_check_result out;
+        sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
+        CHECK(out.passed == tries[i].passes);
+        if (tries[i].says) CHECK(strstr(out.message, tries[i].says) != NULL);
+        if (!out.passed && tries[i].says) printf("  %s\n", out.message);
+        sl_image_free(&out.diff);
+        sl_case_result_free(&r);
+        sl_reference_free(&ref);
+    }
+    /* The measure itself: the lit mask leaves out surfaces facing away. */
+    sl_image none = square(200, 200, 1, 1, 0, 0, 0, 0);
+    sl_image away = square(200, 200, 0, 1, 100, 100, 106, 106); /* the shadowed square faces away */
+    long shadowed = 0;
+    CHECK(sl_visibility_shadow_lost(&none, &reference, NULL, &shadowed) == 1.0 && shadowed == 36);
+    CHECK(sl_visibility_shadow_lost(&none, &reference, &away, &shadowed) == 0.0 && shadowed == 0);
+    sl_image_free(&none);
+    sl_image_free(&away);
+    sl_image_free(&reference);
+}
+
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
@@ -696,6 +735,7 @@ int main(int argc, char **argv) {
         {"grade_names_peter_panning", test_grade_names_peter_panning},
         {"grade_names_vsm_mistakes", test_grade_names_vsm_mistakes},
         {"grade_penumbra_inverted", test_grade_penumbra_inverted},
+        {"grade_small_shadow_missing", test_grade_small_shadow_missing},
         {"grade_leads_with_root_cause", test_grade_leads_with_root_cause},
         {"grade_probe_verdicts", test_grade_probe_verdicts},
         {"grade_run_failures", test_grade_run_failures},
