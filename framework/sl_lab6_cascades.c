@@ -144,22 +144,9 @@ static bool _sl_lab6_targets(struct _sl_lab6 *s, int size) {
 
 static void _sl_lab6_draw_objects(sl_renderer *r, const sl_scene *scene, GLuint program, bool colours) {
     GLint model = glGetUniformLocation(program, "u_model");
-    GLint normal_matrix = glGetUniformLocation(program, "u_normal_matrix");
-    GLint albedo = glGetUniformLocation(program, "u_albedo");
-    for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
-        const sl_object *o = &scene->objects[i];
-        glUniformMatrix4fv(model, 1, GL_FALSE, (const float *)o->model);
-        if (colours) {
-            mat3 normal;
-            mat4 inv;
-            glm_mat4_inv((vec4 *)o->model, inv);
-            glm_mat4_transpose(inv);
-            glm_mat4_pick3(inv, normal);
-            glUniformMatrix3fv(normal_matrix, 1, GL_FALSE, (const float *)normal);
-            glUniform3fv(albedo, 1, o->color);
-        }
-        sl_mesh_draw(&r->meshes[i]);
-    }
+    GLint normal_matrix = colours ? glGetUniformLocation(program, "u_normal_matrix") : -1;
+    GLint albedo = colours ? glGetUniformLocation(program, "u_albedo") : -1;
+    sl_renderer_draw_objects(r, scene, model, normal_matrix, albedo);
 }
 
 /* The shimmer demo: moves the light box so that the sphere's centre lands exactly
@@ -258,16 +245,7 @@ static void _sl_lab6_camera_pass(sl_renderer *r, const sl_scene *scene, const sl
                                  GLuint target, int width, int height) {
     sl_frame_info *info = &r->info;
     struct _sl_lab6 *s = _sl_lab6_state(r);
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, width, height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
+    sl_renderer_reset_state(target, width, height);
     if (p->output == SL_OUTPUT_SHADED) glClearColor(0.55f, 0.62f, 0.70f, 1);
     else if (p->output == SL_OUTPUT_VISIBILITY) glClearColor(1, 1, 1, 1);
     else if (p->output == SL_OUTPUT_CASCADE_INDEX) glClearColor(-1, -1, -1, 1); /* no surface, no cascade */

@@ -212,22 +212,6 @@ static bool _sl_depth_passes(sl_renderer *r, const sl_scene *scene, const sl_ren
     return true;
 }
 
-/* GL state a lab may change, put back (as the renderer does between its passes). */
-static void _sl_reset_state(GLuint target, int width, int height) {
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, width, height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(0, 0);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-}
-
 /* Step 3: the camera pass. */
 static void _sl_camera_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int width, int height) {
     sl_frame_info *info = &r->info;
@@ -314,13 +298,13 @@ void sl_lab7_cube_draw(sl_renderer *r, const sl_scene *scene, const sl_render_pa
     if (!s) return;
     memset(s->used, 0, sizeof s->used);
     int size = p->cube.map_size > 0 ? p->cube.map_size : 512;
-    _sl_reset_state(0, width, height);
+    sl_renderer_reset_state(0, width, height);
     bool ready = _sl_face_matrices(r, &scene->light);
     /* The map's stubs are asked even without matrices, so the grader can say which of them are not done yet. */
     bool map = _sl_cube_map(r, size);
     if (ready && map) info->cube_map_ready = _sl_depth_passes(r, scene, p);
     else if (map) _SL_CALL(r, lab7_begin_cube_pass, &s->map, 0);
-    _sl_reset_state(target, width, height);
+    sl_renderer_reset_state(target, width, height);
     _sl_camera_pass(r, scene, p, width, height);
     if (p->show_shadow_map) _sl_cross_view(r, width, height);
 }

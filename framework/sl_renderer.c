@@ -402,7 +402,7 @@ bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out) {
 }
 
 /* GL state the labs may change, put back so one pass cannot leak into the next. */
-static void _sl_reset_state(GLuint target, int width, int height) {
+void sl_renderer_reset_state(GLuint target, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, width, height);
     glEnable(GL_DEPTH_TEST);
@@ -461,20 +461,7 @@ void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model
 }
 
 static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const _sl_uniforms *u, bool colours) {
-    for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
-        const sl_object *o = &scene->objects[i];
-        glUniformMatrix4fv(u->model, 1, GL_FALSE, (const float *)o->model);
-        if (colours) {
-            mat3 normal;
-            mat4 inv;
-            glm_mat4_inv((vec4 *)o->model, inv);
-            glm_mat4_transpose(inv);
-            glm_mat4_pick3(inv, normal);
-            glUniformMatrix3fv(u->normal_matrix, 1, GL_FALSE, (const float *)normal);
-            glUniform3fv(u->albedo, 1, o->color);
-        }
-        sl_mesh_draw(&r->meshes[i]);
-    }
+    sl_renderer_draw_objects(r, scene, u->model, colours ? u->normal_matrix : -1, colours ? u->albedo : -1);
 }
 
 /* Returns the highest lab the depth pass used (0: no map, 1, or 3 with lab 3's state). */
@@ -759,14 +746,14 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
         return;
     }
     _sl_light_matrices(r, scene, params);
-    _sl_reset_state(0, width, height);
+    sl_renderer_reset_state(0, width, height);
     int depth_lab = _sl_depth_pass(r, scene, params);
     info->moments_ready = false;
     if (params->lab == 5 && !params->vsm_off) { /* off: lab 4's filter alone, as fast as in lab 4 */
-        _sl_reset_state(0, width, height);
+        sl_renderer_reset_state(0, width, height);
         sl_vsm_passes(r, scene, params);
     }
-    _sl_reset_state(target, width, height);
+    sl_renderer_reset_state(target, width, height);
     _sl_scene_pass(r, scene, params, depth_lab, width, height);
     if (params->show_shadow_map && info->lab_in_use == 5) sl_vsm_debug_view(r, width, height);
     else if (params->show_shadow_map) _sl_debug_view(r, &scene->light, width, height);

@@ -169,6 +169,10 @@ void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass);
 /* Draws every object of the scene with the bound program (u_model, and with
  * colours also u_normal_matrix and u_albedo, at these locations; -1: not set). */
 void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model, GLint normal_matrix, GLint albedo);
+/* Binds `target` with its viewport and puts back the GL state a lab may have
+ * changed (depth test and writes, culling, polygon offset, blending, scissor),
+ * so one pass cannot leak into the next. */
+void sl_renderer_reset_state(GLuint target, int width, int height);
 
 /* Read-backs, as top-down images. */
 bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out);
