@@ -26,26 +26,9 @@ packages=(
 
 say() { echo "install-slides-deps: $*"; }
 
-if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
-  say "this script knows Debian's packages only (no apt-get here). Install pandoc, WeasyPrint and" >&2
-  say "poppler's pdftoppm by other means; see slides/README.md." >&2
-  exit 2
-fi
-release=$( (. /etc/os-release 2>/dev/null && echo "${PRETTY_NAME:-unknown}") || echo unknown)
-installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
-offered() {
-  local candidate
-  candidate=$(apt-cache policy "$1" 2>/dev/null | awk '/Candidate:/ {print $2; exit}')
-  [ -n "$candidate" ] && [ "$candidate" != "(none)" ]
-}
-sudo=""
-if [ "$(id -u)" != 0 ]; then
-  command -v sudo >/dev/null || { say "run as root (or install sudo)" >&2; exit 2; }
-  sudo=sudo
-fi
-export DEBIAN_FRONTEND=noninteractive
-updated=""
-update() { [ -n "$updated" ] || { $sudo apt-get update -q; updated=1; }; }
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# shellcheck source=apt-common.sh
+. "$here/apt-common.sh" "Install pandoc, WeasyPrint and poppler's pdftoppm by other means; see slides/README.md."
 
 missing=()
 for p in "${packages[@]}"; do
