@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_case_view.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,13 +40,14 @@ typedef struct _sl_case_view {
     char summary[256];
 } _sl_case_view;
 
-/* Checks whose capture is a picture the reference can be set beside. Probes and
- * matrices are numbers; flicker's capture is every frame of a path stacked. */
+/* Checks whose capture is a picture the reference can be set beside (probes and
+ * matrices are numbers). Flicker's capture is every frame of a camera path,
+ * stacked: it is shown as its last frame with what changed along the path in red. */
 static bool _sl_has_picture(sl_check_kind k) {
     switch (k) {
     case SL_CHECK_VISIBILITY: case SL_CHECK_PENUMBRA: case SL_CHECK_BLEEDING: case SL_CHECK_DEPTH_MAP:
     case SL_CHECK_IMAGE: case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: case SL_CHECK_CASCADE_INDEX:
-    case SL_CHECK_CUBE_FACE:
+    case SL_CHECK_CUBE_FACE: case SL_CHECK_FLICKER:
         return true;
     default:
         return false;
@@ -65,8 +67,43 @@ static const char *_sl_legend(sl_check_kind k) {
     case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: return "moments (red: depth, green: depth squared)";
     case SL_CHECK_CASCADE_INDEX: return "cascade (red 0, green 1, blue 2, yellow 3, grey none)";
     case SL_CHECK_IMAGE: return "shaded image";
+    case SL_CHECK_FLICKER: return "the last frame of the path, in red what changed from one frame to the next";
     default: return "visibility (white lit, black shadow)";
     }
+}
+
+/* Flicker: of a path's frames stacked top to bottom (each width x height), the
+ * last frame in grey with every pixel that changed between two frames in red;
+ * `changed` gets their fraction. */
+static sl_image _sl_flicker_marks(const sl_image *stacked, int frames, double *changed) {
+    int w = stacked->width, h = frames > 0 ? stacked->height / frames : 0;
+    sl_image out = sl_image_alloc(w, h, 3);
+    long count = 0;
+    if (!out.data || !stacked->data || frames < 1) {
+        *changed = 0;
+        return out;
+    }
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            bool moved = false;
+            for (int f = 1; f < frames && !moved; f++)
+                moved = fabsf(sl_image_pixel(stacked, x, f * h + y)[0] - sl_image_pixel(stacked, x, (f - 1) * h + y)[0]) > 0.25f;
+            float grey = sl_image_pixel(stacked, x, (frames - 1) * h + y)[0];
+            float *q = sl_image_pixel(&out, x, y);
+            q[0] = moved ? 1 : grey, q[1] = moved ? 0.05f : grey, q[2] = moved ? 0.05f : grey;
+            count += moved;
+        }
+    *changed = (double)count / ((double)w * h);
+    return out;
+}
+
+/* The last frame of a path's stack (a view into it: not to be freed). */
+static sl_image _sl_last_frame(const sl_image *stacked, int frames) {
+    int h = frames > 0 ? stacked->height / frames : stacked->height;
+    sl_image last = *stacked;
+    last.height = h;
+    if (stacked->data && frames > 0) last.data = stacked->data + (size_t)(frames - 1) * (size_t)h * (size_t)stacked->width * (size_t)stacked->channels;
+    return last;
 }
 
 /* An image as RGB texels for a panel, bottom row first (GL's order), in the
@@ -118,7 +155,17 @@ static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
             p.cascades.camera = c->frame_cameras[f];
         }
         sl_renderer_draw(&v->renderer, &scene, &p, v->target_fbo, c->width, c->height);
+        if (kind == SL_CHECK_FLICKER) { /* every frame, stacked top to bottom, as the runner sends them */
+            if (f == 0) *out = sl_image_alloc(c->width, c->height * c->frame_count, 1);
+            sl_image frame;
+            if (out->data && sl_capture_framebuffer(v->target_fbo, c->width, c->height, 1, &frame)) {
+                memcpy(out->data + (size_t)f * (size_t)c->width * (size_t)c->height, frame.data,
+                       sizeof(float) * (size_t)c->width * (size_t)c->height);
+                sl_image_free(&frame);
+            }
+        }
     }
+    if (kind == SL_CHECK_FLICKER) return out->data != NULL;
     const sl_frame_info *info = sl_renderer_info(&v->renderer);
     if (_sl_is_map(kind)) {
         char err[256];
@@ -141,6 +188,27 @@ static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
 static void _sl_update(_sl_case_view *v) {
     sl_image student = {0}, diff = {0};
     _sl_render_student(v, &student);
+    if (v->check->kind == SL_CHECK_FLICKER) {
+        /* the path's frames: what changed along it, and the last frames side by side */
+        const sl_frame_info *info = sl_renderer_info(&v->renderer);
+        double yours = 0, reference = 0;
+        sl_image marks = _sl_flicker_marks(&student, v->c.frame_count, &yours);
+        sl_image ref_marks = _sl_flicker_marks(&v->reference, v->c.frame_count, &reference);
+        sl_image last = _sl_last_frame(&student, v->c.frame_count), ref_last = _sl_last_frame(&v->reference, v->c.frame_count);
+        sl_compare_images(&last, &ref_last, 0.05, &diff);
+        snprintf(v->summary, sizeof v->summary,
+                 "%s / %s: along the camera path %.3f%% of pixels change from one frame to the next in yours, %.3f%% in "
+                 "the reference%s%s", v->c.name, v->check->name, 100 * yours, 100 * reference,
+                 info->not_implemented_count ? "; not implemented: " : "",
+                 info->not_implemented_count ? info->not_implemented[0] : "");
+        if (marks.data) _sl_upload(v, _SL_STUDENT, &marks, -1);
+        if (diff.data) _sl_upload(v, _SL_DIFF, &diff, -1);
+        sl_image_free(&marks);
+        sl_image_free(&ref_marks);
+        sl_image_free(&student);
+        sl_image_free(&diff);
+        return;
+    }
     sl_compare_stats st = sl_compare_images(&student, &v->reference, v->check->threshold, &diff);
     const sl_frame_info *info = sl_renderer_info(&v->renderer);
     if (st.size_mismatch)
@@ -200,6 +268,18 @@ static void _sl_title(_sl_case_view *v) {
     glfwSetWindowTitle(w, title);
 }
 
+/* The reference's panel: flicker's frames as what changed along the path. */
+static void _sl_upload_reference(_sl_case_view *v) {
+    if (v->check->kind != SL_CHECK_FLICKER) {
+        _sl_upload(v, _SL_REFERENCE, &v->reference, v->check->kind);
+        return;
+    }
+    double changed;
+    sl_image marks = _sl_flicker_marks(&v->reference, v->c.frame_count, &changed);
+    if (marks.data) _sl_upload(v, _SL_REFERENCE, &marks, -1);
+    sl_image_free(&marks);
+}
+
 /* Shows check `index` of the shown ones: its reference, and a summary for it. */
 static bool _sl_show_check(_sl_case_view *v, int index) {
     char err[1024], file[200], reference[1400];
@@ -215,7 +295,7 @@ static bool _sl_show_check(_sl_case_view *v, int index) {
     v->reference = img;
     v->check = k;
     v->shown_index = index;
-    if (v->textures[_SL_REFERENCE]) _sl_upload(v, _SL_REFERENCE, &v->reference, k->kind);
+    if (v->textures[_SL_REFERENCE]) _sl_upload_reference(v);
     printf("shadowlab: showing check %s (%d of %d): %s\n", k->name, index + 1, v->shown_count, _sl_legend(k->kind));
     return true;
 }
@@ -266,7 +346,7 @@ static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, s
         v->shown[v->shown_count++] = k;
     }
     if (v->shown_count == 0) {
-        snprintf(err, n, "%s has no picture to show (its checks are probes, numbers or a camera path's flicker): "
+        snprintf(err, n, "%s has no picture to show (its checks are probes or numbers): "
                  "run shadowlab-grade --case %s", v->c.name, v->c.name);
         return false;
     }
@@ -317,7 +397,7 @@ static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, s
     if (!sl_program_build(&v->panel_program, &sd, err, n)) return false;
     glGenTextures(_SL_PANELS, v->textures);
     glGenVertexArrays(1, &v->vao);
-    _sl_upload(v, _SL_REFERENCE, &v->reference, v->check->kind);
+    _sl_upload_reference(v);
     return true;
 }
 
