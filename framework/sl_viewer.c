@@ -503,7 +503,7 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
             sl_overlay_line(ov, NULL, "bias: %s", sl_bias_mode_name(p->bias.mode));
         if (p->lab <= 3) sl_overlay_line(ov, NULL, "compare: %s", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual");
     }
-    if (p->lab == 4 || (p->lab == 5 && p->vsm_off)) {
+    if (p->lab == 4 || (p->lab > 4 && info->lab_in_use == 4)) { /* lab 5 with VSM off, lab 7 without a point light */
         const sl_filter_settings *f = &p->filter;
         if (f->mode == SL_FILTER_GRID)
             sl_overlay_line(ov, NULL, "filter: PCF grid %dx%d (kernel radius %d)", 2 * f->grid_radius + 1,
@@ -537,6 +537,9 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
                         v->camera_path ? ", camera path: " : "", v->camera_path ? _sl_path_names[v->camera_path] : "");
         if (v->frozen) sl_overlay_line(ov, _sl_blue, "frustum frozen, seen from above (Z)");
     }
+    if (p->lab == 7 && !info->cube_frame && info->lab_in_use > 0)
+        sl_overlay_line(ov, _sl_blue, "lab 7 needs a point light: lab %d's shadows here (closed_room has one)",
+                        info->lab_in_use);
     if (info->cube_frame) {
         const sl_cube_settings *c = &p->cube;
         sl_overlay_line(ov, NULL, "lookup: %s, bias %.4f (distance / far)",
