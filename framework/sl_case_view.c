@@ -31,6 +31,7 @@ typedef struct _sl_case_view {
     const char *references_dir;
     sl_image reference;
     int panel_size[_SL_PANELS][2]; /* each panel's picture size, drawn with its aspect kept */
+    double reference_flicker;      /* flicker: the share of the reference's pixels that change along the path */
     sl_context *ctx;
     sl_renderer renderer;
     sl_program panel_program;
@@ -191,9 +192,8 @@ static void _sl_update(_sl_case_view *v) {
     if (v->check->kind == SL_CHECK_FLICKER) {
         /* the path's frames: what changed along it, and the last frames side by side */
         const sl_frame_info *info = sl_renderer_info(&v->renderer);
-        double yours = 0, reference = 0;
+        double yours = 0, reference = v->reference_flicker;
         sl_image marks = _sl_flicker_marks(&student, v->c.frame_count, &yours);
-        sl_image ref_marks = _sl_flicker_marks(&v->reference, v->c.frame_count, &reference);
         sl_image last = _sl_last_frame(&student, v->c.frame_count), ref_last = _sl_last_frame(&v->reference, v->c.frame_count);
         sl_compare_images(&last, &ref_last, 0.05, &diff);
         snprintf(v->summary, sizeof v->summary,
@@ -204,7 +204,6 @@ static void _sl_update(_sl_case_view *v) {
         if (marks.data) _sl_upload(v, _SL_STUDENT, &marks, -1);
         if (diff.data) _sl_upload(v, _SL_DIFF, &diff, -1);
         sl_image_free(&marks);
-        sl_image_free(&ref_marks);
         sl_image_free(&student);
         sl_image_free(&diff);
         return;
@@ -274,8 +273,7 @@ static void _sl_upload_reference(_sl_case_view *v) {
         _sl_upload(v, _SL_REFERENCE, &v->reference, v->check->kind);
         return;
     }
-    double changed;
-    sl_image marks = _sl_flicker_marks(&v->reference, v->c.frame_count, &changed);
+    sl_image marks = _sl_flicker_marks(&v->reference, v->c.frame_count, &v->reference_flicker);
     if (marks.data) _sl_upload(v, _SL_REFERENCE, &marks, -1);
     sl_image_free(&marks);
 }
