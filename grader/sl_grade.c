@@ -140,6 +140,8 @@ static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *ou
         drawing_lab = 0;
     if (r->interrupted) {
         sl_diag_say(out, "not graded: the grader was stopped before this case finished");
+    } else if (r->staff_error[0]) {
+        sl_diag_say(out, "not graded: %s (the grading machine's fault, not this submission's)", r->staff_error);
     } else if (r->protocol_error[0]) {
         sl_diag_say(out, "the case's results broke the rules of the grader's channel (%s): nothing it sent counts. "
                      "Lab code must not write to file descriptor 3 or replace the process", r->protocol_error);
@@ -162,7 +164,7 @@ static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *ou
                 r->crashed_in, r->crashed_in[0] ? "()" : "");
     }
     /* What the process printed last often says why (a library missing, an assertion). */
-    if (!r->interrupted && !r->protocol_error[0] && !r->error[0] && r->output_tail[0]) {
+    if (!r->interrupted && !r->staff_error[0] && !r->protocol_error[0] && !r->error[0] && r->output_tail[0]) {
         const char *end = r->output_tail + strlen(r->output_tail);
         while (end > r->output_tail && end[-1] == '\n') end--;
         const char *start = end;
@@ -624,8 +626,9 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
         sl_diag_say(out, "%s", ref->error);
         return;
     }
-    if (!r->finished && !(r->capture_count > 0 && !r->signal && !r->timed_out && !r->error[0])) {
+    if (!r->finished && !(r->capture_count > 0 && !r->signal && !r->timed_out && !r->error[0] && !r->staff_error[0])) {
         _sl_explain_run_failure(r, out);
+        out->reference_problem = r->staff_error[0] != '\0'; /* the staff's to solve, as a reference's */
         snprintf(out->summary, sizeof out->summary, "%s", out->message);
         return;
     }

@@ -24,7 +24,9 @@ typedef struct sl_check_result {
     double points, max_points;
     bool bonus;             /* max_points do not count towards the maximum score */
     bool passed;
-    bool reference_problem; /* a missing or corrupt reference: staff must fix it */
+    /* Not the submission's doing, staff must fix it: a missing or corrupt
+     * reference, or a case the machine could not run (r->staff_error). */
+    bool reference_problem;
     char message[2048];
     sl_image diff;          /* failed image checks */
     /* What other checks may quote: the mistake in a few words ("the shadow

@@ -148,6 +148,12 @@ static const char *const *_sl_runner_environment(void) {
     /* no shader cache: nothing a case writes may reach a later case */
     env[n++] = "MESA_SHADER_CACHE_DISABLE=true";
     env[n++] = "MESA_GLSL_CACHE_DISABLE=true";
+    /* One thread per runner, unless staff say otherwise: llvmpipe makes its
+     * drawing threads with the context, and one that cannot (the machine or
+     * the user out of processes: a neighbour's doing) hangs at its first
+     * draw. Single-threaded, an honest runner needs no new thread, and the
+     * pictures are the same (runners run side by side instead, -j). */
+    if (!getenv("LP_NUM_THREADS")) env[n++] = "LP_NUM_THREADS=0";
     for (char **e = environ; *e && n < 62; e++) {
         if (strncmp(*e, "MESA_SHADER_CACHE", 17) == 0 || strncmp(*e, "MESA_GLSL_CACHE", 15) == 0) continue;
         for (size_t i = 0; i < sizeof prefixes / sizeof prefixes[0]; i++)
@@ -399,8 +405,9 @@ static int _sl_update_references(const _sl_options *o, sl_case *cases, int count
             if (!sl_check_reference_file(&cases[i].checks[k], file, sizeof file)) continue;
             if (!results[i].finished) {
                 fprintf(stderr, "shadowlab-grade: %s did not finish: %s%s%s\n", cases[i].name,
-                        results[i].error[0] ? results[i].error : results[i].protocol_error[0] ? results[i].protocol_error : "crashed or timed out in ",
-                        results[i].error[0] || results[i].protocol_error[0] ? "" : results[i].crashed_in,
+                        results[i].staff_error[0] ? results[i].staff_error : results[i].error[0] ? results[i].error
+                        : results[i].protocol_error[0] ? results[i].protocol_error : "crashed or timed out in ",
+                        results[i].staff_error[0] || results[i].error[0] || results[i].protocol_error[0] ? "" : results[i].crashed_in,
                         results[i].interrupted ? " (interrupted)" : "");
                 status = SL_EXIT_ERROR;
                 break;
@@ -695,6 +702,15 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     static sl_case_result results[_SL_MAX_CASES];
     bool complete = sl_run_cases(cases, count, &run, results, &_sl_stop);
     if (progress.terminal) fputs("\r\033[K", stderr); /* the report follows on stdout */
+    /* A case the machine could not run grades nothing: the staff hear why (exit 2). */
+    int staff_faults = 0;
+    for (int i = 0; i < count; i++)
+        if (results[i].staff_error[0] && staff_faults++ == 0 && rep.problem_count < 31)
+            snprintf(rep.problems[rep.problem_count++], sizeof rep.problems[0], "could not grade %s: %s", cases[i].name,
+                     results[i].staff_error);
+    if (staff_faults > 1 && rep.problem_count < 32)
+        snprintf(rep.problems[rep.problem_count++], sizeof rep.problems[0],
+                 "could not grade %d more cases (each case's message says why)", staff_faults - 1);
     int status = SL_EXIT_FULL;
     if (o.update) {
         status = complete ? _sl_update_references(&o, cases, count, results) : SL_EXIT_ERROR;

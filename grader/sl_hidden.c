@@ -362,7 +362,7 @@ bool sl_hidden_render_references(const sl_hidden *h, const sl_case *cases, int c
         const sl_case_result *r = &results[i];
         if (!r->finished) {
             snprintf(err, n, "the solutions did not finish the hidden variant of %s: %s", cases[i].name,
-                     r->error[0] ? r->error : r->protocol_error[0] ? r->protocol_error
+                     r->staff_error[0] ? r->staff_error : r->error[0] ? r->error : r->protocol_error[0] ? r->protocol_error
                                           : r->timed_out           ? "timed out (raise --timeout)"
                                                                    : "crashed");
             ok = false;

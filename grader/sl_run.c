@@ -152,7 +152,10 @@ static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint
     *cap = (sl_capture){.is_image = true};
     snprintf(cap->name, sizeof cap->name, "%s", sl_capture_name(capture));
     cap->image = sl_image_alloc(dims[0], dims[1], dims[2]);
-    if (!cap->image.data) return;
+    if (!cap->image.data) {
+        snprintf(r->staff_error, sizeof r->staff_error, "the grader ran out of memory for a capture");
+        return;
+    }
     memcpy(cap->image.data, payload + SL_IMAGE_HEADER_BYTES, (size_t)(n - SL_IMAGE_HEADER_BYTES));
     r->capture_count++;
 }
@@ -265,6 +268,7 @@ static bool _sl_stream_feed(_sl_stream *s, const char *data, size_t n) {
         while (cap < s->len + n) cap *= 2;
         char *buf = realloc(s->buf, cap);
         if (!buf) {
+            snprintf(s->r->staff_error, sizeof s->r->staff_error, "the grader ran out of memory for the results");
             _sl_protocol_error(s, "out of memory for the results");
             return false;
         }
@@ -297,18 +301,25 @@ void sl_run_parse_stream(const sl_case *c, const void *data, size_t size, sl_cas
 
 typedef struct _sl_job {
     int index;
-    pid_t pid;
+    sl_sandbox_process proc; /* the runner */
     int job_fd;     /* the runner's fd 0: closed once DONE is checked */
     int channel_fd; /* its fd 3 */
     int output_fd;  /* its stdout and stderr */
-    const char *runner;
     _sl_stream stream;
     char output[_SL_OUTPUT_KEEP + 1]; /* a ring of the last bytes */
     size_t output_len;
     long long output_total;
-    double start, deadline;
+    double start, deadline, timeout;
     bool channel_open, output_open;
 } _sl_job;
+
+/* A runner ready to run that got less than a tenth of a CPU, its threads
+ * waiting for one most of the time, was starved by other processes: its time
+ * limit waits for it, up to this many times over. (Its own threads cannot
+ * starve it: busy, they are its CPU time.) */
+#define _SL_STARVED_SHARE 0.1
+#define _SL_STARVED_WAIT_SHARE 0.5
+#define _SL_STARVED_TIMEOUTS 4
 
 static double _sl_now(void) {
     struct timespec t;
@@ -387,9 +398,8 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
         .memory_bytes = o->memory_bytes ? o->memory_bytes : (unsigned long long)(c->memory_mb * 1048576.0),
     };
     memcpy(d.lab_dirs, setup->lab_dirs, sizeof d.lab_dirs);
-    sl_sandbox_process proc;
     char err[600];
-    bool spawned = sl_sandbox_spawn(o->sandbox, &d, &proc, err, sizeof err);
+    bool spawned = sl_sandbox_spawn(o->sandbox, &d, &job->proc, err, sizeof err);
     close(in[0]);
     close(channel[1]);
     close(output[1]);
@@ -397,11 +407,10 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
         close(in[1]);
         close(channel[0]);
         close(output[0]);
-        snprintf(r->error, sizeof r->error, "could not start the runner: %s", err);
+        /* no lab code ran yet: the machine's fault, never the submission's */
+        snprintf(r->staff_error, sizeof r->staff_error, "could not start the runner: %s", err);
         return false;
     }
-    job->pid = proc.pid;
-    job->runner = setup->runner;
     job->job_fd = in[1];
     job->channel_fd = channel[0];
     job->output_fd = output[0];
@@ -410,15 +419,20 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
     fcntl(job->output_fd, F_SETFL, O_NONBLOCK);
     job->stream = (_sl_stream){.c = c, .r = r, .wanted = _sl_wanted_captures(c)};
     job->start = _sl_now();
+    job->timeout = timeout;
     job->deadline = job->start + timeout;
     r->started = true;
     static sl_job message; /* large: not on the stack */
-    _sl_build_job(&message, c, o, &proc);
+    _sl_build_job(&message, c, o, &job->proc);
     /* The job must fit in the pipe's buffer, so writing it never waits for a
-     * runner that does not read (lab code runs before the runner's main). */
+     * runner that does not read (lab code runs before the runner's main).
+     * A pipe that cannot grow is the machine's limit (the user's pipe
+     * pages), not the submission's. */
     if (fcntl(job->job_fd, F_SETPIPE_SZ, 1 << 20) < (int)sizeof message || fcntl(job->job_fd, F_SETFL, O_NONBLOCK) != 0 ||
-        !_sl_write_all(job->job_fd, &message, sizeof message))
-        snprintf(r->error, sizeof r->error, "could not send the case to the runner: %s", strerror(errno));
+        !_sl_write_all(job->job_fd, &message, sizeof message)) {
+        snprintf(r->staff_error, sizeof r->staff_error, "could not send the case to the runner: %s", strerror(errno));
+        _sl_close(&job->job_fd);
+    }
     return true;
 fail_channel:
     close(channel[0]);
@@ -427,7 +441,7 @@ fail_in:
     close(in[0]);
     close(in[1]);
 fail_errno:
-    snprintf(r->error, sizeof r->error, "could not start the runner: %s", strerror(errno));
+    snprintf(r->staff_error, sizeof r->staff_error, "could not start the runner: %s", strerror(errno));
     return false;
 }
 
@@ -467,22 +481,24 @@ static bool _sl_drain(_sl_job *job, bool channel) {
  * exec'ed another program to speak for it). Then it may exit. */
 static void _sl_acknowledge(_sl_job *job, const sl_run_options *o) {
     if (job->job_fd < 0) return;
-    if (!sl_sandbox_runs_runner(job->pid, job->runner)) {
+    if (!sl_sandbox_runs_runner(o->sandbox, &job->proc)) {
         _sl_protocol_error(&job->stream, "DONE came from a process that is no longer the runner");
-        sl_sandbox_kill(o->sandbox, job->pid);
+        sl_sandbox_kill(o->sandbox, job->proc.pid);
     }
     _sl_close(&job->job_fd);
 }
 
 static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
     sl_case_result *r = job->stream.r;
-    if (kill_it) sl_sandbox_kill(o->sandbox, job->pid);
+    if (kill_it) sl_sandbox_kill(o->sandbox, job->proc.pid);
     _sl_close(&job->job_fd);
     int status = 0;
     struct rusage usage = {0};
-    while (wait4(job->pid, &status, 0, &usage) < 0 && errno == EINTR) {}
-    /* In case it was not PID 1 of a namespace: nothing of its session may stay. */
-    sl_sandbox_kill(o->sandbox, job->pid);
+    while (wait4(job->proc.pid, &status, 0, &usage) < 0 && errno == EINTR) {}
+    /* In case it was not PID 1 of a namespace: nothing of its session may
+     * stay, nor of its uid or cgroup, which are then free for another. */
+    sl_sandbox_kill(o->sandbox, job->proc.pid);
+    sl_sandbox_end(o->sandbox, &job->proc);
     if (job->channel_open) _sl_drain(job, true);
     if (job->output_open) _sl_drain(job, false);
     _sl_close(&job->channel_fd);
@@ -494,8 +510,8 @@ static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
     if (WIFEXITED(status)) r->exit_code = WEXITSTATUS(status);
     bool done = job->stream.done;
     _sl_stream_end(&job->stream);
-    r->finished = done && !r->protocol_error[0] && !r->timed_out && !r->interrupted && WIFEXITED(status) &&
-                  WEXITSTATUS(status) == 0;
+    r->finished = done && !r->protocol_error[0] && !r->staff_error[0] && !r->timed_out && !r->interrupted &&
+                  WIFEXITED(status) && WEXITSTATUS(status) == 0;
     if (r->protocol_error[0]) {
         /* whatever arrived is not to be trusted */
         sl_case_result_free(r);
@@ -504,7 +520,26 @@ static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
     job->output[job->output_len] = '\0';
     _sl_clean_text(r->output_tail, sizeof r->output_tail, job->output, job->output_len);
     r->output_dropped = job->output_total - (long long)job->output_len;
-    job->pid = 0;
+    job->proc.pid = 0;
+}
+
+/* At the deadline: was the runner starved of CPU by others? Then the deadline
+ * moves on (true), up to _SL_STARVED_TIMEOUTS times the time limit; past
+ * that, the case could not be graded. */
+static bool _sl_wait_longer(_sl_job *job, double now) {
+    double cpu, waited, elapsed = now - job->start;
+    if (elapsed <= 0 || !sl_sandbox_usage(job->proc.pid, &cpu, &waited) || waited < 0) return false;
+    bool starved = cpu < _SL_STARVED_SHARE * elapsed && waited > _SL_STARVED_WAIT_SHARE * elapsed;
+    if (!starved) return false;
+    if (elapsed < _SL_STARVED_TIMEOUTS * job->timeout) {
+        double step = job->timeout / 4 > 1 ? job->timeout / 4 : 1;
+        job->deadline = now + step;
+        return true;
+    }
+    snprintf(job->stream.r->staff_error, sizeof job->stream.r->staff_error,
+             "the runner was starved of CPU by other processes: %.1f s of CPU in %.0f s, %.0f s waiting for one "
+             "(the machine is overloaded; grade again when it is not)", cpu, elapsed, waited);
+    return false;
 }
 
 bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_case_result *results,
@@ -550,8 +585,8 @@ bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_c
                 job->output_open = _sl_drain(job, false);
             /* The runner's set-up failed: it said why and stops. */
             if (job->stream.r->error[0] && !job->stream.done) _sl_close(&job->job_fd);
-            bool timed_out = now > job->deadline;
-            if (timed_out) job->stream.r->timed_out = true;
+            bool timed_out = now > job->deadline && !_sl_wait_longer(job, now);
+            if (timed_out && !job->stream.r->staff_error[0]) job->stream.r->timed_out = true;
             if (broken || timed_out || (!job->channel_open && !job->output_open)) {
                 _sl_finish(job, o, broken || timed_out || !job->stream.done);
                 if (o->case_ended)

@@ -30,6 +30,10 @@ typedef struct sl_case_result {
     bool finished;        /* DONE arrived, the runner was the runner, and it exited cleanly */
     bool timed_out;
     bool interrupted;     /* the grader was stopped (SIGINT/SIGTERM) before this case ended */
+    /* The grading machine, not lab code, stopped the case (no process or
+     * pipe for the runner, no memory for its results, starved of CPU by
+     * other processes): it could not be graded, and says why. */
+    char staff_error[512];
     int signal;           /* that ended the runner, or 0 */
     int exit_code;
     char error[8192];     /* set-up or shader compile error, with file:line */

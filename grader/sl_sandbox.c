@@ -6,8 +6,11 @@
 #include <fcntl.h>
 #include <grp.h>
 #include <linux/audit.h>
+#include <linux/capability.h>
 #include <linux/filter.h>
 #include <linux/seccomp.h>
+#include <linux/sockios.h>
+#include <pwd.h>
 #include <sched.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -16,8 +19,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
+#include <sys/ioctl.h>
 #include <sys/mount.h>
 #include <sys/prctl.h>
+#include <sys/random.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
@@ -25,7 +31,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#define _SL_SANDBOX_UID 65534 /* "nobody": owns nothing on the grading machine */
 #define _SL_INNER_ID 1000      /* the runner's uid inside a user namespace */
 #define _SL_COPY_FILE_MAX (1 << 20)
 #define _SL_COPY_TOTAL_MAX (16 << 20)
@@ -74,10 +79,12 @@ static void _sl_fail(const char *fmt, ...) {
 
 #ifdef _SL_AUDIT_ARCH
 /* System calls lab code never needs and that could reach past the sandbox:
- * other processes, namespaces and mounts, and kernel interfaces that bypass
- * or widen this filter (io_uring, bpf). */
+ * other processes (to trace, read, write, compare or advise their memory,
+ * watch them, move their pages), namespaces and mounts, and kernel
+ * interfaces that bypass or widen this filter (io_uring, bpf). */
 static const int _sl_denied_syscalls[] = {
-    __NR_tkill, __NR_ptrace, __NR_process_vm_readv, __NR_process_vm_writev, __NR_setsid, __NR_setpgid,
+    __NR_tkill, __NR_ptrace, __NR_process_vm_readv, __NR_process_vm_writev, __NR_kcmp, __NR_perf_event_open,
+    __NR_move_pages, __NR_migrate_pages, __NR_get_robust_list, __NR_ioprio_set, __NR_setsid, __NR_setpgid,
     __NR_unshare, __NR_setns, __NR_mount, __NR_umount2, __NR_pivot_root, __NR_chroot, __NR_bpf,
     __NR_userfaultfd, __NR_keyctl, __NR_add_key, __NR_request_key,
 #ifdef __NR_pidfd_open
@@ -89,6 +96,12 @@ static const int _sl_denied_syscalls[] = {
 #ifdef __NR_pidfd_getfd
     __NR_pidfd_getfd,
 #endif
+#ifdef __NR_process_madvise
+    __NR_process_madvise,
+#endif
+#ifdef __NR_process_mrelease
+    __NR_process_mrelease,
+#endif
 #ifdef __NR_io_uring_setup
     __NR_io_uring_setup,
 #endif
@@ -97,7 +110,14 @@ static const int _sl_denied_syscalls[] = {
 #endif
 };
 
-#define _SL_DENIED_COUNT ((int)(sizeof _sl_denied_syscalls / sizeof _sl_denied_syscalls[0]))
+/* Calls that act on the process (or thread) their first argument names:
+ * allowed on this one only (0 or its own pid). Setting another thread's
+ * affinity by its id is refused too; nothing the runner needs does it. */
+static const int _sl_own_process_syscalls[] = {
+    __NR_prlimit64, __NR_sched_setaffinity, __NR_sched_setscheduler, __NR_sched_setparam, __NR_sched_setattr,
+};
+
+#define _SL_COUNT(array) ((int)(sizeof array / sizeof array[0]))
 #define _SL_EMIT(instruction) filter[n++] = (struct sock_filter)instruction
 #define _SL_LOAD(field) _SL_EMIT(BPF_STMT(BPF_LD | BPF_W | BPF_ABS, (uint32_t)offsetof(struct seccomp_data, field)))
 #define _SL_RETURN(value) _SL_EMIT(BPF_STMT(BPF_RET | BPF_K, (value)))
@@ -105,11 +125,14 @@ static const int _sl_denied_syscalls[] = {
     _SL_EMIT(BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, (value), (skip_if_true), (skip_if_false)))
 
 /* The process filter: lab code may start threads but no processes, signal
- * only itself, and not trace, remount or leave its namespaces. */
+ * only itself, touch no other process (its memory, limits, scheduling,
+ * priority, signals sent on I/O), not make itself dumpable again, and not
+ * trace, remount or leave its namespaces. Arguments are compared on their
+ * low 32 bits: the kernel reads each one here as an int. */
 static bool _sl_install_seccomp(void) {
     const uint32_t self = (uint32_t)getpid(); /* exec keeps the pid */
     const uint32_t eperm = SECCOMP_RET_ERRNO | EPERM, allow = SECCOMP_RET_ALLOW;
-    struct sock_filter filter[32 + _SL_DENIED_COUNT];
+    struct sock_filter filter[96 + _SL_COUNT(_sl_own_process_syscalls) + _SL_COUNT(_sl_denied_syscalls)];
     int n = 0;
     _SL_LOAD(arch);
     _SL_IF_EQUAL(_SL_AUDIT_ARCH, 1, 0);
@@ -147,7 +170,47 @@ static bool _sl_install_seccomp(void) {
     _SL_IF_EQUAL(self, 1, 0);
     _SL_RETURN(eperm);
     _SL_RETURN(allow);
-    for (int i = 0; i < _SL_DENIED_COUNT; i++) _SL_IF_EQUAL((uint32_t)_sl_denied_syscalls[i], (uint8_t)(_SL_DENIED_COUNT - i), 0);
+    /* limits and scheduling: this process only */
+    const int own = _SL_COUNT(_sl_own_process_syscalls);
+    for (int i = 0; i < own; i++) _SL_IF_EQUAL((uint32_t)_sl_own_process_syscalls[i], (uint8_t)(own - i), 0);
+    _SL_EMIT(BPF_JUMP(BPF_JMP | BPF_JA, 5, 0, 0));
+    _SL_LOAD(args[0]);
+    _SL_IF_EQUAL(0, 2, 0);
+    _SL_IF_EQUAL(self, 1, 0);
+    _SL_RETURN(eperm);
+    _SL_RETURN(allow);
+    /* priority: this process only (PRIO_USER would renice every process of the uid) */
+    _SL_IF_EQUAL(__NR_setpriority, 0, 7);
+    _SL_LOAD(args[0]);
+    _SL_IF_EQUAL(PRIO_PROCESS, 0, 3);
+    _SL_LOAD(args[1]);
+    _SL_IF_EQUAL(0, 2, 0);
+    _SL_IF_EQUAL(self, 1, 0);
+    _SL_RETURN(eperm);
+    _SL_RETURN(allow);
+    /* SIGIO and SIGURG go to the owner a descriptor names, with any signal F_SETSIG picks */
+    _SL_IF_EQUAL(__NR_fcntl, 0, 5);
+    _SL_LOAD(args[1]);
+    _SL_IF_EQUAL(F_SETOWN, 2, 0);
+    _SL_IF_EQUAL(F_SETOWN_EX, 1, 0);
+    _SL_RETURN(allow);
+    _SL_RETURN(eperm);
+    _SL_IF_EQUAL(__NR_ioctl, 0, 6);
+    _SL_LOAD(args[1]);
+    _SL_IF_EQUAL(FIOSETOWN, 3, 0);
+    _SL_IF_EQUAL(SIOCSPGRP, 2, 0);
+    _SL_IF_EQUAL(TIOCSTI, 1, 0);
+    _SL_RETURN(allow);
+    _SL_RETURN(eperm);
+    /* Not dumpable it stays: then no process of its uid can open its memory,
+     * and the grader knows it still runs the (execute-only) runner. */
+    _SL_IF_EQUAL(__NR_prctl, 0, 4);
+    _SL_LOAD(args[0]);
+    _SL_IF_EQUAL(PR_SET_DUMPABLE, 1, 0);
+    _SL_RETURN(allow);
+    _SL_RETURN(eperm);
+    const int denied = _SL_COUNT(_sl_denied_syscalls);
+    for (int i = 0; i < denied; i++) _SL_IF_EQUAL((uint32_t)_sl_denied_syscalls[i], (uint8_t)(denied - i), 0);
     _SL_RETURN(allow);
     _SL_RETURN(eperm);
     struct sock_fprog program = {(unsigned short)n, filter};
@@ -293,7 +356,7 @@ static const char *_sl_private_mount_point(const sl_sandbox *sb) {
 }
 
 /* Builds the sandbox's file system and enters it. */
-static void _sl_enter_view(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d) {
+static void _sl_enter_view(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, const char *runner) {
     const char *root = _sl_private_mount_point(sb);
     if (mount("tmpfs", root, "tmpfs", MS_NOSUID | MS_NODEV, "size=32m,mode=0755") != 0)
         _sl_fail("cannot mount a tmpfs on %s: %s", root, strerror(errno));
@@ -337,7 +400,7 @@ static void _sl_enter_view(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d)
     if (mount("tmpfs", path, "tmpfs", MS_NOSUID | MS_NODEV, "size=16m,mode=1777") != 0)
         _sl_fail("cannot mount /tmp: %s", strerror(errno));
     _sl_path(path, sizeof path, root, "shadowlab-runner");
-    _sl_bind_file(d->runner, path, true);
+    _sl_bind_file(runner, path, true);
 
     /* The shaders under test, copied: regular files of the lab folders only,
      * no link followed, so the copy shows nothing from elsewhere and lab code
@@ -382,25 +445,64 @@ static void _sl_drop_to_uid(uid_t uid) {
         _sl_fail("cannot switch to uid %u: %s", (unsigned)uid, strerror(errno));
 }
 
-static void _sl_limits(const sl_sandbox_spawn_desc *d) {
+/* In a user namespace the child holds every capability of it until the exec,
+ * the right to read any file among them: without them, the exec of the
+ * execute-only runner leaves the process not dumpable, as it does elsewhere. */
+static void _sl_drop_capabilities(void) {
+    struct __user_cap_header_struct header = {_LINUX_CAPABILITY_VERSION_3, 0};
+    struct __user_cap_data_struct data[_LINUX_CAPABILITY_U32S_3];
+    memset(data, 0, sizeof data);
+    if (syscall(SYS_capset, &header, data) != 0) _sl_fail("cannot drop the capabilities: %s", strerror(errno));
+}
+
+/* What one start of a runner needs besides its desc, settled by the grader before the fork. */
+typedef struct _sl_plan {
+    const char *runner;       /* the file to execute: the runner's execute-only copy where there is one */
+    bool switch_uid;          /* become `uid` (and gid `uid`), without supplementary groups */
+    uid_t uid;                /* with maps_from_grader, inside the runner's user namespace */
+    uid_t mapped_uid;         /* with maps_from_grader: what `uid` is outside */
+    bool maps_from_grader;    /* root in a user namespace: the grader maps the runner's ids (to a uid of the pool) */
+    rlim_t process_limit;     /* RLIMIT_NPROC; 0: unchanged */
+    char cgroup[320];         /* a pids cgroup to join first, or "" */
+} _sl_plan;
+
+static void _sl_limits(const sl_sandbox_spawn_desc *d, rlim_t processes) {
     rlim_t cpu = (rlim_t)(d->cpu_seconds > 0 ? d->cpu_seconds : 60) + 1;
-    struct rlimit limits[][1] = {{{cpu, cpu + 1}}, {{d->memory_bytes, d->memory_bytes}}, {{16 << 20, 16 << 20}}, {{0, 0}},
-                                 {{256, 256}}};
-    int resources[] = {RLIMIT_CPU, RLIMIT_AS, RLIMIT_FSIZE, RLIMIT_CORE, RLIMIT_NOFILE};
-    for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++) {
-        if (resources[i] == RLIMIT_AS && d->memory_bytes == 0) continue;
-        if (setrlimit(resources[i], limits[i]) != 0)
-            _sl_fail("cannot set a resource limit: %s", strerror(errno));
+    const struct {
+        int resource;
+        rlim_t soft, hard;
+    } limits[] = {
+        {RLIMIT_CPU, cpu, cpu + 1},     {RLIMIT_AS, d->memory_bytes, d->memory_bytes},
+        {RLIMIT_FSIZE, 16 << 20, 16 << 20}, {RLIMIT_CORE, 0, 0},
+        {RLIMIT_NOFILE, 256, 256},      {RLIMIT_NPROC, processes, processes},
+    };
+    for (size_t i = 0; i < sizeof limits / sizeof limits[0]; i++) {
+        if ((limits[i].resource == RLIMIT_AS && d->memory_bytes == 0) || (limits[i].resource == RLIMIT_NPROC && processes == 0))
+            continue;
+        struct rlimit l = {limits[i].soft, limits[i].hard};
+        if (setrlimit(limits[i].resource, &l) != 0) _sl_fail("cannot set a resource limit: %s", strerror(errno));
     }
 }
 
-static void _sl_child(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, uid_t outer_uid, gid_t outer_gid,
-                      bool probe) {
-    bool as_root = outer_uid == 0 && !sb->user_namespace;
+static void _sl_child(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, const _sl_plan *plan, uid_t outer_uid,
+                      gid_t outer_gid, int go_fd, bool probe) {
     /* Its own session and process group, so kill(0, ...) reaches nothing else. */
     if (setsid() < 0) _sl_fail("setsid: %s", strerror(errno));
+    /* Its pids cgroup first, while it may still join it: every task it makes counts there. */
+    if (plan->cgroup[0]) {
+        char procs[400];
+        snprintf(procs, sizeof procs, "%s/cgroup.procs", plan->cgroup);
+        _sl_write_file(procs, "0");
+    }
     if (sb->level == SL_SANDBOX_NAMESPACES) {
-        if (sb->user_namespace) {
+        if (plan->maps_from_grader) {
+            char go = 0;
+            ssize_t got;
+            while ((got = read(go_fd, &go, 1)) < 0 && errno == EINTR) {}
+            if (got != 1) _sl_fail("the grader could not map the runner's uid into its user namespace");
+            /* only the runner's uid is mapped: the view is made as that uid */
+            _sl_drop_to_uid(plan->uid);
+        } else if (sb->user_namespace) {
             char map[64];
             /* the grader is not dumpable, and /proc/self then belongs to root */
             prctl(PR_SET_DUMPABLE, 1, 0, 0, 0);
@@ -410,17 +512,18 @@ static void _sl_child(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, uid_
             snprintf(map, sizeof map, "%d %u 1\n", _SL_INNER_ID, (unsigned)outer_gid);
             _sl_write_file("/proc/self/gid_map", map);
         }
-        _sl_enter_view(sb, d);
+        _sl_enter_view(sb, d, plan->runner);
     }
-    if ((as_root && sb->level == SL_SANDBOX_NAMESPACES) || sb->level == SL_SANDBOX_UID) _sl_drop_to_uid(_SL_SANDBOX_UID);
+    if (plan->switch_uid && !plan->maps_from_grader) _sl_drop_to_uid(plan->uid);
+    if (sb->user_namespace) _sl_drop_capabilities();
     if (probe) {
         /* the runner must be reachable for the uid it runs as */
-        const char *runner = sb->level == SL_SANDBOX_NAMESPACES ? "/shadowlab-runner" : d->runner;
+        const char *runner = sb->level == SL_SANDBOX_NAMESPACES ? "/shadowlab-runner" : plan->runner;
         if (access(runner, X_OK) != 0) _sl_fail("uid %u cannot run %s: %s", (unsigned)geteuid(), runner, strerror(errno));
         _exit(0);
     }
     if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) _sl_fail("PR_SET_PDEATHSIG: %s", strerror(errno));
-    _sl_limits(d);
+    _sl_limits(d, plan->process_limit);
     /* fds: 0 the job, 1 and 2 the output, 3 the channel; nothing else survives exec */
     int fds[4] = {d->stdin_fd, d->output_fd, d->output_fd, d->channel_fd};
     int moved[4];
@@ -438,7 +541,7 @@ static void _sl_child(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, uid_
         for (int fd = 4; fd < 1024; fd++) fcntl(fd, F_SETFD, FD_CLOEXEC);
     signal(SIGPIPE, SIG_DFL);
     if (sb->seccomp && !_sl_install_seccomp()) _sl_fail("cannot install the process filter: %s", strerror(errno));
-    const char *path = sb->level == SL_SANDBOX_NAMESPACES ? "/shadowlab-runner" : d->runner;
+    const char *path = sb->level == SL_SANDBOX_NAMESPACES ? "/shadowlab-runner" : plan->runner;
     char *const argv[] = {(char *)"shadowlab-runner", NULL};
     execve(path, argv, (char *const *)d->environment);
     _sl_fail("cannot start %s: %s", d->runner, strerror(errno));
@@ -453,11 +556,43 @@ static pid_t _sl_fork(const sl_sandbox *sb) {
     return (pid_t)syscall(SYS_clone, flags, NULL, NULL, NULL, NULL);
 }
 
-static bool _sl_start(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, bool probe, pid_t *pid_out, char *err,
-                      size_t n) {
-    int report[2];
+/* ---- the grader's side ---- */
+
+static bool _sl_write_text(const char *path, const char *text) {
+    int fd = open(path, O_WRONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    ssize_t n = (ssize_t)strlen(text);
+    bool ok = write(fd, text, (size_t)n) == n;
+    return close(fd) == 0 && ok;
+}
+
+/* Root's user namespace for a runner: its uid 1000 is the pool's uid outside. */
+static bool _sl_map_ids(pid_t pid, uid_t uid, char *err, size_t n) {
+    char path[64], map[64];
+    snprintf(map, sizeof map, "%d %u 1\n", _SL_INNER_ID, (unsigned)uid);
+    const char *files[] = {"uid_map", "gid_map"};
+    for (int i = 0; i < 2; i++) {
+        snprintf(path, sizeof path, "/proc/%d/%s", (int)pid, files[i]);
+        if (!_sl_write_text(path, map)) {
+            snprintf(err, n, "cannot map uid %u into the runner's user namespace (%s): %s", (unsigned)uid, files[i],
+                     strerror(errno));
+            return false;
+        }
+    }
+    return true;
+}
+
+static bool _sl_start(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, const _sl_plan *plan, bool probe,
+                      pid_t *pid_out, char *err, size_t n) {
+    int report[2], go[2] = {-1, -1};
     if (pipe2(report, O_CLOEXEC) != 0) {
         snprintf(err, n, "pipe: %s", strerror(errno));
+        return false;
+    }
+    if (plan->maps_from_grader && pipe2(go, O_CLOEXEC) != 0) {
+        snprintf(err, n, "pipe: %s", strerror(errno));
+        close(report[0]);
+        close(report[1]);
         return false;
     }
     uid_t uid = geteuid();
@@ -468,14 +603,29 @@ static bool _sl_start(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, bool
         snprintf(err, n, "cannot start a process (%s sandbox): %s", sl_sandbox_level_name(sb->level), strerror(errno));
         close(report[0]);
         close(report[1]);
+        if (go[0] >= 0) close(go[0]), close(go[1]);
         return false;
     }
     if (pid == 0) {
         close(report[0]);
+        if (go[1] >= 0) close(go[1]);
         _sl_report_fd = report[1];
-        _sl_child(sb, d, uid, gid, probe);
+        _sl_child(sb, d, plan, uid, gid, go[0], probe);
     }
     close(report[1]);
+    if (go[0] >= 0) {
+        close(go[0]);
+        if (_sl_map_ids(pid, plan->mapped_uid, err, n) && write(go[1], "", 1) == 1) {
+            close(go[1]);
+        } else {
+            close(go[1]);
+            close(report[0]);
+            kill(pid, SIGKILL);
+            while (waitpid(pid, NULL, 0) < 0 && errno == EINTR) {}
+            if (!err[0]) snprintf(err, n, "cannot release the runner's set-up: %s", strerror(errno));
+            return false;
+        }
+    }
     char msg[512];
     ssize_t got, total = 0;
     while ((got = read(report[0], msg + total, sizeof msg - 1 - (size_t)total)) > 0 ||
@@ -495,15 +645,489 @@ static bool _sl_start(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, bool
     return true;
 }
 
+/* ---- execute-only copies of the runners ----
+ * The kernel leaves a process not dumpable when it execs a file it may not
+ * read, from the exec on (before any lab code, constructors and ifunc
+ * resolvers included). Not dumpable, no process of the same uid (another
+ * runner, at `basic`) may trace it or open its memory in /proc. Each copy has
+ * a random name in a folder others may pass through but not list: no runner
+ * can find another grade's copies to run them. */
+
+#define _SL_RUNNER_COPIES_MAX 24
+
+struct _sl_sandbox_runners {
+    char dir[64];
+    int count;
+    struct {
+        char source[1100];
+        char copy[128];
+        dev_t dev;
+        ino_t ino;
+    } copies[_SL_RUNNER_COPIES_MAX];
+};
+
+static void _sl_runners_open(sl_sandbox *sb) {
+    _sl_sandbox_runners *r = calloc(1, sizeof *r);
+    if (!r) return;
+    snprintf(r->dir, sizeof r->dir, "/tmp/shadowlab-runners-XXXXXX");
+    struct statvfs st;
+    if (!mkdtemp(r->dir)) {
+        free(r);
+        return;
+    }
+    if (chmod(r->dir, 0711) != 0 || statvfs(r->dir, &st) != 0 || (st.f_flag & ST_NOEXEC)) {
+        rmdir(r->dir);
+        free(r);
+        return;
+    }
+    sb->runners = r;
+}
+
+static void _sl_runners_close(sl_sandbox *sb) {
+    _sl_sandbox_runners *r = sb->runners;
+    if (!r) return;
+    for (int i = 0; i < r->count; i++) {
+        unlink(r->copies[i].copy);
+        char *slash = strrchr(r->copies[i].copy, '/');
+        *slash = '\0';
+        rmdir(r->copies[i].copy);
+    }
+    rmdir(r->dir);
+    free(r);
+    sb->runners = NULL;
+}
+
+static bool _sl_copy_file(int in, int out) {
+    char buf[1 << 16];
+    ssize_t got;
+    while ((got = read(in, buf, sizeof buf)) != 0) {
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) return false;
+        for (ssize_t done = 0; done < got;) {
+            ssize_t w = write(out, buf + done, (size_t)(got - done));
+            if (w < 0 && errno == EINTR) continue;
+            if (w <= 0) return false;
+            done += w;
+        }
+    }
+    return true;
+}
+
+/* The file a runner of `source` executes, and its identity; false with the reason. */
+static bool _sl_runner_file(const sl_sandbox *sb, const char *source, _sl_plan *plan, sl_sandbox_process *out,
+                            char *err, size_t n) {
+    _sl_sandbox_runners *r = sb->runners;
+    struct stat st;
+    if (!r) {
+        if (stat(source, &st) != 0) {
+            snprintf(err, n, "%s: %s", source, strerror(errno));
+            return false;
+        }
+        plan->runner = source;
+        out->runner_dev = st.st_dev;
+        out->runner_ino = st.st_ino;
+        return true;
+    }
+    for (int i = 0; i < r->count; i++)
+        if (strcmp(r->copies[i].source, source) == 0) {
+            plan->runner = r->copies[i].copy;
+            out->runner_dev = r->copies[i].dev;
+            out->runner_ino = r->copies[i].ino;
+            return true;
+        }
+    if (r->count >= _SL_RUNNER_COPIES_MAX || strlen(source) >= sizeof r->copies[0].source) {
+        snprintf(err, n, "too many runners, or a path too long: %s", source);
+        return false;
+    }
+    uint64_t random_name;
+    if (getrandom(&random_name, sizeof random_name, 0) != sizeof random_name) {
+        snprintf(err, n, "getrandom: %s", strerror(errno));
+        return false;
+    }
+    /* <folder>/<random>/<the runner's own name>: what ps shows stays its name */
+    char dir[sizeof r->dir + 20];
+    const char *base = strrchr(source, '/') ? strrchr(source, '/') + 1 : source;
+    snprintf(dir, sizeof dir, "%s/%016llx", r->dir, (unsigned long long)random_name);
+    char *copy = r->copies[r->count].copy;
+    if (mkdir(dir, 0711) != 0 || chmod(dir, 0711) != 0 ||
+        (size_t)snprintf(copy, sizeof r->copies[0].copy, "%s/%.40s", dir, base) >= sizeof r->copies[0].copy) {
+        snprintf(err, n, "cannot make a folder for the runner's copy in %s: %s", r->dir, strerror(errno));
+        rmdir(dir);
+        return false;
+    }
+    int in = open(source, O_RDONLY | O_CLOEXEC);
+    int out_fd = in < 0 ? -1 : open(copy, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0700);
+    bool ok = out_fd >= 0 && _sl_copy_file(in, out_fd) && fchmod(out_fd, 0111) == 0 && fstat(out_fd, &st) == 0;
+    int saved = errno;
+    if (out_fd >= 0 && close(out_fd) != 0) ok = false;
+    if (in >= 0) close(in);
+    if (!ok) {
+        if (out_fd >= 0) unlink(copy);
+        rmdir(dir);
+        snprintf(err, n, "cannot copy the runner %s to %s: %s", source, r->dir, strerror(saved));
+        return false;
+    }
+    snprintf(r->copies[r->count].source, sizeof r->copies[0].source, "%s", source);
+    r->copies[r->count].dev = st.st_dev;
+    r->copies[r->count].ino = st.st_ino;
+    r->count++;
+    plan->runner = copy;
+    out->runner_dev = st.st_dev;
+    out->runner_ino = st.st_ino;
+    return true;
+}
+
+/* ---- processes and tasks, as /proc shows them ---- */
+
+/* Calls `each` with the real, effective, saved and file uids of every process and its thread count. */
+static void _sl_each_process(void (*each)(const uid_t uids[4], long threads, void *context), void *context) {
+    DIR *d = opendir("/proc");
+    if (!d) return;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        if (e->d_name[0] < '1' || e->d_name[0] > '9') continue;
+        char path[300], buf[4096];
+        snprintf(path, sizeof path, "/proc/%s/status", e->d_name);
+        int fd = open(path, O_RDONLY | O_CLOEXEC);
+        if (fd < 0) continue;
+        ssize_t got = read(fd, buf, sizeof buf - 1);
+        close(fd);
+        if (got <= 0) continue;
+        buf[got] = '\0';
+        const char *u = strstr(buf, "\nUid:"), *t = strstr(buf, "\nThreads:");
+        unsigned long v[4];
+        if (!u || sscanf(u + 5, "%lu %lu %lu %lu", &v[0], &v[1], &v[2], &v[3]) != 4) continue;
+        uid_t uids[4] = {(uid_t)v[0], (uid_t)v[1], (uid_t)v[2], (uid_t)v[3]};
+        each(uids, t ? atol(t + 9) : 1, context);
+    }
+    closedir(d);
+}
+
+typedef struct _sl_task_count {
+    uid_t uid;
+    long tasks;
+} _sl_task_count;
+
+static void _sl_count_tasks(const uid_t uids[4], long threads, void *context) {
+    _sl_task_count *c = context;
+    if (uids[0] == c->uid) c->tasks += threads;
+}
+
+/* ---- the pool of runner uids (the grader as root) ---- */
+
+#define _SL_POOL_FIRST 60800 /* unused by Debian's and systemd's conventions (systemd: 60578-61183 unused) */
+#define _SL_POOL_COUNT 256
+#define _SL_POOL_MAX 65536
+
+static bool _sl_pool_range(uid_t *first, uid_t *count, char *err, size_t n) {
+    *first = _SL_POOL_FIRST;
+    *count = _SL_POOL_COUNT;
+    const char *v = getenv("SHADOWLAB_RUNNER_UIDS");
+    if (!v || !*v) return true;
+    unsigned long a = 0, b = 0;
+    char tail;
+    if (sscanf(v, "%lu-%lu%c", &a, &b, &tail) != 2 || a == 0 || b < a || b - a >= _SL_POOL_MAX || b >= 4294967295ul) {
+        snprintf(err, n, "SHADOWLAB_RUNNER_UIDS=%s: give FIRST-LAST, unused uids above 0, at most %d of them", v,
+                 _SL_POOL_MAX);
+        return false;
+    }
+    *first = (uid_t)a;
+    *count = (uid_t)(b - a + 1);
+    return true;
+}
+
+/* The pool's lock files live in a folder only root may write to: no runner
+ * can take, hold or fake a lock. */
+static bool _sl_pool_lock_dir(char out[64], char *err, size_t n) {
+    static const char *const candidates[] = {"/run/shadowlab-runner-uids", "/tmp/shadowlab-runner-uids"};
+    for (size_t i = 0; i < sizeof candidates / sizeof candidates[0]; i++) {
+        struct stat st;
+        if (mkdir(candidates[i], 0700) != 0 && errno != EEXIST) continue;
+        if (lstat(candidates[i], &st) == 0 && S_ISDIR(st.st_mode) && st.st_uid == 0 && (st.st_mode & 022) == 0) {
+            snprintf(out, 64, "%s", candidates[i]);
+            return true;
+        }
+    }
+    snprintf(err, n, "no folder for the runner uids' locks: %s and %s are missing or not root's alone", candidates[0],
+             candidates[1]);
+    return false;
+}
+
+typedef struct _sl_pool_scan {
+    uid_t first, count;
+    uint8_t *busy;
+} _sl_pool_scan;
+
+static void _sl_mark_busy(const uid_t uids[4], long threads, void *context) {
+    (void)threads;
+    _sl_pool_scan *s = context;
+    for (int i = 0; i < 4; i++)
+        if (uids[i] >= s->first && uids[i] - s->first < s->count) s->busy[uids[i] - s->first] = 1;
+}
+
+/* A uid with a user or group name belongs to someone (asked once per grader). */
+static bool _sl_uid_named(uid_t first, uid_t count, uid_t uid) {
+    static uint8_t *known; /* 0 not asked, 1 nameless, 2 named */
+    static uid_t known_first, known_count;
+    if (!known || known_first != first || known_count != count) {
+        free(known);
+        known = calloc(count, 1);
+        known_first = first;
+        known_count = count;
+        if (!known) return true;
+    }
+    uint8_t *k = &known[uid - first];
+    if (!*k) *k = getpwuid(uid) || getgrgid((gid_t)uid) ? 2 : 1;
+    return *k == 2;
+}
+
+static const char *const _sl_shared_folders[] = {"/tmp", "/var/tmp", "/dev/shm", "/dev/mqueue"};
+
+/* Whether `uid` owns something at the top of the folders every user may write to. */
+static bool _sl_owns_shared_files(uid_t uid) {
+    bool found = false;
+    for (size_t i = 0; i < sizeof _sl_shared_folders / sizeof _sl_shared_folders[0] && !found; i++) {
+        DIR *d = opendir(_sl_shared_folders[i]);
+        if (!d) continue;
+        struct dirent *e;
+        struct stat st;
+        while (!found && (e = readdir(d)))
+            found = fstatat(dirfd(d), e->d_name, &st, AT_SYMLINK_NOFOLLOW) == 0 && st.st_uid == uid;
+        closedir(d);
+    }
+    return found;
+}
+
+/* Removes `name` in `dfd` and, a folder, what it holds, never following a
+ * link; at most *budget entries. */
+static void _sl_remove_at(int dfd, const char *name, int depth, long *budget) {
+    struct stat st;
+    if (*budget <= 0 || fstatat(dfd, name, &st, AT_SYMLINK_NOFOLLOW) != 0) return;
+    --*budget;
+    if (S_ISDIR(st.st_mode)) {
+        int sub = depth < 32 ? openat(dfd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC) : -1;
+        DIR *d = sub >= 0 ? fdopendir(sub) : NULL;
+        if (!d && sub >= 0) close(sub);
+        struct dirent *e;
+        while (d && (e = readdir(d)))
+            if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0) _sl_remove_at(dirfd(d), e->d_name, depth + 1, budget);
+        if (d) closedir(d);
+        unlinkat(dfd, name, AT_REMOVEDIR);
+    } else {
+        unlinkat(dfd, name, 0);
+    }
+}
+
+/* What a runner of `uid` left in the shared folders (its processes are gone:
+ * nothing of that uid writes there while this runs). */
+static void _sl_remove_shared_files(uid_t uid) {
+    long budget = 100000;
+    for (size_t i = 0; i < sizeof _sl_shared_folders / sizeof _sl_shared_folders[0]; i++) {
+        DIR *d = opendir(_sl_shared_folders[i]);
+        if (!d) continue;
+        struct dirent *e;
+        struct stat st;
+        while ((e = readdir(d)))
+            if (fstatat(dirfd(d), e->d_name, &st, AT_SYMLINK_NOFOLLOW) == 0 && st.st_uid == uid &&
+                strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0)
+                _sl_remove_at(dirfd(d), e->d_name, 0, &budget);
+        closedir(d);
+    }
+}
+
+/* Claims a uid of the pool for one runner: returns the lock that holds it
+ * (close it to free the uid), or -1 with the reason. */
+static int _sl_pool_claim(const sl_sandbox *sb, uid_t *uid, char *err, size_t n) {
+    _sl_pool_scan scan = {sb->uid, sb->uid_count, calloc(sb->uid_count, 1)};
+    if (!scan.busy) {
+        snprintf(err, n, "out of memory");
+        return -1;
+    }
+    _sl_each_process(_sl_mark_busy, &scan);
+    /* graders start at different places of the pool, so they rarely try the same locks */
+    uid_t start = (uid_t)getpid() % sb->uid_count;
+    int lock = -1;
+    for (uid_t i = 0; i < sb->uid_count && lock < 0; i++) {
+        uid_t candidate = sb->uid + (start + i) % sb->uid_count;
+        if (scan.busy[candidate - sb->uid] || _sl_uid_named(sb->uid, sb->uid_count, candidate)) continue;
+        char path[128];
+        snprintf(path, sizeof path, "%s/%u", sb->lock_dir, (unsigned)candidate);
+        int fd = open(path, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+        if (fd < 0) continue;
+        if (flock(fd, LOCK_EX | LOCK_NB) != 0 || _sl_owns_shared_files(candidate)) {
+            close(fd);
+            continue;
+        }
+        *uid = candidate;
+        lock = fd;
+    }
+    free(scan.busy);
+    if (lock < 0)
+        snprintf(err, n, "no free runner uid in %u-%u (each has a runner, a process, a user or group name, or files in "
+                         "/tmp, /var/tmp or /dev/shm): set SHADOWLAB_RUNNER_UIDS=FIRST-LAST to a range of unused uids",
+                 (unsigned)sb->uid, (unsigned)(sb->uid + sb->uid_count - 1));
+    return lock;
+}
+
+/* Frees a uid of the pool: below the namespaces sandbox, whatever still runs
+ * as it is killed and what it left in the shared folders removed first (in
+ * namespaces, its PID namespace and private /tmp went with the runner). */
+static void _sl_pool_release(const sl_sandbox *sb, uid_t uid, int lock) {
+    if (sb->level != SL_SANDBOX_NAMESPACES) {
+        pid_t pid = fork();
+        if (pid == 0) {
+            /* kill(-1) as the uid reaches exactly its processes */
+            if (_sl_setgroups_none() == 0 && _sl_setresgid((gid_t)uid) == 0 && _sl_setresuid(uid) == 0) kill(-1, SIGKILL);
+            _exit(0);
+        }
+        while (pid > 0 && waitpid(pid, NULL, 0) < 0 && errno == EINTR) {}
+        _sl_remove_shared_files(uid);
+    }
+    close(lock);
+}
+
+/* ---- a pids cgroup per runner, where the grader may make them ---- */
+
+/* cgroup v1's pids hierarchy: the folder of this process's own cgroup there,
+ * when the grader may make children in it (as root, or where staff gave it
+ * the folder). */
+static bool _sl_find_pids_cgroup(char *out, size_t n) {
+    char line[1200], own[1024] = "", mount_point[512] = "", mount_root[512] = "";
+    FILE *f = fopen("/proc/self/cgroup", "re");
+    if (!f) return false;
+    while (fgets(line, sizeof line, f)) {
+        char *controllers = strchr(line, ':'), *path = controllers ? strchr(controllers + 1, ':') : NULL;
+        if (!path) continue;
+        *path++ = '\0';
+        path[strcspn(path, "\n")] = '\0';
+        for (char *c = strtok(controllers + 1, ","); c; c = strtok(NULL, ","))
+            if (strcmp(c, "pids") == 0) snprintf(own, sizeof own, "%s", path);
+    }
+    fclose(f);
+    if (!own[0] || !(f = fopen("/proc/self/mountinfo", "re"))) return false;
+    while (fgets(line, sizeof line, f)) {
+        /* id parent major:minor root mount-point options ... - type source super-options */
+        char root[512], point[512], type[64], super[512];
+        const char *dash = strstr(line, " - ");
+        if (!dash || sscanf(line, "%*s %*s %*s %511s %511s", root, point) != 2 ||
+            sscanf(dash + 3, "%63s %*s %511s", type, super) != 2 || strcmp(type, "cgroup") != 0)
+            continue;
+        for (char *c = strtok(super, ","); c; c = strtok(NULL, ","))
+            if (strcmp(c, "pids") == 0) {
+                snprintf(mount_point, sizeof mount_point, "%s", point);
+                snprintf(mount_root, sizeof mount_root, "%s", root);
+            }
+    }
+    fclose(f);
+    if (!mount_point[0]) return false;
+    size_t root_length = strcmp(mount_root, "/") == 0 ? 0 : strlen(mount_root);
+    if (root_length && strncmp(own, mount_root, root_length) != 0) return false;
+    if ((size_t)snprintf(out, n, "%s%s", mount_point, own + root_length) >= n) return false;
+    char probe[1100];
+    snprintf(probe, sizeof probe, "%s/shadowlab-probe-%d", out, (int)getpid());
+    if (mkdir(probe, 0755) != 0) return false;
+    rmdir(probe);
+    return true;
+}
+
+static bool _sl_cgroup_make(const sl_sandbox *sb, char *cgroup, size_t n, int limit, char *err, size_t err_size) {
+    static unsigned sequence;
+    char file[400], value[32];
+    snprintf(cgroup, n, "%s/shadowlab-runner-%d-%u", sb->pids_cgroup, (int)getpid(), sequence++);
+    snprintf(file, sizeof file, "%s/pids.max", cgroup);
+    snprintf(value, sizeof value, "%d", limit);
+    if (mkdir(cgroup, 0755) == 0 && _sl_write_text(file, value)) return true;
+    snprintf(err, err_size, "cannot make the runner's pids cgroup %s: %s", cgroup, strerror(errno));
+    rmdir(cgroup);
+    cgroup[0] = '\0';
+    return false;
+}
+
+static void _sl_cgroup_remove(const char *cgroup) {
+    char procs[400];
+    snprintf(procs, sizeof procs, "%s/cgroup.procs", cgroup);
+    for (int attempt = 0; attempt < 50; attempt++) {
+        if (rmdir(cgroup) == 0 || errno == ENOENT) return;
+        FILE *f = fopen(procs, "re");
+        int pid;
+        while (f && fscanf(f, "%d", &pid) == 1) kill(pid, SIGKILL);
+        if (f) fclose(f);
+        usleep(2000);
+    }
+}
+
+/* ---- starting runners ---- */
+
+static int _sl_default_process_limit(void) {
+    /* llvmpipe starts a thread per CPU (up to its own maximum) for drawing and
+     * as many for compute; the runner needs a few more */
+    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+    long limit = 2 * (cpus > 0 ? cpus : 1) + 16;
+    return (int)(limit < 32 ? 32 : limit > 256 ? 256 : limit);
+}
+
+static void _sl_release(const sl_sandbox *sb, sl_sandbox_process *p) {
+    if (p->cgroup[0]) _sl_cgroup_remove(p->cgroup);
+    p->cgroup[0] = '\0';
+    if (p->uid_lock >= 0) _sl_pool_release(sb, p->uid, p->uid_lock);
+    p->uid_lock = -1;
+}
+
+static bool _sl_spawn(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, bool probe, sl_sandbox_process *out,
+                      char *err, size_t n) {
+    memset(out, 0, sizeof *out);
+    out->uid_lock = -1;
+    err[0] = '\0';
+    _sl_plan plan = {0};
+    if (!_sl_runner_file(sb, d->runner, &plan, out, err, n)) return false;
+    bool root = geteuid() == 0;
+    out->uid = sb->uid;
+    if (sb->own_uids) {
+        out->uid_lock = _sl_pool_claim(sb, &out->uid, err, n);
+        if (out->uid_lock < 0) return false;
+        plan.switch_uid = true;
+        plan.uid = out->uid;
+        if (sb->level == SL_SANDBOX_NAMESPACES && sb->user_namespace) {
+            plan.maps_from_grader = true;
+            plan.uid = _SL_INNER_ID;
+            plan.mapped_uid = out->uid;
+        }
+        plan.process_limit = (rlim_t)sb->process_limit;
+    } else if (sb->user_namespace) {
+        /* a user namespace of its own: the limit counts this runner's tasks only */
+        plan.process_limit = (rlim_t)sb->process_limit;
+    } else if (!root) {
+        /* the grader's uid: the limit counts every task of that user, so it
+         * bounds them all together, no runner alone */
+        _sl_task_count count = {geteuid(), 0};
+        _sl_each_process(_sl_count_tasks, &count);
+        plan.process_limit = (rlim_t)(count.tasks + sb->process_limit);
+    }
+    if (sb->pids_cgroup[0] && !probe &&
+        !_sl_cgroup_make(sb, out->cgroup, sizeof out->cgroup, sb->process_limit, err, n)) {
+        _sl_release(sb, out);
+        return false;
+    }
+    snprintf(plan.cgroup, sizeof plan.cgroup, "%s", out->cgroup);
+    if (!_sl_start(sb, d, &plan, probe, &out->pid, err, n)) {
+        _sl_release(sb, out);
+        return false;
+    }
+    return true;
+}
+
 /* Sets the sandbox up as a runner's would be, up to the exec, in a process
  * that then only checks it could run the runner. */
 static bool _sl_try_level(sl_sandbox *sb, sl_sandbox_level level, bool user_namespace, const char *runner, char *why,
                           size_t n) {
     sb->level = level;
     sb->user_namespace = user_namespace;
+    sb->own_uids = level > SL_SANDBOX_BASIC && geteuid() == 0;
     sl_sandbox_spawn_desc probe = {.runner = runner, .framework_dir = "/nonexistent"};
-    pid_t pid;
-    return _sl_start(sb, &probe, true, &pid, why, n);
+    sl_sandbox_process p;
+    bool ok = _sl_spawn(sb, &probe, true, &p, why, n);
+    _sl_release(sb, &p);
+    return ok;
 }
 
 bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, const char *runner, char *err, size_t n) {
@@ -513,6 +1137,19 @@ bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, const char *runne
     /* Can this kernel filter system calls? (PR_GET_SECCOMP fails without seccomp.) */
     sb->seccomp = prctl(PR_GET_SECCOMP, 0, 0, 0, 0) >= 0;
 #endif
+    sb->process_limit = _sl_default_process_limit();
+    if (!_sl_find_pids_cgroup(sb->pids_cgroup, sizeof sb->pids_cgroup)) sb->pids_cgroup[0] = '\0';
+    _sl_runners_open(sb);
+    /* As root, each runner gets a uid of its own: the pool must be usable. */
+    if (root && at_most >= SL_SANDBOX_UID) {
+        uid_t first, count;
+        if (!_sl_pool_range(&first, &count, err, n) || !_sl_pool_lock_dir(sb->lock_dir, err, n)) {
+            sl_sandbox_close(sb);
+            return false;
+        }
+        sb->uid = first;
+        sb->uid_count = count;
+    }
     char why[256] = "";
     if (at_most >= SL_SANDBOX_NAMESPACES) {
         snprintf(sb->mount_point, sizeof sb->mount_point, "/tmp/shadowlab-sandbox-XXXXXX");
@@ -525,17 +1162,15 @@ bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, const char *runne
             /* as root: namespaces of its own, else a user namespace (as any user) */
             if (_sl_try_level(sb, SL_SANDBOX_NAMESPACES, !root, runner, why, sizeof why) ||
                 (root && _sl_try_level(sb, SL_SANDBOX_NAMESPACES, true, runner, second, sizeof second))) {
-                sb->uid = root && !sb->user_namespace ? _SL_SANDBOX_UID : geteuid();
+                if (!sb->own_uids) sb->uid = geteuid();
                 return true;
             }
         }
         snprintf(sb->why_not_stronger, sizeof sb->why_not_stronger, "no namespaces: %s", why);
     }
     char uid_why[256] = "";
-    if (at_most >= SL_SANDBOX_UID && root && _sl_try_level(sb, SL_SANDBOX_UID, false, runner, uid_why, sizeof uid_why)) {
-        sb->uid = _SL_SANDBOX_UID;
+    if (at_most >= SL_SANDBOX_UID && root && _sl_try_level(sb, SL_SANDBOX_UID, false, runner, uid_why, sizeof uid_why))
         return true;
-    }
     if (uid_why[0])
         snprintf(sb->why_not_stronger + strlen(sb->why_not_stronger),
                  sizeof sb->why_not_stronger - strlen(sb->why_not_stronger), "%sno other uid: %s",
@@ -544,29 +1179,42 @@ bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, const char *runne
         snprintf(sb->why_not_stronger, sizeof sb->why_not_stronger, "not root: no other uid");
     if (_sl_try_level(sb, SL_SANDBOX_BASIC, false, runner, why, sizeof why)) {
         sb->uid = geteuid();
+        sb->uid_count = 0;
         return true;
     }
     snprintf(err, n, "cannot start a sandboxed process: %s", why);
+    sl_sandbox_close(sb);
     return false;
 }
 
 void sl_sandbox_close(sl_sandbox *sb) {
     if (sb->mount_point[0]) rmdir(sb->mount_point);
     sb->mount_point[0] = '\0';
+    _sl_runners_close(sb);
 }
 
 void sl_sandbox_describe(const sl_sandbox *sb, char *out, size_t n) {
+    char uids[96], extra[160];
+    if (sb->own_uids)
+        snprintf(uids, sizeof uids, "a uid of its own per runner (%u-%u)", (unsigned)sb->uid,
+                 (unsigned)(sb->uid + sb->uid_count - 1));
+    else
+        snprintf(uids, sizeof uids, "uid %u", (unsigned)sb->uid);
+    bool per_runner = sb->own_uids || sb->user_namespace || sb->pids_cgroup[0];
+    snprintf(extra, sizeof extra, "%s, at most %d threads %s%s%s", sb->seccomp ? ", seccomp" : "", sb->process_limit,
+             per_runner ? "each" : "each beyond the user's others (shared with them)",
+             sb->pids_cgroup[0] ? " (pids cgroup)" : "",
+             sb->runners ? "" : ", dumpable (no folder to run execute-only copies from)");
     switch (sb->level) {
     case SL_SANDBOX_NAMESPACES:
-        snprintf(out, n, "namespaces (%suid %u, read-only view of the shaders under test, no network%s)",
-                 sb->user_namespace ? "user namespace, " : "", (unsigned)sb->uid, sb->seccomp ? ", seccomp" : "");
+        snprintf(out, n, "namespaces (%s%s, read-only view of the shaders under test, no network%s)",
+                 sb->user_namespace ? "user namespace, " : "", uids, extra);
         break;
     case SL_SANDBOX_UID:
-        snprintf(out, n, "uid (runs as uid %u%s; %s)", (unsigned)sb->uid, sb->seccomp ? ", seccomp" : "",
-                 sb->why_not_stronger[0] ? sb->why_not_stronger : "by request");
+        snprintf(out, n, "uid (%s%s; %s)", uids, extra, sb->why_not_stronger[0] ? sb->why_not_stronger : "by request");
         break;
     default:
-        snprintf(out, n, "basic (the grader's uid%s; %s)", sb->seccomp ? ", seccomp" : "",
+        snprintf(out, n, "basic (the grader's uid%s; %s)", extra,
                  sb->why_not_stronger[0] ? sb->why_not_stronger : "by request");
         break;
     }
@@ -574,7 +1222,7 @@ void sl_sandbox_describe(const sl_sandbox *sb, char *out, size_t n) {
 
 bool sl_sandbox_spawn(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, sl_sandbox_process *out, char *err,
                       size_t n) {
-    memset(out, 0, sizeof *out);
+    if (!_sl_spawn(sb, d, false, out, err, n)) return false;
     if (sb->level == SL_SANDBOX_NAMESPACES) {
         snprintf(out->labs_dir, sizeof out->labs_dir, "/labs");
         snprintf(out->framework_dir, sizeof out->framework_dir, "/framework");
@@ -582,8 +1230,10 @@ bool sl_sandbox_spawn(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, sl_s
         snprintf(out->labs_dir, sizeof out->labs_dir, "%s", d->labs_tree);
         snprintf(out->framework_dir, sizeof out->framework_dir, "%s", d->framework_dir);
     }
-    return _sl_start(sb, d, false, &out->pid, err, n);
+    return true;
 }
+
+void sl_sandbox_end(const sl_sandbox *sb, sl_sandbox_process *p) { _sl_release(sb, p); }
 
 static bool _sl_can_read(const char *path) {
     int fd = open(path, O_RDONLY | O_CLOEXEC);
@@ -597,14 +1247,20 @@ int sl_sandbox_readable(const sl_sandbox *sb, const char *const *paths, int coun
     if (sb->level == SL_SANDBOX_NAMESPACES || count > 32) return 0;
     uint32_t bits = 0;
     if (sb->level == SL_SANDBOX_UID) {
-        /* ask as the runner's uid, in a child */
+        /* ask as a runner's uid, in a child */
+        char err[512];
+        uid_t uid;
+        int lock = _sl_pool_claim(sb, &uid, err, sizeof err);
         int report[2];
-        if (pipe2(report, O_CLOEXEC) != 0) return 0;
+        if (lock < 0) return 0;
+        if (pipe2(report, O_CLOEXEC) != 0) {
+            _sl_pool_release(sb, uid, lock);
+            return 0;
+        }
         pid_t pid = fork();
         if (pid == 0) {
             uint32_t found = 0;
-            gid_t gid = (gid_t)sb->uid;
-            if (_sl_setgroups_none() == 0 && _sl_setresgid(gid) == 0 && _sl_setresuid(sb->uid) == 0)
+            if (_sl_setgroups_none() == 0 && _sl_setresgid((gid_t)uid) == 0 && _sl_setresuid(uid) == 0)
                 for (int i = 0; i < count; i++) found |= (uint32_t)_sl_can_read(paths[i]) << i;
             ssize_t w = write(report[1], &found, sizeof found);
             _exit(w == sizeof found ? 0 : 1);
@@ -615,6 +1271,7 @@ int sl_sandbox_readable(const sl_sandbox *sb, const char *const *paths, int coun
             while (waitpid(pid, NULL, 0) < 0 && errno == EINTR) {}
         }
         close(report[0]);
+        _sl_pool_release(sb, uid, lock);
     } else {
         for (int i = 0; i < count; i++) bits |= (uint32_t)_sl_can_read(paths[i]) << i;
     }
@@ -630,9 +1287,61 @@ void sl_sandbox_kill(const sl_sandbox *sb, pid_t pid) {
     kill(pid, SIGKILL);
 }
 
-bool sl_sandbox_runs_runner(pid_t pid, const char *runner) {
+bool sl_sandbox_runs_runner(const sl_sandbox *sb, const sl_sandbox_process *p) {
     char exe[64];
-    snprintf(exe, sizeof exe, "/proc/%d/exe", (int)pid);
-    struct stat a, b;
-    return stat(exe, &a) == 0 && stat(runner, &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+    snprintf(exe, sizeof exe, "/proc/%d/exe", (int)p->pid);
+    struct stat st;
+    if (stat(exe, &st) == 0) return st.st_dev == p->runner_dev && st.st_ino == p->runner_ino;
+    /* The grader may not look (no CAP_SYS_PTRACE, as in a container, or the
+     * runner's own uid at `basic`) because the process is not dumpable. Each
+     * exec of a file it may read makes a process dumpable again, and the
+     * filter keeps it from changing that itself: so it still runs an
+     * execute-only file, and the only ones within its reach are the runners'
+     * copies (random names in folders it cannot list). */
+    return errno == EACCES && sb->seccomp && sb->runners;
+}
+
+bool sl_sandbox_usage(pid_t pid, double *cpu_seconds, double *waited_seconds) {
+    char path[64], buf[1024];
+    snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    ssize_t got = read(fd, buf, sizeof buf - 1);
+    close(fd);
+    if (got <= 0) return false;
+    buf[got] = '\0';
+    const char *after_name = strrchr(buf, ')');
+    unsigned long user = 0, system = 0;
+    /* fields 3..15: state ppid pgrp session tty tpgid flags minflt cminflt majflt cmajflt utime stime */
+    if (!after_name || sscanf(after_name + 1, " %*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %lu %lu", &user, &system) != 2)
+        return false;
+    long ticks = sysconf(_SC_CLK_TCK);
+    *cpu_seconds = (double)(user + system) / (double)(ticks > 0 ? ticks : 100);
+    /* schedstat: time on a CPU, time waiting, ready, on a run queue (ns), per thread */
+    *waited_seconds = -1;
+    snprintf(path, sizeof path, "/proc/%d/task", (int)pid);
+    DIR *d = opendir(path);
+    if (!d) return true;
+    double waited = 0;
+    bool any = false;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        if (e->d_name[0] < '1' || e->d_name[0] > '9') continue;
+        char file[128], line[128];
+        snprintf(file, sizeof file, "/proc/%d/task/%s/schedstat", (int)pid, e->d_name);
+        int t = open(file, O_RDONLY | O_CLOEXEC);
+        if (t < 0) continue;
+        ssize_t n = read(t, line, sizeof line - 1);
+        close(t);
+        unsigned long long running, waiting;
+        if (n <= 0) continue;
+        line[n] = '\0';
+        if (sscanf(line, "%llu %llu", &running, &waiting) == 2 && (running || waiting)) {
+            waited += (double)waiting * 1e-9;
+            any = true;
+        }
+    }
+    closedir(d);
+    if (any) *waited_seconds = waited;
+    return true;
 }

@@ -5,16 +5,27 @@
  *                          user namespace too when the grader is not root); a
  *                          read-only root holding only the system libraries,
  *                          the runner and a copy of the shaders under test; a
- *                          private /tmp; no network; as root, uid 65534.
- *   SL_SANDBOX_UID         root without namespaces: the runner runs as uid
- *                          65534, so it reads only what any user may read.
+ *                          private /tmp; no network; as root, a uid of its own.
+ *   SL_SANDBOX_UID         root without namespaces: each runner runs as a uid
+ *                          of its own, so it reads only what any user may read
+ *                          and reaches no other runner.
  *   SL_SANDBOX_BASIC       neither: the runner runs as the grader's user and
  *                          can read what that user reads.
  *
  * Always: a cleared environment, its own session, rlimits (CPU, address
- * space, file size, core), killed with the grader (PR_SET_PDEATHSIG), only
- * fds 0-3 open, and a seccomp filter: no new processes (threads only), no
- * signals to other processes, no ptrace, no namespaces or mounts. */
+ * space, file size, core, processes), killed with the grader
+ * (PR_SET_PDEATHSIG), only fds 0-3 open, not dumpable from its first
+ * instruction (it runs an execute-only copy of the runner), and a seccomp
+ * filter: no new processes (threads only), no signals to other processes, no
+ * ptrace or other reach into another process, no namespaces or mounts.
+ *
+ * Runner uids (as root, below a user namespace): a pool, by default
+ * 60800-61055, or SHADOWLAB_RUNNER_UIDS=FIRST-LAST in the grader's
+ * environment. A runner holds its uid alone (a lock file per uid in a
+ * root-owned folder, so several graders on one machine share the pool); a
+ * uid with a user name, a process or a file at the top of /tmp, /var/tmp or
+ * /dev/shm is skipped. After the runner, everything of its uid is killed and
+ * what it left there removed. */
 #ifndef SL_SANDBOX_H
 #define SL_SANDBOX_H
 
@@ -30,12 +41,20 @@ typedef enum sl_sandbox_level {
     SL_SANDBOX_NAMESPACES = 2,
 } sl_sandbox_level;
 
+typedef struct _sl_sandbox_runners _sl_sandbox_runners;
+
 typedef struct sl_sandbox {
     sl_sandbox_level level;
     bool user_namespace;     /* namespaces owned by a new user namespace (grader not root) */
     bool seccomp;            /* the process filter could be installed */
-    uid_t uid;               /* the runner's uid outside the sandbox */
+    bool own_uids;           /* each runner gets a uid of the pool (the grader is root) */
+    uid_t uid;               /* the runners' uid outside the sandbox; with own_uids, the pool's first */
+    uid_t uid_count;         /* with own_uids: the pool's size */
+    int process_limit;       /* threads (and processes) one runner may have at once */
+    char pids_cgroup[256];   /* a pids cgroup folder each runner gets a child of, or "" */
+    char lock_dir[64];       /* with own_uids: the pool's lock files */
     char mount_point[64];    /* an empty folder the sandbox's root is mounted on */
+    _sl_sandbox_runners *runners; /* the execute-only copies of the runners started so far */
     char why_not_stronger[512];
 } sl_sandbox;
 
@@ -46,7 +65,7 @@ bool sl_sandbox_open(sl_sandbox *sandbox, sl_sandbox_level at_most, const char *
 void sl_sandbox_close(sl_sandbox *sandbox);
 const char *sl_sandbox_level_name(sl_sandbox_level level);
 bool sl_sandbox_level_parse(const char *name, sl_sandbox_level *level);
-/* One line for the report: "namespaces (uid 65534, read-only view, no network, seccomp)". */
+/* One line for the report: "namespaces (uid of its own per runner, read-only view, no network, seccomp)". */
 void sl_sandbox_describe(const sl_sandbox *sandbox, char *out, size_t out_size);
 
 typedef struct sl_sandbox_spawn_desc {
@@ -68,11 +87,20 @@ typedef struct sl_sandbox_process {
     pid_t pid;
     char labs_dir[512];      /* the labs tree as the runner sees it: for the job */
     char framework_dir[512]; /* framework/, likewise */
+    uid_t uid;               /* the runner's uid (outside a user namespace) */
+    int uid_lock;            /* with own_uids: holds the uid for this runner; else -1 */
+    char cgroup[320];        /* its pids cgroup, or "" */
+    dev_t runner_dev;        /* the executable it runs */
+    ino_t runner_ino;
 } sl_sandbox_process;
 
-/* Starts the runner; false with the reason in err (nothing is left running). */
+/* Starts the runner; false with the reason in err (nothing is left running).
+ * A failure here is never lab code's: none of it has run yet. */
 bool sl_sandbox_spawn(const sl_sandbox *sandbox, const sl_sandbox_spawn_desc *desc, sl_sandbox_process *out,
                       char *err, size_t err_size);
+/* After the runner was waited for: kills whatever of it is left, frees its
+ * uid and cgroup. */
+void sl_sandbox_end(const sl_sandbox *sandbox, sl_sandbox_process *process);
 /* Which of `paths` a runner could read (a folder: list it): none in the
  * namespaces sandbox, whose view holds only copies of the shaders; below
  * it, whatever the runner's uid may read. Returns how many. */
@@ -80,7 +108,13 @@ int sl_sandbox_readable(const sl_sandbox *sandbox, const char *const *paths, int
 
 /* Kills the runner and everything it started. */
 void sl_sandbox_kill(const sl_sandbox *sandbox, pid_t pid);
-/* True when `pid` is still running the runner executable (not another program it exec'ed). */
-bool sl_sandbox_runs_runner(pid_t pid, const char *runner);
+/* True when the process still runs the runner executable it was started
+ * with (not another program it exec'ed). */
+bool sl_sandbox_runs_runner(const sl_sandbox *sandbox, const sl_sandbox_process *process);
+
+/* How a running runner used the machine so far: its CPU time, and how long
+ * its threads waited, ready, for a CPU others held (-1 where the system does
+ * not say). False when the process is gone. */
+bool sl_sandbox_usage(pid_t pid, double *cpu_seconds, double *waited_seconds);
 
 #endif

@@ -1,15 +1,35 @@
 #!/usr/bin/env bash
-# attack.sh NAME plain|isolate GRADER SOURCE_DIR WORK_DIR [GRADER ARGS...]
+# attack.sh NAME MODE GRADER SOURCE_DIR WORK_DIR [GRADER ARGS...] [--beside HONEST GRADER ARGS...]
 # Grades one attack's labs tree and checks that the attack got nothing and
 # left nothing: the score is the stubs' 0 (exit 1, one Score line, reports
 # agree), no file of the project, the build or the reports changed after the
 # grader finished, no process the attack started is alive, and no marker file
 # it tried to leave exists.
+#   MODE plain, isolate   in the namespaces sandbox (skipped where there is none), plainly or with --isolate
+#   MODE beside-LEVEL     with --sandbox LEVEL (namespaces, uid or basic), and, while the attack's runners
+#                         run, a grade of an honest submission (the arguments after --beside) at the same
+#                         level beside it, as grade-batch or a server grading two submissions at once: the
+#                         attack must also cost that grade nothing (exit 0, full marks). `uid` needs root; as
+#                         root, `basic` runs both graders as a user of their own (uid 61100), as a grader
+#                         without root would be. Where the test may make a pids cgroup (root), both grades
+#                         run in one of at most 600 tasks: a small machine, and today's shared test machine
+#                         spared whatever an attack that is not stopped would take.
 set -u
 name=$1 mode=$2 grader=$3 src=$4 work=$5
 shift 5
-args=("$@")
-[ "$mode" = isolate ] && args+=(--isolate)
+args=() honest=()
+while [ $# -gt 0 ] && [ "$1" != --beside ]; do args+=("$1"); shift; done
+[ $# -gt 0 ] && { shift; honest=("$@"); }
+level=namespaces
+case "$mode" in
+  plain) ;;
+  isolate) args+=(--isolate) ;;
+  beside-namespaces | beside-uid | beside-basic)
+    level=${mode#beside-}
+    args+=(--sandbox "$level")
+    honest+=(--sandbox "$level") ;;
+  *) echo "attack.sh: unknown mode $mode" >&2; exit 2 ;;
+esac
 runners=""
 for ((i = 0; i < ${#args[@]}; i++)); do [ "${args[$i]}" = --runners ] && runners=${args[$((i + 1))]}; done
 rm -rf "$work"; mkdir -p "$work"
@@ -17,11 +37,9 @@ rm -rf "$work"; mkdir -p "$work"
 # environment keeps MESA_* variables, and anything it starts inherits them.
 tag="attack-$name-$mode-$$-$RANDOM"
 export MESA_SL_TEST_TAG=$tag
-tagged() {
-  local p
-  for p in /proc/[0-9]*; do
-    tr '\0' '\n' 2>/dev/null <"$p/environ" | grep -qx "MESA_SL_TEST_TAG=$tag" && echo "${p#/proc/}"
-  done
+tagged() { # (grep and sed without the tag, or they would find themselves)
+  env -u MESA_SL_TEST_TAG grep -lzxE "MESA_SL_TEST_TAG=$tag(-honest)?" /proc/[0-9]*/environ 2>/dev/null |
+    env -u MESA_SL_TEST_TAG sed 's|^/proc/\([0-9]*\)/environ$|\1|'
 }
 markers() { find /tmp "$src" "$runners" -maxdepth 4 -name 'shadowlab-attack-marker*' 2>/dev/null; }
 snapshot() {
@@ -30,17 +48,73 @@ snapshot() {
     sort -z | xargs -0 stat -c '%n %s %Y' | sha256sum
   find "$src/grader" "$src/solutions" "$runners" "$grader" -type f -print0 2>/dev/null | sort -z | xargs -0 sha256sum | sha256sum
 }
+
+# ---- beside another grade: who runs the graders, and in which cgroup ----
+as_user=() cgroup=""
+if [ "${mode%%-*}" = beside ]; then
+  if [ "$(id -u)" != 0 ]; then
+    [ "$level" != uid ] || { echo "attack $name ($mode): the uid sandbox needs a grader running as root" >&2; exit 77; }
+  else
+    if [ "$level" = basic ]; then
+      as_user=(setpriv --reuid=61100 --regid=61100 --clear-groups --)
+      chown 61100:61100 "$work"
+    fi
+    # this process's pids cgroup (v1's pids hierarchy, or v2 where it has the controller)
+    own=$(awk -F: '$2 ~ /(^|,)pids(,|$)/ {print $3}' /proc/self/cgroup)
+    if [ -n "$own" ] && [ -d "/sys/fs/cgroup/pids$own" ]; then parent="/sys/fs/cgroup/pids$own"
+    else parent="/sys/fs/cgroup$(awk -F: '$1 == 0 {print $3}' /proc/self/cgroup)"; fi
+    cgroup="$parent/shadowlab-test-$$"
+    if ! { mkdir "$cgroup" && echo 600 >"$cgroup/pids.max"; } 2>/dev/null; then rmdir "$cgroup" 2>/dev/null; cgroup=""; fi
+  fi
+fi
+remove_cgroup() {
+  [ -n "$cgroup" ] && [ -d "$cgroup" ] || return 0
+  local p
+  for p in $(cat "$cgroup"/cgroup.procs "$cgroup"/*/cgroup.procs 2>/dev/null); do kill -9 "$p" 2>/dev/null; done
+  sleep 0.5
+  rmdir "$cgroup"/*/ "$cgroup" 2>/dev/null
+}
+trap remove_cgroup EXIT
+# Runs a grader as the test's user, in the test's cgroup.
+run_grader() {
+  if [ -n "$cgroup" ]; then
+    bash -c 'echo $$ >"$1/cgroup.procs" && shift && exec "$@"' _ "$cgroup" "${as_user[@]+"${as_user[@]}"}" "$@"
+  else
+    "${as_user[@]+"${as_user[@]}"}" "$@"
+  fi
+}
+
 before=$(snapshot)
 markers | xargs -r rm -f
-out="$work/out.txt"
-timeout -k 10 600 "$grader" "${args[@]}" --report "$work/report" --gradescope "$work/gradescope.json" >"$out" 2>&1
+out="$work/out.txt" honest_out="$work/honest.txt"
+run_grader timeout -k 10 600 "$grader" "${args[@]}" --report "$work/report" --gradescope "$work/gradescope.json" \
+  >"$out" 2>&1 &
+attack_pid=$!
+honest_status=""
+if [ ${#honest[@]} -gt 0 ]; then
+  # the honest grade starts once the attack's first runner does
+  for _ in $(seq 300); do
+    for p in $(tagged); do
+      [ "$(tr '\0' '\n' 2>/dev/null <"/proc/$p/cmdline" | head -n 1)" = shadowlab-runner ] && break 2
+    done
+    kill -0 "$attack_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  MESA_SL_TEST_TAG=$tag-honest run_grader timeout -k 10 600 "$grader" "${honest[@]}" >"$honest_out" 2>&1
+  honest_status=$?
+fi
+wait "$attack_pid"
 status=$?
 cat "$out"
 fail=0
 problem() { echo "attack $name ($mode): $*" >&2; fail=1; }
 [ "$status" != 124 ] && [ "$status" != 137 ] || problem "the grader did not finish (killed after 600 s)"
-if ! grep -q "sandbox: namespaces" "$out"; then
-  echo "attack $name ($mode): this machine gives the runners only a weaker sandbox:" >&2
+if ! grep -q "sandbox:" "$out"; then
+  problem "the grader graded nothing (exit status $status)"
+  exit 1
+fi
+if ! grep -q "sandbox: $level" "$out"; then
+  echo "attack $name ($mode): this machine gives the runners another sandbox than $level:" >&2
   grep "sandbox:" "$out" >&2
   echo "the attack suite needs the namespaces sandbox (root, or unprivileged user namespaces)" >&2
   exit 77
@@ -50,6 +124,17 @@ fi
 tail -n 1 "$out" | grep -qE '^Score: 0/[0-9.]+$' || problem "the score is not 0: $(tail -n 1 "$out")"
 grep -qE '"score":[[:space:]]*0([,.}[:space:]]|$)' "$work/report/results.json" || problem "results.json's score is not 0"
 grep -qE '"score":[[:space:]]*0([,.}[:space:]]|$)' "$work/gradescope.json" || problem "gradescope.json's score is not 0"
+if [ -n "$honest_status" ]; then
+  echo "---- the honest grade beside it ----"
+  cat "$honest_out"
+  honest_problem() { problem "the honest grade beside it: $*"; }
+  grep -q "sandbox: $level" "$honest_out" || honest_problem "not in the $level sandbox"
+  [ "$honest_status" = 0 ] || honest_problem "exit status $honest_status, expected 0 (full marks)"
+  last=$(tail -n 1 "$honest_out")
+  [[ "$last" =~ ^Score:\ ([0-9.]+)/([0-9.]+) ]] && [ "${BASH_REMATCH[1]}" = "${BASH_REMATCH[2]}" ] ||
+    honest_problem "not full marks: $last"
+  ! grep -q '^  FAIL' "$honest_out" || honest_problem "checks failed: $(grep -c '^  FAIL' "$honest_out")"
+fi
 reports=$(sha256sum "$work/report/results.json" "$work/gradescope.json")
 # Give anything the attack left running the time to act, then look.
 sleep 2
