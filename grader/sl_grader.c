@@ -805,10 +805,13 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     return status;
 }
 
+/* Not dumpable: a process of the same uid (a runner in the basic sandbox)
+ * can then neither trace this one nor open its memory or fds in /proc. As a
+ * constructor, from before main: the window after exec is the loader's only
+ * (where the kernel has Landlock, runners cannot reach the grader at all). */
+__attribute__((constructor(101))) static void _sl_not_dumpable(void) { prctl(PR_SET_DUMPABLE, 0, 0, 0, 0); }
+
 int sl_grader_main(int argc, char **argv) {
-    /* Not dumpable: a process of the same uid (a runner in the basic sandbox)
-     * can then neither trace this one nor open its memory or fds in /proc. */
-    prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
     struct sigaction sa = {.sa_handler = _sl_on_signal};
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);

@@ -313,13 +313,13 @@ typedef struct _sl_job {
     bool channel_open, output_open;
 } _sl_job;
 
-/* A runner ready to run that got less than a tenth of a CPU, its threads
- * waiting for one most of the time, was starved by other processes: its time
- * limit waits for it, up to this many times over. (Its own threads cannot
- * starve it: busy, they are its CPU time.) */
-#define _SL_STARVED_SHARE 0.1
-#define _SL_STARVED_WAIT_SHARE 0.5
+/* A runner's time limit counts the time it could run: the time its threads
+ * waited for a CPU that other processes held is added (never more than the
+ * wall time it spent off a CPU: turns its own threads take are its own),
+ * up to _SL_STARVED_TIMEOUTS times the limit in all. Past that, a runner that
+ * could run for less than _SL_STARVED_SHARE of its limit could not be graded. */
 #define _SL_STARVED_TIMEOUTS 4
+#define _SL_STARVED_SHARE 0.1
 
 static double _sl_now(void) {
     struct timespec t;
@@ -523,23 +523,27 @@ static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
     job->proc.pid = 0;
 }
 
-/* At the deadline: was the runner starved of CPU by others? Then the deadline
- * moves on (true), up to _SL_STARVED_TIMEOUTS times the time limit; past
- * that, the case could not be graded. */
-static bool _sl_wait_longer(_sl_job *job, double now) {
-    double cpu, waited, elapsed = now - job->start;
-    if (elapsed <= 0 || !sl_sandbox_usage(job->proc.pid, &cpu, &waited) || waited < 0) return false;
-    bool starved = cpu < _SL_STARVED_SHARE * elapsed && waited > _SL_STARVED_WAIT_SHARE * elapsed;
-    if (!starved) return false;
-    if (elapsed < _SL_STARVED_TIMEOUTS * job->timeout) {
-        double step = job->timeout / 4 > 1 ? job->timeout / 4 : 1;
-        job->deadline = now + step;
-        return true;
+/* At the deadline: true when the runner had its time; else the deadline
+ * moves by the time others' processes took from it (see _SL_STARVED_TIMEOUTS). */
+static bool _sl_out_of_time(_sl_job *job, double now) {
+    if (now <= job->deadline) return false;
+    double elapsed = now - job->start, cpu = 0, waited = 0, starved = 0;
+    if (sl_sandbox_usage(job->proc.pid, &cpu, &waited) && waited > 0) {
+        double off_cpu = elapsed - cpu;
+        starved = waited < off_cpu ? waited : off_cpu > 0 ? off_cpu : 0;
     }
-    snprintf(job->stream.r->staff_error, sizeof job->stream.r->staff_error,
-             "the runner was starved of CPU by other processes: %.1f s of CPU in %.0f s, %.0f s waiting for one "
-             "(the machine is overloaded; grade again when it is not)", cpu, elapsed, waited);
-    return false;
+    double could_run = elapsed - starved;
+    if (could_run < job->timeout && elapsed < _SL_STARVED_TIMEOUTS * job->timeout) {
+        double wait = job->timeout - could_run;
+        job->deadline = now + (wait > 0.25 ? wait : 0.25);
+        return false;
+    }
+    if (could_run < _SL_STARVED_SHARE * job->timeout)
+        snprintf(job->stream.r->staff_error, sizeof job->stream.r->staff_error,
+                 "the runner was starved of CPU by other processes: in %.0f s it could run for %.1f s (%.1f s on a "
+                 "CPU), its limit is %.0f s (the machine is overloaded: grade again when it is not)",
+                 elapsed, could_run, cpu, job->timeout);
+    return true;
 }
 
 bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_case_result *results,
@@ -585,7 +589,7 @@ bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_c
                 job->output_open = _sl_drain(job, false);
             /* The runner's set-up failed: it said why and stops. */
             if (job->stream.r->error[0] && !job->stream.done) _sl_close(&job->job_fd);
-            bool timed_out = now > job->deadline && !_sl_wait_longer(job, now);
+            bool timed_out = _sl_out_of_time(job, now);
             if (timed_out && !job->stream.r->staff_error[0]) job->stream.r->timed_out = true;
             if (broken || timed_out || (!job->channel_open && !job->output_open)) {
                 _sl_finish(job, o, broken || timed_out || !job->stream.done);

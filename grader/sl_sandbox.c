@@ -221,6 +221,50 @@ static bool _sl_install_seccomp(void) {
 static bool _sl_install_seccomp(void) { return false; }
 #endif
 
+/* Landlock (Linux 5.13+), where the kernel has it: a process in a Landlock
+ * domain may trace, or open the memory of, only processes in its own domain
+ * or one nested in it, and from ABI 6 signal only those and connect to no
+ * abstract socket made outside it. Each runner gets a domain of its own: none
+ * reaches the grader, another runner, or any other process of its uid (at
+ * `basic`, the grader user's shells and scripts). Its rules forbid only what
+ * lab code never does (making device files); the domain is what matters. */
+struct _sl_landlock_ruleset_attr {
+    uint64_t handled_access_fs, handled_access_net, scoped;
+};
+#define _SL_LANDLOCK_MAKE_CHAR (1ull << 7)
+#define _SL_LANDLOCK_MAKE_BLOCK (1ull << 11)
+#define _SL_LANDLOCK_SCOPE_ABSTRACT_UNIX_SOCKET (1ull << 0)
+#define _SL_LANDLOCK_SCOPE_SIGNAL (1ull << 1)
+
+static int _sl_landlock_abi(void) {
+#ifdef __NR_landlock_create_ruleset
+    long abi = syscall(__NR_landlock_create_ruleset, NULL, 0, 1u /* LANDLOCK_CREATE_RULESET_VERSION */);
+    return abi > 0 ? (int)abi : 0;
+#else
+    return 0;
+#endif
+}
+
+/* Needs no_new_privs set first. */
+static bool _sl_enter_landlock_domain(int abi) {
+#ifdef __NR_landlock_create_ruleset
+    struct _sl_landlock_ruleset_attr attr = {.handled_access_fs = _SL_LANDLOCK_MAKE_CHAR | _SL_LANDLOCK_MAKE_BLOCK};
+    size_t size = sizeof attr.handled_access_fs;
+    if (abi >= 6) {
+        attr.scoped = _SL_LANDLOCK_SCOPE_ABSTRACT_UNIX_SOCKET | _SL_LANDLOCK_SCOPE_SIGNAL;
+        size = sizeof attr;
+    }
+    int fd = (int)syscall(__NR_landlock_create_ruleset, &attr, size, 0);
+    if (fd < 0) return false;
+    bool ok = syscall(__NR_landlock_restrict_self, fd, 0) == 0;
+    close(fd);
+    return ok;
+#else
+    (void)abi;
+    return false;
+#endif
+}
+
 static void _sl_write_file(const char *path, const char *text) {
     int fd = open(path, O_WRONLY | O_CLOEXEC);
     if (fd < 0) _sl_fail("cannot open %s: %s", path, strerror(errno));
@@ -540,6 +584,9 @@ static void _sl_child(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d, cons
     if (syscall(__NR_close_range, 4, ~0u, CLOSE_RANGE_CLOEXEC) != 0)
         for (int fd = 4; fd < 1024; fd++) fcntl(fd, F_SETFD, FD_CLOEXEC);
     signal(SIGPIPE, SIG_DFL);
+    if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) _sl_fail("PR_SET_NO_NEW_PRIVS: %s", strerror(errno));
+    if (sb->landlock && !_sl_enter_landlock_domain(sb->landlock))
+        _sl_fail("cannot enter a Landlock domain: %s", strerror(errno));
     if (sb->seccomp && !_sl_install_seccomp()) _sl_fail("cannot install the process filter: %s", strerror(errno));
     const char *path = sb->level == SL_SANDBOX_NAMESPACES ? "/shadowlab-runner" : plan->runner;
     char *const argv[] = {(char *)"shadowlab-runner", NULL};
@@ -1138,6 +1185,7 @@ bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, const char *runne
     sb->seccomp = prctl(PR_GET_SECCOMP, 0, 0, 0, 0) >= 0;
 #endif
     sb->process_limit = _sl_default_process_limit();
+    sb->landlock = _sl_landlock_abi();
     if (!_sl_find_pids_cgroup(sb->pids_cgroup, sizeof sb->pids_cgroup)) sb->pids_cgroup[0] = '\0';
     _sl_runners_open(sb);
     /* As root, each runner gets a uid of its own: the pool must be usable. */
@@ -1194,14 +1242,15 @@ void sl_sandbox_close(sl_sandbox *sb) {
 }
 
 void sl_sandbox_describe(const sl_sandbox *sb, char *out, size_t n) {
-    char uids[96], extra[160];
+    char uids[96], extra[256];
     if (sb->own_uids)
         snprintf(uids, sizeof uids, "a uid of its own per runner (%u-%u)", (unsigned)sb->uid,
                  (unsigned)(sb->uid + sb->uid_count - 1));
     else
         snprintf(uids, sizeof uids, "uid %u", (unsigned)sb->uid);
     bool per_runner = sb->own_uids || sb->user_namespace || sb->pids_cgroup[0];
-    snprintf(extra, sizeof extra, "%s, at most %d threads %s%s%s", sb->seccomp ? ", seccomp" : "", sb->process_limit,
+    snprintf(extra, sizeof extra, "%s%s, at most %d threads %s%s%s", sb->seccomp ? ", seccomp" : "",
+             sb->landlock ? ", Landlock" : "", sb->process_limit,
              per_runner ? "each" : "each beyond the user's others (shared with them)",
              sb->pids_cgroup[0] ? " (pids cgroup)" : "",
              sb->runners ? "" : ", dumpable (no folder to run execute-only copies from)");

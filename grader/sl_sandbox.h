@@ -15,9 +15,11 @@
  * Always: a cleared environment, its own session, rlimits (CPU, address
  * space, file size, core, processes), killed with the grader
  * (PR_SET_PDEATHSIG), only fds 0-3 open, not dumpable from its first
- * instruction (it runs an execute-only copy of the runner), and a seccomp
- * filter: no new processes (threads only), no signals to other processes, no
- * ptrace or other reach into another process, no namespaces or mounts.
+ * instruction (it runs an execute-only copy of the runner), in a Landlock
+ * domain of its own where the kernel has Landlock (it reaches no process
+ * outside it), and a seccomp filter: no new processes (threads only), no
+ * signals to other processes, no ptrace or other reach into another process,
+ * no namespaces or mounts.
  *
  * Runner uids (as root, below a user namespace): a pool, by default
  * 60800-61055, or SHADOWLAB_RUNNER_UIDS=FIRST-LAST in the grader's
@@ -47,6 +49,7 @@ typedef struct sl_sandbox {
     sl_sandbox_level level;
     bool user_namespace;     /* namespaces owned by a new user namespace (grader not root) */
     bool seccomp;            /* the process filter could be installed */
+    int landlock;            /* the kernel's Landlock ABI: each runner in a domain of its own; 0 = none */
     bool own_uids;           /* each runner gets a uid of the pool (the grader is root) */
     uid_t uid;               /* the runners' uid outside the sandbox; with own_uids, the pool's first */
     uid_t uid_count;         /* with own_uids: the pool's size */

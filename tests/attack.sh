@@ -125,6 +125,10 @@ tail -n 1 "$out" | grep -qE '^Score: 0/[0-9.]+$' || problem "the score is not 0:
 grep -qE '"score":[[:space:]]*0([,.}[:space:]]|$)' "$work/report/results.json" || problem "results.json's score is not 0"
 grep -qE '"score":[[:space:]]*0([,.}[:space:]]|$)' "$work/gradescope.json" || problem "gradescope.json's score is not 0"
 if [ -n "$honest_status" ]; then
+  # what an attack on its neighbours says it got (its output, kept in the report): where
+  # its marker files cannot tell (at `uid`, what a runner's uid left in /tmp is removed)
+  reached=$(grep -o 'reached process [0-9]*: [a-z-]*' "$work/report/results.json" | sort -u | head -n 5)
+  [ -z "$reached" ] || problem "the attack reached its neighbours: $(echo $reached)"
   echo "---- the honest grade beside it ----"
   cat "$honest_out"
   honest_problem() { problem "the honest grade beside it: $*"; }

@@ -4,7 +4,7 @@
  * signal them (directly, by pidfd, by SIGIO with F_SETSIG), and slow them
  * down (their limits, priority, scheduling, CPUs). Its own grader and that
  * grader's runners it spares. It keeps at it while it sees neighbours, for
- * at most 15 s. Whatever works leaves a marker and is printed. */
+ * at most 12 s. Whatever works leaves a marker and is printed. */
 #include "@SOURCE_DIR@/tests/attack_util.h"
 #include <sched.h>
 #include <signal.h>
@@ -132,7 +132,7 @@ __attribute__((constructor)) static void _attack_neighbours(void) {
     if (setpriority(PRIO_USER, 0, 19) == 0) _reached_by("setpriority-user", 0);
     for (;;) {
         double now = _now();
-        if (now - start > 15 || (last_seen > 0 && now - last_seen > 3) || (last_seen == 0 && now - start > 8)) break;
+        if (now - start > 12 || (last_seen > 0 && now - last_seen > 2) || (last_seen == 0 && now - start > 5)) break;
         DIR *d = opendir("/proc");
         struct dirent *e;
         while (d && (e = readdir(d))) {
