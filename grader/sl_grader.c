@@ -34,7 +34,9 @@ extern const char sl_config_runners_dir[];    /* shadowlab-runner and its --isol
 extern const char sl_config_solutions_dir[];  /* "" in a student handout */
 extern const char sl_config_solutions_runner[]; /* the solutions' runner, "" in a handout */
 
-enum { SL_EXIT_FULL = 0, SL_EXIT_FAILED = 1, SL_EXIT_ERROR = 2 };
+/* 3: graded, but the submission held no lab file (--submission-summary says so): a status of its own
+ * for a gradebook, not a staff-side problem. */
+enum { SL_EXIT_FULL = 0, SL_EXIT_FAILED = 1, SL_EXIT_ERROR = 2, SL_EXIT_NO_LAB_FILE = 3 };
 #define _SL_MAX_PATTERNS 32
 #define _SL_MAX_CASES 512
 
@@ -77,10 +79,15 @@ static void _sl_usage(FILE *f) {
             "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
             "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
             "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
+            "  --submission-summary FILE  what staging the submission found (shadowlab-stage --summary): its\n"
+            "                       notes lead every report (no lab file found, refused links, normalised\n"
+            "                       line ends, bytes that are not text), and a submission without a lab file\n"
+            "                       exits 3 (scripts/grade-submission)\n"
             "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
-            "(a staff-side problem: missing or changed references, bad case files, unwritable reports).\n");
+            "(a staff-side problem: missing or changed references, bad case files, unwritable reports),\n"
+            "3 graded, but the --submission-summary says the submission held no lab file.\n");
 }
 
 static volatile int _sl_stop;
@@ -227,7 +234,7 @@ typedef struct _sl_options {
     const char *report_dir, *gradescope, *prairielearn, *junit;
     int only_lab;
     bool update, list, isolate, strict, hidden, progress;
-    const char *seed, *not_built, *gradebook;
+    const char *seed, *not_built, *gradebook, *submission_summary;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
     int jobs;
@@ -242,7 +249,8 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         static const char *const with_value[] = {"--lab", "--case", "--exclude", "-j", "--jobs", "--report",
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
-                                                 "--sandbox", "--memory", "--seed", "--not-built", "--gradebook"};
+                                                 "--sandbox", "--memory", "--seed", "--not-built", "--gradebook",
+                                                 "--submission-summary"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -303,6 +311,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--seed") == 0) o->seed = v;
         else if (strcmp(a, "--not-built") == 0) o->not_built = v;
         else if (strcmp(a, "--gradebook") == 0) o->gradebook = v;
+        else if (strcmp(a, "--submission-summary") == 0) o->submission_summary = v;
         else if (strcmp(a, "--list") == 0) o->list = true;
         else {
             fprintf(stderr, "shadowlab-grade: unknown option %s\n", a);
@@ -472,7 +481,7 @@ static int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int c
     fflush(stdout);
     bool reports_ok = _sl_write_reports(o, rep);
     sl_report_print(rep, stdout, isatty(1));
-    return reports_ok && !rep->problem_count ? SL_EXIT_FAILED : SL_EXIT_ERROR;
+    return reports_ok && !rep->problem_count ? (rep->no_lab_file ? SL_EXIT_NO_LAB_FILE : SL_EXIT_FAILED) : SL_EXIT_ERROR;
 }
 
 static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_root[64], sl_hidden *hidden) {
@@ -575,7 +584,12 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             if (sl_lab_folder(lab)) run.setups[0].lab_dirs[lab] = graded_tree;
     }
 
-    sl_grade_report rep = {.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree};
+    static sl_grade_report rep;
+    rep = (sl_grade_report){.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree};
+    if (o.submission_summary && !sl_report_load_submission(&rep, o.submission_summary, err, sizeof err)) {
+        fprintf(stderr, "shadowlab-grade: --submission-summary: %s\n", err);
+        return SL_EXIT_ERROR;
+    }
     static sl_case cases[_SL_MAX_CASES];
     int count = _sl_load_cases(&o, cases, &rep);
     if (count < 0) {
@@ -778,7 +792,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         bool reports_ok = _sl_write_reports(&o, &rep);
         sl_report_print(&rep, stdout, isatty(1));
         if (reference_problem || rep.problem_count || !reports_ok || rep.interrupted) status = SL_EXIT_ERROR;
-        else if (!sl_report_full_marks(&rep)) status = SL_EXIT_FAILED;
+        else if (!sl_report_full_marks(&rep)) status = rep.no_lab_file ? SL_EXIT_NO_LAB_FILE : SL_EXIT_FAILED;
         for (int i = 0; i < count; i++)
             for (int k = 0; k < cases[i].check_count; k++) sl_image_free(&graded[i].checks[k].diff);
     }

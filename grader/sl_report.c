@@ -7,7 +7,35 @@
 #include <cjson/cJSON.h>
 
 #include "sl_files.h"
+#include "sl_json.h"
 #include "sl_params.h"
+
+bool sl_report_load_submission(sl_grade_report *rep, const char *path, char *err, size_t err_size) {
+    cJSON *root = sl_json_load_file(path, "submission summary", err, err_size);
+    if (!root) return false;
+    const cJSON *found = cJSON_GetObjectItemCaseSensitive(root, "lab_files_found");
+    const cJSON *notes = cJSON_GetObjectItemCaseSensitive(root, "notes"), *note;
+    if (!cJSON_IsBool(found) || !cJSON_IsArray(notes)) {
+        snprintf(err, err_size, "%s: not a submission summary (no lab_files_found, no notes)", path);
+        cJSON_Delete(root);
+        return false;
+    }
+    rep->no_lab_file = cJSON_IsFalse(found);
+    rep->submission_note_count = 0;
+    cJSON_ArrayForEach(note, notes) {
+        if (!cJSON_IsString(note) || rep->submission_note_count >= SL_SUBMISSION_NOTES_MAX) continue;
+        snprintf(rep->submission_notes[rep->submission_note_count++], sizeof rep->submission_notes[0], "%s",
+                 note->valuestring);
+    }
+    cJSON_Delete(rep->submission_summary);
+    rep->submission_summary = root;
+    return true;
+}
+
+void sl_report_free_submission(sl_grade_report *rep) {
+    cJSON_Delete(rep->submission_summary);
+    rep->submission_summary = NULL;
+}
 
 void sl_report_totals(const sl_grade_report *rep, double *score, double *max_score, double *bonus) {
     *score = *max_score = *bonus = 0;
@@ -56,6 +84,8 @@ static void _sl_print_message(FILE *out, const char *message) {
 void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
     const char *red = color ? "\033[31m" : "", *green = color ? "\033[32m" : "", *bold = color ? "\033[1m" : "",
                *reset = color ? "\033[0m" : "";
+    for (int i = 0; i < rep->submission_note_count; i++)
+        fprintf(out, "%sSubmission:%s %s\n", i == 0 && rep->no_lab_file ? red : bold, reset, rep->submission_notes[i]);
     for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
         double score = 0, max = 0, bonus = 0;
         bool any = false;
@@ -147,6 +177,11 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
     if (rep->not_built) {
         fputs("<p class=\"fail\">The submission did not build: ", f);
         _sl_html_text(f, rep->not_built);
+        fputs("</p>\n", f);
+    }
+    for (int i = 0; i < rep->submission_note_count; i++) {
+        fprintf(f, "<p%s>Submission: ", i == 0 && rep->no_lab_file ? " class=\"fail\"" : "");
+        _sl_html_text(f, rep->submission_notes[i]);
         fputs("</p>\n", f);
     }
     for (int i = 0; i < rep->problem_count; i++) {
@@ -244,6 +279,13 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     if (rep->case_set[0]) cJSON_AddStringToObject(root, "case_set", rep->case_set);
     cJSON_AddBoolToObject(root, "built", rep->not_built == NULL);
     if (rep->not_built) cJSON_AddStringToObject(root, "build_error", rep->not_built);
+    if (rep->submission_summary) {
+        cJSON_AddBoolToObject(root, "no_lab_file", rep->no_lab_file);
+        cJSON *notes = cJSON_AddArrayToObject(root, "submission_notes");
+        for (int i = 0; i < rep->submission_note_count; i++)
+            cJSON_AddItemToArray(notes, cJSON_CreateString(rep->submission_notes[i]));
+        cJSON_AddItemToObject(root, "submission", cJSON_Duplicate(rep->submission_summary, true));
+    }
     cJSON *labs = cJSON_AddArrayToObject(root, "lab_scores");
     for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
         double s = 0, m = 0, b = 0;
@@ -349,9 +391,13 @@ bool sl_report_write_gradescope(const sl_grade_report *rep, const char *path, ch
     cJSON *root = cJSON_CreateObject();
     cJSON_AddNumberToObject(root, "score", score + bonus); /* extra credit counts on top */
     cJSON_AddNumberToObject(root, "execution_time", rep->seconds);
-    if (rep->problem_count || rep->interrupted || rep->not_built) {
-        char text[4096] = "";
-        if (rep->not_built) snprintf(text, sizeof text, "The submission did not build: %s\n", rep->not_built);
+    if (rep->problem_count || rep->interrupted || rep->not_built || rep->submission_note_count) {
+        char text[4096 + SL_SUBMISSION_NOTES_MAX * 1600] = "";
+        for (int i = 0; i < rep->submission_note_count; i++)
+            snprintf(text + strlen(text), sizeof text - strlen(text), "%s\n", rep->submission_notes[i]);
+        if (rep->not_built)
+            snprintf(text + strlen(text), sizeof text - strlen(text), "The submission did not build: %s\n",
+                     rep->not_built);
         if (rep->interrupted)
             snprintf(text + strlen(text), sizeof text - strlen(text),
                      "The grader was stopped before it finished: incomplete.\n");
@@ -370,11 +416,22 @@ bool sl_report_write_prairielearn(const sl_grade_report *rep, const char *path, 
     sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
     /* A submission that does not build is "not gradable": it costs the student no attempt. */
-    cJSON_AddBoolToObject(root, "gradable", rep->problem_count == 0 && !rep->interrupted && !rep->not_built);
+    /* So is one with no lab file: the upload was not what the assignment asks for. */
+    cJSON_AddBoolToObject(root, "gradable",
+                          rep->problem_count == 0 && !rep->interrupted && !rep->not_built && !rep->no_lab_file);
+    cJSON *format_errors = rep->not_built || rep->no_lab_file ? cJSON_AddArrayToObject(root, "format_errors") : NULL;
+    if (rep->no_lab_file && rep->submission_note_count)
+        cJSON_AddItemToArray(format_errors, cJSON_CreateString(rep->submission_notes[0]));
     if (rep->not_built) {
         char text[512];
         snprintf(text, sizeof text, "The submission did not build: %s", rep->not_built);
-        cJSON_AddItemToArray(cJSON_AddArrayToObject(root, "format_errors"), cJSON_CreateString(text));
+        cJSON_AddItemToArray(format_errors, cJSON_CreateString(text));
+    }
+    if (rep->submission_note_count) {
+        char text[SL_SUBMISSION_NOTES_MAX * 1600] = "";
+        for (int i = 0; i < rep->submission_note_count; i++)
+            snprintf(text + strlen(text), sizeof text - strlen(text), "%s%s", i ? "\n" : "", rep->submission_notes[i]);
+        cJSON_AddStringToObject(root, "message", text);
     }
     cJSON_AddNumberToObject(root, "score", max > 0 ? (score + bonus) / max : 0);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), true);
