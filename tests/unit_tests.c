@@ -21,6 +21,7 @@
 #include "sl_run.h"
 #include "sl_sha256.h"
 #include "sl_shader.h"
+#include "sl_text.h"
 
 static int failures;
 #define CHECK(cond)                                                                \
@@ -722,6 +723,41 @@ static void test_grade_small_shadow_missing(void) {
     sl_image_free(&reference);
 }
 
+/* Text as editors write it: a byte-order mark, CRLF and lone CR go; bytes
+ * that are not UTF-8 text are found at their offset (RFC 3629's cases). */
+static void test_text_normalise_and_check(void) {
+    char text[] = "\xef\xbb\xbf#version 330\r\nvoid f();\rint x;\r\n";
+    sl_text_fix fix;
+    size_t n = sl_text_normalize(text, sizeof text - 1, &fix);
+    CHECK(n == strlen("#version 330\nvoid f();\nint x;\n") && memcmp(text, "#version 330\nvoid f();\nint x;\n", n) == 0);
+    CHECK(fix.bom_removed && fix.crlf == 2 && fix.lone_cr == 1);
+    char plain[] = "int x;\n";
+    CHECK(sl_text_normalize(plain, 7, &fix) == 7 && !sl_text_fix_any(&fix));
+    sl_text_problems p;
+    CHECK(sl_text_check("caf\xc3\xa9 \xe6\x97\xa5 \xf0\x9f\x98\x80\n", 15, &p)); /* 2-, 3- and 4-byte forms */
+    static const struct {
+        const char *text;
+        size_t len;
+        long long offset;
+    } invalid[] = {
+        {"ab\xc0\x80", 4, 2},     /* overlong NUL */
+        {"a\xed\xa0\x80", 4, 1}, /* a surrogate */
+        {"\xf4\x90\x80\x80", 4, 0}, /* past U+10FFFF */
+        {"ok\n\xe2\x82", 5, 3},   /* cut short at the end */
+        {"x\x80", 2, 1},           /* a lone continuation byte */
+        {"\xff", 1, 0},
+    };
+    for (size_t i = 0; i < sizeof invalid / sizeof invalid[0]; i++) {
+        CHECK(!sl_text_check(invalid[i].text, invalid[i].len, &p) && p.invalid_offset == invalid[i].offset);
+    }
+    CHECK(!sl_text_check("a\nb\nc\0d", 7, &p) && p.nul_offset == 5 && p.nul_line == 3 && p.invalid_offset < 0);
+    CHECK(!sl_text_check("\xff\xfe#\0", 4, &p) && p.utf16);
+    char said[400];
+    sl_text_check("a\nb\xff", 4, &p);
+    sl_text_problems_describe(&p, "pcf.glsl", said, sizeof said);
+    CHECK(strstr(said, "pcf.glsl: invalid UTF-8 at byte offset 3 (line 2)") != NULL);
+}
+
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
@@ -742,6 +778,7 @@ int main(int argc, char **argv) {
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},
         {"sha256_known_answers", test_sha256_known_answers},
+        {"text_normalise_and_check", test_text_normalise_and_check},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
