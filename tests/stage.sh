@@ -367,6 +367,16 @@ limits)
   for i in $(seq 1 30); do : >"$work/many/file$i.txt"; done
   stage many "$work/many" --max-entries 10
   said "more than 10 files and folders" "more entries than the limit"
+  # a folder the reading user cannot open is the staff's problem (exit 2), not a grade
+  if [ "$(id -u)" = 0 ]; then
+    mkdir -p "$work/closed/labs/lab1_depth_fbo"
+    cp "$solutions/lab1_depth_fbo/lab1.c" "$work/closed/labs/lab1_depth_fbo/"
+    chmod 700 "$work/closed/labs"
+    stage closed "$work/closed"
+    expect_status 2 "a folder closed to uid 65534"
+    said "labs: the folder cannot be read by uid 65534, which reads submissions: make them readable to all" \
+      "a folder closed to uid 65534"
+  fi
   ;;
 
 report)
