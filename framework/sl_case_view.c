@@ -633,7 +633,10 @@ static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, s
     char overlay_err[1024];
     v->overlay = sl_overlay_create(sl_framework_dir(), overlay_err, sizeof overlay_err);
     v->text_scale = text_scale;
-    if (v->overlay) sl_overlay_set_scale(v->overlay, text_scale);
+    if (v->overlay) {
+        sl_overlay_set_scale(v->overlay, text_scale);
+        sl_overlay_set_lecture(v->overlay, true); /* white on black: readable on a white picture too */
+    }
     else fprintf(stderr, "shadowlab: --case: no labels: %s\n", overlay_err);
     sl_renderer_desc rd = {.labs_dir = d->labs_dir};
     if (!sl_renderer_init(&v->renderer, &rd, err, n) || !sl_renderer_set_scene(&v->renderer, &v->c.scene, err, n))

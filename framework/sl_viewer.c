@@ -320,8 +320,8 @@ static const _sl_key_binding _sl_key_table[] = {
     {6, 0, {GLFW_KEY_COMMA, GLFW_KEY_PERIOD}, ", .", "lambda", "the split scheme's lambda down, up (0 uniform .. 1 "
      "logarithmic)", _SL_KEY_LAMBDA},
     {6, 0, {GLFW_KEY_J}, "J", "blend band", "blend band between cascades (bonus)", _SL_KEY_BLEND_BAND},
-    {6, 0, {GLFW_KEY_Z}, "Z", "frozen frustum", "freeze the camera's frustum and look at it, its slices and their "
-     "light boxes from above", _SL_KEY_FREEZE},
+    {6, 0, {GLFW_KEY_Z}, "Z", "frozen frustum", "freeze the camera's frustum, seen from above with its slices and "
+     "light boxes", _SL_KEY_FREEZE},
     {6, 0, {GLFW_KEY_T}, "T", "texel snapping", "texel snapping on, off (off: the shimmer it removes)", _SL_KEY_SNAPPING},
     {6, 0, {GLFW_KEY_P}, "P", "camera path", "the camera moves by itself: slide, turn, off", _SL_KEY_CAMERA_PATH},
     {6, 0, {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E}, "W A S D Q E", "fly",
@@ -336,14 +336,14 @@ static const _sl_key_binding _sl_key_table[] = {
      "the lab in use", _SL_KEY_LAB},
     {0, 0, {GLFW_KEY_V}, "V", "view", "the visibility term (what the grader compares) or the shaded picture",
      _SL_KEY_VISIBILITY},
-    {0, 0, {GLFW_KEY_M}, "M", "map", "the shadow map in a corner (lab 5: the moments, lab 6: the cascades' layers, "
-     "lab 7: the six faces as a cross)", _SL_KEY_MAP},
+    {0, 0, {GLFW_KEY_M}, "M", "map", "the shadow map in a corner (5: the moments, 6: the layers, 7: the faces)",
+     _SL_KEY_MAP},
     {0, _SL_LABS(2, 3), {GLFW_KEY_C}, "C", "compare", "compare by hand (sampler2D) or in hardware (sampler2DShadow)",
      _SL_KEY_COMPARE},
     {0, _SL_LABS(2, 4), {GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET}, "[ ]", "bias", "the constant depth bias "
      "halve, double", _SL_KEY_BIAS},
-    {0, _SL_LABS(3, 4), {GLFW_KEY_B}, "B", "bias mode", "bias mode: none, constant, slope-scaled, polygon offset, "
-     "front-face culling, normal offset, midpoint", _SL_KEY_BIAS_MODE},
+    {0, _SL_LABS(3, 4), {GLFW_KEY_B}, "B", "bias mode", "bias mode: none, constant, slope, polygon offset, "
+     "culling, normal offset, midpoint", _SL_KEY_BIAS_MODE},
     {0, _SL_LABS(4, 5), {GLFW_KEY_F}, "F", "filter", "filter: none, hardware 2x2, grid, Poisson, PCSS (lab 5: with "
      "VSM off)", _SL_KEY_FILTER},
     {0, _SL_LABS(4, 5), {GLFW_KEY_MINUS, GLFW_KEY_EQUAL}, "- =", "kernel", "the filter's kernel radius, Poisson "
@@ -511,7 +511,7 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
 
 /* --help's keys, from the table: every lab's, then each lab's own, then --case's. */
 static void _sl_print_keys(FILE *f) {
-    fprintf(f, "keys (a lab's own keys are tried first, so a letter can mean one thing in lab 5 and another in lab 6):\n");
+    fprintf(f, "keys (a lab's own keys come first: a letter can mean one thing in lab 5, another in lab 6):\n");
     for (int lab = 0; lab <= SL_LAB_COUNT; lab++) {
         bool any = false;
         for (int i = 0; i < _SL_KEY_COUNT; i++) {
@@ -708,26 +708,31 @@ static void _sl_key_panel(_sl_viewer *v, const sl_frame_info *info) {
             bool listed = b->lab == lab || (b->lab == 0 && ((b->panel_labs >> lab) & 1u));
             /* a common key the lab's own keys take over is not this lab's */
             if (!listed || _sl_binding(lab, b->keys[0]) != b) continue;
-            if (pass == 0) {
+            if (pass == 0) { /* names aligned, but a long one ("W A S D Q E") does not push the others */
                 int len = (int)strlen(b->names);
-                if (len > pad) pad = len;
+                if (len > pad && len <= 5) pad = len;
                 continue;
             }
             char state[64];
             _sl_key_state(v, info, b, state, sizeof state);
             sl_overlay_line(ov, NULL, "%-*s %s%s%s", pad, b->names, b->label, state[0] ? ": " : "", state);
         }
-    char general[512] = "";
+    /* the general keys, as many to a line as fit in 60 characters */
+    char line[128] = "";
     for (int i = 0; i < _SL_KEY_COUNT; i++) {
         const _sl_key_binding *b = &_sl_key_table[i];
         if (b->lab != 0 || b->panel_labs != 0 || _sl_binding(lab, b->keys[0]) != b) continue;
         if (b->action == _SL_KEY_CODE && !_sl_second_functions) continue;
-        char state[64];
+        char state[64], item[128];
         _sl_key_state(v, info, b, state, sizeof state);
-        snprintf(general + strlen(general), sizeof general - strlen(general), "%s%s %s%s%s", general[0] ? "  " : "",
-                 b->names, b->label, state[0] ? ": " : "", state);
+        snprintf(item, sizeof item, "%s %s%s%s", b->names, b->label, state[0] ? ": " : "", state);
+        if (line[0] && strlen(line) + 2 + strlen(item) > 60) {
+            sl_overlay_line(ov, _sl_blue, "%s", line);
+            line[0] = '\0';
+        }
+        snprintf(line + strlen(line), sizeof line - strlen(line), "%s%s", line[0] ? "  " : "", item);
     }
-    _sl_wrapped(ov, _sl_blue, general, 60);
+    if (line[0]) sl_overlay_line(ov, _sl_blue, "%s", line);
 }
 
 /* The labels of what is drawn (with the overlay or --labels): the cascade
@@ -806,8 +811,8 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
     char *drawing = strstr(status, "; drawing ");
     if (drawing) { /* the reason, then what draws, each on lines of their own */
         *drawing = '\0';
-        _sl_wrapped(ov, _sl_orange, status, 64);
-        _sl_wrapped(ov, _sl_orange, drawing + 2, 64);
+        _sl_wrapped(ov, _sl_orange, status, 72);
+        _sl_wrapped(ov, _sl_orange, drawing + 2, 72);
     }
     static const char *const light_types[] = {"directional", "spot", "point"};
     sl_overlay_line(ov, NULL, "light: %s, size %.2f%s", light_types[l->type % 3], l->size,
@@ -1509,7 +1514,7 @@ int sl_viewer_main(int argc, char **argv) {
                 status = 1;
             }
             /* The last frame's overlay in words, for logs and tests. */
-            if (v.overlay && v.show_overlay) {
+            if (v.overlay && overlay_drawn && (v.show_overlay || v.labels)) {
                 char text[8192];
                 sl_overlay_text(v.overlay, text, sizeof text);
                 printf("shadowlab: overlay:\n%s", text);
