@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# case_view.sh SOLUTIONS_VIEWER STUDENT_VIEWER WORK_DIR
+# case_view.sh SOLUTIONS_VIEWER STUDENT_VIEWER WORK_DIR [IMAGE_CHECK]
 # The viewer's --case renders what the grader renders: with the solutions it
 # matches the reference (0% of pixels differ), with the stubs it does not and
 # names the stub; in a window (Xvfb) as headless, it saves the three panels;
-# labs 5-7's moments, cascade index and cube faces likewise (--check).
+# labs 5-7's moments, cascade index and cube faces likewise (--check). Each
+# panel is labelled, depths and distances are stretched to their own range
+# (printed), and the summary states the check's criterion from the case.
 set -u
-solutions=$1 student=$2 work=$3
+solutions=$1 student=$2 work=$3 check=${4:-}
+[ -n "$check" ] || check=$(dirname "$solutions")/image_check
 rm -rf "$work"; mkdir -p "$work"
 fail=0
 problem() { echo "case_view: $*" >&2; fail=1; }
@@ -37,6 +40,38 @@ if command -v xvfb-run >/dev/null; then
   xvfb-run -a -s "-screen 0 1600x900x24" "$solutions" --case lab1_depth_boxes --frames 3 --screenshot "$work/window.png" ||
     problem "the window view failed"
   [ -s "$work/window.png" ] || problem "no window screenshot"
+fi
+# The criterion, as the case and the compare code state it: lab 1's depth map (threshold and mean bound from
+# the case), a visibility check (with the lost-shadow rule), the moments per channel; penumbra says the grade
+# is not this pixel count.
+out=$("$solutions" --headless --case lab1_depth_boxes --screenshot "$work/depth.png" 2>&1)
+for line in "lab1_depth_boxes / depth: 0\.00% of pixels differ \(allowed [0-9.]+%\): passes" \
+            "criterion: a pixel differs when no pixel of the other picture's 3x3 neighbourhood is within 0\.002 of it \(both ways\); no NaN; mean difference at most 0\.0005" \
+            "each picture stretched black to white over its own range: yours (0\.[0-9]{4}) - (0\.[0-9]{4}), the reference \1 - \2"; do
+  grep -qE "$line" <<<"$out" || { echo "$out"; problem "lab1_depth_boxes does not say: $line"; }
+done
+out=$("$solutions" --headless --case lab2_spot_manual 2>&1)
+grep -qE "criterion: .* within 0\.05 of it \(both ways\); no NaN.*at most 50% of the reference's shadow lost, where it has 25 or more pixels \(here 0\.0% of [0-9]+ lost\)" <<<"$out" ||
+  { echo "$out"; problem "lab2_spot_manual's criterion does not give the lost-shadow rule"; }
+out=$("$solutions" --headless --case lab5_moments --check moments 2>&1)
+grep -qE "moments: 0\.00% of pixels differ \(depth 0\.00%, depth squared 0\.00%; allowed [0-9.]+% each\): passes" <<<"$out" &&
+  grep -qE "criterion: .*, per channel \(both ways\)" <<<"$out" || { echo "$out"; problem "the moments are not judged per channel"; }
+out=$("$solutions" --headless --case lab4_pcss --check contact_hardening 2>&1)
+grep -qE "for the eye, not the grade" <<<"$out" && grep -qE "criterion: the penumbra widths along the case's [0-9] probe lines" <<<"$out" ||
+  { echo "$out"; problem "the penumbra check does not say what the grader measures"; }
+# The pictures: labels on a dark backing at each panel's top left; a cube face stretched, no longer nearly black.
+out=$("$solutions" --headless --case lab7_cube_faces --check face_px --screenshot "$work/face.png" 2>&1)
+if [ ! -x "$check" ]; then
+  problem "no image_check beside the viewer ($check): build it"
+elif [ ! -s "$work/face.png" ]; then
+  echo "$out"; problem "no screenshot of lab7_cube_faces / face_px"
+else
+  # 1536 wide: three 512-px panels; the labels' text is at scale 2 (12 px a character)
+  for x in 8 520 1032; do "$check" label "$work/face.png" $x 8 60 18 || problem "no label on the panel at x=$x"; done
+  "$check" label "$work/face.png" 8 40 140 18 || problem "no range under the label of yours"
+  mean=$("$check" mean "$work/face.png" 0 80 512 420)
+  echo "case_view: face_px, yours: mean grey $mean"
+  awk -v m="$mean" 'BEGIN { exit !(m >= 0.4) }' || problem "the cube face is dark (mean $mean)"
 fi
 out=$("$solutions" --headless --case lab3_probes 2>&1)
 grep -q "has no picture to show" <<<"$out" || problem "a probe-only case is not explained"
