@@ -717,7 +717,9 @@ static void _sl_key_panel(_sl_viewer *v, const sl_frame_info *info) {
             _sl_key_state(v, info, b, state, sizeof state);
             sl_overlay_line(ov, NULL, "%-*s %s%s%s", pad, b->names, b->label, state[0] ? ": " : "", state);
         }
-    /* the general keys, as many to a line as fit in 60 characters */
+    /* the general keys, as many to a line as fit in 60 characters (40 in a lecture's larger text, so the
+     * panel leaves room beside it for the right-hand ones) */
+    size_t width = v->lecture ? 40 : 60;
     char line[128] = "";
     for (int i = 0; i < _SL_KEY_COUNT; i++) {
         const _sl_key_binding *b = &_sl_key_table[i];
@@ -726,7 +728,7 @@ static void _sl_key_panel(_sl_viewer *v, const sl_frame_info *info) {
         char state[64], item[128];
         _sl_key_state(v, info, b, state, sizeof state);
         snprintf(item, sizeof item, "%s %s%s%s", b->names, b->label, state[0] ? ": " : "", state);
-        if (line[0] && strlen(line) + 2 + strlen(item) > 60) {
+        if (line[0] && strlen(line) + 2 + strlen(item) > width) {
             sl_overlay_line(ov, _sl_blue, "%s", line);
             line[0] = '\0';
         }
