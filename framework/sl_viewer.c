@@ -170,7 +170,7 @@ static void _sl_update_title(_sl_viewer *v) {
     GLFWwindow *w = sl_context_window(v->ctx);
     if (!w) return;
     const sl_frame_info *info = sl_renderer_info(v->show_second ? &v->second : &v->renderer);
-    char title[512], settings[160];
+    char title[512], settings[512];
     const sl_render_params *p = &v->params;
     if (p->lab == 7 && v->scene.light.type == SL_LIGHT_POINT)
         snprintf(settings, sizeof settings, "cube map %d, bias %.4f, %s, %s", p->cube.map_size, p->cube.bias,
@@ -198,12 +198,11 @@ static void _sl_update_title(_sl_viewer *v) {
         snprintf(settings, sizeof settings, "%d cascades, lambda %.2f%s%s%s", p->cascades.count, p->cascades.lambda,
                  p->cascades.blend_band > 0 ? ", blend band" : "", p->cascades.show_cascades ? ", coloured" : "",
                  v->frozen ? ", frustum frozen (Z)" : "");
+    if (v->status[0]) snprintf(settings, sizeof settings, "%s", v->status); /* the asked lab's settings do not draw */
     int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s%s%s", p->lab, v->scene.name, settings,
                      p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "", v->show_second ? " — " : "",
                      v->show_second ? _sl_second_kind : "");
-    if (v->status[0] && n > 0 && (size_t)n < sizeof title)
-        snprintf(title + n, sizeof title - (size_t)n, " — %s", v->status);
-    else if (info->not_implemented_count > 0 && n > 0 && (size_t)n < sizeof title)
+    if (info->not_implemented_count > 0 && n > 0 && (size_t)n < sizeof title)
         snprintf(title + n, sizeof title - (size_t)n, " — not implemented: %s%s", info->not_implemented[0],
                  info->not_implemented_count > 1 ? ", ..." : "");
     glfwSetWindowTitle(w, title);
