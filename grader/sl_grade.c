@@ -394,8 +394,8 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
 
 /* A visibility check fails, whatever its pixel count, when more than half of
  * the reference's shadow (of at least this many pixels) is missing. */
-#define _SL_MIN_SHADOW_PIXELS 25
-#define _SL_MAX_SHADOW_LOST 0.5
+#define _SL_MIN_SHADOW_PIXELS SL_VISIBILITY_MIN_SHADOW_PIXELS
+#define _SL_MAX_SHADOW_LOST SL_VISIBILITY_MAX_SHADOW_LOST
 
 static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                             sl_check_result *out) {
