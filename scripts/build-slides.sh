@@ -39,7 +39,7 @@ for p in /usr/bin/python3 python3; do
   if command -v "$p" >/dev/null && "$p" -c 'import PIL' 2>/dev/null; then py=$p; break; fi
 done
 from=${SHADOWLAB_FIGURES_FROM:-solutions}
-decks=("$src"/lab[0-9]*.md)
+decks=("$src"/${SL_SLIDES_DECKS:-lab[0-9]*}.md)   # SL_SLIDES_DECKS=lab3*: some decks only
 
 if [ $handout = 1 ]; then
   [ "$from" = solutions ] || { echo "build-slides: --handout-figures needs a viewer that draws with the solutions" >&2; exit 2; }

@@ -80,7 +80,10 @@ diagrams)
   ;;
 figures)
   need_tools
-  "$py" "$here/slides_check.py" figures "$out" || fail=1
+  "$py" "$here/slides_check.py" figures "$out"
+  rc=$?
+  [ $rc = 77 ] && exit 77
+  [ $rc = 0 ] || fail=1
   ;;
 keys)
   [ -x "$viewer" ] || { problem "no viewer at '$viewer'"; exit 1; }
@@ -105,6 +108,7 @@ pdf-pages)
   for spec in "lab3_bias 1" "lab3_bias 4" "lab3_bias 7" "lab5_vsm 5" "lab7_cube 6"; do
     set -- $spec
     pdf="$out/$1.pdf"
+    [ -s "$pdf" ] || pdf="$out/student/$1.pdf"   # a copy without solutions has the students' decks only
     png="$review/pdf/$1-p$2"
     pdftoppm -png -r 60 -f "$2" -l "$2" -singlefile "$pdf" "$png" || { problem "pdftoppm failed on $pdf"; continue; }
     "$check" not-blank "$png.png" || problem "page $2 of $pdf is blank"
@@ -120,6 +124,18 @@ no-solutions)
     rm -rf "$work"; mkdir -p "$work"
     pre=/nonexistent
     [ $mode = prerendered ] && pre="$out/figures"
+    # Start from the build's diagrams and crops (cached), without the viewer's figures: those
+    # must come from the pre-rendered ones, or be left out.
+    cp -r "$out/figures" "$work/figures"
+    "$py" - "$work/figures" <<'PY'
+import json, os, sys
+d = sys.argv[1]
+for target, m in json.load(open(os.path.join(d, "manifest.json"))).items():
+    if m["kind"] in ("figure", "animation"):
+        for p in (os.path.join(d, os.path.basename(target)), os.path.join(d, ".stamps", target.replace("/", "_") + ".key")):
+            if os.path.exists(p):
+                os.remove(p)
+PY
     "$py" "$src/tools/render_figures.py" --python "$py" --from none --prerendered "$pre" --out "$work" \
       "$src"/lab[0-9]*.md >"$work/render.log" 2>&1 || { cat "$work/render.log"; problem "figures ($mode) failed"; continue; }
     for deck in "$src"/lab[0-9]*.md; do

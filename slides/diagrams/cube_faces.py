@@ -7,7 +7,7 @@ horizon, +Y above and -Y below -Z). Inside each face: the arrow of the up
 vector the face's camera is built with (lookAt(light, light + forward, up))
 and of its right vector (forward x up), i.e. the directions in which the
 face's texture coordinates t and s grow. They come from the cube-map
-convention (OpenGL 4.6 spec, table 8.19: which of the direction's components
+convention (OpenGL 4.6 core spec, §8.13, cube map texture selection: which of the direction's components
 give s and t on each face); around the horizon they point down and away, so
 those four faces are stored upside down relative to the world.
 
@@ -74,14 +74,11 @@ def main():
             return (cx + length * dot(v, cell_right), cy - length * dot(v, cell_up))
         ux, uy = to_px(up, 62)
         rx, ry = to_px(right, 62)
-        c.raw(f'<line x1="{cx}" y1="{cy}" x2="{ux:.1f}" y2="{uy:.1f}" stroke="{ACCENT}" stroke-width="5" '
-              f'marker-end="url(#arrow-{ACCENT.lstrip("#")})" id="up-{name}" data-face="{name}" '
-              f'data-up="{" ".join(map(str, up))}"/>')
-        c.raw(f'<line x1="{cx}" y1="{cy}" x2="{rx:.1f}" y2="{ry:.1f}" stroke="{BLUE}" stroke-width="4" '
-              f'marker-end="url(#arrow-{BLUE.lstrip("#")})" id="right-{name}" data-face="{name}" '
-              f'data-right="{" ".join(map(str, right))}" data-cell-right="{" ".join(map(str, cell_right))}" '
-              f'data-cell-up="{" ".join(map(str, cell_up))}" data-cell="{col} {row}"/>')
-        c.markers.update([ACCENT, BLUE])
+        c.line_px(cx, cy, ux, uy, stroke=ACCENT, width=5, arrow=True, id=f"up-{name}", data_face=name,
+                  data_up=" ".join(map(str, up)))
+        c.line_px(cx, cy, rx, ry, stroke=BLUE, width=4, arrow=True, id=f"right-{name}", data_face=name,
+                  data_right=" ".join(map(str, right)), data_cell_right=" ".join(map(str, cell_right)),
+                  data_cell_up=" ".join(map(str, cell_up)), data_cell=f"{col} {row}")
         c.text((px + 10, py + 30), name, size=26, px=True, weight="bold")
         c.text((px + cell - 8, py + cell - 30), "up " + vec(up), size=16, px=True, anchor="end", fill=ACCENT)
         c.text((px + cell - 8, py + cell - 10), "right " + vec(right), size=16, px=True, anchor="end", fill=BLUE)

@@ -6,6 +6,7 @@ records the transform (data-origin-x/y, data-scale: pixel = origin + scale *
 world, y up), so a test can read a drawn line back in world units and check
 it against the formula it illustrates (tests/slides_check.py)."""
 
+import math
 from xml.sax.saxutils import escape
 
 INK = "#1d2026"
@@ -67,13 +68,29 @@ class Canvas:
 
     def line(self, a, b, stroke=INK, width=3, dash=None, arrow=False, **kw):
         (x1, y1), (x2, y2) = self.px(*a), self.px(*b)
-        marker = None
+        self.line_px(x1, y1, x2, y2, stroke=stroke, width=width, dash=dash, arrow=arrow, **kw)
+
+    def line_px(self, x1, y1, x2, y2, stroke=INK, width=3, dash=None, arrow=False, **kw):
+        """A line in pixels; with arrow, a head drawn as a triangle (SVG markers are not
+        drawn alike everywhere: WeasyPrint ignores their orientation)."""
+        head = max(9.0, 3.2 * width)
         if arrow:
-            self.markers.add(stroke)
-            marker = f"url(#arrow-{stroke.lstrip('#')})"
-        extra = self._attrs(dict(stroke_dasharray=dash, marker_end=marker, **kw))
-        self.items.append(f'<line x1="{x1:.2f}" y1="{y1:.2f}" x2="{x2:.2f}" y2="{y2:.2f}" '
+            d = math.hypot(x2 - x1, y2 - y1) or 1.0
+            ux, uy = (x2 - x1) / d, (y2 - y1) / d
+            bx, by = x2 - ux * head, y2 - uy * head          # the head's base
+            tip = f"{x2:.2f},{y2:.2f}"
+            left = f"{bx - uy * head * 0.5:.2f},{by + ux * head * 0.5:.2f}"
+            right = f"{bx + uy * head * 0.5:.2f},{by - ux * head * 0.5:.2f}"
+            lx2, ly2 = bx + ux * 1.0, by + uy * 1.0          # the shaft stops inside the head
+        else:
+            lx2, ly2 = x2, y2
+        extra = self._attrs(dict(stroke_dasharray=dash, **kw))
+        # x2/y2 in data-* keep the drawn end (the tip) for the tests.
+        self.items.append(f'<line x1="{x1:.2f}" y1="{y1:.2f}" x2="{lx2:.2f}" y2="{ly2:.2f}" '
+                          f'data-x2="{x2:.2f}" data-y2="{y2:.2f}" '
                           f'stroke="{stroke}" stroke-width="{width}" stroke-linecap="round" {extra}/>')
+        if arrow:
+            self.items.append(f'<polygon points="{tip} {left} {right}" fill="{stroke}" stroke="none"/>')
 
     def polyline(self, pts, stroke=INK, width=3, fill="none", dash=None, **kw):
         p = " ".join("%.2f,%.2f" % self.px(x, y) for x, y in pts)
@@ -112,11 +129,7 @@ class Canvas:
                 f'viewBox="0 0 {self.w} {self.h}" font-family="{FONT}" '
                 f'data-origin-x="{fmt(float(self.ox))}" data-origin-y="{fmt(float(self.oy))}" '
                 f'data-scale="{fmt(float(self.s))}" {facts}>')
-        # One arrowhead per colour (context-stroke is not understood everywhere).
-        defs = "<defs>" + "".join(
-            f'<marker id="arrow-{c.lstrip("#")}" viewBox="0 0 10 10" refX="8" refY="5" markerWidth="4" '
-            f'markerHeight="4" orient="auto"><path d="M0,0 L10,5 L0,10 z" fill="{c}"/></marker>'
-            for c in sorted(self.markers)) + "</defs>"
+        defs = ""
         title = f"<title>{escape(self.title)}</title>" if self.title else ""
         return "\n".join([head, title, defs, '<rect width="100%" height="100%" fill="white"/>'] + self.items + ["</svg>"]) + "\n"
 
