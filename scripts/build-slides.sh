@@ -98,6 +98,17 @@ build_deck() { # DECK WHO
   [ "$who" = student ] && dest=$out/student
   md="$out/.$name.$who.md"
   "$py" "$src/tools/prepare_deck.py" --audience "$who" --out-dir "$out" "$deck" >"$md" || return 1
+  # Unchanged since the last build (the deck, its figures, the styles, the tools): nothing to do.
+  local key stamp="$out/.$name.$who.key"
+  key=$( { cat "$md" "$src/slides.css" "$src/print.css" "$src/tools/katex-filter.js" "$out/.katex/"*.css;
+           grep -oE '\(figures/[^) ]+\)' "$md" | tr -d '()' | sort -u | (cd "$out" && xargs -r cat 2>/dev/null);
+           echo "pdf=$pdf"; } | sha256sum | cut -d' ' -f1)
+  if [ -s "$dest/$name.html" ] && { [ "$pdf" != 1 ] || [ -s "$dest/$name.pdf" ]; } &&
+     [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$key" ]; then
+    say "$dest/$name.html: unchanged"
+    return 0
+  fi
+  rm -f "$stamp"
   SL_DECK="$name ($who)" pandoc "$md" --from markdown --to dzslides "${embed[@]}" --resource-path="$out:$src" \
     --filter "$src/tools/katex-filter.js" --metadata pagetitle="$name" \
     --css="$out/.katex/katex-woff2.css" --css="$src/slides.css" --output="$dest/$name.html" || return 1
@@ -111,6 +122,7 @@ build_deck() { # DECK WHO
     weasyprint --base-url "$out/" "$print" "$dest/$name.pdf" 2>"$out/.$name.$who.weasyprint.log" ||
       { cat "$out/.$name.$who.weasyprint.log" >&2; return 1; }
   fi
+  echo "$key" >"$stamp"
   say "$dest/$name.html$([ "$pdf" = 1 ] && echo " and $name.pdf")"
 }
 # Two decks at a time (SL_FIGURE_JOBS): pandoc and WeasyPrint use one core each.
