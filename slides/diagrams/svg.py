@@ -22,18 +22,36 @@ def fmt(v):
     return f"{v:.6f}".rstrip("0").rstrip(".") if isinstance(v, float) else str(v)
 
 
-def _subscripts(s, size):
-    """'d_b' and 'w_{light}' as real subscripts (tspans shifted with dy, which every renderer knows)."""
+def _segments(s):
+    """'d_b', 'w_{light}' -> [('d', False), ('b', True)]: text and subscripts."""
     import re
     out, pos = [], 0
     for m in re.finditer(r"_(\{[^}]*\}|[A-Za-z0-9](?![A-Za-z0-9]))", s):
-        out.append(escape(s[pos:m.start()]))
-        sub = m.group(1).strip("{}")
-        d = round(size * 0.3)
-        out.append(f'<tspan dy="{d}" font-size="{round(size * 0.72)}">{escape(sub)}</tspan><tspan dy="-{d}">\u200b</tspan>')
+        if m.start() > pos:
+            out.append((s[pos:m.start()], False))
+        out.append((m.group(1).strip("{}"), True))
         pos = m.end()
-    out.append(escape(s[pos:]))
-    return "".join(out)
+    if pos < len(s):
+        out.append((s[pos:], False))
+    return out
+
+
+_FONTS = {}
+
+
+def _width(text, size, weight):
+    """The text's width in pixels in DejaVu Sans (what the decks use), measured where Pillow and
+    the font are there, estimated otherwise."""
+    key = (size, weight)
+    if key not in _FONTS:
+        try:
+            from PIL import ImageFont
+            name = "DejaVuSans-Bold.ttf" if weight == "bold" else "DejaVuSans.ttf"
+            _FONTS[key] = ImageFont.truetype("/usr/share/fonts/truetype/dejavu/" + name, size)
+        except Exception:
+            _FONTS[key] = None
+    font = _FONTS[key]
+    return font.getlength(text) if font else 0.58 * size * len(text)
 
 
 class Canvas:
@@ -117,11 +135,26 @@ class Canvas:
                           f'stroke="{stroke}" stroke-width="{width}" {extra}/>')
 
     def text(self, at, s, size=22, fill=INK, anchor="start", px=False, weight="normal", italic=False, **kw):
+        """Text with real subscripts (d_b, w_{light}): each part its own <text>, placed by measured
+        widths, since tspan shifts are not drawn alike everywhere (WeasyPrint)."""
         x, y = at if px else self.px(*at)
         extra = self._attrs(kw)
         style = ' font-style="italic"' if italic else ""
-        self.items.append(f'<text x="{x:.2f}" y="{y:.2f}" font-size="{size}" fill="{fill}" '
-                          f'text-anchor="{anchor}" font-weight="{weight}"{style} {extra}>{_subscripts(s, size)}</text>')
+        parts = _segments(s)
+        sub = round(size * 0.72)
+        widths = [_width(t, sub if is_sub else size, weight) for t, is_sub in parts]
+        total = sum(widths)
+        x0 = x - (total if anchor == "end" else total / 2 if anchor == "middle" else 0)
+        if len(parts) == 1:
+            self.items.append(f'<text x="{x:.2f}" y="{y:.2f}" font-size="{size}" fill="{fill}" '
+                              f'text-anchor="{anchor}" font-weight="{weight}"{style} {extra}>{escape(s)}</text>')
+            return
+        for (t, is_sub), w in zip(parts, widths):
+            yy = y + (0.3 * size if is_sub else 0)
+            self.items.append(f'<text x="{x0:.2f}" y="{yy:.2f}" font-size="{sub if is_sub else size}" '
+                              f'fill="{fill}" text-anchor="start" font-weight="{weight}"{style} {extra}>'
+                              f'{escape(t.replace(" ", chr(160)))}</text>')   # spaces kept at the ends
+            x0 += w
 
     def svg(self):
         facts = " ".join(f'data-{k.replace("_", "-")}="{fmt(v)}"' for k, v in self.facts.items())
