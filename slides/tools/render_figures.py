@@ -110,10 +110,16 @@ def main():
     failures = []
     counts = {"rendered": 0, "cached": 0, "copied": 0, "missing": 0}
 
+    # What else a figure depends on: the viewer and its inputs; a diagram's scripts; figtool.
+    tool_hash = {"diagram": tree_hash([os.path.join(SLIDES, "diagrams")]),
+                 "derive": tree_hash([os.path.join(HERE, "figtool.py")])}
+
     def stamp_of(kind, args):
-        return hashlib.sha256(json.dumps([kind, args, viewer_args, deps if kind in ("figure", "animation")
-                                          else tree_hash([os.path.join(SLIDES, "diagrams"),
-                                                          os.path.join(HERE, "figtool.py")])]).encode()).hexdigest()
+        extra = tool_hash.get(kind, deps)
+        if kind == "derive":   # a crop is as new as the picture it is cut from
+            src = os.path.join(out, args[1])
+            extra += tree_hash([src]) if os.path.isfile(src) else "none"
+        return hashlib.sha256(json.dumps([kind, args, viewer_args, extra]).encode()).hexdigest()
 
     def run(job):
         deck, no, kind, args, target = job
