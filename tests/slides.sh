@@ -5,7 +5,8 @@
 #              every figure made, a PDF page per slide, no solution code in a students' deck
 #   diagrams   every diagram drawn by slides/diagrams/*.py checked against its formula
 #   figures    figures that the decks say differ do (bias sweep, PCF kernels, shimmer, ...)
-#   keys       every key (<kbd>) and option a deck names exists in `shadowlab --help`
+#   keys       every key (<kbd>) a deck names is in the viewer's key table (`shadowlab --list-keys`,
+#              which --help prints too) for that lab, and every option in `shadowlab --help`
 #   browser    every HTML deck opened in headless Chromium and stepped through: no missing
 #              image, blank slide, slide running over, or KaTeX error; a few slides kept as
 #              PNGs in BUILD_DIR/tests/slides-review/
@@ -89,7 +90,9 @@ keys)
   [ -x "$viewer" ] || { problem "no viewer at '$viewer'"; exit 1; }
   mkdir -p "$build/tests"
   "$viewer" --help >"$build/tests/shadowlab-help.txt" 2>&1
-  "$py" "$here/slides_check.py" keys "$src" "$build/tests/shadowlab-help.txt" "$src"/../grader/*.c || fail=1
+  "$viewer" --list-keys >"$build/tests/shadowlab-keys.txt" 2>&1
+  "$py" "$here/slides_check.py" keys "$src" "$build/tests/shadowlab-help.txt" "$build/tests/shadowlab-keys.txt" \
+    "$src"/../grader/*.c || fail=1
   ;;
 browser)
   need_tools

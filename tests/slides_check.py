@@ -488,61 +488,31 @@ def figures(out):
 
 # ---------------------------------------------------------------- keys and options
 
-KEY_WORDS = {"PgUp", "PgDn", "Tab", "Space", "Esc", "Shift", "arrows"}
-
-
-def help_keys(text):
-    """{key: set of labs or None (every lab)} from shadowlab --help's key lines."""
+def listed_keys(text):
+    """{key: set of labs (0: every lab)} from `shadowlab --list-keys` (LAB<tab>KEYS<tab>WHAT),
+    the key table that --help, the overlay's key panel and the viewer's dispatch share."""
     keys = {}
-    lines = text.split("\n")
-    start = next((i for i, l in enumerate(lines) if re.match(r"^(lab \d+ )?keys:", l)), None)
-    if start is None:
-        return keys
-    block = []
-    for l in lines[start:]:
-        if l.startswith("benchmark:"):
-            break
-        block.append(l)
-    sticky = None        # "lab 7 keys:" holds for its lines
-    section = None       # "lab 5: ..." holds until the next ";"
-    for raw in block:
-        m = re.match(r"^lab (\d+) keys:(.*)", raw)
-        if m:
-            sticky, raw = {int(m.group(1))}, m.group(2)
-        elif raw.startswith("keys:"):
-            sticky, raw = None, raw[len("keys:"):]
-        raw = raw.replace(", , ", ", \x00 ")     # the comma key itself (", . lambda")
-        for part in re.split(r"([,;])", raw):
-            if part == ";":
-                section = None
-                continue
-            if part == ",":
-                continue
-            seg = part.strip()
-            m = re.match(r"^lab (\d+): (.*)", seg)
-            if m:
-                section, seg = {int(m.group(1))}, m.group(2)
-            ctx = None
-            m = re.search(r"\(labs? (\d+)(?:-(\d+))?\)", seg)
-            if m:
-                a = int(m.group(1))
-                ctx = set(range(a, int(m.group(2) or a) + 1))
-            ctx = ctx or section or sticky
-            for tok in seg.split():
-                if re.fullmatch(r"\d-\d", tok):
-                    for d in range(int(tok[0]), int(tok[2]) + 1):
-                        keys.setdefault(str(d), set()).update(ctx or {0})
-                elif len(tok) == 1 or tok in KEY_WORDS:
-                    keys.setdefault("," if tok == "\x00" else tok, set()).update(ctx or {0})
-                else:
-                    break
+    for line in text.splitlines():
+        parts = line.split("\t")
+        if len(parts) != 3:
+            continue
+        lab, names = parts[0], parts[1]
+        if lab == "case":
+            continue
+        labs = {0} if lab == "all" else {int(lab)}
+        for tok in names.split():
+            if re.fullmatch(r"\d-\d", tok):
+                for d in range(int(tok[0]), int(tok[2]) + 1):
+                    keys.setdefault(str(d), set()).update(labs)
+            else:
+                keys.setdefault(tok, set()).update(labs)
     return keys
 
 
-def keys(slides, help_file, grader_sources):
+def keys(slides, help_file, list_file, grader_sources):
     text = open(help_file, encoding="utf-8").read()
     options = set(re.findall(r"(?<![\w-])(--[a-z][a-z0-9-]*)", text))
-    known = help_keys(text)
+    known = listed_keys(open(list_file, encoding="utf-8").read())
     grader = ""
     for p in grader_sources:
         grader += open(p, encoding="utf-8", errors="replace").read()
@@ -570,7 +540,7 @@ def keys(slides, help_file, grader_sources):
                         problem(f"{os.path.basename(deck)}:{no_line}: {opt} is not an option of shadowlab-grade")
                 elif opt not in options:
                     problem(f"{os.path.basename(deck)}:{no_line}: option {opt} is not in shadowlab --help")
-    print(f"slides-check: {nk} keys and {no} options named in the decks, checked against --help")
+    print(f"slides-check: {nk} keys and {no} options named in the decks, checked against the key table and --help")
 
 
 # ---------------------------------------------------------------- browser
@@ -762,7 +732,7 @@ def main():
     elif what == "figures":
         figures(sys.argv[2])
     elif what == "keys":
-        keys(sys.argv[2], sys.argv[3], sys.argv[4:])
+        keys(sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:])
     elif what == "browser":
         browser(sys.argv[2], sys.argv[3])
     else:
