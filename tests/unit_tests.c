@@ -21,6 +21,7 @@
 #include "sl_run.h"
 #include "sl_sha256.h"
 #include "sl_shader.h"
+#include "sl_text.h"
 
 static int failures;
 #define CHECK(cond)                                                                \
@@ -722,6 +723,80 @@ static void test_grade_small_shadow_missing(void) {
     sl_image_free(&reference);
 }
 
+static void write_bytes(const char *name, const char *bytes, size_t n) {
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
+    FILE *f = fopen(path, "wb");
+    fwrite(bytes, 1, n, f);
+    fclose(f);
+}
+
+/* Shader files as Windows and old Mac editors save them: a UTF-8 byte-order
+ * mark and CRLF or lone CR line ends are made plain before compiling; a NUL
+ * byte, Latin-1 or UTF-16 is named with the file and the byte's offset. */
+static void test_shader_text_as_editors_write_it(void) {
+    static const char crlf[] = "\xef\xbb\xbf#version 330 core\r\n#include \"cr.glsl\"\r\nvoid main() {\r\n}\r\n";
+    static const char cr[] = "// old Mac\rfloat g() { return 2.0; }\r";
+    write_bytes("crlf.frag", crlf, sizeof crlf - 1);
+    write_bytes("cr.glsl", cr, sizeof cr - 1);
+    char path[512], files[SL_SHADER_MAX_FILES][SL_PATH_MAX], err[1024] = "";
+    int count = 0;
+    const char *dirs[] = {NULL};
+    snprintf(path, sizeof path, "%s/crlf.frag", tmp_dir);
+    char *src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src != NULL);
+    if (src) {
+        CHECK(strncmp(src, "#version 330 core\n", 18) == 0);
+        CHECK(strchr(src, '\r') == NULL);
+        CHECK(strstr(src, "#line 100001 1\n// old Mac\nfloat g()") != NULL); /* lines counted at each CR */
+        CHECK(strstr(src, "void main() {\n}\n") != NULL);
+    }
+    free(src);
+    /* not text: named with the byte's offset, line and column */
+    static const char nul[] = "#version 330 core\nvoid main() {\n  x\0;\n}\n";
+    static const char latin1[] = "#version 330 core\n// caf\xe9\n";
+    static const char utf16[] = "\xff\xfe#\0v\0";
+    static const struct { const char *name, *bytes; size_t n; const char *expect; } bad[] = {
+        {"nul.frag", nul, sizeof nul - 1, "nul.frag: byte 35 (line 3, column 4): a NUL byte"},
+        {"latin1.frag", latin1, sizeof latin1 - 1, "latin1.frag: byte 24 (line 2, column 7): 0xe9 is not UTF-8"},
+        {"utf16.frag", utf16, sizeof utf16 - 1, "utf16.frag: byte 0: the file is UTF-16"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        write_bytes(bad[i].name, bad[i].bytes, bad[i].n);
+        snprintf(path, sizeof path, "%s/%s", tmp_dir, bad[i].name);
+        err[0] = '\0';
+        src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+        CHECK(src == NULL);
+        CHECK(strstr(err, bad[i].expect) != NULL);
+        if (!strstr(err, bad[i].expect)) fprintf(stderr, "  got: %s\n", err);
+        free(src);
+    }
+    /* the module alone: well-formed UTF-8 passes, overlong forms and surrogates do not */
+    char text[64];
+    size_t n;
+    sl_text_report report;
+    snprintf(text, sizeof text, "\xc3\xa9t\xc3\xa9 \xe2\x82\xac\r\n");
+    n = strlen(text);
+    CHECK(sl_text_normalize(text, &n, &report) == SL_TEXT_OK && n == strlen(text) && report.crlf_count == 1);
+    CHECK(sl_text_changed(&report));
+    snprintf(text, sizeof text, "\xc0\xaf");
+    n = strlen(text);
+    CHECK(sl_text_normalize(text, &n, &report) == SL_TEXT_INVALID_UTF8 && report.offset == 0);
+    snprintf(text, sizeof text, "ok\xed\xa0\x80");
+    n = strlen(text);
+    CHECK(sl_text_normalize(text, &n, &report) == SL_TEXT_INVALID_UTF8 && report.offset == 2);
+    snprintf(text, sizeof text, "plain\n");
+    n = strlen(text);
+    CHECK(sl_text_normalize(text, &n, &report) == SL_TEXT_OK && !sl_text_changed(&report));
+    char words[300];
+    snprintf(text, sizeof text, "\xef\xbb\xbf" "a\r\nb\r\nc\r");
+    n = strlen(text);
+    sl_text_normalize(text, &n, &report);
+    sl_text_describe(&report, "lab1.c", words, sizeof words);
+    CHECK(strcmp(words, "lab1.c: a UTF-8 byte-order mark removed, 2 CRLF line ends made LF, 1 CR line end made LF") == 0);
+    CHECK(strcmp(text, "a\nb\nc\n") == 0);
+}
+
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
@@ -742,6 +817,7 @@ int main(int argc, char **argv) {
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},
         {"sha256_known_answers", test_sha256_known_answers},
+        {"shader_text_as_editors_write_it", test_shader_text_as_editors_write_it},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
