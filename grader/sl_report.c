@@ -293,6 +293,10 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
             cJSON_AddBoolToObject(j, "passed", cr->passed);
             cJSON_AddBoolToObject(j, "bonus", cr->bonus);
             cJSON_AddStringToObject(j, "message", cr->message);
+            if (!cr->passed && cr->diagnosis[0]) {
+                cJSON_AddStringToObject(j, "diagnosis", cr->diagnosis);
+                cJSON_AddStringToObject(j, "diagnosis_text", cr->diagnosis_text);
+            }
             const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(g->c, ck));
             if (!cr->passed && cap && cap->is_image) {
                 const sl_image *shown[3] = {&cap->image, &g->references[k].image, &cr->diff};

@@ -497,6 +497,52 @@ static void test_grade_probe_verdicts(void) {
     CHECK(out.passed);
 }
 
+/* A failed check's diagnosis is the same for every student it fits, whatever
+ * the numbers in their message, and differs between mistakes (the class
+ * report counts students per diagnosis). */
+static void test_grade_diagnosis_ids(void) {
+    sl_case c = grade_case(3, SL_CHECK_VISIBILITY);
+    c.params.bias.mode = SL_BIAS_SLOPE_SCALED;
+    char ids[2][80], texts[2][320];
+    for (int student = 0; student < 2; student++) {
+        sl_case_result r = {.finished = true};
+        sl_image acne = square(64, 64, 0, 1, 20, 20, 40, 40);
+        for (int i = 0; i < 64 * 64; i += 3 + 2 * student) acne.data[i] = 0; /* more or less acne */
+        add_capture(&r, "visibility", acne);
+        add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
+        sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
+        sl_check_result out;
+        sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
+        CHECK(!out.passed && out.diagnosis[0]);
+        snprintf(ids[student], sizeof ids[student], "%s", out.diagnosis);
+        snprintf(texts[student], sizeof texts[student], "%s", out.diagnosis_text);
+        sl_image_free(&out.diff);
+        sl_case_result_free(&r);
+        sl_reference_free(&ref);
+    }
+    CHECK(strcmp(ids[0], ids[1]) == 0);
+    CHECK(strcmp(texts[0], texts[1]) == 0);
+    CHECK(strncmp(ids[0], "bias-too-small-or-missing-", 26) == 0);
+    if (strncmp(ids[0], "bias-too-small-or-missing-", 26) != 0) fprintf(stderr, "  id: %s (%s)\n", ids[0], texts[0]);
+    /* a probe's verdict, named with its function; another verdict, another id */
+    static const float rows[][SL_PROBE_MAX_INPUTS] = {{1.0f, 0.0005f, 0.0015f, 0.01f}, {0.5f, 0.0005f, 0.0015f, 0.01f}};
+    double expected[2], with_sin[2], constant[2] = {0.004, 0.004};
+    for (int i = 0; i < 2; i++) {
+        double cos_t = rows[i][0], sin_t = sqrt(1 - cos_t * cos_t);
+        expected[i] = fmin(rows[i][1] + rows[i][2] * sin_t / cos_t, rows[i][3]);
+        with_sin[i] = fmin(rows[i][1] + rows[i][2] * sin_t, rows[i][3]);
+    }
+    sl_check_result out;
+    grade_probe("slope_scaled_bias", 2, rows, with_sin, expected, &out);
+    CHECK(strncmp(out.diagnosis_text, "slope_scaled_bias(): sin(theta) where tan(theta) belongs", 56) == 0);
+    char sin_id[80];
+    snprintf(sin_id, sizeof sin_id, "%s", out.diagnosis);
+    grade_probe("slope_scaled_bias", 2, rows, constant, expected, &out);
+    CHECK(strcmp(out.diagnosis, sin_id) != 0 && strncmp(out.diagnosis, "slope-scaled-bias-", 18) == 0);
+    grade_probe("slope_scaled_bias", 2, rows, expected, expected, &out);
+    CHECK(out.passed && !out.diagnosis[0]);
+}
+
 /* A vertical shadow edge whose soft ramp is `near` px wide in the top half and `far` px in the bottom. */
 static sl_image ramp(int near, int far) {
     sl_image img = sl_image_alloc(64, 64, 1);
@@ -818,6 +864,7 @@ int main(int argc, char **argv) {
         {"channel_rejects_lies", test_channel_rejects_lies},
         {"sha256_known_answers", test_sha256_known_answers},
         {"shader_text_as_editors_write_it", test_shader_text_as_editors_write_it},
+        {"grade_diagnosis_ids", test_grade_diagnosis_ids},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
