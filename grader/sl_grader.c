@@ -43,7 +43,8 @@ static void _sl_usage(FILE *f) {
             "usage: shadowlab-grade [options]\n"
             "Grades a build's labs headless against the reference renders. The lab code runs in a\n"
             "separate process per case (shadowlab-runner), in a sandbox; this program runs none of it.\n"
-            "  --lab N              grade lab N only\n"
+            "  --lab LABS           grade these labs only: a number, a range or a list (--lab 2,\n"
+            "                       --lab 1-3, --lab 1,3-4); give it several times for more\n"
             "  --case PATTERN       cases whose name matches PATTERN (shell glob, or a substring);\n"
             "                       give it several times for several patterns\n"
             "  --exclude PATTERN    leave out the cases whose name matches PATTERN (several times too)\n"
@@ -225,7 +226,7 @@ typedef struct _sl_options {
     const char *patterns[_SL_MAX_PATTERNS], *excludes[_SL_MAX_PATTERNS];
     int pattern_count, exclude_count;
     const char *report_dir, *gradescope, *prairielearn, *junit;
-    int only_lab;
+    unsigned labs; /* --lab: 1 << N for each lab asked for; 0: every lab */
     bool update, list, isolate, strict, hidden, progress;
     const char *seed, *not_built, *gradebook;
     sl_sandbox_level sandbox_level;
@@ -234,6 +235,42 @@ typedef struct _sl_options {
     sl_backend backend;
 } _sl_options;
 
+
+/* --lab's value: lab numbers, ranges and lists ("2", "1-3", "1,3-4") into a
+ * mask of 1 << N; false with the reason on anything else. */
+static bool _sl_parse_labs(const char *text, unsigned *mask, char *err, size_t n) {
+    const char *p = text;
+    unsigned found = 0;
+    for (;;) {
+        char *end;
+        while (*p == ' ') p++;
+        long first = strtol(p, &end, 10), last = first;
+        bool number = end != p && *p >= '0' && *p <= '9';
+        p = end;
+        while (*p == ' ') p++;
+        if (number && *p == '-') {
+            p++;
+            while (*p == ' ') p++;
+            number = *p >= '0' && *p <= '9';
+            last = strtol(p, &end, 10);
+            p = end;
+            while (*p == ' ') p++;
+        }
+        if (!number || (*p && *p != ',')) {
+            snprintf(err, n, "--lab '%s': give lab numbers, ranges or lists (--lab 2, --lab 1-3, --lab 1,3-4)", text);
+            return false;
+        }
+        if (first < 1 || last > SL_LAB_MAX || first > last) {
+            snprintf(err, n, "--lab '%s': labs are numbered 1 to %d, a range goes up (1-3)", text, SL_LAB_MAX);
+            return false;
+        }
+        for (long lab = first; lab <= last; lab++) found |= 1u << lab;
+        if (!*p) break;
+        p++; /* the comma */
+    }
+    *mask |= found;
+    return true;
+}
 
 /* 0: go on; otherwise the exit status. */
 static int _sl_parse(int argc, char **argv, _sl_options *o) {
@@ -253,9 +290,9 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
             _sl_usage(stdout);
             return -1;
         } else if (strcmp(a, "--lab") == 0) {
-            o->only_lab = atoi(v);
-            if (o->only_lab < 1 || o->only_lab > SL_LAB_MAX) {
-                fprintf(stderr, "shadowlab-grade: --lab takes 1..%d\n", SL_LAB_MAX);
+            char lab_err[200];
+            if (!_sl_parse_labs(v, &o->labs, lab_err, sizeof lab_err)) {
+                fprintf(stderr, "shadowlab-grade: %s\n", lab_err);
                 return SL_EXIT_ERROR;
             }
         } else if (strcmp(a, "--case") == 0 || strcmp(a, "--exclude") == 0) {
@@ -345,7 +382,7 @@ static int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report 
             if (rep->problem_count < 32) snprintf(rep->problems[rep->problem_count++], sizeof rep->problems[0], "%s", err);
             continue;
         }
-        if (o->only_lab && c->lab != o->only_lab) continue;
+        if (o->labs && !(c->lab >= 0 && c->lab <= SL_LAB_MAX && ((o->labs >> c->lab) & 1u))) continue;
         if (o->pattern_count && !_sl_matches_any(c->name, o->patterns, o->pattern_count)) continue;
         if (_sl_matches_any(c->name, o->excludes, o->exclude_count)) continue;
         count++;
