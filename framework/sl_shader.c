@@ -170,15 +170,16 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
         return false;
     }
     if (given) length = strlen(text);
-    /* A BOM and CRLF or CR line ends (Windows and old Mac editors) are made
-     * plain; a NUL or bytes that are not UTF-8 are named with their offset,
-     * before the compiler could only say "syntax error". */
-    sl_text_report text_report;
-    if (sl_text_normalize(text, &length, &text_report) != SL_TEXT_OK) {
-        sl_text_describe(&text_report, path, pp->err, pp->err_size);
+    /* Bytes that are not text are named with their offset (the compiler would
+     * only say "syntax error"); a BOM and CRLF or CR line ends (Windows and old
+     * Mac editors) are made plain. */
+    sl_text_problems problems;
+    if (!sl_text_check(text, length, &problems)) {
+        sl_text_problems_describe(&problems, path, pp->err, pp->err_size);
         free(text);
         return false;
     }
+    text[sl_text_normalize(text, length, NULL)] = '\0';
     int line_no = 1;
     bool need_marker = id != 0; /* the main file starts at line 1 by itself */
     const char *line = text;

@@ -3,115 +3,107 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The length of the UTF-8 sequence at p (at most `left` bytes), or 0 when it
- * is not well-formed (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF). */
-static size_t _sl_utf8_sequence(const unsigned char *p, size_t left) {
-    unsigned char c = p[0];
+size_t sl_text_normalize(char *text, size_t len, sl_text_fix *fix) {
+    sl_text_fix local = {0};
+    size_t in = 0, out = 0;
+    if (len >= 3 && (unsigned char)text[0] == 0xEF && (unsigned char)text[1] == 0xBB && (unsigned char)text[2] == 0xBF) {
+        local.bom_removed = true;
+        in = 3;
+    }
+    while (in < len) {
+        char c = text[in++];
+        if (c == '\r') {
+            if (in < len && text[in] == '\n') {
+                in++;
+                local.crlf++;
+            } else {
+                local.lone_cr++;
+            }
+            c = '\n';
+        }
+        text[out++] = c;
+    }
+    if (fix) *fix = local;
+    return out;
+}
+
+bool sl_text_fix_any(const sl_text_fix *fix) { return fix->bom_removed || fix->crlf || fix->lone_cr; }
+
+void sl_text_fix_describe(const sl_text_fix *fix, char *out, size_t n) {
+    if (!n) return;
+    out[0] = '\0';
+    size_t used = 0;
+    if (fix->bom_removed) used += (size_t)snprintf(out + used, n - used, "a UTF-8 byte-order mark removed");
+    if (fix->crlf && used < n)
+        used += (size_t)snprintf(out + used, n - used, "%s%ld CRLF line end%s made LF", used ? ", " : "", fix->crlf,
+                                 fix->crlf == 1 ? "" : "s");
+    if (fix->lone_cr && used < n)
+        snprintf(out + used, n - used, "%s%ld CR line end%s made LF", used ? ", " : "", fix->lone_cr,
+                 fix->lone_cr == 1 ? "" : "s");
+}
+
+/* The length of the valid UTF-8 sequence at s (at most left bytes), or 0 (RFC 3629, section 4). */
+static size_t _sl_utf8_sequence(const unsigned char *s, size_t left) {
+    unsigned char c = s[0];
     if (c < 0x80) return 1;
     size_t n;
-    unsigned char lo = 0x80, hi = 0xbf; /* the range of the second byte */
-    if (c >= 0xc2 && c <= 0xdf) n = 2;
-    else if (c == 0xe0) n = 3, lo = 0xa0;
-    else if (c == 0xed) n = 3, hi = 0x9f;
-    else if (c >= 0xe1 && c <= 0xef) n = 3;
-    else if (c == 0xf0) n = 4, lo = 0x90;
-    else if (c == 0xf4) n = 4, hi = 0x8f;
-    else if (c >= 0xf1 && c <= 0xf3) n = 4;
+    unsigned char lo = 0x80, hi = 0xBF; /* the allowed range of the second byte */
+    if (c >= 0xC2 && c <= 0xDF) n = 2;
+    else if (c == 0xE0) n = 3, lo = 0xA0;
+    else if (c >= 0xE1 && c <= 0xEC) n = 3;
+    else if (c == 0xED) n = 3, hi = 0x9F; /* no surrogates */
+    else if (c >= 0xEE && c <= 0xEF) n = 3;
+    else if (c == 0xF0) n = 4, lo = 0x90;
+    else if (c >= 0xF1 && c <= 0xF3) n = 4;
+    else if (c == 0xF4) n = 4, hi = 0x8F; /* nothing past U+10FFFF */
     else return 0;
-    if (left < n || p[1] < lo || p[1] > hi) return 0;
+    if (left < n || s[1] < lo || s[1] > hi) return 0;
     for (size_t i = 2; i < n; i++)
-        if (p[i] < 0x80 || p[i] > 0xbf) return 0;
+        if (s[i] < 0x80 || s[i] > 0xBF) return 0;
     return n;
 }
 
-sl_text_problem sl_text_normalize(char *data, size_t *length, sl_text_report *report) {
-    sl_text_report local;
-    sl_text_report *r = report ? report : &local;
-    memset(r, 0, sizeof *r);
-    const unsigned char *p = (const unsigned char *)data;
-    size_t n = *length;
-    if (n >= 2 && ((p[0] == 0xff && p[1] == 0xfe) || (p[0] == 0xfe && p[1] == 0xff))) {
-        r->problem = SL_TEXT_UTF16;
-        r->line = r->column = 1;
-        r->byte = p[0];
-        return r->problem;
+bool sl_text_check(const char *text, size_t len, sl_text_problems *p) {
+    *p = (sl_text_problems){.nul_offset = -1, .invalid_offset = -1};
+    const unsigned char *s = (const unsigned char *)text;
+    if (len >= 2 && ((s[0] == 0xFF && s[1] == 0xFE) || (s[0] == 0xFE && s[1] == 0xFF))) {
+        p->utf16 = true;
+        return false;
     }
-    size_t start = n >= 3 && p[0] == 0xef && p[1] == 0xbb && p[2] == 0xbf ? 3 : 0;
-    int line = 1;
-    size_t line_start = start;
-    for (size_t i = start; i < n;) {
-        size_t step = p[i] == 0 ? 0 : _sl_utf8_sequence(p + i, n - i);
-        if (step == 0) {
-            r->problem = p[i] == 0 ? SL_TEXT_NUL : SL_TEXT_INVALID_UTF8;
-            r->offset = i;
-            r->line = line;
-            r->column = (int)(i - line_start) + 1;
-            r->byte = p[i];
-            return r->problem;
+    long line = 1;
+    for (size_t i = 0; i < len && (p->nul_offset < 0 || p->invalid_offset < 0);) {
+        if (s[i] == '\n' || (s[i] == '\r' && (i + 1 == len || s[i + 1] != '\n'))) line++;
+        if (s[i] == 0 && p->nul_offset < 0) {
+            p->nul_offset = (long long)i;
+            p->nul_line = line;
         }
-        if (p[i] == '\n' || (p[i] == '\r' && !(i + 1 < n && p[i + 1] == '\n'))) {
-            line++;
-            line_start = i + 1;
-        }
-        i += step;
-    }
-    /* Text: drop the mark, and make every line end LF. */
-    r->had_bom = start == 3;
-    size_t out = 0;
-    for (size_t i = start; i < n; i++) {
-        if (data[i] == '\r') {
-            if (i + 1 < n && data[i + 1] == '\n') {
-                r->crlf_count++;
-                continue; /* the LF follows */
+        size_t n = _sl_utf8_sequence(s + i, len - i);
+        if (n == 0) {
+            if (p->invalid_offset < 0) {
+                p->invalid_offset = (long long)i;
+                p->invalid_line = line;
             }
-            r->cr_count++;
-            data[out++] = '\n';
-            continue;
+            n = 1;
         }
-        data[out++] = data[i];
+        i += n;
     }
-    data[out] = '\0';
-    *length = out;
-    return SL_TEXT_OK;
+    return p->nul_offset < 0 && p->invalid_offset < 0;
 }
 
-bool sl_text_changed(const sl_text_report *r) {
-    return r->problem == SL_TEXT_OK && (r->had_bom || r->crlf_count || r->cr_count);
-}
-
-void sl_text_describe(const sl_text_report *r, const char *path, char *out, size_t n) {
-    if (n == 0) return;
+void sl_text_problems_describe(const sl_text_problems *p, const char *name, char *out, size_t n) {
+    if (!n) return;
     out[0] = '\0';
-    switch (r->problem) {
-    case SL_TEXT_NUL:
-        snprintf(out, n, "%s: byte %zu (line %d, column %d): a NUL byte (0x00): this is not a text file, or it was "
-                         "saved with an encoding other than UTF-8",
-                 path, r->offset, r->line, r->column);
+    if (p->utf16) {
+        snprintf(out, n, "%s: saved as UTF-16, which the compilers do not read: save it as UTF-8", name);
         return;
-    case SL_TEXT_INVALID_UTF8:
-        snprintf(out, n, "%s: byte %zu (line %d, column %d): 0x%02x is not UTF-8 (saved as Latin-1 or another "
-                         "encoding?): save the file as UTF-8",
-                 path, r->offset, r->line, r->column, r->byte);
-        return;
-    case SL_TEXT_UTF16:
-        snprintf(out, n, "%s: byte 0: the file is UTF-16 (a byte-order mark 0x%02x 0x%02x): save it as UTF-8", path,
-                 r->byte, r->byte == 0xff ? 0xfe : 0xff);
-        return;
-    case SL_TEXT_OK: break;
     }
-    if (!sl_text_changed(r)) return;
-    int used = snprintf(out, n, "%s:", path);
-    const char *sep = " ";
-    if (r->had_bom && used > 0 && (size_t)used < n) {
-        used += snprintf(out + used, n - (size_t)used, "%sa UTF-8 byte-order mark removed", sep);
-        sep = ", ";
-    }
-    if (r->crlf_count && used > 0 && (size_t)used < n) {
-        used += snprintf(out + used, n - (size_t)used, "%s%zu CRLF line end%s made LF", sep, r->crlf_count,
-                         r->crlf_count == 1 ? "" : "s");
-        sep = ", ";
-    }
-    if (r->cr_count && used > 0 && (size_t)used < n)
-        snprintf(out + used, n - (size_t)used, "%s%zu CR line end%s made LF", sep, r->cr_count,
-                 r->cr_count == 1 ? "" : "s");
+    size_t used = 0;
+    if (p->nul_offset >= 0)
+        used += (size_t)snprintf(out, n, "%s: a NUL byte at byte offset %lld (line %ld): not text; the compiler stops there "
+                                         "or rejects the file",
+                                 name, p->nul_offset, p->nul_line);
+    if (p->invalid_offset >= 0 && used < n)
+        snprintf(out + used, n - used, "%s%s: invalid UTF-8 at byte offset %lld (line %ld): save the file as UTF-8 (GLSL "
+                                       "allows only ASCII outside comments)",
+                 used ? "; " : "", name, p->invalid_offset, p->invalid_line);
 }

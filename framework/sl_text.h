@@ -1,45 +1,50 @@
-/* sl_text: source files as editors write them, made plain before a compiler
- * reads them. Windows editors save a UTF-8 byte-order mark and CRLF line
- * ends, old Mac ones a lone CR; GLSL compilers take neither (Mesa says
- * "preprocessor error: syntax error, unexpected HASH_TOKEN" for a BOM before
- * #version). The viewer's shader loader and the grader's staging of a
- * submission both pass each lab file through sl_text_normalize.
- *
- * What is not text is refused with where it is: a NUL byte, bytes that are not
- * UTF-8 (a file saved as Latin-1), a UTF-16 file (Notepad's "Unicode"). */
+/* sl_text: lab files as editors write them. Windows editors save CRLF line
+ * ends and often a UTF-8 byte-order mark; old Mac editors a lone CR. GLSL
+ * compilers reject the mark ("syntax error, unexpected HASH_TOKEN" on line 1)
+ * and some choke on CR, so every lab file is normalised before it is compiled
+ * (the grader's staging of a submission, the viewer's shader loader), and
+ * bytes no editor should write (NUL, invalid UTF-8) are named with their
+ * offset, so a student is told more than the compiler's error that follows. */
 #ifndef SL_TEXT_H
 #define SL_TEXT_H
 
 #include <stdbool.h>
 #include <stddef.h>
 
-typedef enum sl_text_problem {
-    SL_TEXT_OK = 0,
-    SL_TEXT_NUL,          /* a NUL byte */
-    SL_TEXT_INVALID_UTF8, /* a byte sequence that is not UTF-8 */
-    SL_TEXT_UTF16,        /* a UTF-16 byte-order mark at the start */
-} sl_text_problem;
+/* What sl_text_normalize changed. */
+typedef struct sl_text_fix {
+    bool bom_removed; /* a UTF-8 byte-order mark at the start */
+    long crlf;        /* CRLF line ends made LF */
+    long lone_cr;     /* lone CR line ends made LF */
+} sl_text_fix;
 
-typedef struct sl_text_report {
-    sl_text_problem problem;
-    size_t offset;      /* of the first bad byte, in the file as it was read */
-    int line, column;   /* where that byte is (1-based; a column counts bytes) */
-    unsigned char byte; /* the bad byte */
-    /* what was changed (when there was no problem) */
-    bool had_bom;
-    size_t crlf_count, cr_count;
-} sl_text_report;
+/* In place: removes a UTF-8 byte-order mark at the start and turns CRLF and
+ * a lone CR into LF. Returns the new length (never more than len); the text
+ * is not NUL-terminated by this function. fix may be NULL. */
+size_t sl_text_normalize(char *text, size_t len, sl_text_fix *fix);
 
-/* Checks data[0..*length) and, when it is text, normalises it in place: the
- * UTF-8 byte-order mark dropped, CRLF and lone CR turned into LF. *length is
- * the new length, and data[*length] is set to '\0' (the buffer must hold
- * *length + 1 bytes). On a problem nothing is changed. report may be NULL. */
-sl_text_problem sl_text_normalize(char *data, size_t *length, sl_text_report *report);
-/* Whether sl_text_normalize changed anything (a BOM, CRLF or CR). */
-bool sl_text_changed(const sl_text_report *report);
-/* "FILE: byte 1234 (line 5, column 3): a NUL byte (0x00): ..." — the problem
- * in words, or what was normalised ("a UTF-8 byte-order mark removed, 12 CRLF
- * line ends made LF"), or "" when the text was plain. */
-void sl_text_describe(const sl_text_report *report, const char *path, char *out, size_t out_size);
+/* Whether sl_text_normalize changed anything. */
+bool sl_text_fix_any(const sl_text_fix *fix);
+
+/* "a UTF-8 byte-order mark removed, 120 CRLF line ends made LF" (empty if nothing changed). */
+void sl_text_fix_describe(const sl_text_fix *fix, char *out, size_t out_size);
+
+/* Bytes that are not text: the first NUL and the first byte that is not
+ * valid UTF-8 (overlong forms, surrogates, code points past U+10FFFF and cut
+ * sequences included), as offsets from the start of the file as written
+ * (-1: none) with their 1-based line. A file that starts with a UTF-16
+ * byte-order mark is said to be UTF-16. */
+typedef struct sl_text_problems {
+    long long nul_offset, invalid_offset;
+    long nul_line, invalid_line;
+    bool utf16;
+} sl_text_problems;
+
+/* Checks the text; true when it is clean (no NUL, valid UTF-8, not UTF-16). */
+bool sl_text_check(const char *text, size_t len, sl_text_problems *out);
+
+/* One sentence per problem found, prefixed with `name`: "NAME: a NUL byte at
+ * byte offset 12 (line 1): ..." (empty if the text is clean). */
+void sl_text_problems_describe(const sl_text_problems *p, const char *name, char *out, size_t out_size);
 
 #endif
