@@ -353,6 +353,46 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
     return 0;
 }
 
+/* The options that decide a grade, as one line for the report and the
+ * gradebook ("--lab 1-2 --case lab1_* --hidden --seed 4711"): a second pass
+ * with other options says so instead of passing for the first. Where the
+ * files come from is named only when it is not this build's own. */
+static void _sl_describe_options(const _sl_options *o, const char *default_cases, const char *default_refs, char *out,
+                                 size_t n) {
+    size_t used = 0;
+    out[0] = '\0';
+#define _SL_ADD(...)                                                                          \
+    do {                                                                                      \
+        int added = snprintf(out + used, n - used, "%s", used ? " " : "");                   \
+        if (added > 0 && (size_t)added < n - used) used += (size_t)added;                     \
+        added = snprintf(out + used, n - used, __VA_ARGS__);                                  \
+        if (added > 0) used = (size_t)added < n - used ? used + (size_t)added : n - 1;        \
+    } while (0)
+    if (o->labs) {
+        char labs[64] = "";
+        size_t l = 0;
+        for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+            if (!((o->labs >> lab) & 1u)) continue;
+            int last = lab;
+            while (last < SL_LAB_MAX && ((o->labs >> (last + 1)) & 1u)) last++;
+            int added = last > lab ? snprintf(labs + l, sizeof labs - l, "%s%d-%d", l ? "," : "", lab, last)
+                                   : snprintf(labs + l, sizeof labs - l, "%s%d", l ? "," : "", lab);
+            if (added > 0 && (size_t)added < sizeof labs - l) l += (size_t)added;
+            lab = last;
+        }
+        _SL_ADD("--lab %s", labs);
+    }
+    for (int i = 0; i < o->pattern_count; i++) _SL_ADD("--case %s", o->patterns[i]);
+    for (int i = 0; i < o->exclude_count; i++) _SL_ADD("--exclude %s", o->excludes[i]);
+    if (o->isolate) _SL_ADD("--isolate");
+    if (o->hidden) _SL_ADD("--hidden --seed %s", o->seed ? o->seed : "?");
+    if (o->timeout > 0) _SL_ADD("--timeout %g", o->timeout);
+    if (o->memory_mb > 0) _SL_ADD("--memory %g", o->memory_mb);
+    if (o->cases_dir && strcmp(o->cases_dir, default_cases) != 0) _SL_ADD("--cases %s", o->cases_dir);
+    if (o->refs_dir && strcmp(o->refs_dir, default_refs) != 0) _SL_ADD("--references %s", o->refs_dir);
+#undef _SL_ADD
+}
+
 /* Reads the case files (in name order), keeps those the options select. */
 static int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report *rep) {
     DIR *d = opendir(o->cases_dir);
@@ -612,7 +652,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             if (sl_lab_folder(lab)) run.setups[0].lab_dirs[lab] = graded_tree;
     }
 
-    sl_grade_report rep = {.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree};
+    sl_grade_report rep = {.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree,
+                           .seed = o.hidden ? o.seed : NULL};
+    _sl_describe_options(&o, default_cases, default_refs, rep.options, sizeof rep.options);
     static sl_case cases[_SL_MAX_CASES];
     int count = _sl_load_cases(&o, cases, &rep);
     if (count < 0) {
