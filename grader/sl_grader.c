@@ -652,9 +652,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             if (sl_lab_folder(lab)) run.setups[0].lab_dirs[lab] = graded_tree;
     }
 
-    sl_grade_report rep = {.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree,
-                           .seed = o.hidden ? o.seed : NULL};
-    _sl_describe_options(&o, default_cases, default_refs, rep.options, sizeof rep.options);
+    sl_grade_report rep = {.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree};
     static sl_case cases[_SL_MAX_CASES];
     int count = _sl_load_cases(&o, cases, &rep);
     if (count < 0) {
@@ -673,6 +671,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         fprintf(stderr, "shadowlab-grade: no case matches in %s\n", o.cases_dir);
         return SL_EXIT_ERROR;
     }
+    /* what decides this grade, for its reports and the gradebook */
+    rep.seed = o.hidden ? o.seed : NULL;
+    _sl_describe_options(&o, default_cases, default_refs, rep.options, sizeof rep.options);
     if (o.not_built) return _sl_grade_not_built(&o, cases, count, &rep);
     for (int i = 0; i < count; i++) {
         const sl_runner_setup *s = run.setups[cases[i].lab].runner ? &run.setups[cases[i].lab] : &run.setups[0];
