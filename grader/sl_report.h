@@ -25,6 +25,8 @@ typedef struct sl_grade_report {
     int problem_count;
     double seconds;
     int jobs;
+    char options[640];       /* the options that decide the grade ("--lab 1-2 --hidden --seed 4711"; "": none) */
+    const char *seed;        /* --hidden's seed, or NULL */
     const char *labs_kind, *labs_dir;
     char sandbox[320];       /* the sandbox level the runners got, in words */
     char backend[32], renderer[160]; /* what the runners rendered with (as the first runner said) */
@@ -32,8 +34,6 @@ typedef struct sl_grade_report {
     int cases_finished;      /* cases that ran to their end */
     char case_set[160];      /* which cases, when not the public ones ("hidden variants, seed 42") */
     const char *not_built;   /* the compiler's first error, when the submission did not build */
-    char options[640];       /* the options that decide the grade ("--lab 1-2 --hidden --seed 4711"; "": none) */
-    const char *seed;        /* --hidden's seed, or NULL */
 } sl_grade_report;
 
 /* score and max_score leave bonus checks out; bonus is what they earned. */
