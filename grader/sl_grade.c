@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 
 #include <cjson/cJSON.h>
@@ -68,14 +69,19 @@ void sl_diag_cause(sl_check_result *out, const char *fmt, ...) {
 
 /* ---- the diagnosis a failed check got, as the class report counts it ---- */
 
-/* text with every number that is not part of a name ("23%", "0.5", "(1, 2)",
- * not "lab3" or "TODO(lab3.2)") written as "…", so that one diagnosis reads
- * the same for every student. */
+/* text with every number that is not part of a name ("23%", "0.5", "(1, 2)";
+ * not "lab3", "TODO(lab3.2)", "lab 2", "cos^2") written as "…", so that one
+ * diagnosis reads the same for every student. */
 static void _sl_without_numbers(const char *text, char *out, size_t n) {
     size_t used = 0;
     for (const char *p = text; *p && used + 4 < n;) {
         bool starts_number = (*p >= '0' && *p <= '9') || ((*p == '-' || *p == '+') && p[1] >= '0' && p[1] <= '9');
-        bool in_name = p > text && (isalnum((unsigned char)p[-1]) || p[-1] == '_' || p[-1] == '.');
+        bool in_name = p > text && (isalnum((unsigned char)p[-1]) || p[-1] == '_' || p[-1] == '.' || p[-1] == '^');
+        /* "lab 2", "labs 1-3": which lab, not a measure */
+        for (const char *word = "lab "; !in_name && word; word = strcmp(word, "lab ") == 0 ? "labs " : NULL) {
+            size_t n_word = strlen(word);
+            in_name = (size_t)(p - text) >= n_word && strncasecmp(p - n_word, word, n_word) == 0;
+        }
         if (starts_number && !in_name) {
             if (*p == '-' || *p == '+') p++;
             while ((*p >= '0' && *p <= '9') || (*p == '.' && p[1] >= '0' && p[1] <= '9')) p++;
