@@ -122,6 +122,12 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
         snprintf(row->status, sizeof row->status, "grading problem");
         const char *first = cJSON_GetStringValue(cJSON_GetArrayItem(problems, 0));
         snprintf(row->note, sizeof row->note, "%s", first ? first : "");
+    } else if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "no_lab_file")) || strcmp(status_text, "3") == 0) {
+        /* an empty upload, a text entry, only links: graded as the stubs, and said so */
+        const char *first = cJSON_GetStringValue(
+            cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(json, "submission_notes"), 0));
+        snprintf(row->status, sizeof row->status, "no lab file");
+        snprintf(row->note, sizeof row->note, "%s", first ? first : "no lab file in the submission: see its report");
     } else if (strcmp(status_text, "0") != 0 && strcmp(status_text, "1") != 0) {
         snprintf(row->status, sizeof row->status, "grading problem");
         snprintf(row->note, sizeof row->note, "grade exit status %s: see %s/grade.log", status_text, row->name);

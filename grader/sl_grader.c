@@ -15,6 +15,7 @@
 
 #include "sl_build_failure.h"
 #include "sl_case.h"
+#include "sl_class_report.h"
 #include "sl_backend.h"
 #include "sl_files.h"
 #include "sl_grade.h"
@@ -78,7 +79,8 @@ static void _sl_usage(FILE *f) {
             "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
             "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
             "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
-            "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
+            "  --gradebook DIR      write DIR/gradebook.csv, and the class report DIR/class-report.html and\n"
+            "                       .csv, from the reports of a batch (scripts/grade-batch)\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
             "(a staff-side problem: missing or changed references, bad case files, unwritable reports).\n");
@@ -563,11 +565,12 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     if (o.gradebook) {
         char csv[1200], gradebook_err[1500];
         snprintf(csv, sizeof csv, "%s/gradebook.csv", o.gradebook);
-        if (!sl_gradebook_write(o.gradebook, csv, gradebook_err, sizeof gradebook_err)) {
+        if (!sl_gradebook_write(o.gradebook, csv, gradebook_err, sizeof gradebook_err) ||
+            !sl_class_report_write(o.gradebook, gradebook_err, sizeof gradebook_err)) {
             fprintf(stderr, "shadowlab-grade: %s\n", gradebook_err);
             return SL_EXIT_ERROR;
         }
-        printf("shadowlab-grade: wrote %s\n", csv);
+        printf("shadowlab-grade: wrote %s, and the class report %s/class-report.html (and .csv)\n", csv, o.gradebook);
         return SL_EXIT_FULL;
     }
     static char default_cases[1100], default_refs[1100];
