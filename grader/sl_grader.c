@@ -79,8 +79,8 @@ static void _sl_usage(FILE *f) {
             "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
             "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
             "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
-            "  --gradebook DIR      write DIR/gradebook.csv, and the class report DIR/class-report.html and\n"
-            "                       .csv, from the reports of a batch (scripts/grade-batch)\n"
+            "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
+            "                       and the class report: DIR/class-report.html and .csv\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
             "(a staff-side problem: missing or changed references, bad case files, unwritable reports).\n");

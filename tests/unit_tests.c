@@ -174,6 +174,56 @@ static void test_shader_include_stays_inside(void) {
     free(src);
 }
 
+static void write_bytes(const char *name, const char *bytes, size_t n) {
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
+    FILE *f = fopen(path, "wb");
+    fwrite(bytes, 1, n, f);
+    fclose(f);
+}
+
+/* Shader files as Windows and old Mac editors save them: a UTF-8 byte-order
+ * mark and CRLF or lone CR line ends are made plain before compiling; a NUL
+ * byte, Latin-1 or UTF-16 is named with the file and the byte's offset. */
+static void test_shader_text_as_editors_write_it(void) {
+    static const char crlf[] = "\xef\xbb\xbf#version 330 core\r\n#include \"cr.glsl\"\r\nvoid main() {\r\n}\r\n";
+    static const char cr[] = "// old Mac\rfloat g() { return 2.0; }\r";
+    write_bytes("crlf.frag", crlf, sizeof crlf - 1);
+    write_bytes("cr.glsl", cr, sizeof cr - 1);
+    char path[512], files[SL_SHADER_MAX_FILES][SL_PATH_MAX], err[1024] = "";
+    int count = 0;
+    const char *dirs[] = {NULL};
+    snprintf(path, sizeof path, "%s/crlf.frag", tmp_dir);
+    char *src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src != NULL);
+    if (src) {
+        CHECK(strncmp(src, "#version 330 core\n", 18) == 0);
+        CHECK(strchr(src, '\r') == NULL);
+        CHECK(strstr(src, "#line 100001 1\n// old Mac\nfloat g()") != NULL); /* lines counted at each CR */
+        CHECK(strstr(src, "void main() {\n}\n") != NULL);
+    }
+    free(src);
+    /* not text: named with the file and the byte's offset and line */
+    static const char nul[] = "#version 330 core\nvoid main() {\n  x\0;\n}\n";
+    static const char latin1[] = "#version 330 core\n// caf\xe9\n";
+    static const char utf16[] = "\xff\xfe#\0v\0";
+    static const struct { const char *name, *bytes; size_t n; const char *expect; } bad[] = {
+        {"nul.frag", nul, sizeof nul - 1, "nul.frag: a NUL byte at byte offset 35 (line 3)"},
+        {"latin1.frag", latin1, sizeof latin1 - 1, "latin1.frag: invalid UTF-8 at byte offset 24 (line 2)"},
+        {"utf16.frag", utf16, sizeof utf16 - 1, "utf16.frag: saved as UTF-16"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        write_bytes(bad[i].name, bad[i].bytes, bad[i].n);
+        snprintf(path, sizeof path, "%s/%s", tmp_dir, bad[i].name);
+        err[0] = '\0';
+        src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+        CHECK(src == NULL);
+        CHECK(strstr(err, bad[i].expect) != NULL);
+        if (!strstr(err, bad[i].expect)) fprintf(stderr, "  got: %s\n", err);
+        free(src);
+    }
+}
+
 static void test_case_files(void) {
     char path[512], err[2048];
     sl_case c;
@@ -769,62 +819,13 @@ static void test_grade_small_shadow_missing(void) {
     sl_image_free(&reference);
 }
 
-static void write_bytes(const char *name, const char *bytes, size_t n) {
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
-    FILE *f = fopen(path, "wb");
-    fwrite(bytes, 1, n, f);
-    fclose(f);
-}
-
-/* Shader files as Windows and old Mac editors save them: a UTF-8 byte-order
- * mark and CRLF or lone CR line ends are made plain before compiling; a NUL
- * byte, Latin-1 or UTF-16 is named with the file and the byte's offset. */
-static void test_shader_text_as_editors_write_it(void) {
-    static const char crlf[] = "\xef\xbb\xbf#version 330 core\r\n#include \"cr.glsl\"\r\nvoid main() {\r\n}\r\n";
-    static const char cr[] = "// old Mac\rfloat g() { return 2.0; }\r";
-    write_bytes("crlf.frag", crlf, sizeof crlf - 1);
-    write_bytes("cr.glsl", cr, sizeof cr - 1);
-    char path[512], files[SL_SHADER_MAX_FILES][SL_PATH_MAX], err[1024] = "";
-    int count = 0;
-    const char *dirs[] = {NULL};
-    snprintf(path, sizeof path, "%s/crlf.frag", tmp_dir);
-    char *src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
-    CHECK(src != NULL);
-    if (src) {
-        CHECK(strncmp(src, "#version 330 core\n", 18) == 0);
-        CHECK(strchr(src, '\r') == NULL);
-        CHECK(strstr(src, "#line 100001 1\n// old Mac\nfloat g()") != NULL); /* lines counted at each CR */
-        CHECK(strstr(src, "void main() {\n}\n") != NULL);
-    }
-    free(src);
-    /* not text: named with the file and the byte's offset and line */
-    static const char nul[] = "#version 330 core\nvoid main() {\n  x\0;\n}\n";
-    static const char latin1[] = "#version 330 core\n// caf\xe9\n";
-    static const char utf16[] = "\xff\xfe#\0v\0";
-    static const struct { const char *name, *bytes; size_t n; const char *expect; } bad[] = {
-        {"nul.frag", nul, sizeof nul - 1, "nul.frag: a NUL byte at byte offset 35 (line 3)"},
-        {"latin1.frag", latin1, sizeof latin1 - 1, "latin1.frag: invalid UTF-8 at byte offset 24 (line 2)"},
-        {"utf16.frag", utf16, sizeof utf16 - 1, "utf16.frag: saved as UTF-16"},
-    };
-    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        write_bytes(bad[i].name, bad[i].bytes, bad[i].n);
-        snprintf(path, sizeof path, "%s/%s", tmp_dir, bad[i].name);
-        err[0] = '\0';
-        src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
-        CHECK(src == NULL);
-        CHECK(strstr(err, bad[i].expect) != NULL);
-        if (!strstr(err, bad[i].expect)) fprintf(stderr, "  got: %s\n", err);
-        free(src);
-    }
-}
-
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
         {"compare_depth_patterns", test_compare_depth_patterns},
         {"shader_includes_and_lines", test_shader_includes_and_lines},
         {"shader_missing_include", test_shader_missing_include},
+        {"shader_text_as_editors_write_it", test_shader_text_as_editors_write_it},
         {"case_files", test_case_files},
         {"scenes", test_scenes},
         {"meshes", test_meshes},
@@ -835,12 +836,11 @@ int main(int argc, char **argv) {
         {"grade_small_shadow_missing", test_grade_small_shadow_missing},
         {"grade_leads_with_root_cause", test_grade_leads_with_root_cause},
         {"grade_probe_verdicts", test_grade_probe_verdicts},
+        {"grade_diagnosis_ids", test_grade_diagnosis_ids},
         {"grade_run_failures", test_grade_run_failures},
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},
         {"sha256_known_answers", test_sha256_known_answers},
-        {"shader_text_as_editors_write_it", test_shader_text_as_editors_write_it},
-        {"grade_diagnosis_ids", test_grade_diagnosis_ids},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
