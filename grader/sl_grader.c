@@ -228,7 +228,7 @@ typedef struct _sl_options {
     const char *patterns[_SL_MAX_PATTERNS], *excludes[_SL_MAX_PATTERNS];
     int pattern_count, exclude_count;
     const char *report_dir, *gradescope, *prairielearn, *junit;
-    unsigned labs; /* --lab: 1 << N for each lab asked for; 0: every lab */
+    uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
     bool update, list, isolate, strict, hidden, progress;
     const char *seed, *not_built, *gradebook;
     sl_sandbox_level sandbox_level;
@@ -240,9 +240,9 @@ typedef struct _sl_options {
 
 /* --lab's value: lab numbers, ranges and lists ("2", "1-3", "1,3-4") into a
  * mask of 1 << N; false with the reason on anything else. */
-static bool _sl_parse_labs(const char *text, unsigned *mask, char *err, size_t n) {
+static bool _sl_parse_labs(const char *text, uint32_t *mask, char *err, size_t n) {
     const char *p = text;
-    unsigned found = 0;
+    uint32_t found = 0;
     for (;;) {
         char *end;
         while (*p == ' ') p++;
@@ -293,7 +293,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
             return -1;
         } else if (strcmp(a, "--lab") == 0) {
             char lab_err[200];
-            if (!_sl_parse_labs(v, &o->labs, lab_err, sizeof lab_err)) {
+            if (!_sl_parse_labs(v, &o->only_labs, lab_err, sizeof lab_err)) {
                 fprintf(stderr, "shadowlab-grade: %s\n", lab_err);
                 return SL_EXIT_ERROR;
             }
@@ -370,13 +370,13 @@ static void _sl_describe_options(const _sl_options *o, const char *default_cases
         added = snprintf(out + used, n - used, __VA_ARGS__);                                  \
         if (added > 0) used = (size_t)added < n - used ? used + (size_t)added : n - 1;        \
     } while (0)
-    if (o->labs) {
+    if (o->only_labs) {
         char labs[64] = "";
         size_t l = 0;
         for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
-            if (!((o->labs >> lab) & 1u)) continue;
+            if (!((o->only_labs >> lab) & 1u)) continue;
             int last = lab;
-            while (last < SL_LAB_MAX && ((o->labs >> (last + 1)) & 1u)) last++;
+            while (last < SL_LAB_MAX && ((o->only_labs >> (last + 1)) & 1u)) last++;
             int added = last > lab ? snprintf(labs + l, sizeof labs - l, "%s%d-%d", l ? "," : "", lab, last)
                                    : snprintf(labs + l, sizeof labs - l, "%s%d", l ? "," : "", lab);
             if (added > 0 && (size_t)added < sizeof labs - l) l += (size_t)added;
@@ -424,7 +424,7 @@ static int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report 
             if (rep->problem_count < 32) snprintf(rep->problems[rep->problem_count++], sizeof rep->problems[0], "%s", err);
             continue;
         }
-        if (o->labs && !(c->lab >= 0 && c->lab <= SL_LAB_MAX && ((o->labs >> c->lab) & 1u))) continue;
+        if (o->only_labs && !((o->only_labs >> c->lab) & 1u)) continue;
         if (o->pattern_count && !_sl_matches_any(c->name, o->patterns, o->pattern_count)) continue;
         if (_sl_matches_any(c->name, o->excludes, o->exclude_count)) continue;
         count++;
