@@ -6,13 +6,7 @@
  *     (the backing) and 2-40% are bright (the glyphs).
  *   image_check not-blank IMAGE.png
  *     at least 1% of the pixels differ from the top-left one (a page that is
- *     not empty).
- *   image_check colour IMAGE.png R G B PERCENT
- *     a colour picture (RGB, not grey) with at least PERCENT % of its pixels
- *     within 0.05 of the colour R G B (0..1): a false-colour legend's colours.
- *   image_check red-green IMAGE.png
- *     a colour picture with no blue, whose red and green differ somewhere
- *     (two channels shown as red and green, not as grey and alpha). */
+ *     not empty). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -76,36 +70,6 @@ int main(int argc, char **argv) {
                argv[2], x0, y0, w, h, d, argv[3], k, b);
         return d >= 20 && k >= 25 && b >= 2 && b <= 40 ? 0 : 1;
     }
-    if ((argc == 7 && strcmp(argv[1], "colour") == 0) || (argc == 3 && strcmp(argv[1], "red-green") == 0)) {
-        sl_image im;
-        if (!sl_image_read(argv[2], &im, err, sizeof err)) {
-            fprintf(stderr, "image_check: %s\n", err);
-            return 2;
-        }
-        if (im.channels < 3) {
-            printf("image_check: %s has %d channel%s, not a colour picture\n", argv[2], im.channels,
-                   im.channels == 1 ? "" : "s");
-            return 1;
-        }
-        long count = 0, blue = 0;
-        double n = (double)im.width * im.height;
-        for (int y = 0; y < im.height; y++)
-            for (int x = 0; x < im.width; x++) {
-                const float *p = sl_image_pixel(&im, x, y);
-                if (argc == 7) {
-                    bool near = true;
-                    for (int c = 0; c < 3; c++) near &= fabsf(p[c] - (float)atof(argv[3 + c])) <= 0.05f;
-                    count += near;
-                } else {
-                    count += fabsf(p[0] - p[1]) > 0.05f;
-                    blue += p[2] > 0.02f;
-                }
-            }
-        printf("image_check: %s (%dx%d): %.2f%% of the pixels %s%s\n", argv[2], im.width, im.height, 100 * count / n,
-               argc == 7 ? "have the colour" : "have red and green apart", argc == 7 ? "" : blue ? ", some blue" : ", no blue");
-        return argc == 7 ? (100 * count / n >= atof(argv[6]) ? 0 : 1) : (count > 0 && blue == 0 ? 0 : 1);
-    }
-    fprintf(stderr, "usage: image_check text WITH.png WITHOUT.png X Y W H | image_check not-blank IMAGE.png |\n"
-                    "       image_check colour IMAGE.png R G B PERCENT | image_check red-green IMAGE.png\n");
+    fprintf(stderr, "usage: image_check text WITH.png WITHOUT.png X Y W H | image_check not-blank IMAGE.png\n");
     return 2;
 }
