@@ -27,7 +27,8 @@ cat "$work/list.log" "$work/list.txt"
 expect_listed() { # NAME STUDENT ID LATE FILES
   local line
   line=$(grep "^$1"$'\t' "$work/list.txt") || { problem "no submission $1"; return; }
-  IFS=$'\t' read -r _ student id late _ files <<<"$line"
+  # (read would join empty fields: a tab is white space to it)
+  student=$(cut -f2 <<<"$line") id=$(cut -f3 <<<"$line") late=$(cut -f4 <<<"$line") files=$(cut -f6 <<<"$line")
   [ "$student" = "$2" ] && [ "$id" = "$3" ] && [ "$late" = "$4" ] || problem "$1: '$student' '$id' '$late', expected '$2' '$3' '$4'"
   [ "$files" = "$5" ] || problem "$1's files: '$files', expected '$5'"
 }
