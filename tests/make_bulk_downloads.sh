@@ -17,10 +17,9 @@
 #   leeann 1003        Canvas, lab 1's files loose, lab1-1.c (uploaded again) and the first
 #                      lab1.c (a stub) beside it: the solutions
 #   nguyenan 1004      Canvas, a text entry only: no lab file
-#   Jane Doe 2001      Moodle folders, labs/ as uploaded: the solutions
+#   Jane Doe 2001      Moodle folders, labs/ as uploaded and an online text: the solutions
 #   Zoë Müller 2002    Moodle folders, a Finder zip (__MACOSX, ._ files) of lab 1 saved by a
 #                      Windows editor (BOM, CRLF): the solutions
-#   Ann Lee 2003       Moodle folders, onlinetext only: no lab file
 #   Omar Haddad 2004   Moodle flat, lab 1's files: lab1_no_viewport
 #
 #   make_bulk_downloads.sh SOURCE OUT
@@ -67,8 +66,8 @@ printf 'Mac OS X resource fork' >"$zoe/__MACOSX/shadowlab/$lab1/._lab1.c"
 printf 'Finder' >"$zoe/shadowlab/.DS_Store"
 mkdir -p "$m/Zoë Müller_2002_assignsubmission_file_"
 zip_of "$m/Zoë Müller_2002_assignsubmission_file_/shadowlab.zip" "$zoe"
-mkdir -p "$m/Ann Lee_2003_assignsubmission_onlinetext_"
-printf '<p>See my lab report.</p>\n' >"$m/Ann Lee_2003_assignsubmission_onlinetext_/onlinetext.html"
+mkdir -p "$m/Jane Doe_2001_assignsubmission_onlinetext_"
+printf '<p>See my lab report.</p>\n' >"$m/Jane Doe_2001_assignsubmission_onlinetext_/onlinetext.html"
 zip_of "$out/moodle-folders.zip" "$m"
 
 # ---- Moodle, flat ----
