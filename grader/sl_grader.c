@@ -8,7 +8,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -724,6 +723,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         return SL_EXIT_ERROR;
     }
     sl_sandbox_describe(sandbox, rep.sandbox, sizeof rep.sandbox);
+    if (sandbox->self_check) rep.self_check = SL_SANDBOX_SELF_CHECK_NOTE;
     /* Hidden cases: the references are this run's, in a folder of the grader's own. */
     if (o.hidden) {
         if (!sl_hidden_open(hidden, seed, err, sizeof err)) {
@@ -738,13 +738,18 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     const char *what[3] = {"the references", "the case files", "the solutions"};
     bool readable[3];
     int sensitive_count = sensitive[2] ? 3 : 2;
-    if (sl_sandbox_readable(sandbox, sensitive, sensitive_count, readable) > 0) {
+    if (!sandbox->self_check && sl_sandbox_readable(sandbox, sensitive, sensitive_count, readable) > 0) {
         char list[200] = "";
         for (int i = 0; i < sensitive_count; i++)
             if (readable[i])
                 snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", list[0] ? ", " : "", what[i]);
         snprintf(rep.sandbox + strlen(rep.sandbox), sizeof rep.sandbox - strlen(rep.sandbox),
                  "; lab code can read %s: grade with --strict for a grade no submission can forge", list);
+    }
+    if (o.strict && sandbox->self_check) {
+        fprintf(stderr, "shadowlab-grade: --strict: this build's runners have no sandbox (%s module): build with "
+                        "-DSL_SANDBOX=linux on Linux to grade for a course\n", sl_sandbox_module());
+        return SL_EXIT_ERROR;
     }
     if (o.strict && sandbox->level < SL_SANDBOX_NAMESPACES) {
         fprintf(stderr, "shadowlab-grade: --strict: the runners would get only the %s sandbox (%s). Grade as root, or "
@@ -880,6 +885,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         printf("shadowlab-grade: %s labs (%s), %d cases%s\n", rep.labs_kind, rep.labs_dir, count,
                o.isolate ? ", each lab isolated (the solutions stand in for the other labs)" : "");
         printf("shadowlab-grade: sandbox: %s\n", rep.sandbox);
+        if (rep.self_check) printf("shadowlab-grade: %s\n", rep.self_check);
         if (o.hidden)
             snprintf(rep.case_set, sizeof rep.case_set, "hidden variants of the public cases, seed %s", o.seed);
         if (o.hidden)
@@ -901,12 +907,6 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     }
     return status;
 }
-
-/* Not dumpable: a process of the same uid (a runner in the basic sandbox)
- * can then neither trace this one nor open its memory or fds in /proc. As a
- * constructor, from before main: the window after exec is the loader's only
- * (where the kernel has Landlock, runners cannot reach the grader at all). */
-__attribute__((constructor(101))) static void _sl_not_dumpable(void) { prctl(PR_SET_DUMPABLE, 0, 0, 0, 0); }
 
 int sl_grader_main(int argc, char **argv) {
     struct sigaction sa = {.sa_handler = _sl_on_signal};

@@ -85,6 +85,7 @@ static void _sl_print_message(FILE *out, const char *message) {
 void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
     const char *red = color ? "\033[31m" : "", *green = color ? "\033[32m" : "", *bold = color ? "\033[1m" : "",
                *reset = color ? "\033[0m" : "";
+    if (rep->self_check) fprintf(out, "%sSelf-check:%s %s\n", bold, reset, rep->self_check);
     for (int i = 0; i < rep->submission_note_count; i++)
         fprintf(out, "%sSubmission:%s %s\n", i == 0 && rep->no_lab_file ? red : bold, reset, rep->submission_notes[i]);
     for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
@@ -226,6 +227,11 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
         _sl_html_text(f, rep->options);
     }
     fputs("</p>\n", f);
+    if (rep->self_check) {
+        fputs("<p class=\"fail\"><strong>", f);
+        _sl_html_text(f, rep->self_check);
+        fputs("</strong></p>\n", f);
+    }
     if (rep->not_built) {
         fputs("<p class=\"fail\">The submission did not build: ", f);
         _sl_html_text(f, rep->not_built);
@@ -329,6 +335,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     cJSON_AddStringToObject(root, "backend", rep->backend);
     cJSON_AddStringToObject(root, "renderer", rep->renderer);
     cJSON_AddStringToObject(root, "sandbox", rep->sandbox);
+    if (rep->self_check) cJSON_AddStringToObject(root, "self_check", rep->self_check);
     if (rep->case_set[0]) cJSON_AddStringToObject(root, "case_set", rep->case_set);
     /* what made this grade: a gradebook row says it, and a pass with other options is told apart */
     cJSON_AddStringToObject(root, "options", rep->options);

@@ -33,6 +33,7 @@ typedef struct sl_grade_report {
     const char *seed;        /* --hidden's seed, or NULL */
     const char *labs_kind, *labs_dir;
     char sandbox[320];       /* the sandbox level the runners got, in words */
+    const char *self_check;  /* the runners had no sandbox: what the header says to the student (else NULL) */
     char backend[32], renderer[160]; /* what the runners rendered with (as the first runner said) */
     bool interrupted;        /* stopped early: the score is incomplete */
     int cases_finished;      /* cases that ran to their end */

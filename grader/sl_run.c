@@ -303,6 +303,8 @@ typedef struct _sl_job {
     int index;
     sl_sandbox_process proc; /* the runner */
     int job_fd;     /* the runner's fd 0: closed once DONE is checked */
+    sl_job *job;    /* the job, until all of it went into job_fd */
+    size_t job_sent;
     int channel_fd; /* its fd 3 */
     int output_fd;  /* its stdout and stderr */
     _sl_stream stream;
@@ -360,15 +362,33 @@ static void _sl_build_job(sl_job *job, const sl_case *c, const sl_run_options *o
     snprintf(job->framework_dir, sizeof job->framework_dir, "%s", p->framework_dir);
 }
 
-static bool _sl_write_all(int fd, const void *data, size_t n) {
-    const char *p = data;
-    while (n > 0) {
-        ssize_t w = write(fd, p, n);
-        if (w < 0 && errno == EINTR) continue;
-        if (w <= 0) return false;
-        p += w;
-        n -= (size_t)w;
+/* A pipe whose ends close on exec (pipe2 is not everywhere). */
+static int _sl_pipe(int fds[2]) {
+    if (pipe(fds) != 0) return -1;
+    if (fcntl(fds[0], F_SETFD, FD_CLOEXEC) != 0 || fcntl(fds[1], F_SETFD, FD_CLOEXEC) != 0) {
+        int error = errno;
+        close(fds[0]);
+        close(fds[1]);
+        errno = error;
+        return -1;
     }
+    return 0;
+}
+
+/* Writes what the runner's pipe takes now, never waiting (lab code runs
+ * before the runner's main, and may never read): the rest when it reads,
+ * from the poll loop. False when the pipe broke. */
+static bool _sl_send_job(_sl_job *job) {
+    const char *data = (const char *)job->job;
+    while (job->job_sent < sizeof *job->job) {
+        ssize_t w = write(job->job_fd, data + job->job_sent, sizeof *job->job - job->job_sent);
+        if (w < 0 && errno == EINTR) continue;
+        if (w < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return true;
+        if (w <= 0) return false;
+        job->job_sent += (size_t)w;
+    }
+    free(job->job);
+    job->job = NULL;
     return true;
 }
 
@@ -382,9 +402,9 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
         return false;
     }
     int in[2], channel[2], output[2];
-    if (pipe2(in, O_CLOEXEC) != 0) goto fail_errno;
-    if (pipe2(channel, O_CLOEXEC) != 0) goto fail_in;
-    if (pipe2(output, O_CLOEXEC) != 0) goto fail_channel;
+    if (_sl_pipe(in) != 0) goto fail_errno;
+    if (_sl_pipe(channel) != 0) goto fail_in;
+    if (_sl_pipe(output) != 0) goto fail_channel;
     double timeout = o->timeout > 0 ? o->timeout : c->timeout_seconds;
     sl_sandbox_spawn_desc d = {
         .runner = setup->runner,
@@ -422,15 +442,16 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
     job->timeout = timeout;
     job->deadline = job->start + timeout;
     r->started = true;
-    static sl_job message; /* large: not on the stack */
-    _sl_build_job(&message, c, o, &job->proc);
-    /* The job must fit in the pipe's buffer, so writing it never waits for a
-     * runner that does not read (lab code runs before the runner's main).
-     * A pipe that cannot grow is the machine's limit (the user's pipe
-     * pages), not the submission's. */
-    if (fcntl(job->job_fd, F_SETPIPE_SZ, 1 << 20) < (int)sizeof message || fcntl(job->job_fd, F_SETFL, O_NONBLOCK) != 0 ||
-        !_sl_write_all(job->job_fd, &message, sizeof message)) {
-        snprintf(r->staff_error, sizeof r->staff_error, "could not send the case to the runner: %s", strerror(errno));
+    /* The job goes as the runner reads it (_sl_send_job). No memory for it,
+     * or a pipe that broke before lab code could run, is the machine's fault. */
+    job->job = malloc(sizeof *job->job);
+    if (job->job) _sl_build_job(job->job, c, o, &job->proc);
+    if (!job->job || fcntl(job->job_fd, F_SETFL, O_NONBLOCK) != 0) {
+        snprintf(r->staff_error, sizeof r->staff_error, "could not send the case to the runner: %s",
+                 job->job ? strerror(errno) : "out of memory");
+        _sl_close(&job->job_fd);
+    } else if (!_sl_send_job(job)) {
+        /* lab code's constructors ran and the runner left already: what it said, or not, is the case's */
         _sl_close(&job->job_fd);
     }
     return true;
@@ -492,6 +513,8 @@ static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
     sl_case_result *r = job->stream.r;
     if (kill_it) sl_sandbox_kill(o->sandbox, job->proc.pid);
     _sl_close(&job->job_fd);
+    free(job->job);
+    job->job = NULL;
     int status = 0;
     struct rusage usage = {0};
     while (wait4(job->proc.pid, &status, 0, &usage) < 0 && errno == EINTR) {}
@@ -562,15 +585,16 @@ bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_c
             next++;
         }
         if (active == 0) continue;
-        struct pollfd pfd[2 * _SL_MAX_JOBS];
+        struct pollfd pfd[3 * _SL_MAX_JOBS];
         double now = _sl_now(), wait = 1e9;
         for (int i = 0; i < active; i++) {
-            pfd[2 * i] = (struct pollfd){.fd = running[i].channel_open ? running[i].channel_fd : -1, .events = POLLIN};
-            pfd[2 * i + 1] = (struct pollfd){.fd = running[i].output_open ? running[i].output_fd : -1, .events = POLLIN};
+            pfd[3 * i] = (struct pollfd){.fd = running[i].channel_open ? running[i].channel_fd : -1, .events = POLLIN};
+            pfd[3 * i + 1] = (struct pollfd){.fd = running[i].output_open ? running[i].output_fd : -1, .events = POLLIN};
+            pfd[3 * i + 2] = (struct pollfd){.fd = running[i].job ? running[i].job_fd : -1, .events = POLLOUT};
             if (running[i].deadline - now < wait) wait = running[i].deadline - now;
         }
         int ms = wait <= 0 ? 0 : wait > 1 ? 1000 : (int)(wait * 1000) + 1;
-        nfds_t watched = (nfds_t)(2 * active);
+        nfds_t watched = (nfds_t)(3 * active);
         if (watched > sizeof pfd / sizeof pfd[0]) watched = sizeof pfd / sizeof pfd[0];
         int n = poll(pfd, watched, ms);
         if (n < 0 && errno != EINTR) break;
@@ -578,14 +602,21 @@ bool sl_run_cases(const sl_case *cases, int count, const sl_run_options *o, sl_c
         for (int i = active - 1; i >= 0; i--) {
             _sl_job *job = &running[i];
             bool broken = false;
-            if (n > 0 && job->channel_open && (pfd[2 * i].revents & (POLLIN | POLLHUP | POLLERR))) {
+            if (n > 0 && job->job && job->job_fd >= 0 && (pfd[3 * i + 2].revents & (POLLOUT | POLLHUP | POLLERR)) &&
+                !_sl_send_job(job)) {
+                /* the runner's end is closed: it left before reading its case, which the end of its output says */
+                free(job->job);
+                job->job = NULL;
+                _sl_close(&job->job_fd);
+            }
+            if (n > 0 && job->channel_open && (pfd[3 * i].revents & (POLLIN | POLLHUP | POLLERR))) {
                 if (!_sl_drain(job, true)) {
                     job->channel_open = false;
                     broken = job->stream.r->protocol_error[0] != '\0';
                 }
                 if (job->stream.done) _sl_acknowledge(job, o);
             }
-            if (n > 0 && job->output_open && (pfd[2 * i + 1].revents & (POLLIN | POLLHUP | POLLERR)))
+            if (n > 0 && job->output_open && (pfd[3 * i + 1].revents & (POLLIN | POLLHUP | POLLERR)))
                 job->output_open = _sl_drain(job, false);
             /* The runner's set-up failed: it said why and stops. */
             if (job->stream.r->error[0] && !job->stream.done) _sl_close(&job->job_fd);

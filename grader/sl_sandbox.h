@@ -1,6 +1,19 @@
 /* sl_sandbox: starts the runner (lab code) for one case in a sandbox as
  * strong as the system allows, and says which level it got.
  *
+ * Two modules implement this header, chosen when the project is configured
+ * (SL_SANDBOX): sl_sandbox_linux.c, the levels below, and
+ * sl_sandbox_fallback.c, for systems without them (macOS, BSD) or by request:
+ *
+ *   SL_SANDBOX_NONE        the runner is a plain child process of the
+ *                          grader's user, with a time limit (a wall-clock
+ *                          kill) and the CPU, memory and file size limits the
+ *                          system has. Nothing stops lab code from reading
+ *                          what the user reads: a student's self-check, never
+ *                          a course's grade (sl_sandbox.self_check).
+ *
+ * The Linux module's levels:
+ *
  *   SL_SANDBOX_NAMESPACES  new PID, mount, network, IPC and UTS namespaces (a
  *                          user namespace too when the grader is not root); a
  *                          read-only root holding only the system libraries,
@@ -12,7 +25,7 @@
  *   SL_SANDBOX_BASIC       neither: the runner runs as the grader's user and
  *                          can read what that user reads.
  *
- * Always: a cleared environment, its own session, rlimits (CPU, address
+ * At every Linux level: a cleared environment, its own session, rlimits (CPU, address
  * space, file size, core, processes), killed with the grader
  * (PR_SET_PDEATHSIG), only fds 0-3 open, not dumpable from its first
  * instruction (it runs an execute-only copy of the runner), in a Landlock
@@ -38,6 +51,7 @@
 #include "sl_params.h"
 
 typedef enum sl_sandbox_level {
+    SL_SANDBOX_NONE = -1,
     SL_SANDBOX_BASIC = 0,
     SL_SANDBOX_UID = 1,
     SL_SANDBOX_NAMESPACES = 2,
@@ -47,6 +61,7 @@ typedef struct _sl_sandbox_runners _sl_sandbox_runners;
 
 typedef struct sl_sandbox {
     sl_sandbox_level level;
+    bool self_check;         /* runners are plain child processes: a grade here is a self-check only */
     bool user_namespace;     /* namespaces owned by a new user namespace (grader not root) */
     bool seccomp;            /* the process filter could be installed */
     int landlock;            /* the kernel's Landlock ABI: each runner in a domain of its own; 0 = none */
@@ -64,10 +79,19 @@ typedef struct sl_sandbox {
 /* Finds the strongest level up to `at_most` that works here: it sets each up
  * as far as starting `runner` (an executable the cases will run). False
  * only when nothing at all can be started. */
+/* What a report's header says where self_check is set, in a student's words. */
+#define SL_SANDBOX_SELF_CHECK_NOTE                                                                                 \
+    "This is a self-check. On this computer your lab code ran as an ordinary program, without the course "      \
+    "grader's sandbox, so this score is a guide for you only: your grade for the course comes from the course's " \
+    "own grader."
+
 bool sl_sandbox_open(sl_sandbox *sandbox, sl_sandbox_level at_most, const char *runner, char *err, size_t err_size);
 void sl_sandbox_close(sl_sandbox *sandbox);
+/* "none", "basic", "uid", "namespaces"; --sandbox takes the last three. */
 const char *sl_sandbox_level_name(sl_sandbox_level level);
 bool sl_sandbox_level_parse(const char *name, sl_sandbox_level *level);
+/* Which module this build has: "linux" or "fallback". */
+const char *sl_sandbox_module(void);
 /* One line for the report: "namespaces (uid of its own per runner, read-only view, no network, seccomp)". */
 void sl_sandbox_describe(const sl_sandbox *sandbox, char *out, size_t out_size);
 

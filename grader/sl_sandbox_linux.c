@@ -36,9 +36,15 @@
 #define _SL_COPY_TOTAL_MAX (16 << 20)
 #define _SL_COPY_DEPTH_MAX 8
 
+/* sl_sandbox on Linux: namespaces, seccomp, Landlock, prctl, /proc, runner
+ * uids and pids cgroups (sl_sandbox.h). Elsewhere, sl_sandbox_fallback.c. */
+
 static const char *const _sl_level_names[] = {"basic", "uid", "namespaces"};
 
+const char *sl_sandbox_module(void) { return "linux"; }
+
 const char *sl_sandbox_level_name(sl_sandbox_level level) {
+    if (level == SL_SANDBOX_NONE) return "none";
     return (unsigned)level <= SL_SANDBOX_NAMESPACES ? _sl_level_names[level] : "?";
 }
 
@@ -1349,6 +1355,13 @@ bool sl_sandbox_runs_runner(const sl_sandbox *sb, const sl_sandbox_process *p) {
      * copies (random names in folders it cannot list). */
     return errno == EACCES && sb->seccomp && sb->runners;
 }
+
+/* Not dumpable: a process of the same uid (a runner in the basic sandbox)
+ * can then neither trace the grader nor open its memory or fds in /proc. As
+ * a constructor, from before main: the window after exec is the loader's
+ * only (where the kernel has Landlock, runners cannot reach the grader at
+ * all). Any program linking this module (the grader) gets it. */
+__attribute__((constructor(101))) static void _sl_not_dumpable(void) { prctl(PR_SET_DUMPABLE, 0, 0, 0, 0); }
 
 bool sl_sandbox_usage(pid_t pid, double *cpu_seconds, double *waited_seconds) {
     char path[64], buf[1024];
