@@ -13,6 +13,10 @@
 
 #define _SL_MAX_SUBMISSIONS 20000
 #define _SL_NOTE_MAX 400
+/* A grade that stopped on the staff's side (no process, memory or disk for it,
+ * a bad reference, ...): no score of the student's, whatever the report holds
+ * so far, so no partial total is taken for a grade. */
+#define _SL_STAFF_FAULT "not graded (staff fault)"
 
 typedef struct _sl_row {
     char name[128];
@@ -83,7 +87,7 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
     char err[1200];
     cJSON *json = _sl_exists(path) ? sl_json_load_file(path, "results", err, sizeof err) : NULL;
     if (!json) {
-        snprintf(row->status, sizeof row->status, "grading problem");
+        snprintf(row->status, sizeof row->status, "%s", _SL_STAFF_FAULT);
         snprintf(row->note, sizeof row->note, "no report (grade exit status %s): see %s/grade.log",
                  status_text[0] ? status_text : "?", row->name);
         return;
@@ -119,7 +123,7 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
         snprintf(row->status, sizeof row->status, "incomplete");
         snprintf(row->note, sizeof row->note, "the grader was stopped before it finished");
     } else if (cJSON_GetArraySize(problems) > 0) {
-        snprintf(row->status, sizeof row->status, "grading problem");
+        snprintf(row->status, sizeof row->status, "%s", _SL_STAFF_FAULT);
         const char *first = cJSON_GetStringValue(cJSON_GetArrayItem(problems, 0));
         snprintf(row->note, sizeof row->note, "%s", first ? first : "");
     } else if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "no_lab_file")) || strcmp(status_text, "3") == 0) {
@@ -129,10 +133,14 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
         snprintf(row->status, sizeof row->status, "no lab file");
         snprintf(row->note, sizeof row->note, "%s", first ? first : "no lab file in the submission: see its report");
     } else if (strcmp(status_text, "0") != 0 && strcmp(status_text, "1") != 0) {
-        snprintf(row->status, sizeof row->status, "grading problem");
+        snprintf(row->status, sizeof row->status, "%s", _SL_STAFF_FAULT);
         snprintf(row->note, sizeof row->note, "grade exit status %s: see %s/grade.log", status_text, row->name);
     } else {
         snprintf(row->status, sizeof row->status, "graded");
+    }
+    if (strcmp(row->status, _SL_STAFF_FAULT) == 0) {
+        memset(row->have_lab, 0, sizeof row->have_lab);
+        row->have_totals = false;
     }
     cJSON_Delete(json);
 }
