@@ -442,8 +442,9 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
     job->timeout = timeout;
     job->deadline = job->start + timeout;
     r->started = true;
-    /* The job goes as the runner reads it (_sl_send_job). No memory for it,
-     * or a pipe that broke before lab code could run, is the machine's fault. */
+    /* The job goes as the runner reads it (_sl_send_job). No memory for it
+     * is the machine's fault; a runner that left before reading it is the
+     * case's (lab code's constructors ran by then). */
     job->job = malloc(sizeof *job->job);
     if (job->job) _sl_build_job(job->job, c, o, &job->proc);
     if (!job->job || fcntl(job->job_fd, F_SETFL, O_NONBLOCK) != 0) {
