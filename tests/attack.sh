@@ -144,7 +144,10 @@ reports=$(sha256sum "$work/report/results.json" "$work/gradescope.json")
 sleep 2
 [ "$(sha256sum "$work/report/results.json" "$work/gradescope.json")" = "$reports" ] || problem "a report changed after the grader exited"
 survivors=$(tagged)
-[ -z "$survivors" ] || { problem "processes outlived the grade: $survivors"; for p in $survivors; do kill -9 "$p" 2>/dev/null; done; }
+[ -z "$survivors" ] || {
+  problem "processes outlived the grade: $survivors"
+  for p in $survivors; do ps -o pid=,ppid=,uid=,stat=,etimes=,args= -p "$p" >&2; kill -9 "$p" 2>/dev/null; done
+}
 [ "$(snapshot)" = "$before" ] || problem "files of the project, the build or the grader changed"
 left=$(markers)
 [ -z "$left" ] || { problem "the attack left files: $left"; rm -f $left; }
