@@ -73,11 +73,8 @@ void sl_viewer_set_second_labs(const sl_lab_functions *functions, const char *la
     _sl_second_kind = kind;
 }
 
-/* The headless backends of this build, for messages: "osmesa or egl", "egl". */
-static const char *_sl_backend_choices(void) {
-    bool osmesa = sl_backend_available(SL_BACKEND_OSMESA), egl = sl_backend_available(SL_BACKEND_EGL);
-    return osmesa && egl ? "osmesa or egl" : (osmesa ? "osmesa" : "egl");
-}
+/* The offscreen backends of this build, for messages: "osmesa, egl or window". */
+static const char *_sl_backend_choices(void) { return sl_backend_choices(); }
 
 static void _sl_usage(FILE *f) {
     fprintf(f,
@@ -126,9 +123,10 @@ static void _sl_usage(FILE *f) {
             "  --frames K          render K frames, then exit (for scripts)\n"
             "  --screenshot FILE   save the last frame as PNG (with --frames); FILE.gif: every frame, as\n"
             "                      an animated GIF (10 frames a second, looping)\n"
-            "  --headless          render without a window or display, with the default headless\n"
-            "                      backend (%s in this build)\n"
-            "  --backend NAME      headless backend: %s (implies --headless)\n"
+            "  --headless          render offscreen, with the default headless backend (%s in\n"
+            "                      this build)\n"
+            "  --backend NAME      offscreen backend: %s (implies --headless; window: a\n"
+            "                      hidden window, where there is a display but no headless GL)\n"
             "  --labs-dir DIR      lab sources to load shaders from; default this build's\n"
             "  --overlay           draw the on-screen text (lab, parameters, pass times); the default in a\n"
             "                      window without --frames\n"
