@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # no_headless.sh SOURCE_DIR TREE VIEWER IMAGE_COMPARE
 # A build with both headless backends switched off (-DSL_OSMESA=OFF
-# -DSL_EGL=OFF), as on macOS and Windows, which have neither: it configures
+# -DSL_EGL=OFF), as on macOS and Windows, which have neither, and without
+# the browser viewer (-DSL_SERVE=OFF): it configures
 # and builds, and renders through hidden GLFW windows in a virtual display
 # (Xvfb): the grader gives the solutions full marks and the stubs 0 with "not
 # implemented", its header says that this is a self-check, and the viewer's
@@ -20,7 +21,8 @@ mkdir -p "$tree"
 rm -rf "$work"; mkdir -p "$work"
 
 # Configure: neither backend, though this machine has both.
-cmake -S "$src" -B "$tree" -DSL_LABS=student -DSL_OSMESA=OFF -DSL_EGL=OFF -DBUILD_TESTING=OFF \
+# Nor the browser viewer (as where libwebsockets is missing): the viewer still builds.
+cmake -S "$src" -B "$tree" -DSL_LABS=student -DSL_OSMESA=OFF -DSL_EGL=OFF -DSL_SERVE=OFF -DBUILD_TESTING=OFF \
   >"$work/configure.log" 2>&1 || { cat "$work/configure.log"; say "FAIL: configure"; exit 1; }
 check "configure says both backends are off and what stands in" "$work/configure.log" \
   "both headless backends switched off.*hidden window"
@@ -36,6 +38,10 @@ fi
 # A headless backend asked for by name is refused, naming what the build has.
 "$tree/bin/shadowlab-grade" --backend egl >"$work/egl.log" 2>&1
 check "--backend egl is refused" "$work/egl.log" "not a backend of this build \(it has window"
+
+# --serve, not built in, says so.
+"$tree/bin/shadowlab" --serve 8080 >"$work/serve.log" 2>&1
+check "--serve says it is not built in" "$work/serve.log" "--serve is not built in: libwebsockets"
 
 x() { xvfb-run -a -s "-screen 0 640x480x24" "$@"; }
 
