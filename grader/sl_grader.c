@@ -154,17 +154,6 @@ static const char *const *_sl_runner_environment(bool window) {
     env[n++] = "HOME=/tmp";
     env[n++] = "TMPDIR=/tmp";
     env[n++] = "LANG=C";
-    /* no shader cache: nothing a case writes may reach a later case */
-    env[n++] = "MESA_SHADER_CACHE_DISABLE=true";
-    env[n++] = "MESA_GLSL_CACHE_DISABLE=true";
-    for (char **e = environ; *e && n < 60; e++) {
-        if (strncmp(*e, "MESA_SHADER_CACHE", 17) == 0 || strncmp(*e, "MESA_GLSL_CACHE", 15) == 0) continue;
-        for (size_t i = 0; i < sizeof prefixes / sizeof prefixes[0]; i++)
-            if (strncmp(*e, prefixes[i], strlen(prefixes[i])) == 0) {
-                env[n++] = *e;
-                break;
-            }
-    }
     /* --backend window: the display the hidden window opens, and its cookie */
     if (window) {
         static char display[300], cookie[1100];
@@ -176,6 +165,17 @@ static const char *const *_sl_runner_environment(bool window) {
         if (x && x[0] == '/') snprintf(cookie, sizeof cookie, "XAUTHORITY=%s", x);
         else if (home && home[0] == '/') snprintf(cookie, sizeof cookie, "XAUTHORITY=%s/.Xauthority", home);
         if (cookie[0]) env[n++] = cookie;
+    }
+    /* no shader cache: nothing a case writes may reach a later case */
+    env[n++] = "MESA_SHADER_CACHE_DISABLE=true";
+    env[n++] = "MESA_GLSL_CACHE_DISABLE=true";
+    for (char **e = environ; *e && n < 62; e++) {
+        if (strncmp(*e, "MESA_SHADER_CACHE", 17) == 0 || strncmp(*e, "MESA_GLSL_CACHE", 15) == 0) continue;
+        for (size_t i = 0; i < sizeof prefixes / sizeof prefixes[0]; i++)
+            if (strncmp(*e, prefixes[i], strlen(prefixes[i])) == 0) {
+                env[n++] = *e;
+                break;
+            }
     }
     env[n] = NULL;
     return (const char *const *)env;
