@@ -2,13 +2,13 @@
 #include "sl_bench.h"
 
 #include <cjson/cJSON.h>
-#include <fnmatch.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "sl_backend.h"
+#include "sl_platform.h"
 #include "sl_bench_baseline.h"
 #include "sl_context.h"
 #include "sl_renderer.h"
@@ -483,7 +483,7 @@ int sl_bench_main(int argc, char **argv) {
     const _sl_technique *chosen[_SL_TECHNIQUE_COUNT];
     int count = 0;
     for (int i = 0; i < _SL_TECHNIQUE_COUNT; i++)
-        if (!o.only || fnmatch(o.only, _sl_techniques[i].name, 0) == 0) chosen[count++] = &_sl_techniques[i];
+        if (!o.only || sl_platform_match(o.only, _sl_techniques[i].name)) chosen[count++] = &_sl_techniques[i];
     if (o.list) {
         for (int i = 0; i < count; i++)
             printf("%-20s lab %d, %s: %s%s\n", chosen[i]->name, chosen[i]->lab, chosen[i]->scene, chosen[i]->what,

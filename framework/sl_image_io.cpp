@@ -408,6 +408,11 @@ static const sl_image_io_api _sl_image_io_api = {
 };
 
 // The module's only exported symbol (built with hidden visibility).
-extern "C" __attribute__((visibility("default"))) const sl_image_io_api *sl_image_io_module(void) {
+#ifdef _WIN32
+#define SL_IMAGE_IO_EXPORT __declspec(dllexport)
+#else
+#define SL_IMAGE_IO_EXPORT __attribute__((visibility("default")))
+#endif
+extern "C" SL_IMAGE_IO_EXPORT const sl_image_io_api *sl_image_io_module(void) {
     return &_sl_image_io_api;
 }

@@ -137,3 +137,24 @@ void (*sl_platform_module_function(void *module, const char *name))(void) {
 #endif
     return function;
 }
+
+bool sl_platform_match(const char *pattern, const char *name) {
+    /* the last '*' seen and where the name stood then: backtrack there on a mismatch */
+    const char *star = NULL, *resume = NULL;
+    while (*name) {
+        if (*pattern == '*') {
+            star = pattern++;
+            resume = name;
+        } else if (*pattern == '?' || *pattern == *name) {
+            pattern++;
+            name++;
+        } else if (star) {
+            pattern = star + 1;
+            name = ++resume;
+        } else {
+            return false;
+        }
+    }
+    while (*pattern == '*') pattern++;
+    return *pattern == '\0';
+}

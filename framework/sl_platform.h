@@ -30,6 +30,10 @@ void *sl_platform_module_open(const char *path, char *err, size_t err_size);
 /* A function the module exports, or NULL. */
 void (*sl_platform_module_function(void *module, const char *name))(void);
 
+/* A shell-style pattern ('*' any run of characters, '?' one) matches the
+ * whole name: fnmatch() without its flags, which Windows lacks. */
+bool sl_platform_match(const char *pattern, const char *name);
+
 #ifdef __cplusplus
 }
 #endif
