@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_report.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -148,6 +149,51 @@ static void _sl_html_text(FILE *f, const char *text) {
     }
 }
 
+/* A check's picture as people look at it: cascade numbers in the viewer's
+ * cascade colours (a grey image would show cascade 0 as black as the
+ * background), two channels (lab 5's moments) as red = depth and green =
+ * depth² (a PNG would make them grey and alpha). Anything else as it is.
+ * Returns an image to free, or one with no data when the picture is fine as it is. */
+static sl_image _sl_for_people(sl_check_kind kind, const sl_image *img) {
+    sl_image none = {0};
+    bool cascades = kind == SL_CHECK_CASCADE_INDEX && img->channels == 1;
+    if (!img->data || (!cascades && img->channels != 2)) return none;
+    sl_image out = sl_image_alloc(img->width, img->height, 3);
+    if (!out.data) return none;
+    for (int y = 0; y < img->height; y++)
+        for (int x = 0; x < img->width; x++) {
+            const float *p = sl_image_pixel(img, x, y);
+            float *q = sl_image_pixel(&out, x, y);
+            if (cascades) {
+                sl_cascade_colour(p[0] >= -0.5f && p[0] < SL_MAX_CASCADES ? (int)floorf(p[0] + 0.5f) : -1, q);
+            } else {
+                q[0] = p[0], q[1] = p[1], q[2] = 0;
+            }
+        }
+    return out;
+}
+
+/* The legend under a check's pictures, for the kinds drawn in false colour. */
+static void _sl_html_legend(FILE *f, const char *kind) {
+    if (strcmp(kind, "cascade_index") == 0) {
+        fputs("<p class=\"legend\">", f);
+        for (int i = 0; i <= SL_MAX_CASCADES; i++) {
+            float rgb[3];
+            sl_cascade_colour(i < SL_MAX_CASCADES ? i : -1, rgb);
+            fprintf(f, "<span class=\"swatch\" style=\"background:rgb(%d,%d,%d)\"></span>", (int)(rgb[0] * 255 + 0.5f),
+                    (int)(rgb[1] * 255 + 0.5f), (int)(rgb[2] * 255 + 0.5f));
+            if (i < SL_MAX_CASCADES) fprintf(f, "cascade %d &nbsp; ", i);
+            else fputs("no cascade", f);
+        }
+        fputs("</p>", f);
+    } else if (strcmp(kind, "moments") == 0 || strcmp(kind, "moments_blurred") == 0) {
+        fputs("<p class=\"legend\"><span class=\"swatch\" style=\"background:#f00\"></span>red: depth &nbsp; "
+              "<span class=\"swatch\" style=\"background:#0f0\"></span>green: depth&sup2; &nbsp; "
+              "<span class=\"swatch\" style=\"background:#ff0\"></span>both high (far) &nbsp; "
+              "<span class=\"swatch\" style=\"background:#000\"></span>both 0 (near)</p>", f);
+    }
+}
+
 /* A page a TA can open: the score per lab, every check, and the images of the failed ones. */
 static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const char *path, char *err, size_t err_size) {
     sl_atomic_file file;
@@ -160,7 +206,9 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
     fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>shadowlab grade: %g/%g</title>\n"
                "<style>body{font-family:sans-serif;margin:2em}td,th{padding:.2em .6em;text-align:left;vertical-align:top}"
                ".pass{color:#070}.fail{color:#b00}img{width:256px;image-rendering:pixelated;border:1px solid #ccc}"
-               "figure{display:inline-block;margin:.3em}</style></head><body>\n",
+               "figure{display:inline-block;margin:.3em}.legend{margin:.2em .3em;font-size:90%%;color:#333}"
+               ".swatch{display:inline-block;width:1em;height:1em;border:1px solid #888;vertical-align:middle;"
+               "margin-right:.3em}</style></head><body>\n",
             score, max);
     fputs("<h1>", f);
     _sl_html_text(f, line);
@@ -172,6 +220,10 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
     if (rep->case_set[0]) {
         fputs("; cases: ", f);
         _sl_html_text(f, rep->case_set);
+    }
+    if (rep->options[0]) {
+        fputs("; options: ", f);
+        _sl_html_text(f, rep->options);
     }
     fputs("</p>\n", f);
     if (rep->not_built) {
@@ -211,6 +263,7 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
                 _sl_html_text(f, img->valuestring);
                 fprintf(f, "\"><figcaption>%s</figcaption></figure>", img->string);
             }
+            if (imgs) _sl_html_legend(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "kind")));
             fputs("</td></tr>\n", f);
         }
     }
@@ -277,6 +330,9 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     cJSON_AddStringToObject(root, "renderer", rep->renderer);
     cJSON_AddStringToObject(root, "sandbox", rep->sandbox);
     if (rep->case_set[0]) cJSON_AddStringToObject(root, "case_set", rep->case_set);
+    /* what made this grade: a gradebook row says it, and a pass with other options is told apart */
+    cJSON_AddStringToObject(root, "options", rep->options);
+    if (rep->seed) cJSON_AddStringToObject(root, "seed", rep->seed);
     cJSON_AddBoolToObject(root, "built", rep->not_built == NULL);
     if (rep->not_built) cJSON_AddStringToObject(root, "build_error", rep->not_built);
     if (rep->submission_summary) {
@@ -335,6 +391,10 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
             cJSON_AddBoolToObject(j, "passed", cr->passed);
             cJSON_AddBoolToObject(j, "bonus", cr->bonus);
             cJSON_AddStringToObject(j, "message", cr->message);
+            if (!cr->passed && cr->diagnosis[0]) {
+                cJSON_AddStringToObject(j, "diagnosis", cr->diagnosis);
+                cJSON_AddStringToObject(j, "diagnosis_text", cr->diagnosis_text);
+            }
             const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(g->c, ck));
             if (!cr->passed && cap && cap->is_image) {
                 const sl_image *shown[3] = {&cap->image, &g->references[k].image, &cr->diff};
@@ -345,8 +405,11 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
                     if (!shown[m]->data) continue;
                     snprintf(name, sizeof name, "images/%s.%s.%s.png", g->c->name, ck->name, roles[m]);
                     snprintf(path, sizeof path, "%s/%s", dir, name);
-                    if (sl_atomic_write_image(path, shown[m], err, err_size)) cJSON_AddStringToObject(imgs, roles[m], name);
+                    sl_image coloured = m < 2 ? _sl_for_people(ck->kind, shown[m]) : (sl_image){0};
+                    if (sl_atomic_write_image(path, coloured.data ? &coloured : shown[m], err, err_size))
+                        cJSON_AddStringToObject(imgs, roles[m], name);
                     else ok = false;
+                    sl_image_free(&coloured);
                 }
             }
             cJSON_AddItemToArray(checks, j);

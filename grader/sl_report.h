@@ -29,6 +29,8 @@ typedef struct sl_grade_report {
     int problem_count;
     double seconds;
     int jobs;
+    char options[640];       /* the options that decide the grade ("--lab 1-2 --hidden --seed 4711"; "": none) */
+    const char *seed;        /* --hidden's seed, or NULL */
     const char *labs_kind, *labs_dir;
     char sandbox[320];       /* the sandbox level the runners got, in words */
     char backend[32], renderer[160]; /* what the runners rendered with (as the first runner said) */
