@@ -33,9 +33,9 @@ bool sl_serve_key_down(sl_serve *serve, int key) {
     (void)serve, (void)key;
     return false;
 }
-bool sl_serve_frame(sl_serve *serve, unsigned target, int width, int height, const char *text, char *err,
-                    size_t err_size) {
-    (void)serve, (void)target, (void)width, (void)height, (void)text, (void)err, (void)err_size;
+bool sl_serve_frame(sl_serve *serve, unsigned target, int width, int height, const sl_serve_frame_desc *desc,
+                    char *err, size_t err_size) {
+    (void)serve, (void)target, (void)width, (void)height, (void)desc, (void)err, (void)err_size;
     return false;
 }
 void sl_serve_idle(sl_serve *serve) { (void)serve; }
@@ -54,6 +54,7 @@ void sl_serve_idle(sl_serve *serve) { (void)serve; }
 /* One page's connection. */
 typedef struct _sl_client {
     unsigned long sent;  /* the frame number it was last sent */
+    bool greeted;        /* sent the hello (the key table) */
     char message[_SL_SERVE_MESSAGE_MAX];
     size_t message_len;
 } _sl_client;
@@ -64,6 +65,8 @@ struct sl_serve {
     bool thread_started;
     volatile int stopping;
     char url[160], page_dir[1100];
+    unsigned char *hello; /* LWS_PRE bytes, then the hello's text; NULL: none */
+    size_t hello_size;
     int jpeg_quality;
     struct lws_protocols protocols[3];
     struct lws_http_mount mount;
@@ -145,6 +148,14 @@ static int _sl_serve_callback(struct lws *wsi, enum lws_callback_reasons reason,
         break;
     case LWS_CALLBACK_SERVER_WRITEABLE: {
         int status = 0;
+        if (!c->greeted) { /* the key table first, as text; frames when the socket is writable again */
+            c->greeted = true;
+            if (s->hello) {
+                if (lws_write(wsi, s->hello + LWS_PRE, s->hello_size, LWS_WRITE_TEXT) < (int)s->hello_size) return -1;
+                lws_callback_on_writable(wsi);
+                return 0;
+            }
+        }
         pthread_mutex_lock(&s->lock);
         if (s->frame && c->sent != s->frame_number) {
             /* lws keeps what the socket did not take and calls again only once it is sent */
@@ -215,6 +226,16 @@ sl_serve *sl_serve_start(const sl_serve_desc *desc, char *err, size_t err_size) 
         return NULL;
     }
     fclose(f);
+    if (desc->hello) {
+        s->hello_size = strlen(desc->hello);
+        s->hello = malloc(LWS_PRE + s->hello_size + 1);
+        if (!s->hello) {
+            snprintf(err, err_size, "out of memory");
+            free(s);
+            return NULL;
+        }
+        memcpy(s->hello + LWS_PRE, desc->hello, s->hello_size + 1);
+    }
     /* The page: the folder's files; the frames and input: the "shadowlab" protocol. */
     s->protocols[0] = (struct lws_protocols){"http", lws_callback_http_dummy, 0, 0, 0, NULL, 0};
     s->protocols[1] = (struct lws_protocols){"shadowlab", _sl_serve_callback, sizeof(_sl_client), 4096, 0, NULL, 0};
@@ -241,6 +262,7 @@ sl_serve *sl_serve_start(const sl_serve_desc *desc, char *err, size_t err_size) 
         snprintf(err, err_size, "--serve: cannot listen on %s port %d (taken by another program, or not an "
                                 "address of this machine?)", address, desc->port);
         _sl_the_serve = NULL;
+        free(s->hello);
         free(s);
         return NULL;
     }
@@ -263,6 +285,7 @@ void sl_serve_stop(sl_serve *s) {
     if (s->thread_started) pthread_join(s->thread, NULL);
     if (s->context) lws_context_destroy(s->context);
     free(s->frame);
+    free(s->hello);
     pthread_mutex_destroy(&s->lock);
     if (_sl_the_serve == s) _sl_the_serve = NULL;
     free(s);
@@ -298,8 +321,10 @@ static bool _sl_serve_wants(sl_serve *s, unsigned long *input) {
     return wants;
 }
 
-bool sl_serve_frame(sl_serve *s, unsigned target, int width, int height, const char *text, char *err,
-                    size_t err_size) {
+bool sl_serve_frame(sl_serve *s, unsigned target, int width, int height, const sl_serve_frame_desc *desc,
+                    char *err, size_t err_size) {
+    sl_serve_frame_desc none = {0};
+    if (!desc) desc = &none;
     unsigned long input = 0;
     if (!s || !_sl_serve_wants(s, &input)) return true;
     size_t stride = (size_t)width * 4;
@@ -327,7 +352,9 @@ bool sl_serve_frame(sl_serve *s, unsigned target, int width, int height, const c
     cJSON_AddNumberToObject(header, "input", (double)input);
     cJSON_AddNumberToObject(header, "width", width);
     cJSON_AddNumberToObject(header, "height", height);
-    cJSON_AddStringToObject(header, "text", text ? text : "");
+    cJSON_AddNumberToObject(header, "lab", desc->lab);
+    cJSON_AddNumberToObject(header, "keys_acted", (double)desc->keys_acted);
+    cJSON_AddStringToObject(header, "text", desc->text ? desc->text : "");
     char *json = cJSON_PrintUnformatted(header);
     cJSON_Delete(header);
     size_t json_size = json ? strlen(json) : 0;

@@ -6,7 +6,9 @@
  * go to the page as JPEG, made only when a page has taken the last one, so a
  * slow connection drops frames instead of queueing them; the page sends back
  * keys (pressed and released, as GLFW key codes), drags and the wheel, which
- * the viewer feeds into the same handlers a window's events reach.
+ * the viewer feeds into the same handlers a window's events reach. Which keys
+ * the page takes, and what it lists, come from the viewer's own key table,
+ * sent to each page as it connects (sl_serve_desc.hello).
  *
  * Only localhost is bound unless an address is given. A WebSocket whose
  * Origin is not the page's own host is refused, so another site open in the
@@ -32,7 +34,16 @@ typedef struct sl_serve_desc {
     const char *address;      /* the address to bind; default "127.0.0.1" */
     const char *page_dir;     /* the folder holding index.html; default <framework>/serve */
     int jpeg_quality;         /* default 85 */
+    const char *hello;        /* JSON sent to each page as it connects, before any frame (the viewer's key
+                                 table: framework/serve/index.html reads it); NULL: none */
 } sl_serve_desc;
+
+/* What goes with a frame besides its pixels. */
+typedef struct sl_serve_frame_desc {
+    const char *text;          /* the overlay in words; NULL: none */
+    int lab;                   /* the lab in use (the page lists its keys) */
+    unsigned long keys_acted;  /* key presses the viewer has acted on so far (the test counts them) */
+} sl_serve_frame_desc;
 
 typedef enum sl_serve_event_kind {
     SL_SERVE_KEY_DOWN = 1, /* key: a GLFW key code */
@@ -64,12 +75,12 @@ int sl_serve_poll(sl_serve *serve, sl_serve_event *events, int max);
 bool sl_serve_key_down(sl_serve *serve, int key);
 
 /* Reads the frame from framebuffer `target` (width x height), compresses it
- * and hands it to the pages with `text` (the overlay in words, or NULL) -
- * only when a page is ready for one; otherwise it does nothing. Every event
+ * and hands it to the pages with `desc`'s text and numbers - only when a
+ * page is ready for one; otherwise it does nothing. Every event
  * polled before the call is reflected in the frame (the page measures its
  * key-to-frame latency by that). False with the reason on a failure. */
-bool sl_serve_frame(sl_serve *serve, unsigned target, int width, int height, const char *text, char *err,
-                    size_t err_size);
+bool sl_serve_frame(sl_serve *serve, unsigned target, int width, int height, const sl_serve_frame_desc *desc,
+                    char *err, size_t err_size);
 /* With no page connected, waits a little (up to 100 ms) so an idle server
  * does not render at full speed for nobody. */
 void sl_serve_idle(sl_serve *serve);

@@ -17,6 +17,7 @@
 #include "sl_platform.h"
 #include "sl_renderer.h"
 #include "sl_serve.h"
+#include <cjson/cJSON.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -61,6 +62,7 @@ typedef struct _sl_viewer {
     sl_renderer second;
     bool second_ready, show_second;
     sl_serve *serve; /* --serve: frames to a browser, its keys and mouse back */
+    unsigned long keys_acted; /* key presses a binding took (--serve's page counts them) */
 } _sl_viewer;
 
 enum { _SL_PATH_NONE = 0, _SL_PATH_SLIDE, _SL_PATH_TURN };
@@ -515,6 +517,7 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     const _sl_key_binding *b = _sl_binding(v->params.lab, key);
     if (!b) return;
     _sl_act(v, w, b, key);
+    v->keys_acted++;
     v->dirty_title = true;
 }
 
@@ -547,6 +550,64 @@ static void _sl_list_keys(FILE *f) {
         else fprintf(f, "%d\t%s\t%s\n", b->lab, b->names, b->help);
     }
     for (const sl_case_view_key *k = sl_case_view_keys(); k->names; k++) fprintf(f, "case\t%s\t%s\n", k->names, k->help);
+}
+
+/* A GLFW key code as the browser's KeyboardEvent.code names the same key
+ * (the key's place on a US layout, as GLFW's names are); "" for none. */
+static const char *_sl_dom_code(int key, char buf[16]) {
+    buf[0] = '\0';
+    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) snprintf(buf, 16, "Key%c", key);
+    else if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) snprintf(buf, 16, "Digit%c", key);
+    else {
+        static const struct { int key; const char *code; } named[] = {
+            {GLFW_KEY_COMMA, "Comma"}, {GLFW_KEY_PERIOD, "Period"}, {GLFW_KEY_MINUS, "Minus"},
+            {GLFW_KEY_EQUAL, "Equal"}, {GLFW_KEY_LEFT_BRACKET, "BracketLeft"}, {GLFW_KEY_RIGHT_BRACKET, "BracketRight"},
+            {GLFW_KEY_LEFT, "ArrowLeft"}, {GLFW_KEY_RIGHT, "ArrowRight"}, {GLFW_KEY_UP, "ArrowUp"},
+            {GLFW_KEY_DOWN, "ArrowDown"}, {GLFW_KEY_PAGE_UP, "PageUp"}, {GLFW_KEY_PAGE_DOWN, "PageDown"},
+            {GLFW_KEY_ESCAPE, "Escape"}, {GLFW_KEY_TAB, "Tab"}, {GLFW_KEY_SPACE, "Space"},
+            {GLFW_KEY_LEFT_SHIFT, "ShiftLeft"}, {GLFW_KEY_RIGHT_SHIFT, "ShiftRight"},
+        };
+        for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
+            if (named[i].key == key) snprintf(buf, 16, "%s", named[i].code);
+    }
+    return buf;
+}
+
+/* --serve's key table for the page (framework/serve/index.html): every
+ * binding but Esc (a page is closed in the browser) with its keys' browser
+ * codes and GLFW codes, and the keys only held (Shift, for lab 6's flying).
+ * The page takes these keys and no others, so it has exactly the window's. */
+static char *_sl_keys_json(void) {
+    cJSON *root = cJSON_CreateObject(), *keys = cJSON_AddArrayToObject(root, "keys");
+    char code[16];
+    for (int i = 0; i < _SL_KEY_COUNT; i++) {
+        const _sl_key_binding *b = &_sl_key_table[i];
+        if (b->action == _SL_KEY_QUIT) continue;
+        cJSON *k = cJSON_CreateObject();
+        cJSON_AddNumberToObject(k, "lab", b->lab);
+        cJSON_AddStringToObject(k, "names", b->names);
+        cJSON_AddStringToObject(k, "label", b->label);
+        cJSON_AddStringToObject(k, "help", b->help);
+        cJSON *codes = cJSON_AddArrayToObject(k, "codes");
+        for (int j = 0; j < _SL_MAX_BOUND && b->keys[j]; j++) {
+            cJSON *c = cJSON_CreateObject();
+            cJSON_AddStringToObject(c, "code", _sl_dom_code(b->keys[j], code));
+            cJSON_AddNumberToObject(c, "key", b->keys[j]);
+            cJSON_AddItemToArray(codes, c);
+        }
+        cJSON_AddItemToArray(keys, k);
+    }
+    cJSON *held = cJSON_AddArrayToObject(root, "held");
+    const int held_keys[] = {GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT};
+    for (int j = 0; j < 2; j++) {
+        cJSON *c = cJSON_CreateObject();
+        cJSON_AddStringToObject(c, "code", _sl_dom_code(held_keys[j], code));
+        cJSON_AddNumberToObject(c, "key", held_keys[j]);
+        cJSON_AddItemToArray(held, c);
+    }
+    char *json = cJSON_PrintUnformatted(root);
+    cJSON_Delete(root);
+    return json;
 }
 
 static void _sl_mouse_button(GLFWwindow *w, int button, int action, int mods) {
@@ -759,6 +820,7 @@ static void _sl_key_panel(_sl_viewer *v, const sl_frame_info *info) {
         const _sl_key_binding *b = &_sl_key_table[i];
         if (b->lab != 0 || b->panel_labs != 0 || _sl_binding(lab, b->keys[0]) != b) continue;
         if (b->action == _SL_KEY_CODE && !_sl_second_functions) continue;
+        if (b->action == _SL_KEY_QUIT && v->serve) continue; /* a page is closed in the browser */
         char state[64], item[128];
         _sl_key_state(v, info, b, state, sizeof state);
         snprintf(item, sizeof item, "%s %s%s%s", b->names, b->label, state[0] ? ": " : "", state);
@@ -1439,8 +1501,10 @@ int sl_viewer_main(int argc, char **argv) {
     GLuint target = sl_context_default_framebuffer(v.ctx);
 
     if (serve_port) {
-        sl_serve_desc sd = {.port = serve_port, .address = serve_address};
+        char *keys = _sl_keys_json();
+        sl_serve_desc sd = {.port = serve_port, .address = serve_address, .hello = keys};
         v.serve = sl_serve_start(&sd, err, sizeof err);
+        cJSON_free(keys);
         if (!v.serve) {
             fprintf(stderr, "shadowlab: %s\n", err);
             sl_overlay_destroy(v.overlay);
@@ -1595,9 +1659,12 @@ int sl_viewer_main(int argc, char **argv) {
             break;
         }
         if (v.serve) {
-            char text[8192] = "";
-            if (v.overlay && v.show_overlay) sl_overlay_text(v.overlay, text, sizeof text);
-            if (!sl_serve_frame(v.serve, target, fw, fh, text, err, sizeof err))
+            /* the overlay's words: its panels, labels and markers, whichever are drawn */
+            static char text[16384];
+            text[0] = '\0';
+            if (overlay_drawn) sl_overlay_text(v.overlay, text, sizeof text);
+            sl_serve_frame_desc fd = {.text = text, .lab = v.params.lab, .keys_acted = v.keys_acted};
+            if (!sl_serve_frame(v.serve, target, fw, fh, &fd, err, sizeof err))
                 fprintf(stderr, "shadowlab: --serve: %s\n", err);
             sl_serve_idle(v.serve);
         }

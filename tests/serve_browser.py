@@ -6,7 +6,9 @@ chromedriver (the W3C WebDriver protocol, over HTTP on this machine only).
       loads the page, waits for a frame, presses V (the visibility view) and
       sees the picture change, checks that the page shows the overlay's text
       (O), that a drag orbits the camera, and takes a screenshot whose frame
-      must match VIEWER's own --headless picture of the same view.
+      must match VIEWER's own --headless picture of the same view; then that
+      the page's keys are the viewer's key table (--list-keys) and that every
+      key of it, pressed in the browser in labs 4 to 7, is acted on.
   serve_browser.py measure VIEWER WORK_DIR [SIZE]
       prints the frame rate the page receives at SIZE (default 960x540) and
       the latency from a key press to the first frame that shows it (median
@@ -93,10 +95,11 @@ class WebDriver:
     def js(self, script, *args):
         return self.call("POST", self.s("/execute/sync"), {"script": script, "args": list(args)})
 
-    def press(self, key):
-        actions = [{"type": "key", "id": "keyboard",
-                    "actions": [{"type": "keyDown", "value": key}, {"type": "keyUp", "value": key}]}]
-        self.call("POST", self.s("/actions"), {"actions": actions})
+    def press(self, *keys):
+        steps = []
+        for key in keys:
+            steps += [{"type": "keyDown", "value": key}, {"type": "keyUp", "value": key}]
+        self.call("POST", self.s("/actions"), {"actions": [{"type": "key", "id": "keyboard", "actions": steps}]})
 
     def drag(self, x, y, dx, dy):
         steps = [{"type": "pointerMove", "duration": 0, "origin": "viewport", "x": x, "y": y},
@@ -189,8 +192,11 @@ class Server:
         self.port = free_port()
         self.log_path = os.path.join(work, "serve.log")
         self.log = open(self.log_path, "w")
+        for old in os.listdir(work):  # the X key's screenshots land here
+            if old.startswith("shadowlab-") and old.endswith(".png"):
+                os.remove(os.path.join(work, old))
         self.process = subprocess.Popen([viewer, "--serve", str(self.port)] + args, stdout=self.log,
-                                        stderr=subprocess.STDOUT)
+                                        stderr=subprocess.STDOUT, cwd=work)
         self.url = f"http://127.0.0.1:{self.port}/"
         wait_for("the viewer's URL line", lambda: self.url in open(self.log_path).read() or self._dead(), 60)
         if self.process.poll() is not None:
@@ -208,6 +214,11 @@ class Server:
         self.log.close()
 
 
+def mean(browser):
+    """The shown frame's mean brightness (waits while the page swaps in the next frame)."""
+    return wait_for("a decoded frame", lambda: (lambda m: [m] if m >= 0 else None)(browser.js(MEAN)), 30)[0]
+
+
 def frames_after(browser, count):
     start = browser.js("return window.sl.frames")
     wait_for(f"{count} more frames", lambda: browser.js("return window.sl.frames") >= start + count)
@@ -219,6 +230,62 @@ def press_and_wait(browser, key):
     browser.press(key)
     wait_for(f"a frame after pressing {key}", lambda: browser.js("return window.sl.latencies.length") > before, 60)
     return browser.js("return window.sl.latencies[window.sl.latencies.length - 1]")
+
+
+# WebDriver's key values for the browser's key codes the viewer's table uses.
+WEBDRIVER_KEYS = {"Comma": ",", "Period": ".", "Minus": "-", "Equal": "=", "BracketLeft": "[",
+                  "BracketRight": "]", "ArrowLeft": "\ue012", "ArrowUp": "\ue013", "ArrowRight": "\ue014",
+                  "ArrowDown": "\ue015", "PageUp": "\ue00e", "PageDown": "\ue00f"}
+
+
+def webdriver_key(code):
+    if code.startswith("Key") and len(code) == 4:
+        return code[3].lower()
+    if code.startswith("Digit") and len(code) == 6:
+        return code[5]
+    return WEBDRIVER_KEYS.get(code)
+
+
+def every_key(browser, viewer, work, check):
+    """The page's keys are the viewer's table, and each is acted on when pressed in the browser."""
+    table = browser.js("return window.sl.keyTable")
+    listed = subprocess.run([viewer, "--list-keys"], check=True, capture_output=True, text=True).stdout
+    expected = {tuple(line.split("\t")) for line in listed.splitlines()
+                if line and not line.startswith("case\t") and line.split("\t")[1] != "Esc"}
+    got = {("all" if b["lab"] == 0 else str(b["lab"]), b["names"], b["help"]) for b in table["keys"]}
+    check("the page's key table is --list-keys' (Esc apart: a page is closed in the browser)", got == expected,
+          f"missing {sorted(expected - got)[:3]}, extra {sorted(got - expected)[:3]}")
+    unmapped = [b["names"] for b in table["keys"] for c in b["codes"] if not c["code"] or not webdriver_key(c["code"])]
+    check("every key of the table has its browser key", not unmapped, ", ".join(unmapped))
+    # Lab by lab: the lab's digit, its own keys, then every lab's keys (digits
+    # apart); each press must be acted on (the frames' keys_acted count).
+    for lab in (5, 6, 7, 4):
+        presses = [str(lab)]
+        own = [c for b in table["keys"] if b["lab"] == lab for c in b["codes"]]
+        taken = {c["key"] for c in own}
+        common = [c for b in table["keys"] if b["lab"] == 0 for c in b["codes"]
+                  if c["key"] not in taken and not c["code"].startswith("Digit")]
+        if lab != 4:
+            common = [c for c in common if c["code"] != "KeyX"]  # one screenshot is enough
+        presses += [webdriver_key(c["code"]) for c in own + common if webdriver_key(c["code"])]
+        before = browser.js("return window.sl.header.keys_acted")
+        browser.press(*presses)
+        try:
+            wait_for(f"lab {lab}'s keys", lambda: browser.js("return window.sl.header.keys_acted") >= before + len(presses)
+                     and browser.js("return window.sl.header.lab") == lab, 60)
+            acted = browser.js("return window.sl.header.keys_acted") - before
+        except SystemExit:
+            acted = browser.js("return window.sl.header.keys_acted") - before
+        check(f"lab {lab}: each of its {len(presses)} keys pressed in the browser is acted on", acted == len(presses),
+              f"{acted} of {len(presses)}")
+    shots = [f for f in os.listdir(work) if f.startswith("shadowlab-") and f.endswith(".png")]
+    check("X on the page saves a screenshot where the viewer runs", len(shots) == 1, ", ".join(shots) or "none")
+    frames_after(browser, 1)
+    title = browser.js("return document.getElementById('keys-title').textContent")
+    keys_text = browser.js("return document.getElementById('keys').textContent")
+    check("the page lists the lab's keys", title == "keys, lab 4" and "the constant depth bias" in keys_text, title)
+    browser.js("document.getElementById('keys-box').open = true")
+    browser.screenshot(os.path.join(work, "page-keys.png"))
 
 
 def test(viewer, compare, work):
@@ -241,10 +308,10 @@ def test(viewer, compare, work):
         check("a frame arrives with its size", header["width"] == size[0] and header["height"] == size[1],
               json.dumps(header)[:200])
         frames_after(browser, 2)
-        shaded = browser.js(MEAN)
+        shaded = mean(browser)
         latency = press_and_wait(browser, "v")
         frames_after(browser, 1)
-        visibility = browser.js(MEAN)
+        visibility = mean(browser)
         check("V changes the picture (shaded to the visibility view)", abs(visibility - shaded) > 15,
               f"mean brightness {shaded:.1f} -> {visibility:.1f}, the key's frame after {latency:.0f} ms")
         # The frame as the page shows it: the top left of a screenshot, against
@@ -259,13 +326,13 @@ def test(viewer, compare, work):
         same = subprocess.run([compare, crop, reference, "0.1", "1.0"]).returncode == 0
         check("the screenshot shows the scene as the viewer renders it (JPEG: 0.1, 1% of pixels)", same)
         # A drag orbits the camera.
-        before = browser.js(MEAN)
+        before = mean(browser)
         start = browser.js("return window.sl.frames")
         browser.drag(240, 135, 120, 0)
         wait_for("frames after the drag", lambda: browser.js("return window.sl.frames") >= start + 3)
         frames_after(browser, 2)
         browser.screenshot(os.path.join(work, "page-dragged.png"))
-        after = browser.js(MEAN)
+        after = mean(browser)
         png_crop_to_ppm(os.path.join(work, "page-dragged.png"), size[0], size[1], os.path.join(work, "dragged.ppm"))
         moved = subprocess.run([compare, os.path.join(work, "dragged.ppm"), reference, "0.1", "1.0"],
                                stdout=subprocess.DEVNULL).returncode != 0
@@ -278,6 +345,8 @@ def test(viewer, compare, work):
         check("O shows the overlay, and the page its text", "lab 4: PCF & PCSS" in text and "boxes_on_floor" in text,
               text.splitlines()[0] if text else "(no text)")
         browser.screenshot(os.path.join(work, "page-overlay.png"))
+        check("the key panel does not offer Esc on a page", "Esc quit" not in text)
+        every_key(browser, viewer, work, check)
     finally:
         if browser:
             browser.close()
