@@ -10,6 +10,27 @@
 #include "sl_gl.h"
 #include "sl_image.h"
 #include "sl_renderer.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+const char *sl_serve_key_code(int key, char code[16]) {
+    code[0] = '\0';
+    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) snprintf(code, 16, "Key%c", key);
+    else if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) snprintf(code, 16, "Digit%c", key);
+    else {
+        static const struct { int key; const char *code; } named[] = {
+            {GLFW_KEY_COMMA, "Comma"}, {GLFW_KEY_PERIOD, "Period"}, {GLFW_KEY_MINUS, "Minus"},
+            {GLFW_KEY_EQUAL, "Equal"}, {GLFW_KEY_LEFT_BRACKET, "BracketLeft"}, {GLFW_KEY_RIGHT_BRACKET, "BracketRight"},
+            {GLFW_KEY_LEFT, "ArrowLeft"}, {GLFW_KEY_RIGHT, "ArrowRight"}, {GLFW_KEY_UP, "ArrowUp"},
+            {GLFW_KEY_DOWN, "ArrowDown"}, {GLFW_KEY_PAGE_UP, "PageUp"}, {GLFW_KEY_PAGE_DOWN, "PageDown"},
+            {GLFW_KEY_ESCAPE, "Escape"}, {GLFW_KEY_TAB, "Tab"}, {GLFW_KEY_SPACE, "Space"},
+            {GLFW_KEY_LEFT_SHIFT, "ShiftLeft"}, {GLFW_KEY_RIGHT_SHIFT, "ShiftRight"},
+        };
+        for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
+            if (named[i].key == key) snprintf(code, 16, "%s", named[i].code);
+    }
+    return code;
+}
 
 #ifndef SL_HAVE_SERVE
 

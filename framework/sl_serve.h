@@ -60,6 +60,11 @@ typedef struct sl_serve_event {
     double x, y;
 } sl_serve_event;
 
+/* The browser's KeyboardEvent.code for a GLFW key code (the key's place on a
+ * US layout, as GLFW names keys): "KeyV", "Digit1", "BracketLeft", "PageUp";
+ * "" for a key the page does not take. For the key tables sent as `hello`. */
+const char *sl_serve_key_code(int glfw_key, char code[16]);
+
 /* Whether this build has the server (libwebsockets). */
 bool sl_serve_available(void);
 /* Starts serving; NULL with the reason in err (not built in, port taken). */

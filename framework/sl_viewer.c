@@ -552,27 +552,6 @@ static void _sl_list_keys(FILE *f) {
     for (const sl_case_view_key *k = sl_case_view_keys(); k->names; k++) fprintf(f, "case\t%s\t%s\n", k->names, k->help);
 }
 
-/* A GLFW key code as the browser's KeyboardEvent.code names the same key
- * (the key's place on a US layout, as GLFW's names are); "" for none. */
-static const char *_sl_dom_code(int key, char buf[16]) {
-    buf[0] = '\0';
-    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) snprintf(buf, 16, "Key%c", key);
-    else if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) snprintf(buf, 16, "Digit%c", key);
-    else {
-        static const struct { int key; const char *code; } named[] = {
-            {GLFW_KEY_COMMA, "Comma"}, {GLFW_KEY_PERIOD, "Period"}, {GLFW_KEY_MINUS, "Minus"},
-            {GLFW_KEY_EQUAL, "Equal"}, {GLFW_KEY_LEFT_BRACKET, "BracketLeft"}, {GLFW_KEY_RIGHT_BRACKET, "BracketRight"},
-            {GLFW_KEY_LEFT, "ArrowLeft"}, {GLFW_KEY_RIGHT, "ArrowRight"}, {GLFW_KEY_UP, "ArrowUp"},
-            {GLFW_KEY_DOWN, "ArrowDown"}, {GLFW_KEY_PAGE_UP, "PageUp"}, {GLFW_KEY_PAGE_DOWN, "PageDown"},
-            {GLFW_KEY_ESCAPE, "Escape"}, {GLFW_KEY_TAB, "Tab"}, {GLFW_KEY_SPACE, "Space"},
-            {GLFW_KEY_LEFT_SHIFT, "ShiftLeft"}, {GLFW_KEY_RIGHT_SHIFT, "ShiftRight"},
-        };
-        for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
-            if (named[i].key == key) snprintf(buf, 16, "%s", named[i].code);
-    }
-    return buf;
-}
-
 /* --serve's key table for the page (framework/serve/index.html): every
  * binding but Esc (a page is closed in the browser) with its keys' browser
  * codes and GLFW codes, and the keys only held (Shift, for lab 6's flying).
@@ -591,7 +570,7 @@ static char *_sl_keys_json(void) {
         cJSON *codes = cJSON_AddArrayToObject(k, "codes");
         for (int j = 0; j < _SL_MAX_BOUND && b->keys[j]; j++) {
             cJSON *c = cJSON_CreateObject();
-            cJSON_AddStringToObject(c, "code", _sl_dom_code(b->keys[j], code));
+            cJSON_AddStringToObject(c, "code", sl_serve_key_code(b->keys[j], code));
             cJSON_AddNumberToObject(c, "key", b->keys[j]);
             cJSON_AddItemToArray(codes, c);
         }
@@ -601,7 +580,7 @@ static char *_sl_keys_json(void) {
     const int held_keys[] = {GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT};
     for (int j = 0; j < 2; j++) {
         cJSON *c = cJSON_CreateObject();
-        cJSON_AddStringToObject(c, "code", _sl_dom_code(held_keys[j], code));
+        cJSON_AddStringToObject(c, "code", sl_serve_key_code(held_keys[j], code));
         cJSON_AddNumberToObject(c, "key", held_keys[j]);
         cJSON_AddItemToArray(held, c);
     }
@@ -1420,8 +1399,8 @@ int sl_viewer_main(int argc, char **argv) {
     }
     if ((screenshot || case_name) && headless && frames <= 0) frames = 1;
     if (screenshot && frames <= 0) frames = 3;
-    if (serve_port && (frames > 0 || screenshot || case_name)) {
-        fprintf(stderr, "shadowlab: --serve runs until stopped (Ctrl-C): not with --frames, --screenshot or --case\n");
+    if (serve_port && (frames > 0 || screenshot)) {
+        fprintf(stderr, "shadowlab: --serve runs until stopped (Ctrl-C): not with --frames or --screenshot\n");
         return 2;
     }
     if (serve_port && !sl_serve_available()) {
@@ -1448,7 +1427,7 @@ int sl_viewer_main(int argc, char **argv) {
     if (case_name) {
         sl_case_view_desc cv = {.case_name = case_name, .labs_dir = labs_dir, .headless = headless,
                                 .backend = backend, .frames = frames, .screenshot = screenshot,
-                                .check_name = check_name};
+                                .check_name = check_name, .serve_port = serve_port, .serve_address = serve_address};
         return sl_case_view_main(&cv);
     }
     char err[16384];

@@ -8,7 +8,9 @@ chromedriver (the W3C WebDriver protocol, over HTTP on this machine only).
       (O), that a drag orbits the camera, and takes a screenshot whose frame
       must match VIEWER's own --headless picture of the same view; then that
       the page's keys are the viewer's key table (--list-keys) and that every
-      key of it, pressed in the browser in labs 4 to 7, is acted on.
+      key of it, pressed in the browser in labs 4 to 7, is acted on; and
+      --case in the browser: its labels and summary on the page, its keys
+      (not Esc) taken from its own table, Tab changing the picture.
   serve_browser.py measure VIEWER WORK_DIR [SIZE]
       prints the frame rate the page receives at SIZE (default 960x540) and
       the latency from a key press to the first frame that shows it (median
@@ -195,7 +197,7 @@ class Server:
         for old in os.listdir(work):  # the X key's screenshots land here
             if old.startswith("shadowlab-") and old.endswith(".png"):
                 os.remove(os.path.join(work, old))
-        self.process = subprocess.Popen([viewer, "--serve", str(self.port)] + args, stdout=self.log,
+        self.process = subprocess.Popen([os.path.abspath(viewer), "--serve", str(self.port)] + args, stdout=self.log,
                                         stderr=subprocess.STDOUT, cwd=work)
         self.url = f"http://127.0.0.1:{self.port}/"
         wait_for("the viewer's URL line", lambda: self.url in open(self.log_path).read() or self._dead(), 60)
@@ -288,6 +290,39 @@ def every_key(browser, viewer, work, check):
     browser.screenshot(os.path.join(work, "page-keys.png"))
 
 
+def case_view(viewer, work, check):
+    """--serve with --case: the case view's labels and keys on the page."""
+    server = Server(viewer, work, ["--case", "lab4_pcss"])
+    browser = None
+    try:
+        browser = WebDriver(work)
+        browser.go(server.url)
+        wait_for("the case view's first frame", lambda: browser.js("return window.sl.frames") >= 1)
+        frames_after(browser, 1)
+        text = browser.js("return document.getElementById('text').textContent")
+        check("--case: the page shows the panels' labels and the check's summary",
+              "[label] yours" in text and "[label] reference" in text and "pass" in text.lower(),
+              " | ".join(text.splitlines()[:3]))
+        names = sorted(b["names"] for b in browser.js("return window.sl.keyTable.keys"))
+        check("--case: the page's keys are the case view's (Esc apart)", names == ["C", "D", "Space", "Tab"],
+              ", ".join(names))
+        side_by_side = mean(browser)
+        before = browser.js("return window.sl.header.keys_acted")
+        browser.press("\ue004")  # Tab: one panel at a time
+        wait_for("the Tab key's frame", lambda: browser.js("return window.sl.header.keys_acted") > before, 60)
+        frames_after(browser, 1)
+        one = mean(browser)
+        check("--case: Tab on the page changes the picture (side by side to one panel)", abs(one - side_by_side) > 1,
+              f"mean brightness {side_by_side:.1f} -> {one:.1f}")
+        browser.screenshot(os.path.join(work, "page-case.png"))
+    finally:
+        if browser:
+            browser.close()
+        server.stop()
+    check("--case: the server said where it serves",
+          f"serving the case view at {server.url}" in open(server.log_path).read())
+
+
 def test(viewer, compare, work):
     failures = []
 
@@ -353,6 +388,7 @@ def test(viewer, compare, work):
         server.stop()
     log = open(server.log_path).read()
     check("the server said where it serves", f"serving the viewer at {server.url}" in log)
+    case_view(viewer, work, check)
     print("serve_browser: " + ("passed" if not failures else f"{len(failures)} failed"))
     return 1 if failures else 0
 
