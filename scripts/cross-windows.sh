@@ -114,9 +114,11 @@ framework=(sl_bench sl_bench_baseline sl_case_view sl_context sl_lab5_vsm sl_lab
            sl_mesh sl_overlay sl_probe_pass sl_renderer sl_runner sl_serve sl_shader sl_viewer)
 objects=()
 : >"$out/compile.log"
+# an object older than its source or than any of the project's headers is made again
+newest_header=$(ls -t "$root"/framework/*.h "$root"/grader/*.h | head -1)
 compile() { # compile SOURCE OBJECT FLAGS...
   local s=$1 o=$2; shift 2
-  if [ ! -f "$o" ] || [ "$s" -nt "$o" ]; then
+  if [ ! -f "$o" ] || [ "$s" -nt "$o" ] || [ "$newest_header" -nt "$o" ]; then
     $cc -c "$s" -o "$o" "${common[@]}" "$@" 2>>"$out/compile.log" ||
       { cat "$out/compile.log"; say "FAIL: compiling $s"; exit 1; }
   fi
