@@ -2,13 +2,13 @@
 #include "sl_bench.h"
 
 #include <cjson/cJSON.h>
-#include <fnmatch.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "sl_backend.h"
+#include "sl_platform.h"
 #include "sl_bench_baseline.h"
 #include "sl_context.h"
 #include "sl_renderer.h"
@@ -149,7 +149,8 @@ void sl_bench_usage(FILE *f) {
             "  --only PATTERN      techniques whose name matches (shell pattern, e.g. 'lab4-*')\n"
             "  --list              list the techniques and exit\n"
             "  --json              JSON on stdout instead of a table\n"
-            "  --backend NAME      headless backend: osmesa or egl, where built in; default as the grader's\n"
+            "  --backend NAME      offscreen backend: osmesa, egl or window, where built in; default as\n"
+            "                      the grader's\n"
             "  --window            time in a window (GLFW; needs a display, e.g. xvfb-run -a)\n"
             "  --labs-dir DIR      lab sources to load shaders from; default this build's\n");
 }
@@ -187,9 +188,8 @@ static bool _sl_parse_options(int argc, char **argv, _sl_bench_options *o) {
         if (strcmp(a, "--bench") == 0) {
         } else if (strcmp(a, "--backend") == 0) {
             if (!sl_backend_parse(next, &o->backend) || !sl_backend_available(o->backend)) {
-                fprintf(stderr, "shadowlab: --backend %s is not built in (osmesa: %s, egl: %s)\n", next,
-                        sl_backend_available(SL_BACKEND_OSMESA) ? "yes" : "no",
-                        sl_backend_available(SL_BACKEND_EGL) ? "yes" : "no");
+                fprintf(stderr, "shadowlab: --backend %s is not built in (this build has %s)\n", next,
+                        sl_backend_choices());
                 return false;
             }
         } else if (strcmp(a, "--size") == 0) {
@@ -391,6 +391,7 @@ static const char *const _sl_timer_note =
 
 static const char *_sl_backend_name(const _sl_bench_options *o) {
     if (o->window) return "GLFW window";
+    if (o->backend == SL_BACKEND_WINDOW) return "hidden GLFW window (offscreen)";
     return o->backend == SL_BACKEND_EGL ? "EGL (headless)" : "OSMesa (headless)";
 }
 
@@ -482,7 +483,7 @@ int sl_bench_main(int argc, char **argv) {
     const _sl_technique *chosen[_SL_TECHNIQUE_COUNT];
     int count = 0;
     for (int i = 0; i < _SL_TECHNIQUE_COUNT; i++)
-        if (!o.only || fnmatch(o.only, _sl_techniques[i].name, 0) == 0) chosen[count++] = &_sl_techniques[i];
+        if (!o.only || sl_platform_match(o.only, _sl_techniques[i].name)) chosen[count++] = &_sl_techniques[i];
     if (o.list) {
         for (int i = 0; i < count; i++)
             printf("%-20s lab %d, %s: %s%s\n", chosen[i]->name, chosen[i]->lab, chosen[i]->scene, chosen[i]->what,

@@ -9,6 +9,9 @@
 #include "sl_case.h"
 #include "sl_compare.h"
 #include "sl_context.h"
+#include "sl_platform.h"
+#include "sl_serve.h"
+#include <cjson/cJSON.h>
 #include "sl_lab5_vsm.h"
 #include "sl_lab6_cascades.h"
 #include "sl_lab7_cube.h"
@@ -550,18 +553,9 @@ const sl_case_view_key *sl_case_view_keys(void) {
     return keys;
 }
 
-/* Keys, read by polling. */
-static bool _sl_keys(_sl_case_view *v) {
-    GLFWwindow *w = sl_context_window(v->ctx);
-    static int previous[GLFW_KEY_LAST + 1];
-    bool changed = false;
-    for (int i = 0; i < _SL_CASE_KEY_COUNT; i++) {
-        int key = _sl_case_keys[i].key, now = glfwGetKey(w, key);
-        bool pressed = now == GLFW_PRESS && previous[key] != GLFW_PRESS;
-        previous[key] = now;
-        if (!pressed) continue;
-        changed = true;
-        switch (key) {
+/* What a key does (a window's, polled below, or a --serve page's). */
+static void _sl_case_key(_sl_case_view *v, GLFWwindow *w, int key) {
+    switch (key) {
         case GLFW_KEY_C: _sl_show_check(v, (v->shown_index + 1) % v->shown_count); break;
         case GLFW_KEY_TAB: v->side_by_side = !v->side_by_side; break;
         case GLFW_KEY_SPACE:
@@ -573,10 +567,48 @@ static bool _sl_keys(_sl_case_view *v) {
             v->show_diff = !v->show_diff;
             v->side_by_side = false;
             break;
-        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
+        case GLFW_KEY_ESCAPE: if (w) glfwSetWindowShouldClose(w, GLFW_TRUE); break;
         }
+}
+
+/* Keys, read by polling. */
+static bool _sl_keys(_sl_case_view *v) {
+    GLFWwindow *w = sl_context_window(v->ctx);
+    static int previous[GLFW_KEY_LAST + 1];
+    bool changed = false;
+    for (int i = 0; i < _SL_CASE_KEY_COUNT; i++) {
+        int key = _sl_case_keys[i].key, now = glfwGetKey(w, key);
+        bool pressed = now == GLFW_PRESS && previous[key] != GLFW_PRESS;
+        previous[key] = now;
+        if (!pressed) continue;
+        changed = true;
+        _sl_case_key(v, w, key);
     }
     return changed;
+}
+
+/* --serve's key table for the page: the case view's keys but Esc (a page is
+ * closed in the browser), as the viewer's table is sent (sl_viewer.c). */
+static char *_sl_case_keys_json(int lab) {
+    cJSON *root = cJSON_CreateObject(), *keys = cJSON_AddArrayToObject(root, "keys");
+    char code[16];
+    for (int i = 0; i < _SL_CASE_KEY_COUNT; i++) {
+        if (_sl_case_keys[i].key == GLFW_KEY_ESCAPE) continue;
+        cJSON *k = cJSON_CreateObject();
+        cJSON_AddNumberToObject(k, "lab", lab);
+        cJSON_AddStringToObject(k, "names", _sl_case_keys[i].about.names);
+        cJSON_AddStringToObject(k, "label", _sl_case_keys[i].about.names);
+        cJSON_AddStringToObject(k, "help", _sl_case_keys[i].about.help);
+        cJSON *codes = cJSON_AddArrayToObject(k, "codes"), *c = cJSON_CreateObject();
+        cJSON_AddStringToObject(c, "code", sl_serve_key_code(_sl_case_keys[i].key, code));
+        cJSON_AddNumberToObject(c, "key", _sl_case_keys[i].key);
+        cJSON_AddItemToArray(codes, c);
+        cJSON_AddItemToArray(keys, k);
+    }
+    cJSON_AddArrayToObject(root, "held");
+    char *json = cJSON_PrintUnformatted(root);
+    cJSON_Delete(root);
+    return json;
 }
 
 static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, size_t n) {
@@ -676,6 +708,21 @@ int sl_case_view_main(const sl_case_view_desc *d) {
     } else {
         printf("shadowlab: case %s (%s), lab %d: %s\n", v.c.name, v.c.title, v.c.lab, sl_context_renderer_name());
         GLFWwindow *window = sl_context_window(v.ctx);
+        sl_serve *serve = NULL;
+        unsigned long keys_acted = 0;
+        if (d->serve_port) {
+            char *keys = _sl_case_keys_json(v.c.lab);
+            sl_serve_desc sd = {.port = d->serve_port, .address = d->serve_address, .hello = keys};
+            serve = sl_serve_start(&sd, err, sizeof err);
+            cJSON_free(keys);
+            if (!serve) {
+                fprintf(stderr, "shadowlab: %s\n", err);
+                status = 1;
+                goto done;
+            }
+            printf("shadowlab: serving the case view at %s (open it in a browser; Ctrl-C stops)\n", sl_serve_url(serve));
+            fflush(stdout);
+        }
         if (window) {
             printf("shadowlab: keys:");
             for (int i = 0; i < _SL_CASE_KEY_COUNT; i++)
@@ -688,8 +735,9 @@ int sl_case_view_main(const sl_case_view_desc *d) {
         const char *reported_error = NULL;
         char last_summary[sizeof v.summary] = "";
         while (!sl_context_should_close(v.ctx)) {
-            if (window && glfwGetTime() - last_reload > 0.25) {
-                last_reload = glfwGetTime();
+            double now = window ? glfwGetTime() : serve ? sl_platform_seconds() : 0;
+            if ((window || serve) && now - last_reload > 0.25) {
+                last_reload = now;
                 bool reloaded = false;
                 if (!sl_renderer_reload_changed(&v.renderer, &reloaded, err, sizeof err))
                     fprintf(stderr, "shadowlab: shader reload failed, keeping the previous version:\n%s\n", err);
@@ -711,11 +759,31 @@ int sl_case_view_main(const sl_case_view_desc *d) {
                            (double)v.range[_SL_REFERENCE][1]);
             }
             if (window && _sl_keys(&v)) {}
+            if (serve) { /* the page's keys; drags and the wheel mean nothing here */
+                sl_serve_event events[32];
+                int count = sl_serve_poll(serve, events, 32);
+                for (int i = 0; i < count; i++)
+                    for (int k = 0; k < _SL_CASE_KEY_COUNT; k++)
+                        if (events[i].kind == SL_SERVE_KEY_DOWN && events[i].key == _sl_case_keys[k].key &&
+                            events[i].key != GLFW_KEY_ESCAPE) {
+                            _sl_case_key(&v, NULL, events[i].key);
+                            keys_acted++;
+                        }
+            }
             _sl_title(&v);
             int fw, fh;
             sl_context_framebuffer_size(v.ctx, &fw, &fh);
             _sl_draw(&v, fw, fh);
             rendered++;
+            if (serve) {
+                static char text[16384]; /* the labels and the band's summary, in words */
+                text[0] = '\0';
+                if (v.overlay) sl_overlay_text(v.overlay, text, sizeof text);
+                sl_serve_frame_desc fd = {.text = text, .lab = v.c.lab, .keys_acted = keys_acted};
+                if (!sl_serve_frame(serve, sl_context_default_framebuffer(v.ctx), fw, fh, &fd, err, sizeof err))
+                    fprintf(stderr, "shadowlab: --serve: %s\n", err);
+                sl_serve_idle(serve);
+            }
             if (d->frames > 0 && rendered >= d->frames) {
                 if (d->screenshot) {
                     sl_image shot;
@@ -732,7 +800,9 @@ int sl_case_view_main(const sl_case_view_desc *d) {
             }
             sl_context_end_frame(v.ctx);
         }
+        sl_serve_stop(serve);
     }
+done:
     if (v.ctx) {
         sl_overlay_destroy(v.overlay);
         sl_program_destroy(&v.panel_program);

@@ -21,6 +21,8 @@ typedef struct sl_case_view_desc {
     int frames;                 /* > 0: render that many frames and stop */
     const char *screenshot;     /* with frames: save the last one */
     const char *check_name;     /* the check to show first (NULL: the case's first with a picture) */
+    int serve_port;             /* > 0: offscreen, shown in a browser (shadowlab --serve PORT --case NAME) */
+    const char *serve_address;  /* with serve_port: the address to bind; default 127.0.0.1 */
 } sl_case_view_desc;
 
 /* A process exit status: 0, 1 on failure (said on stderr), 2 on a usage error. */

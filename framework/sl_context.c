@@ -44,8 +44,9 @@ struct sl_context {
 #ifdef SL_HAVE_EGL
     EGLDisplay egl_display;
     EGLContext egl_context;
-    GLuint egl_framebuffer, egl_color, egl_depth_stencil;
 #endif
+    /* EGL and the hidden window: the framebuffer object that stands in for 0 */
+    GLuint offscreen_framebuffer, offscreen_color, offscreen_depth_stencil;
     GLFWwindow *window;
 };
 
@@ -87,26 +88,78 @@ static bool _sl_create_osmesa(sl_context *ctx, char *err, size_t n) {
 }
 #endif
 
-/* ---- EGL ----------------------------------------------------------------- */
+/* ---- the offscreen framebuffer (EGL, the hidden window) ------------------ */
 
-#ifdef SL_HAVE_EGL
-/* The EGL backend's stand-in for framebuffer 0 (see sl_context.h). One
- * context at a time, like the GL entry points themselves. */
-static GLuint _sl_egl_default_fbo;
-static PFNGLBINDFRAMEBUFFERPROC _sl_egl_bind_framebuffer_gl;
-static PFNGLGETINTEGERVPROC _sl_egl_get_integerv_gl;
+/* The stand-in for framebuffer 0 (see sl_context.h): EGL without a surface has
+ * no framebuffer of its own, and a hidden window's may not be drawn at all (a
+ * window not shown owns no pixels) or be another size (macOS's Retina
+ * scaling). One context at a time, like the GL entry points themselves. */
+static GLuint _sl_offscreen_fbo;
+static PFNGLBINDFRAMEBUFFERPROC _sl_offscreen_bind_framebuffer_gl;
+static PFNGLGETINTEGERVPROC _sl_offscreen_get_integerv_gl;
 
-static void APIENTRY _sl_egl_bind_framebuffer(GLenum target, GLuint framebuffer) {
-    _sl_egl_bind_framebuffer_gl(target, framebuffer ? framebuffer : _sl_egl_default_fbo);
+static void APIENTRY _sl_offscreen_bind_framebuffer(GLenum target, GLuint framebuffer) {
+    _sl_offscreen_bind_framebuffer_gl(target, framebuffer ? framebuffer : _sl_offscreen_fbo);
 }
 
-static void APIENTRY _sl_egl_get_integerv(GLenum pname, GLint *data) {
-    _sl_egl_get_integerv_gl(pname, data);
+static void APIENTRY _sl_offscreen_get_integerv(GLenum pname, GLint *data) {
+    _sl_offscreen_get_integerv_gl(pname, data);
     if ((pname == GL_DRAW_FRAMEBUFFER_BINDING || pname == GL_READ_FRAMEBUFFER_BINDING) && data &&
-        (GLuint)*data == _sl_egl_default_fbo)
+        (GLuint)*data == _sl_offscreen_fbo)
         *data = 0; /* GL_FRAMEBUFFER_BINDING is GL_DRAW_FRAMEBUFFER_BINDING */
 }
 
+/* Makes the stand-in (RGBA8, depth 24 / stencil 8, the context's size), binds
+ * it, and loads the entries that make 0 mean it. GL is loaded already. */
+static bool _sl_offscreen_create(sl_context *ctx, const char *backend, char *err, size_t n) {
+    glGenFramebuffers(1, &ctx->offscreen_framebuffer);
+    glGenRenderbuffers(1, &ctx->offscreen_color);
+    glGenRenderbuffers(1, &ctx->offscreen_depth_stencil);
+    glBindRenderbuffer(GL_RENDERBUFFER, ctx->offscreen_color);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, ctx->width, ctx->height);
+    glBindRenderbuffer(GL_RENDERBUFFER, ctx->offscreen_depth_stencil);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, ctx->width, ctx->height);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, ctx->offscreen_framebuffer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ctx->offscreen_color);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              ctx->offscreen_depth_stencil);
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        if (err && n)
+            snprintf(err, n, "%s: the %dx%d default framebuffer is incomplete (%s)", backend, ctx->width, ctx->height,
+                     sl_gl_enum_name(status));
+        return false;
+    }
+    glViewport(0, 0, ctx->width, ctx->height);
+    _sl_offscreen_fbo = ctx->offscreen_framebuffer;
+    _sl_offscreen_bind_framebuffer_gl = _sl_glBindFramebuffer;
+    _sl_glBindFramebuffer = _sl_offscreen_bind_framebuffer;
+    _sl_offscreen_get_integerv_gl = _sl_glGetIntegerv;
+    _sl_glGetIntegerv = _sl_offscreen_get_integerv;
+    return true;
+}
+
+/* While the context is still current. */
+static void _sl_offscreen_destroy(sl_context *ctx) {
+    if (ctx->offscreen_framebuffer) {
+        GLuint renderbuffers[2] = {ctx->offscreen_color, ctx->offscreen_depth_stencil};
+        glDeleteRenderbuffers(2, renderbuffers);
+        glDeleteFramebuffers(1, &ctx->offscreen_framebuffer);
+    }
+    if (_sl_offscreen_fbo && _sl_offscreen_fbo == ctx->offscreen_framebuffer) {
+        /* Undo the redirection: the next context loads its own entry points. */
+        if (_sl_glBindFramebuffer == _sl_offscreen_bind_framebuffer)
+            _sl_glBindFramebuffer = _sl_offscreen_bind_framebuffer_gl;
+        if (_sl_glGetIntegerv == _sl_offscreen_get_integerv) _sl_glGetIntegerv = _sl_offscreen_get_integerv_gl;
+        _sl_offscreen_fbo = 0;
+    }
+    ctx->offscreen_framebuffer = 0;
+}
+
+/* ---- EGL ----------------------------------------------------------------- */
+
+#ifdef SL_HAVE_EGL
 static sl_gl_proc _sl_egl_get_proc(const char *name) { return (sl_gl_proc)eglGetProcAddress(name); }
 
 /* Whole-word match in a space-separated extension string. */
@@ -251,47 +304,11 @@ static bool _sl_create_egl(sl_context *ctx, bool software_only, char *err, size_
         return false;
     }
     if (!sl_gl_load(_sl_egl_get_proc, err, n)) return false;
-
-    /* The stand-in for framebuffer 0, then the loader entries that make 0 mean it. */
-    glGenFramebuffers(1, &ctx->egl_framebuffer);
-    glGenRenderbuffers(1, &ctx->egl_color);
-    glGenRenderbuffers(1, &ctx->egl_depth_stencil);
-    glBindRenderbuffer(GL_RENDERBUFFER, ctx->egl_color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, ctx->width, ctx->height);
-    glBindRenderbuffer(GL_RENDERBUFFER, ctx->egl_depth_stencil);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, ctx->width, ctx->height);
-    glBindRenderbuffer(GL_RENDERBUFFER, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, ctx->egl_framebuffer);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ctx->egl_color);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, ctx->egl_depth_stencil);
-    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        if (err && n)
-            snprintf(err, n, "EGL: the %dx%d default framebuffer is incomplete (%s)", ctx->width, ctx->height,
-                     sl_gl_enum_name(status));
-        return false;
-    }
-    glViewport(0, 0, ctx->width, ctx->height);
-    _sl_egl_default_fbo = ctx->egl_framebuffer;
-    _sl_egl_bind_framebuffer_gl = _sl_glBindFramebuffer;
-    _sl_glBindFramebuffer = _sl_egl_bind_framebuffer;
-    _sl_egl_get_integerv_gl = _sl_glGetIntegerv;
-    _sl_glGetIntegerv = _sl_egl_get_integerv;
-    return true;
+    return _sl_offscreen_create(ctx, "EGL", err, n);
 }
 
 static void _sl_destroy_egl(sl_context *ctx) {
-    if (ctx->egl_context != EGL_NO_CONTEXT && ctx->egl_framebuffer) {
-        GLuint renderbuffers[2] = {ctx->egl_color, ctx->egl_depth_stencil};
-        glDeleteRenderbuffers(2, renderbuffers);
-        glDeleteFramebuffers(1, &ctx->egl_framebuffer);
-    }
-    if (_sl_egl_default_fbo == ctx->egl_framebuffer) {
-        /* Undo the redirection: the next context loads its own entry points. */
-        if (_sl_glBindFramebuffer == _sl_egl_bind_framebuffer) _sl_glBindFramebuffer = _sl_egl_bind_framebuffer_gl;
-        if (_sl_glGetIntegerv == _sl_egl_get_integerv) _sl_glGetIntegerv = _sl_egl_get_integerv_gl;
-        _sl_egl_default_fbo = 0;
-    }
+    if (ctx->egl_context != EGL_NO_CONTEXT) _sl_offscreen_destroy(ctx);
     _sl_egl_release(ctx);
 }
 #endif
@@ -305,32 +322,45 @@ static void _sl_glfw_error(int code, const char *description) {
     snprintf(_sl_glfw_last_error, sizeof _sl_glfw_last_error, "GLFW error %d: %s", code, description);
 }
 
-static bool _sl_create_glfw(sl_context *ctx, const sl_context_desc *desc, char *err, size_t n) {
+/* A window, or with `hidden` a window never shown that only holds the
+ * context: the picture is then the offscreen framebuffer's. */
+static bool _sl_create_glfw(sl_context *ctx, const sl_context_desc *desc, bool hidden, char *err, size_t n) {
     glfwSetErrorCallback(_sl_glfw_error);
     if (!glfwInit()) {
         if (err && n)
-            snprintf(err, n, "cannot open a window (%s). No display? Add --headless (with --frames and "
-                             "--screenshot) to render without one, or run under xvfb-run",
+            snprintf(err, n, hidden ? "cannot open even a hidden window (%s): --backend window needs a desktop "
+                                      "session or a display (xvfb-run on Linux)"
+                                    : "cannot open a window (%s). No display? Add --headless (with --frames and "
+                                      "--screenshot) to render without one, or run under xvfb-run",
                      _sl_glfw_last_error[0] ? _sl_glfw_last_error : "glfwInit failed");
         return false;
     }
-    /* Forward-compatible core 3.3 runs on Linux, Windows and macOS (which stops at 4.1). */
+    /* Forward-compatible core 3.3 runs on Linux, Windows and macOS (which
+     * gives 4.1 for it: its only core profile). */
+    glfwDefaultWindowHints();
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SAMPLES, 0);
-    glfwWindowHint(GLFW_RESIZABLE, desc->resizable ? GLFW_TRUE : GLFW_FALSE);
-    ctx->window = glfwCreateWindow(ctx->width, ctx->height, desc->title ? desc->title : "shadowlab", NULL, NULL);
+    glfwWindowHint(GLFW_RESIZABLE, desc->resizable && !hidden ? GLFW_TRUE : GLFW_FALSE);
+    if (hidden) {
+        glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+        glfwWindowHint(GLFW_FOCUSED, GLFW_FALSE);
+    }
+    /* A hidden window's own size does not matter: it is never drawn into. */
+    ctx->window = glfwCreateWindow(hidden ? 64 : ctx->width, hidden ? 64 : ctx->height,
+                                   desc->title ? desc->title : "shadowlab", NULL, NULL);
     if (!ctx->window) {
         if (err && n)
-            snprintf(err, n, "cannot create a GL 3.3 core window (%s)",
+            snprintf(err, n, "cannot create a GL 3.3 core %swindow (%s)", hidden ? "hidden " : "",
                      _sl_glfw_last_error[0] ? _sl_glfw_last_error : "glfwCreateWindow failed");
         return false;
     }
     glfwMakeContextCurrent(ctx->window);
-    glfwSwapInterval(1);
-    return sl_gl_load(_sl_glfw_get_proc, err, n);
+    if (!hidden) glfwSwapInterval(1);
+    if (!sl_gl_load(_sl_glfw_get_proc, err, n)) return false;
+    return !hidden || _sl_offscreen_create(ctx, "the hidden window", err, n);
 }
 
 /* ---- the context --------------------------------------------------------- */
@@ -354,7 +384,8 @@ sl_context *sl_context_create(const sl_context_desc *desc, char *err, size_t err
     ctx->height = desc->height > 0 ? desc->height : 512;
     bool ok = false;
     switch (backend) {
-    case SL_BACKEND_GLFW: ok = _sl_create_glfw(ctx, desc, err, err_size); break;
+    case SL_BACKEND_GLFW: ok = _sl_create_glfw(ctx, desc, false, err, err_size); break;
+    case SL_BACKEND_WINDOW: ok = _sl_create_glfw(ctx, desc, true, err, err_size); break;
 #ifdef SL_HAVE_OSMESA
     case SL_BACKEND_OSMESA: ok = _sl_create_osmesa(ctx, err, err_size); break;
 #endif
@@ -379,8 +410,11 @@ void sl_context_destroy(sl_context *ctx) {
 #ifdef SL_HAVE_EGL
     if (ctx->backend == SL_BACKEND_EGL) _sl_destroy_egl(ctx);
 #endif
-    if (ctx->backend == SL_BACKEND_GLFW) {
-        if (ctx->window) glfwDestroyWindow(ctx->window);
+    if (ctx->backend == SL_BACKEND_GLFW || ctx->backend == SL_BACKEND_WINDOW) {
+        if (ctx->window) {
+            if (ctx->backend == SL_BACKEND_WINDOW && glfwGetCurrentContext() == ctx->window) _sl_offscreen_destroy(ctx);
+            glfwDestroyWindow(ctx->window);
+        }
         glfwTerminate();
     }
     free(ctx);
@@ -389,7 +423,7 @@ void sl_context_destroy(sl_context *ctx) {
 sl_backend sl_context_backend(const sl_context *ctx) { return ctx->backend; }
 
 void sl_context_framebuffer_size(const sl_context *ctx, int *width, int *height) {
-    if (ctx->window) {
+    if (ctx->backend == SL_BACKEND_GLFW) {
         glfwGetFramebufferSize(ctx->window, width, height);
     } else {
         *width = ctx->width;
@@ -397,16 +431,10 @@ void sl_context_framebuffer_size(const sl_context *ctx, int *width, int *height)
     }
 }
 
-unsigned sl_context_default_framebuffer(const sl_context *ctx) {
-#ifdef SL_HAVE_EGL
-    if (ctx->backend == SL_BACKEND_EGL) return ctx->egl_framebuffer;
-#endif
-    (void)ctx;
-    return 0;
-}
+unsigned sl_context_default_framebuffer(const sl_context *ctx) { return ctx->offscreen_framebuffer; }
 
 void sl_context_end_frame(sl_context *ctx) {
-    if (ctx->window) {
+    if (ctx->backend == SL_BACKEND_GLFW) {
         glfwSwapBuffers(ctx->window);
         glfwPollEvents();
     } else {
@@ -415,10 +443,10 @@ void sl_context_end_frame(sl_context *ctx) {
 }
 
 bool sl_context_should_close(const sl_context *ctx) {
-    return ctx->window ? glfwWindowShouldClose(ctx->window) != 0 : false;
+    return ctx->backend == SL_BACKEND_GLFW ? glfwWindowShouldClose(ctx->window) != 0 : false;
 }
 
-void *sl_context_window(const sl_context *ctx) { return ctx->window; }
+void *sl_context_window(const sl_context *ctx) { return ctx->backend == SL_BACKEND_GLFW ? ctx->window : NULL; }
 
 const char *sl_context_renderer_name(void) {
     const GLubyte *name = glGetString(GL_RENDERER);

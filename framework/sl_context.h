@@ -1,4 +1,4 @@
-/* sl_context: a GL 3.3 core context from one of three backends, with every GL
+/* sl_context: a GL 3.3 core context from one of four backends, with every GL
  * entry point loaded through that backend (see sl_gl.h).
  *   SL_BACKEND_OSMESA  headless, software (llvmpipe). Mesa removed OSMesa in
  *                      25.1, so newer systems do not have it.
@@ -6,19 +6,25 @@
  *                      EGL_EXT_platform_device where there is one, else llvmpipe
  *                      (EGL_MESA_platform_surfaceless or Mesa's software device).
  *   SL_BACKEND_GLFW    a window (X11 on Linux); the viewer's default.
+ *   SL_BACKEND_WINDOW  offscreen like the headless ones, in a hidden GLFW
+ *                      window that only holds the context: macOS (4.1 core),
+ *                      Windows, or Linux with a display (Xvfb). Needs a
+ *                      desktop session or a display; the default where the
+ *                      build has no headless backend.
  * Which headless backends exist is decided at build time: ask
  * sl_backend_available() (sl_backend.h).
  *
  * Framebuffer 0. Code draws into and reads from framebuffer 0 as "the
  * context's own picture" (the window, the OSMesa buffer). EGL without a surface
- * has no such framebuffer, so the EGL backend makes one: a framebuffer object
- * of the context's size (RGBA8 colour, depth 24 / stencil 8), bound at
- * creation. So that every caller, the labs included, keeps meaning "the
- * context's picture" by 0 on every backend, the EGL backend loads
+ * has no such framebuffer, and a hidden window's is not to be relied on (a
+ * window never shown owns no pixels), so these two backends make one: a
+ * framebuffer object of the context's size (RGBA8 colour, depth 24 / stencil
+ * 8), bound at creation. So that every caller, the labs included, keeps
+ * meaning "the context's picture" by 0 on every backend, they load
  * glBindFramebuffer so that binding 0 binds that object, and glGetIntegerv
  * reports it as 0 for GL_{DRAW_,READ_,}FRAMEBUFFER_BINDING. Code that needs the
  * real name (e.g. to attach or query it) gets it from
- * sl_context_default_framebuffer(). Differences that remain on EGL: its
+ * sl_context_default_framebuffer(). Differences that remain there: the
  * colour buffer is GL_COLOR_ATTACHMENT0, not GL_BACK/GL_FRONT, for
  * glDrawBuffer, glReadBuffer and attachment queries.
  *
@@ -56,13 +62,15 @@ void sl_context_destroy(sl_context *ctx);
 sl_backend sl_context_backend(const sl_context *ctx);
 /* Size of the default framebuffer in pixels. */
 void sl_context_framebuffer_size(const sl_context *ctx, int *width, int *height);
-/* The GL name of the default framebuffer: the EGL backend's framebuffer
- * object, 0 for the others. Binding 0 binds it anyway (see the top). */
+/* The GL name of the default framebuffer: the framebuffer object of the EGL
+ * and hidden-window backends, 0 for the others. Binding 0 binds it anyway
+ * (see the top). */
 unsigned sl_context_default_framebuffer(const sl_context *ctx);
-/* Finishes the frame: swaps and polls events (GLFW), or glFinish (headless). */
+/* Finishes the frame: swaps and polls events (a window), or glFinish (offscreen). */
 void sl_context_end_frame(sl_context *ctx);
 bool sl_context_should_close(const sl_context *ctx);
-/* The GLFWwindow, or NULL for the headless backends. */
+/* The GLFWwindow of a visible window, or NULL for the offscreen backends
+ * (the hidden window's included). */
 void *sl_context_window(const sl_context *ctx);
 const char *sl_context_renderer_name(void); /* GL_RENDERER of the current context */
 

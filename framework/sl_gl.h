@@ -13,6 +13,12 @@
 #ifdef __gl_h_
 #error "include sl_gl.h instead of GL/gl.h"
 #endif
+/* On Windows glcorearb.h includes <windows.h> unless APIENTRY is defined, and
+ * windows.h defines near and far (and min, max) as macros, which the scenes'
+ * and lights' fields are named: give it the calling convention itself. */
+#if defined(_WIN32) && !defined(APIENTRY)
+#define APIENTRY __stdcall
+#endif
 #include <GL/glcorearb.h>
 
 #ifdef __cplusplus

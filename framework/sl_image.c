@@ -1,17 +1,16 @@
 /* sl_image: float images in memory here; their files through the image module
  * (sl_image_io.h), loaded on the first read or write. */
-#define _POSIX_C_SOURCE 200809L /* readlink, pthread_once */
+#define _POSIX_C_SOURCE 200809L /* pthread_once */
 #include "sl_image.h"
 
-#include <dlfcn.h>
 #include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "sl_image_io.h"
+#include "sl_platform.h"
 
 static bool _sl_image_size(int width, int height, int channels, size_t *count) {
     if (width <= 0 || height <= 0 || channels <= 0) return false;
@@ -64,22 +63,19 @@ static char _sl_image_io_error[1536];
 /* Tries one place. Returns false only when the module is not there, so a
  * module that is there but broken (e.g. OpenImageIO missing) is reported as such. */
 static bool _sl_image_io_try(const char *path) {
-    if (access(path, F_OK) != 0) return false;
+    if (!sl_platform_is_file(path)) return false;
     /* Never closed: OpenImageIO keeps threads and static state for the process's life. */
-    void *module = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    char why[1024];
+    void *module = sl_platform_module_open(path, why, sizeof why);
     if (!module) {
-        const char *why = dlerror();
         snprintf(_sl_image_io_error, sizeof _sl_image_io_error, "the image module %s does not load: %s", SL_IMAGE_IO_MODULE,
-                 why ? why : "unknown reason");
+                 why);
         return true;
     }
-    /* POSIX: dlsym's object pointer converts to a function pointer through memcpy. */
-    void *symbol = dlsym(module, SL_IMAGE_IO_ENTRY);
-    sl_image_io_entry_fn entry = NULL;
-    if (symbol) memcpy(&entry, &symbol, sizeof entry);
+    sl_image_io_entry_fn entry = (sl_image_io_entry_fn)sl_platform_module_function(module, SL_IMAGE_IO_ENTRY);
     const sl_image_io_api *api = entry ? entry() : NULL;
     if (!api || api->version != SL_IMAGE_IO_VERSION || api->struct_size != sizeof *api || !api->read || !api->write ||
-        !api->animation_open || !api->animation_add || !api->animation_close) {
+        !api->animation_open || !api->animation_add || !api->animation_close || !api->encode) {
         snprintf(_sl_image_io_error, sizeof _sl_image_io_error,
                  "the image module %s is from another build of shadowlab (rebuild it: cmake --build build)", path);
         return true;
@@ -92,15 +88,7 @@ static bool _sl_image_io_try(const char *path) {
  * layout, and build/bin -> build/lib), then in this build's lib folder. */
 static void _sl_image_io_load(void) {
     char exe_dir[1024] = "";
-    ssize_t n = readlink("/proc/self/exe", exe_dir, sizeof exe_dir - 1);
-    if (n > 0) {
-        exe_dir[n] = '\0';
-        char *slash = strrchr(exe_dir, '/');
-        if (slash) *slash = '\0';
-        else exe_dir[0] = '\0';
-    } else {
-        exe_dir[0] = '\0';
-    }
+    if (!sl_platform_executable_dir(exe_dir, sizeof exe_dir)) exe_dir[0] = '\0';
     char places[3][1200];
     int count = 0;
     if (exe_dir[0]) {
@@ -132,6 +120,14 @@ bool sl_image_read(const char *path, sl_image *out, char *err, size_t err_size) 
     if (out) *out = (sl_image){0, 0, 0, NULL};
     const sl_image_io_api *io = _sl_image_io_get(path, err, err_size);
     return io && io->read(path, out, err, err_size);
+}
+
+bool sl_image_encode(const sl_pixels *pixels, const char *format, int quality, unsigned char **out, size_t *out_size,
+                     char *err, size_t err_size) {
+    *out = NULL;
+    *out_size = 0;
+    const sl_image_io_api *io = _sl_image_io_get(format, err, err_size);
+    return io && io->encode(pixels, format, quality, out, out_size, err, err_size);
 }
 
 sl_animation *sl_animation_open(const char *path, int fps, char *err, size_t err_size) {

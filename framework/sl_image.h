@@ -45,6 +45,22 @@ sl_animation *sl_animation_open(const char *path, int fps, char *err, size_t err
 bool sl_animation_add(sl_animation *animation, const sl_image *frame, char *err, size_t err_size);
 bool sl_animation_close(sl_animation *animation, char *err, size_t err_size);
 
+/* 8-bit pixels as GL reads them back: `channels` (3 or 4) bytes a pixel,
+ * rows `stride` bytes apart, row 0 at the bottom when bottom_up. */
+typedef struct sl_pixels {
+    const unsigned char *data;
+    int width, height, channels;
+    size_t stride;
+    bool bottom_up;
+} sl_pixels;
+
+/* Compresses pixels into an image file in memory: format "jpg" (quality
+ * 1-100; the alpha channel is dropped) or "png". *out is malloc()ed: free()
+ * it. On failure returns false with the reason. The live frames of the
+ * browser viewer (sl_serve.h). */
+bool sl_image_encode(const sl_pixels *pixels, const char *format, int quality, unsigned char **out, size_t *out_size,
+                     char *err, size_t err_size);
+
 /* Reverses the row order in place (GL's bottom-up <-> files' top-down). */
 void sl_image_flip_rows(sl_image *image);
 

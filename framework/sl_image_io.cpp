@@ -6,6 +6,7 @@
 // all have (3.0 removed only APIs deprecated long before).
 #include "sl_image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cctype>
@@ -334,6 +335,67 @@ static bool _sl_image_io_animation_close(sl_animation *a, char *err, size_t err_
     return ok;
 }
 
+// An image file made in memory (an IOProxy), for frames sent over the network.
+static bool _sl_image_encode(const sl_pixels *p, const char *format, int quality, unsigned char **out,
+                             size_t *out_size, char *err, size_t err_size) {
+    bool jpeg = std::strcmp(format, "jpg") == 0;
+    if (!jpeg && std::strcmp(format, "png") != 0) {
+        _sl_image_error(err, err_size, "%s: not an encoding (jpg or png)", format);
+        return false;
+    }
+    if (!p || !p->data || p->width < 1 || p->height < 1 || (p->channels != 3 && p->channels != 4) ||
+        p->stride < (size_t)p->width * (size_t)p->channels) {
+        _sl_image_error(err, err_size, "encode: empty or invalid pixels");
+        return false;
+    }
+    std::string name = std::string("frame.") + format;
+    auto output = OIIO::ImageOutput::create(name);
+    if (!output || !output->supports("ioproxy")) {
+        _sl_image_error(err, err_size, "this OpenImageIO cannot write %s to memory", format);
+        return false;
+    }
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput proxy(bytes);
+    // JPEG has no alpha: write its first three channels only.
+    int channels = jpeg ? 3 : p->channels;
+    OIIO::ImageSpec spec(p->width, p->height, channels, OIIO::TypeDesc::UINT8);
+    if (jpeg) spec.attribute("Compression", "jpeg:" + std::to_string(quality < 1 ? 1 : quality > 100 ? 100 : quality));
+    else spec.attribute("png:compressionLevel", 1); // speed over size: a frame lives a few milliseconds
+    spec.attribute("DateTime", "1970:01:01 00:00:00");
+    const unsigned char *first = p->bottom_up ? p->data + (size_t)(p->height - 1) * p->stride : p->data;
+    OIIO::stride_t ystride = p->bottom_up ? -(OIIO::stride_t)p->stride : (OIIO::stride_t)p->stride;
+    bool ok = output->set_ioproxy(&proxy) && output->open(name, spec);
+    if (ok && channels == p->channels)
+        ok = output->write_image(OIIO::TypeDesc::UINT8, first, OIIO::AutoStride, ystride);
+    else if (ok)
+        // drop alpha row by row: OIIO's xstride skips the fourth byte
+        ok = output->write_image(OIIO::TypeDesc::UINT8, first, (OIIO::stride_t)p->channels, ystride);
+    if (!ok || !output->close()) {
+        _sl_image_error(err, err_size, "encode %s: %s", format, _sl_image_reason(output->geterror()).c_str());
+        return false;
+    }
+    *out = (unsigned char *)std::malloc(bytes.size());
+    if (!*out) {
+        _sl_image_error(err, err_size, "encode: out of memory");
+        return false;
+    }
+    std::memcpy(*out, bytes.data(), bytes.size());
+    *out_size = bytes.size();
+    return true;
+}
+
+static bool _sl_image_io_encode(const sl_pixels *pixels, const char *format, int quality, unsigned char **out,
+                                size_t *out_size, char *err, size_t err_size) {
+    try {
+        return _sl_image_encode(pixels, format ? format : "", quality, out, out_size, err, err_size);
+    } catch (const std::exception &e) {
+        _sl_image_error(err, err_size, "encode: %s", e.what());
+    } catch (...) {
+        _sl_image_error(err, err_size, "encode: unknown exception");
+    }
+    return false;
+}
+
 static const sl_image_io_api _sl_image_io_api = {
     SL_IMAGE_IO_VERSION,
     sizeof(sl_image_io_api),
@@ -342,9 +404,15 @@ static const sl_image_io_api _sl_image_io_api = {
     _sl_image_io_animation_open,
     _sl_image_io_animation_add,
     _sl_image_io_animation_close,
+    _sl_image_io_encode,
 };
 
 // The module's only exported symbol (built with hidden visibility).
-extern "C" __attribute__((visibility("default"))) const sl_image_io_api *sl_image_io_module(void) {
+#ifdef _WIN32
+#define SL_IMAGE_IO_EXPORT __declspec(dllexport)
+#else
+#define SL_IMAGE_IO_EXPORT __attribute__((visibility("default")))
+#endif
+extern "C" SL_IMAGE_IO_EXPORT const sl_image_io_api *sl_image_io_module(void) {
     return &_sl_image_io_api;
 }

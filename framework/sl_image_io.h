@@ -21,10 +21,14 @@ extern "C" {
 
 /* Raised whenever the table or the meaning of its functions changes, so a
  * module left over from another build is refused rather than misused. */
-#define SL_IMAGE_IO_VERSION 2
+#define SL_IMAGE_IO_VERSION 3
 #define SL_IMAGE_IO_ENTRY "sl_image_io_module"
 /* The module's file name; sl_image.c looks for it next to the executable. */
-#define SL_IMAGE_IO_MODULE "libshadowlab_image.so"
+#ifdef _WIN32
+#define SL_IMAGE_IO_MODULE "libshadowlab_image.dll"
+#else
+#define SL_IMAGE_IO_MODULE "libshadowlab_image.so" /* CMake names modules .so on macOS too */
+#endif
 
 typedef struct sl_image_io_api {
     int version;        /* SL_IMAGE_IO_VERSION */
@@ -36,6 +40,9 @@ typedef struct sl_image_io_api {
     sl_animation *(*animation_open)(const char *path, int fps, char *err, size_t err_size);
     bool (*animation_add)(sl_animation *animation, const sl_image *frame, char *err, size_t err_size);
     bool (*animation_close)(sl_animation *animation, char *err, size_t err_size);
+    /* Same contract as sl_image_encode (sl_image.h); the bytes are malloc()ed. */
+    bool (*encode)(const sl_pixels *pixels, const char *format, int quality, unsigned char **out, size_t *out_size,
+                   char *err, size_t err_size);
 } sl_image_io_api;
 
 typedef const sl_image_io_api *(*sl_image_io_entry_fn)(void);

@@ -388,7 +388,9 @@ int sl_runner_main(int argc, char **argv) {
                         "run shadowlab-grade instead.\n");
         return 2;
     }
+#ifdef SIGPIPE /* not on Windows */
     signal(SIGPIPE, SIG_DFL);
+#endif
     static sl_job job; /* large: not on the stack */
     char err[256];
     if (!_sl_read_job(&job, err, sizeof err)) {

@@ -7,7 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
+
+#include "sl_platform.h"
 
 #include "sl_text.h"
 
@@ -69,10 +70,7 @@ static char *_sl_read_file(const char *path, size_t *length) {
     return b.data;
 }
 
-static bool _sl_file_exists(const char *path) {
-    struct stat st;
-    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
-}
+static bool _sl_file_exists(const char *path) { return sl_platform_is_file(path); }
 
 static void _sl_dirname(const char *path, char *out, size_t n) {
     const char *slash = strrchr(path, '/');
@@ -116,13 +114,13 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
 
 static void _sl_add_root(_sl_pp *pp, const char *dir) {
     char real[PATH_MAX];
-    if (pp->root_count <= SL_SHADER_MAX_DIRS && realpath(dir, real))
+    if (pp->root_count <= SL_SHADER_MAX_DIRS && sl_platform_real_path(dir, real, sizeof real))
         snprintf(pp->roots[pp->root_count++], SL_PATH_MAX, "%s", real);
 }
 
 static bool _sl_inside_roots(const _sl_pp *pp, const char *path) {
     char real[PATH_MAX];
-    if (!realpath(path, real)) return false;
+    if (!sl_platform_real_path(path, real, sizeof real)) return false;
     for (int i = 0; i < pp->root_count; i++) {
         size_t n = strlen(pp->roots[i]);
         if (strncmp(real, pp->roots[i], n) == 0 && (real[n] == '/' || (n == 1 && pp->roots[i][0] == '/'))) return true;
@@ -155,7 +153,7 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
     /* Messages name the real file, also when a labs tree is assembled from links (--isolate). */
     char real[4096];
     bool given = depth == 0 && pp->main_text;
-    if (!given && realpath(path, real)) path = real;
+    if (!given && sl_platform_real_path(path, real, sizeof real)) path = real;
     bool already;
     int id = _sl_register_file(pp, path, &already);
     if (already) return true; /* included once */
@@ -393,21 +391,18 @@ static bool _sl_build_from_paths(sl_program *program, char *err, size_t err_size
         bool dup = false;
         for (int j = 0; j < program->file_count; j++) dup |= strcmp(program->files[j], files[i]) == 0;
         if (dup) continue;
-        struct stat st;
         int k = program->file_count++;
         snprintf(program->files[k], SL_PATH_MAX, "%s", files[i]);
-        if (stat(files[i], &st) == 0) program->mtimes[k] = st.st_mtim;
-        else memset(&program->mtimes[k], 0, sizeof program->mtimes[k]);
+        if (!sl_platform_file_time(files[i], &program->mtimes[k])) program->mtimes[k] = 0;
     }
     for (int s = 0; s < 3 && !ok; s++) /* a file that failed to preprocess is watched too */
         if (program->stage_paths[s][0] && program->file_count < SL_SHADER_MAX_FILES) {
             bool dup = false;
             for (int j = 0; j < program->file_count; j++) dup |= strcmp(program->files[j], program->stage_paths[s]) == 0;
             if (!dup) {
-                struct stat st;
                 int k = program->file_count++;
                 snprintf(program->files[k], SL_PATH_MAX, "%s", program->stage_paths[s]);
-                if (stat(program->stage_paths[s], &st) == 0) program->mtimes[k] = st.st_mtim;
+                if (!sl_platform_file_time(program->stage_paths[s], &program->mtimes[k])) program->mtimes[k] = 0;
             }
         }
     if (ok) {
@@ -431,11 +426,12 @@ bool sl_program_build(sl_program *program, const sl_shader_desc *desc, char *err
 }
 
 bool sl_program_files_changed(const sl_program *program) {
+    /* Polled (the viewer asks four times a second), not watched: the same on
+     * every system and on file systems that send no change events. */
     for (int i = 0; i < program->file_count; i++) {
-        struct stat st;
-        if (stat(program->files[i], &st) != 0) continue; /* mid-save: try again later */
-        if (st.st_mtim.tv_sec != program->mtimes[i].tv_sec || st.st_mtim.tv_nsec != program->mtimes[i].tv_nsec)
-            return true;
+        long long time = 0;
+        if (!sl_platform_file_time(program->files[i], &time)) continue; /* mid-save: try again later */
+        if (time != program->mtimes[i]) return true;
     }
     return false;
 }

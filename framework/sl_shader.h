@@ -41,7 +41,7 @@ typedef struct sl_program {
     char *fragment_source; /* owned copy of sl_shader_desc.fragment_source, or NULL */
     /* every file read for the current program, with its time stamp */
     char files[SL_SHADER_MAX_FILES][SL_PATH_MAX];
-    struct timespec mtimes[SL_SHADER_MAX_FILES];
+    long long mtimes[SL_SHADER_MAX_FILES]; /* nanoseconds (sl_platform_file_time): polled, not watched */
     int file_count;
 } sl_program;
 

@@ -14,7 +14,10 @@
 #include "sl_overlay.h"
 #include "sl_lab6_cascades.h"
 #include "sl_lab7_cube.h"
+#include "sl_platform.h"
 #include "sl_renderer.h"
+#include "sl_serve.h"
+#include <cjson/cJSON.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -58,6 +61,8 @@ typedef struct _sl_viewer {
     /* Student vs solutions (U key): the second renderer draws with the second lab code. */
     sl_renderer second;
     bool second_ready, show_second;
+    sl_serve *serve; /* --serve: frames to a browser, its keys and mouse back */
+    unsigned long keys_acted; /* key presses a binding took (--serve's page counts them) */
 } _sl_viewer;
 
 enum { _SL_PATH_NONE = 0, _SL_PATH_SLIDE, _SL_PATH_TURN };
@@ -78,11 +83,8 @@ void sl_viewer_set_second_labs(const sl_lab_functions *functions, const char *la
     _sl_second_kind = kind;
 }
 
-/* The headless backends of this build, for messages: "osmesa or egl", "egl". */
-static const char *_sl_backend_choices(void) {
-    bool osmesa = sl_backend_available(SL_BACKEND_OSMESA), egl = sl_backend_available(SL_BACKEND_EGL);
-    return osmesa && egl ? "osmesa or egl" : (osmesa ? "osmesa" : "egl");
-}
+/* The offscreen backends of this build, for messages: "osmesa, egl or window". */
+static const char *_sl_backend_choices(void) { return sl_backend_choices(); }
 
 static void _sl_print_keys(FILE *f);
 
@@ -133,9 +135,10 @@ static void _sl_usage(FILE *f) {
             "  --frames K          render K frames, then exit (for scripts)\n"
             "  --screenshot FILE   save the last frame as PNG (with --frames); FILE.gif: every frame, as\n"
             "                      an animated GIF (10 frames a second, looping)\n"
-            "  --headless          render without a window or display, with the default headless\n"
-            "                      backend (%s in this build)\n"
-            "  --backend NAME      headless backend: %s (implies --headless)\n"
+            "  --headless          render offscreen, with the default headless backend (%s in\n"
+            "                      this build)\n"
+            "  --backend NAME      offscreen backend: %s (implies --headless; window: a\n"
+            "                      hidden window, where there is a display but no headless GL)\n"
             "  --labs-dir DIR      lab sources to load shaders from; default this build's\n"
             "  --overlay           draw the on-screen text (lab, parameters, pass times); the default in a\n"
             "                      window without --frames\n"
@@ -145,6 +148,10 @@ static void _sl_usage(FILE *f) {
             "  --text-scale N      the overlay's and caption's font pixel size (1-8); default from the\n"
             "                      frame's size: 1, 2 from 800x480 up, 3 from 1600x1000 up\n"
             "  --frame-dir DIR     save every frame as DIR/001.png, 002.png ... (with --frames: an animation)\n"
+            "  --serve PORT        render offscreen and show the viewer in a browser at\n"
+            "                      http://127.0.0.1:PORT/ (keys, drags and the wheel work there)\n"
+            "  --serve-address A   the address --serve listens on; default 127.0.0.1 (this machine\n"
+            "                      only; 0.0.0.0: every network this machine is on)\n"
             "  --keys KEYS         press these keys before the first frame, e.g. --keys 'OG' (overlay,\n"
             "                      frustum) or --keys 'BB]' (letters, digits, [ ] - = , .; not Esc)\n"
             "  --frustum           draw the light's frustum in the scene\n"
@@ -252,13 +259,18 @@ static void _sl_freeze(_sl_viewer *v, bool on) {
     top->far = d * 6;
 }
 
+/* A key held down: in the window, or on the --serve page. */
+static bool _sl_held(_sl_viewer *v, GLFWwindow *w, int key) {
+    return w ? glfwGetKey(w, key) == GLFW_PRESS : sl_serve_key_down(v->serve, key);
+}
+
 /* Lab 6's long scenes: W A S D fly along the view and across it, Q E down and up; Shift is five times faster. */
 static void _sl_fly(_sl_viewer *v, GLFWwindow *w, double now) {
     double dt = v->last_frame_time > 0 ? now - v->last_frame_time : 0;
     v->last_frame_time = now;
     if (dt <= 0 || dt > 0.5) return;
     float speed = (float)dt * 8.0f *
-                  (glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS
+                  (_sl_held(v, w, GLFW_KEY_LEFT_SHIFT) || _sl_held(v, w, GLFW_KEY_RIGHT_SHIFT)
                        ? 5.0f : 1.0f);
     sl_camera *cam = &v->scene.camera;
     vec3 forward, right, move = {0, 0, 0};
@@ -266,12 +278,12 @@ static void _sl_fly(_sl_viewer *v, GLFWwindow *w, double now) {
     glm_vec3_normalize(forward);
     glm_vec3_cross(forward, (vec3){0, 1, 0}, right);
     glm_vec3_normalize(right);
-    if (glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS) glm_vec3_muladds(forward, speed, move);
-    if (glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS) glm_vec3_muladds(forward, -speed, move);
-    if (glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS) glm_vec3_muladds(right, speed, move);
-    if (glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS) glm_vec3_muladds(right, -speed, move);
-    if (glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS) move[1] += speed;
-    if (glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) move[1] -= speed;
+    if (_sl_held(v, w, GLFW_KEY_W)) glm_vec3_muladds(forward, speed, move);
+    if (_sl_held(v, w, GLFW_KEY_S)) glm_vec3_muladds(forward, -speed, move);
+    if (_sl_held(v, w, GLFW_KEY_D)) glm_vec3_muladds(right, speed, move);
+    if (_sl_held(v, w, GLFW_KEY_A)) glm_vec3_muladds(right, -speed, move);
+    if (_sl_held(v, w, GLFW_KEY_E)) move[1] += speed;
+    if (_sl_held(v, w, GLFW_KEY_Q)) move[1] -= speed;
     glm_vec3_add(cam->position, move, cam->position);
     glm_vec3_add(cam->target, move, cam->target);
 }
@@ -505,6 +517,7 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     const _sl_key_binding *b = _sl_binding(v->params.lab, key);
     if (!b) return;
     _sl_act(v, w, b, key);
+    v->keys_acted++;
     v->dirty_title = true;
 }
 
@@ -539,17 +552,54 @@ static void _sl_list_keys(FILE *f) {
     for (const sl_case_view_key *k = sl_case_view_keys(); k->names; k++) fprintf(f, "case\t%s\t%s\n", k->names, k->help);
 }
 
+/* --serve's key table for the page (framework/serve/index.html): every
+ * binding but Esc (a page is closed in the browser) with its keys' browser
+ * codes and GLFW codes, and the keys only held (Shift, for lab 6's flying).
+ * The page takes these keys and no others, so it has exactly the window's. */
+static char *_sl_keys_json(void) {
+    cJSON *root = cJSON_CreateObject(), *keys = cJSON_AddArrayToObject(root, "keys");
+    char code[16];
+    for (int i = 0; i < _SL_KEY_COUNT; i++) {
+        const _sl_key_binding *b = &_sl_key_table[i];
+        if (b->action == _SL_KEY_QUIT) continue;
+        cJSON *k = cJSON_CreateObject();
+        cJSON_AddNumberToObject(k, "lab", b->lab);
+        cJSON_AddStringToObject(k, "names", b->names);
+        cJSON_AddStringToObject(k, "label", b->label);
+        cJSON_AddStringToObject(k, "help", b->help);
+        cJSON *codes = cJSON_AddArrayToObject(k, "codes");
+        for (int j = 0; j < _SL_MAX_BOUND && b->keys[j]; j++) {
+            cJSON *c = cJSON_CreateObject();
+            cJSON_AddStringToObject(c, "code", sl_serve_key_code(b->keys[j], code));
+            cJSON_AddNumberToObject(c, "key", b->keys[j]);
+            cJSON_AddItemToArray(codes, c);
+        }
+        cJSON_AddItemToArray(keys, k);
+    }
+    cJSON *held = cJSON_AddArrayToObject(root, "held");
+    const int held_keys[] = {GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT};
+    for (int j = 0; j < 2; j++) {
+        cJSON *c = cJSON_CreateObject();
+        cJSON_AddStringToObject(c, "code", sl_serve_key_code(held_keys[j], code));
+        cJSON_AddNumberToObject(c, "key", held_keys[j]);
+        cJSON_AddItemToArray(held, c);
+    }
+    char *json = cJSON_PrintUnformatted(root);
+    cJSON_Delete(root);
+    return json;
+}
+
 static void _sl_mouse_button(GLFWwindow *w, int button, int action, int mods) {
     (void)mods;
-    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    _sl_viewer *v = w ? glfwGetWindowUserPointer(w) : _sl_keys_viewer;
     if (button == GLFW_MOUSE_BUTTON_LEFT) {
         v->dragging = action == GLFW_PRESS;
-        glfwGetCursorPos(w, &v->last_x, &v->last_y);
+        if (w) glfwGetCursorPos(w, &v->last_x, &v->last_y); /* the page sets them itself */
     }
 }
 
 static void _sl_cursor(GLFWwindow *w, double x, double y) {
-    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    _sl_viewer *v = w ? glfwGetWindowUserPointer(w) : _sl_keys_viewer;
     if (!v->dragging) return;
     sl_camera_orbit(&v->scene.camera, (float)(v->last_x - x) * 0.01f, (float)(y - v->last_y) * 0.01f, 1);
     v->last_x = x;
@@ -558,8 +608,33 @@ static void _sl_cursor(GLFWwindow *w, double x, double y) {
 
 static void _sl_scroll(GLFWwindow *w, double dx, double dy) {
     (void)dx;
-    _sl_viewer *v = glfwGetWindowUserPointer(w);
+    _sl_viewer *v = w ? glfwGetWindowUserPointer(w) : _sl_keys_viewer;
     sl_camera_orbit(&v->scene.camera, 0, 0, powf(0.9f, (float)dy));
+}
+
+/* The --serve page's keys, button, pointer and wheel, into the handlers a
+ * window's events reach (no window: they find the viewer as --keys does). */
+static void _sl_serve_events(_sl_viewer *v) {
+    sl_serve_event events[64];
+    int n = sl_serve_poll(v->serve, events, 64);
+    for (int i = 0; i < n; i++) {
+        const sl_serve_event *e = &events[i];
+        switch (e->kind) {
+        case SL_SERVE_KEY_DOWN:
+            /* Esc would close a window; a page is closed in the browser, the server with Ctrl-C */
+            if (e->key != GLFW_KEY_ESCAPE) _sl_key(NULL, e->key, 0, GLFW_PRESS, 0);
+            break;
+        case SL_SERVE_KEY_UP: break; /* held keys are polled (sl_serve_key_down) */
+        case SL_SERVE_BUTTON_DOWN:
+        case SL_SERVE_BUTTON_UP:
+            v->last_x = e->x;
+            v->last_y = e->y;
+            _sl_mouse_button(NULL, GLFW_MOUSE_BUTTON_LEFT, e->kind == SL_SERVE_BUTTON_DOWN ? GLFW_PRESS : GLFW_RELEASE, 0);
+            break;
+        case SL_SERVE_MOVE: _sl_cursor(NULL, e->x, e->y); break;
+        case SL_SERVE_WHEEL: _sl_scroll(NULL, 0, e->y); break;
+        }
+    }
 }
 
 /* Turns the light about the vertical axis: a sun's direction; a spot or point
@@ -724,6 +799,7 @@ static void _sl_key_panel(_sl_viewer *v, const sl_frame_info *info) {
         const _sl_key_binding *b = &_sl_key_table[i];
         if (b->lab != 0 || b->panel_labs != 0 || _sl_binding(lab, b->keys[0]) != b) continue;
         if (b->action == _SL_KEY_CODE && !_sl_second_functions) continue;
+        if (b->action == _SL_KEY_QUIT && v->serve) continue; /* a page is closed in the browser */
         char state[64], item[128];
         _sl_key_state(v, info, b, state, sizeof state);
         snprintf(item, sizeof item, "%s %s%s%s", b->names, b->label, state[0] ? ": " : "", state);
@@ -1084,6 +1160,8 @@ int sl_viewer_main(int argc, char **argv) {
     float light_size = -1;
     bool freeze = false; /* lab 6 */
     int overlay_option = -1; /* --overlay 1, --no-overlay 0, default -1 */
+    int serve_port = 0;
+    const char *serve_address = NULL;
     bool lab_given = false;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -1101,7 +1179,7 @@ int sl_viewer_main(int argc, char **argv) {
                            strcmp(a, "--moments-size") == 0 ||
                            strcmp(a, "--cascades") == 0 || strcmp(a, "--lambda") == 0 || strcmp(a, "--blend-band") == 0 ||
                            strcmp(a, "--caption") == 0 || strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0 ||
-                           strcmp(a, "--text-scale") == 0 ||
+                           strcmp(a, "--text-scale") == 0 || strcmp(a, "--serve") == 0 || strcmp(a, "--serve-address") == 0 ||
                            strcmp(a, "--cube-pass") == 0 || strcmp(a, "--soft-radius") == 0 || strcmp(a, "--cube-bias") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
@@ -1295,6 +1373,15 @@ int sl_viewer_main(int argc, char **argv) {
             }
         } else if (strcmp(a, "--show-map") == 0) {
             v.params.show_shadow_map = true;
+        } else if (strcmp(a, "--serve") == 0) {
+            char *end = NULL;
+            serve_port = (int)strtol(next, &end, 10);
+            if (!end || *end || serve_port < 1 || serve_port > 65535) {
+                fprintf(stderr, "shadowlab: --serve takes a port, 1..65535\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--serve-address") == 0) {
+            serve_address = next;
         } else if (strcmp(a, "--headless") == 0) {
             headless = true;
         } else if (strcmp(a, "--backend") == 0) {
@@ -1312,7 +1399,18 @@ int sl_viewer_main(int argc, char **argv) {
     }
     if ((screenshot || case_name) && headless && frames <= 0) frames = 1;
     if (screenshot && frames <= 0) frames = 3;
-    if (headless && frames <= 0) {
+    if (serve_port && (frames > 0 || screenshot)) {
+        fprintf(stderr, "shadowlab: --serve runs until stopped (Ctrl-C): not with --frames or --screenshot\n");
+        return 2;
+    }
+    if (serve_port && !sl_serve_available()) {
+        char why[512];
+        sl_serve_start(&(sl_serve_desc){.port = serve_port}, why, sizeof why);
+        fprintf(stderr, "shadowlab: %s\n", why);
+        return 2;
+    }
+    if (serve_port) headless = true; /* offscreen; the page shows it */
+    if (headless && frames <= 0 && !serve_port) {
         fprintf(stderr, "shadowlab: --headless needs --frames K (and usually --screenshot FILE)\n");
         return 2;
     }
@@ -1329,7 +1427,7 @@ int sl_viewer_main(int argc, char **argv) {
     if (case_name) {
         sl_case_view_desc cv = {.case_name = case_name, .labs_dir = labs_dir, .headless = headless,
                                 .backend = backend, .frames = frames, .screenshot = screenshot,
-                                .check_name = check_name};
+                                .check_name = check_name, .serve_port = serve_port, .serve_address = serve_address};
         return sl_case_view_main(&cv);
     }
     char err[16384];
@@ -1367,7 +1465,7 @@ int sl_viewer_main(int argc, char **argv) {
            sl_build_labs_kind, v.renderer.labs_dir);
     /* The overlay is on in an interactive window and off in unattended runs,
      * so screenshots and slide figures show the scene alone unless asked. */
-    v.show_overlay = overlay_option >= 0 ? overlay_option == 1 : (!headless && frames <= 0);
+    v.show_overlay = overlay_option >= 0 ? overlay_option == 1 : ((!headless || serve_port) && frames <= 0);
     v.overlay = sl_overlay_create(sl_framework_dir(), err, sizeof err);
     if (!v.overlay) fprintf(stderr, "shadowlab: no overlay: %s\n", err);
     else {
@@ -1381,7 +1479,23 @@ int sl_viewer_main(int argc, char **argv) {
     /* 0 would do too (the EGL backend binds its own for it); the name says what is meant. */
     GLuint target = sl_context_default_framebuffer(v.ctx);
 
+    if (serve_port) {
+        char *keys = _sl_keys_json();
+        sl_serve_desc sd = {.port = serve_port, .address = serve_address, .hello = keys};
+        v.serve = sl_serve_start(&sd, err, sizeof err);
+        cJSON_free(keys);
+        if (!v.serve) {
+            fprintf(stderr, "shadowlab: %s\n", err);
+            sl_overlay_destroy(v.overlay);
+            sl_renderer_destroy(&v.renderer);
+            sl_context_destroy(v.ctx);
+            return 1;
+        }
+        printf("shadowlab: serving the viewer at %s (open it in a browser; Ctrl-C stops)\n", sl_serve_url(v.serve));
+        fflush(stdout);
+    }
     GLFWwindow *window = sl_context_window(v.ctx);
+    bool live = window || v.serve; /* someone watches: a window or a page */
     if (window) {
         glfwSetWindowUserPointer(window, &v);
         glfwSetKeyCallback(window, _sl_key);
@@ -1396,8 +1510,9 @@ int sl_viewer_main(int argc, char **argv) {
     int status = 0;
     v.dirty_title = true;
     while (!sl_context_should_close(v.ctx)) {
-        double now = window ? glfwGetTime() : 0;
-        if (window && now - last_reload_check > 0.25) {
+        double now = window ? glfwGetTime() : v.serve ? sl_platform_seconds() : 0;
+        if (v.serve) _sl_serve_events(&v);
+        if (live && now - last_reload_check > 0.25) {
             last_reload_check = now;
             bool reloaded = false;
             if (!sl_renderer_reload_changed(v.show_second && v.second_ready ? &v.second : &v.renderer, &reloaded, err,
@@ -1406,7 +1521,7 @@ int sl_viewer_main(int argc, char **argv) {
             else if (reloaded)
                 printf("shadowlab: shaders reloaded\n");
         }
-        if (window) _sl_fly(&v, window, now);
+        if (live) _sl_fly(&v, window, now);
         int fw, fh;
         sl_context_framebuffer_size(v.ctx, &fw, &fh);
         if (v.show_second && !v.second_ready) {
@@ -1432,10 +1547,10 @@ int sl_viewer_main(int argc, char **argv) {
         bool timing = v.overlay && v.show_overlay;
         if (active->timing != timing) sl_renderer_set_timing(active, timing);
         if (v.animate_light) {
-            double dt = window ? now - last_frame_time : 1.0 / 30.0;
+            double dt = live ? now - last_frame_time : 1.0 / 30.0;
             _sl_animate_light(&v.scene.light, (float)(0.4 * (dt > 0.2 ? 0.2 : dt)));
         }
-        double frame_seconds = window && last_frame_time > 0 ? now - last_frame_time : 0;
+        double frame_seconds = live && last_frame_time > 0 ? now - last_frame_time : 0;
         last_frame_time = now;
         if (v.camera_path) _sl_camera_path(&v, frames > 0 ? (double)rendered / frames : now / _SL_PATH_SECONDS);
         sl_renderer_draw(active, &v.scene, &v.params, target, fw, fh);
@@ -1452,9 +1567,9 @@ int sl_viewer_main(int argc, char **argv) {
         mat4 camera;
         _sl_camera_view_projection(&v.scene, fw, fh, camera);
         if (overlay_drawn) {
-            if (timing) _sl_update_timing(&v, active, frame_seconds, window != NULL);
+            if (timing) _sl_update_timing(&v, active, frame_seconds, live);
             sl_overlay_clear(v.overlay);
-            if (v.show_overlay) _sl_overlay_fill(&v, active, fw, fh, window != NULL);
+            if (v.show_overlay) _sl_overlay_fill(&v, active, fw, fh, live);
             if (v.show_frustum) _sl_add_frustum(v.overlay, info);
             _sl_labels(&v, info, fw, fh, labels);
             if (v.caption) {
@@ -1522,6 +1637,16 @@ int sl_viewer_main(int argc, char **argv) {
             }
             break;
         }
+        if (v.serve) {
+            /* the overlay's words: its panels, labels and markers, whichever are drawn */
+            static char text[16384];
+            text[0] = '\0';
+            if (overlay_drawn) sl_overlay_text(v.overlay, text, sizeof text);
+            sl_serve_frame_desc fd = {.text = text, .lab = v.params.lab, .keys_acted = v.keys_acted};
+            if (!sl_serve_frame(v.serve, target, fw, fh, &fd, err, sizeof err))
+                fprintf(stderr, "shadowlab: --serve: %s\n", err);
+            sl_serve_idle(v.serve);
+        }
         sl_context_end_frame(v.ctx);
     }
     if (v.animation) {
@@ -1533,6 +1658,7 @@ int sl_viewer_main(int argc, char **argv) {
             status = 1;
         }
     }
+    sl_serve_stop(v.serve);
     sl_image_free(&v.first_frame);
     free(v.changed);
     sl_overlay_destroy(v.overlay);

@@ -63,8 +63,10 @@ static void _sl_usage(FILE *f) {
             "  --labs-dir DIR       the labs tree whose shaders are graded (default: this build's)\n"
             "  --runners DIR        the folder with shadowlab-runner built from those labs' C files\n"
             "                       (default: this build's)\n"
-            "  --backend NAME       headless GL: osmesa or egl (default: OSMesa where this build has it,\n"
-            "                       else EGL; both render with llvmpipe, as the references were)\n"
+            "  --backend NAME       GL: osmesa or egl (default: OSMesa where this build has it, else\n"
+            "                       EGL; both render with llvmpipe, as the references were), or window:\n"
+            "                       a hidden window on this machine's GL (macOS, Windows, a build\n"
+            "                       with no headless GL, where it is the default): a self-check only\n"
             "  --sandbox LEVEL      the strongest sandbox to try: namespaces, uid or basic\n"
             "                       (default namespaces; the report says which one was used)\n"
             "  --progress           a line on stderr as each case ends ([k/N] case, seconds); on a\n"
@@ -145,7 +147,7 @@ static bool _sl_check_labs_tree(const char *dir, char *err, size_t n) {
 /* The runner's environment: only what the GL drivers read (renderer
  * variations in the tests, a chosen GPU) and fixed values. Nothing of the
  * grader's own (SHADOWLAB_*, HOME, paths) reaches lab code. */
-static const char *const *_sl_runner_environment(void) {
+static const char *const *_sl_runner_environment(bool window) {
     static char *env[64];
     static const char *const prefixes[] = {"LP_", "GALLIUM_", "MESA_", "LIBGL_", "EGL_", "__EGL_", "DRI_PRIME"};
     extern char **environ;
@@ -154,6 +156,18 @@ static const char *const *_sl_runner_environment(void) {
     env[n++] = "HOME=/tmp";
     env[n++] = "TMPDIR=/tmp";
     env[n++] = "LANG=C";
+    /* --backend window: the display the hidden window opens, and its cookie */
+    if (window) {
+        static char display[300], cookie[1100];
+        const char *d = getenv("DISPLAY"), *x = getenv("XAUTHORITY"), *home = getenv("HOME");
+        if (d && strlen(d) < 256) {
+            snprintf(display, sizeof display, "DISPLAY=%s", d);
+            env[n++] = display;
+        }
+        if (x && x[0] == '/') snprintf(cookie, sizeof cookie, "XAUTHORITY=%s", x);
+        else if (home && home[0] == '/') snprintf(cookie, sizeof cookie, "XAUTHORITY=%s/.Xauthority", home);
+        if (cookie[0]) env[n++] = cookie;
+    }
     /* no shader cache: nothing a case writes may reach a later case */
     env[n++] = "MESA_SHADER_CACHE_DISABLE=true";
     env[n++] = "MESA_GLSL_CACHE_DISABLE=true";
@@ -337,9 +351,8 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--runners") == 0) o->runners_dir = v;
         else if (strcmp(a, "--backend") == 0) {
             if (!sl_backend_parse(v, &o->backend) || !sl_backend_available(o->backend)) {
-                fprintf(stderr, "shadowlab-grade: --backend: '%s' is not a headless backend of this build (it has:%s%s)\n",
-                        v, sl_backend_available(SL_BACKEND_OSMESA) ? " osmesa" : "",
-                        sl_backend_available(SL_BACKEND_EGL) ? " egl" : "");
+                fprintf(stderr, "shadowlab-grade: --backend: '%s' is not a backend of this build (it has %s)\n", v,
+                        sl_backend_choices());
                 return SL_EXIT_ERROR;
             }
         } else if (strcmp(a, "--sandbox") == 0) {
@@ -639,6 +652,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         return SL_EXIT_ERROR;
     }
     /* The runners this grade needs, before anything runs. */
+    if (o.backend == SL_BACKEND_DEFAULT_HEADLESS) o.backend = sl_backend_default_headless();
     sl_run_options run = {
         .jobs = o.jobs,
         .timeout = o.timeout,
@@ -646,7 +660,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         .backend = o.backend,
         .sandbox = sandbox,
         .framework_dir = sl_config_framework_dir,
-        .environment = _sl_runner_environment(),
+        .environment = _sl_runner_environment(o.backend == SL_BACKEND_WINDOW),
     };
     static char runner_paths[SL_LAB_COUNT + 1][1200];
     static char trees[SL_LAB_COUNT + 1][96];
@@ -893,6 +907,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                    "from the solutions for this run\n", o.seed);
         printf("shadowlab-grade: rendered with %s: %s\n", rep.backend[0] ? rep.backend : "(no runner started)",
                rep.renderer[0] ? rep.renderer : "-");
+        if (o.backend == SL_BACKEND_WINDOW)
+            printf("shadowlab-grade: SELF-CHECK: rendered in hidden windows with this computer's OpenGL, not the "
+                   "course's renderer. It tells you what to fix; your grade comes from the course's own grader.\n");
         fflush(stdout);
         bool reports_ok = _sl_write_reports(&o, &rep);
         sl_report_print(&rep, stdout, isatty(1));

@@ -15,6 +15,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "sl_backend.h"
 #include "sl_protocol.h"
 
 #define _SL_MAX_JOBS 64
@@ -411,6 +412,7 @@ static bool _sl_start(_sl_job *job, const sl_case *c, int index, const sl_run_op
         .labs_tree = setup->labs_tree,
         .framework_dir = o->framework_dir,
         .environment = o->environment,
+        .display = o->backend == SL_BACKEND_WINDOW,
         .stdin_fd = in[0],
         .channel_fd = channel[1],
         .output_fd = output[1],

@@ -105,6 +105,9 @@ typedef struct sl_sandbox_spawn_desc {
     const char *labs_tree;
     const char *framework_dir;              /* framework/: its shaders/ */
     const char *const *environment;         /* NULL-terminated "NAME=value" */
+    /* The runner renders in a hidden window (--backend window): the namespaces
+     * sandbox shows it the X display's socket folder and cookie (XAUTHORITY). */
+    bool display;
     int stdin_fd, channel_fd, output_fd;    /* the runner's fds 0, 3 and 1+2 */
     double cpu_seconds;
     unsigned long long memory_bytes;

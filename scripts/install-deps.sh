@@ -20,6 +20,7 @@ packages=(
   libopenimageio-dev    # PNG / OpenEXR capture and references
   libcjson-dev          # case files, reports
   libarchive-dev        # submissions uploaded as .zip / .tar.gz (shadowlab-stage)
+  libwebsockets-dev     # the viewer in a browser (shadowlab --serve); optional at build time
   xvfb xauth            # the viewer's tests run in a virtual X display
   libglx-mesa0          # llvmpipe behind GLX: the viewer under Xvfb
 )

@@ -8,6 +8,9 @@ cd "$(dirname "$0")/.."
 # The lecture decks' tools (pandoc, WeasyPrint, KaTeX and node, pdftoppm, Chromium), so the slides' tests
 # run here and in CI; SL_SLIDES=0 leaves them out (those tests are then skipped).
 [ "${SL_SLIDES:-1}" = 0 ] || ./scripts/install-slides-deps.sh
+# Chromium and its chromedriver, for the browser viewer's test (shadowlab
+# --serve); SL_BROWSER=0 leaves them out (that test is then skipped).
+[ "${SL_BROWSER:-1}" = 0 ] || ./scripts/install-browser-deps.sh
 cmake -S . -B build -DSL_LABS="${SL_LABS:-student}"
 cmake --build build -j "$(nproc)"
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900

@@ -1,6 +1,7 @@
-/* context_backends: a headless backend makes a GL 3.3 core context, draws into
- * framebuffer 0 with colour and depth, and reads the picture back.
- *   context_backends osmesa|egl     exit 0 pass, 1 fail, 77 not in this build
+/* context_backends: an offscreen backend makes a GL 3.3 core context, draws
+ * into framebuffer 0 with colour and depth, and reads the picture back.
+ *   context_backends osmesa|egl|window   exit 0 pass, 1 fail, 77 not in this build
+ *                                        (window: needs a display, e.g. xvfb-run)
  *   context_backends names          backend names and parsing */
 #include <stdio.h>
 #include <string.h>
@@ -22,15 +23,21 @@ static int failures;
 static int _names(void) {
     sl_backend b = SL_BACKEND_GLFW;
     CHECK(sl_backend_parse("osmesa", &b) && b == SL_BACKEND_OSMESA, "osmesa parses");
+    CHECK(sl_backend_parse("window", &b) && b == SL_BACKEND_WINDOW, "window parses");
     CHECK(sl_backend_parse("egl", &b) && b == SL_BACKEND_EGL, "egl parses");
     CHECK(!sl_backend_parse("glfw", &b) && !sl_backend_parse("EGL", &b) && !sl_backend_parse("", &b) &&
               !sl_backend_parse(NULL, &b) && b == SL_BACKEND_EGL,
-          "only headless names parse, and a failed parse leaves the value alone");
+          "only offscreen names parse, and a failed parse leaves the value alone");
     CHECK(strcmp(sl_backend_name(SL_BACKEND_OSMESA), "osmesa") == 0 && strcmp(sl_backend_name(SL_BACKEND_EGL), "egl") == 0,
           "names round-trip");
     sl_backend d = sl_backend_default_headless();
-    CHECK(sl_backend_available(d) && (d == SL_BACKEND_OSMESA || d == SL_BACKEND_EGL), "the default is built in");
-    CHECK(sl_backend_available(SL_BACKEND_OSMESA) || d == SL_BACKEND_EGL, "EGL is the default without OSMesa");
+    CHECK(sl_backend_available(d) && d != SL_BACKEND_GLFW, "the default is built in and offscreen");
+    CHECK(sl_backend_available(SL_BACKEND_OSMESA) == (d == SL_BACKEND_OSMESA), "OSMesa is the default where built");
+    CHECK(sl_backend_available(SL_BACKEND_OSMESA) || sl_backend_available(SL_BACKEND_EGL) || d == SL_BACKEND_WINDOW,
+          "the hidden window is the default without headless GL");
+    CHECK(sl_backend_available(SL_BACKEND_WINDOW) && strcmp(sl_backend_name(SL_BACKEND_WINDOW), "window") == 0,
+          "every build has the hidden window");
+    printf("default: %s; this build has %s\n", sl_backend_name(d), sl_backend_choices());
     return failures ? 1 : 0;
 }
 
@@ -91,8 +98,9 @@ static int _draw_and_read(sl_backend backend) {
     int w = 0, h = 0;
     sl_context_framebuffer_size(ctx, &w, &h);
     CHECK(w == W && h == H, "framebuffer size %dx%d", w, h);
-    CHECK((backend == SL_BACKEND_EGL) == (sl_context_default_framebuffer(ctx) != 0),
-          "only EGL has a framebuffer object for 0");
+    CHECK((backend == SL_BACKEND_EGL || backend == SL_BACKEND_WINDOW) == (sl_context_default_framebuffer(ctx) != 0),
+          "EGL and the hidden window have a framebuffer object for 0");
+    CHECK(sl_context_window(ctx) == NULL && !sl_context_should_close(ctx), "offscreen: no window to show or close");
 
     /* A framebuffer of one's own, then back to 0: 0 must be the context's picture again. */
     GLuint other = 0, texture = 0;
@@ -150,7 +158,7 @@ static int _draw_and_read(sl_backend backend) {
 
 int main(int argc, char **argv) {
     if (argc != 2) {
-        fprintf(stderr, "usage: context_backends osmesa|egl|names\n");
+        fprintf(stderr, "usage: context_backends osmesa|egl|window|names\n");
         return 2;
     }
     if (strcmp(argv[1], "names") == 0) return _names();
