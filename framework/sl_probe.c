@@ -12,6 +12,7 @@
 #define _SL_MAP(n) {n, SL_PROBE_MAP}
 #define _SL_SHADOW(n) {n, SL_PROBE_SHADOW_MAP}
 #define _SL_CUBE(n) {n, SL_PROBE_CUBE_MAP}
+#define _SL_ARRAY(n) {n, SL_PROBE_ARRAY_MAP}
 #define _SL_MATRIX_OUT "m00,m10,m20,m30,m01,m11,m21,m31,m02,m12,m22,m32,m03,m13,m23,m33"
 
 /* Every function the labs ask students to write, with its signature as the
@@ -125,6 +126,10 @@ static const sl_probe_function _sl_functions[] = {
      .outputs = "layer", .output_count = 1,
      .params = {_SL_V3("view_position"), _SL_V4("split_far"), _SL_I("count")}, .param_count = 3, .stub_param = -1,
      .stub_value = 0.0},
+    {.name = "cascade_compare", .lab = 6, .glsl = true, .file = "lab6_cascades/shaders/cascades.glsl",
+     .todo = "lab6.5", .outputs = "visibility", .output_count = 1,
+     .params = {_SL_ARRAY("cascades"), _SL_I("layer"), _SL_V4("shadow_coord"), _SL_F("bias")}, .param_count = 4,
+     .stub_param = -1, .stub_value = 1.0},
     {.name = "cascade_blend", .lab = 6, .glsl = true, .file = "lab6_cascades/shaders/cascades.glsl", .todo = "lab6.6",
      .outputs = "weight", .output_count = 1,
      .params = {_SL_F("view_depth"), _SL_F("split_near"), _SL_F("split_far"), _SL_F("band")}, .param_count = 4,
@@ -173,7 +178,7 @@ int sl_probe_index(const sl_probe_function *f) { return (int)(f - _sl_functions)
 int sl_probe_type_size(sl_probe_type type) {
     static const int sizes[] = {[SL_PROBE_FLOAT] = 1, [SL_PROBE_INT] = 1, [SL_PROBE_VEC2] = 2, [SL_PROBE_VEC3] = 3,
                                 [SL_PROBE_VEC4] = 4, [SL_PROBE_MAT4] = 16, [SL_PROBE_MAP] = 1, [SL_PROBE_SHADOW_MAP] = 1,
-                                [SL_PROBE_CUBE_MAP] = 1};
+                                [SL_PROBE_CUBE_MAP] = 1, [SL_PROBE_ARRAY_MAP] = 1};
     return sizes[type];
 }
 
@@ -185,7 +190,7 @@ int sl_probe_input_count(const sl_probe_function *f) {
 
 static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit",      "occluded",      "step",
                                                               "ramp",     "cube_lit",      "cube_occluded",
-                                                              "cube_room", "cube_positive"};
+                                                              "cube_room", "cube_positive", "cascades"};
 
 const char *sl_probe_map_name(sl_probe_map map) {
     return (unsigned)map < SL_PROBE_MAP_COUNT ? _sl_map_names[map] : "?";
@@ -208,7 +213,21 @@ float sl_probe_map_depth(sl_probe_map map, int x, int y) {
     }
 }
 
-bool sl_probe_map_is_cube(sl_probe_map map) { return map >= SL_PROBE_MAP_CUBE_LIT && map < SL_PROBE_MAP_COUNT; }
+bool sl_probe_map_is_cube(sl_probe_map map) { return map >= SL_PROBE_MAP_CUBE_LIT && map <= SL_PROBE_MAP_CUBE_POSITIVE; }
+
+sl_probe_type sl_probe_map_type(sl_probe_map map) {
+    return map == SL_PROBE_MAP_CASCADES ? SL_PROBE_ARRAY_MAP : sl_probe_map_is_cube(map) ? SL_PROBE_CUBE_MAP : SL_PROBE_MAP;
+}
+
+float sl_probe_layer_depth(sl_probe_map map, int layer, int x, int y) {
+    (void)map;
+    switch (layer) {
+    case 0: return sl_probe_map_depth(SL_PROBE_MAP_STEP, x, y);
+    case 2: return sl_probe_map_depth(SL_PROBE_MAP_OCCLUDED, x, y);
+    case 3: return 0.6f;
+    default: return 1.0f;
+    }
+}
 
 float sl_probe_cube_depth(sl_probe_map map, int face, int x, int y) {
     /* The direction through texel (x, y) of the face: GL's table of cube map

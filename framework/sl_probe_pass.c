@@ -68,11 +68,15 @@ static char *_sl_probe_source(const sl_probe_function *f, const _sl_maps *maps, 
         for (int k = 0; k < SL_PROBE_MAP_COUNT; k++)
             if (maps[m].used[k])
                 _sl_add(&t, "uniform %s u_p%d_m%d;\n",
-                        f->params[maps[m].param].type == SL_PROBE_SHADOW_MAP ? "sampler2DShadow"
-                        : f->params[maps[m].param].type == SL_PROBE_CUBE_MAP ? "samplerCube"
-                                                                             : "sampler2D",
+                        f->params[maps[m].param].type == SL_PROBE_SHADOW_MAP  ? "sampler2DShadow"
+                        : f->params[maps[m].param].type == SL_PROBE_CUBE_MAP  ? "samplerCube"
+                        : f->params[maps[m].param].type == SL_PROBE_ARRAY_MAP ? "sampler2DArray"
+                                                                              : "sampler2D",
                         m, k);
-    _sl_add(&t, "float sl_in(int i) { return texelFetch(u_inputs, ivec2(i >> 2, int(gl_FragCoord.y)), 0)[i & 3]; }\n");
+    /* two pixels per row: a 2x2 quad holds one row only, so dFdx and dFdy of
+     * anything computed from the inputs are 0 (a function is probed at a point,
+     * not along a surface: compute_moments' derivative term adds nothing here) */
+    _sl_add(&t, "float sl_in(int i) { return texelFetch(u_inputs, ivec2(i >> 2, int(gl_FragCoord.y) / 2), 0)[i & 3]; }\n");
     _sl_add(&t, "void main() {\n");
     int offset = 0;
     for (int i = 0; i < f->param_count; i++) {
@@ -144,6 +148,28 @@ static GLuint _sl_cube_texture(sl_probe_map map) {
     return tex;
 }
 
+/* Lab 6's cascades: a depth texture array set up as the framework's (nearest, a border of 1.0 outside). */
+static GLuint _sl_array_texture(sl_probe_map map) {
+    static float texels[SL_PROBE_LAYERS * SL_PROBE_MAP_SIZE * SL_PROBE_MAP_SIZE];
+    for (int layer = 0; layer < SL_PROBE_LAYERS; layer++)
+        for (int y = 0; y < SL_PROBE_MAP_SIZE; y++)
+            for (int x = 0; x < SL_PROBE_MAP_SIZE; x++)
+                texels[(layer * SL_PROBE_MAP_SIZE + y) * SL_PROBE_MAP_SIZE + x] = sl_probe_layer_depth(map, layer, x, y);
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, tex);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, SL_PROBE_MAP_SIZE, SL_PROBE_MAP_SIZE, SL_PROBE_LAYERS,
+                 0, GL_DEPTH_COMPONENT, GL_FLOAT, texels);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[4] = {1, 1, 1, 1};
+    glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, border);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    return tex;
+}
+
 static GLuint _sl_map_texture(sl_probe_map map, bool shadow, bool linear) {
     static float texels[SL_PROBE_MAP_SIZE * SL_PROBE_MAP_SIZE];
     for (int y = 0; y < SL_PROBE_MAP_SIZE; y++)
@@ -203,7 +229,7 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     }
     int floats = sl_probe_input_count(f), width = (floats + 3) / 4;
     float *texels = calloc((size_t)width * 4 * (size_t)t->rows, sizeof(float));
-    float *pixels = calloc((size_t)t->rows * 4, sizeof(float));
+    float *pixels = calloc((size_t)t->rows * 2 * 4, sizeof(float));
     if (!texels || !pixels) {
         free(texels);
         free(pixels);
@@ -222,7 +248,7 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glGenTextures(1, &target);
     glBindTexture(GL_TEXTURE_2D, target);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, t->rows, 0, GL_RGBA, GL_FLOAT, NULL);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 2 * t->rows, 0, GL_RGBA, GL_FLOAT, NULL);
     glGenFramebuffers(1, &framebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
@@ -234,9 +260,11 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
         for (int k = 0; k < SL_PROBE_MAP_COUNT; k++) {
             if (!maps[m].used[k]) continue;
             glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
-            bool cube = f->params[maps[m].param].type == SL_PROBE_CUBE_MAP;
-            textures[texture_count++] = cube ? _sl_cube_texture((sl_probe_map)k)
-                                             : _sl_map_texture((sl_probe_map)k, shadow, shadow && f->linear_maps);
+            sl_probe_type type = f->params[maps[m].param].type;
+            textures[texture_count++] = type == SL_PROBE_CUBE_MAP    ? _sl_cube_texture((sl_probe_map)k)
+                                        : type == SL_PROBE_ARRAY_MAP ? _sl_array_texture((sl_probe_map)k)
+                                                                     : _sl_map_texture((sl_probe_map)k, shadow,
+                                                                                       shadow && f->linear_maps);
             char name[32];
             snprintf(name, sizeof name, "u_p%d_m%d", m, k);
             glUniform1i(sl_program_uniform(&program, name), unit++);
@@ -244,7 +272,7 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     }
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, inputs); /* unit 0 had the target bound while it was made */
-    glViewport(0, 0, 1, t->rows);
+    glViewport(0, 0, 1, 2 * t->rows);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
@@ -252,9 +280,9 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     glBindVertexArray(vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, 1, t->rows, GL_RGBA, GL_FLOAT, pixels);
+    glReadPixels(0, 0, 1, 2 * t->rows, GL_RGBA, GL_FLOAT, pixels);
     for (int r = 0; r < t->rows; r++)
-        for (int o = 0; o < f->output_count; o++) outputs[r * f->output_count + o] = pixels[r * 4 + o];
+        for (int o = 0; o < f->output_count; o++) outputs[r * f->output_count + o] = pixels[2 * r * 4 + o];
     glBindVertexArray(0);
     glDeleteVertexArrays(1, &vao);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -100,7 +100,15 @@ const char *sl_check_capture_name(const sl_case *c, const sl_check *k) {
     return k->kind == SL_CHECK_PENUMBRA || k->kind == SL_CHECK_BLEEDING ? "visibility" : _sl_kinds[k->kind].name;
 }
 
+static uint32_t _sl_check_captures_of_kind(const sl_case *c, const sl_check *k);
+
 uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
+    /* lab 7: which way the cube map was drawn (six passes or one layered pass), for the messages */
+    if (c->lab == 7 && k->kind != SL_CHECK_PROBE) return _sl_check_captures_of_kind(c, k) | 1u << SL_CAPTURE_PATH;
+    return _sl_check_captures_of_kind(c, k);
+}
+
+static uint32_t _sl_check_captures_of_kind(const sl_case *c, const sl_check *k) {
     switch (k->kind) {
     case SL_CHECK_PROBE: return 1u << (SL_CAPTURE_PROBE + (int)(k - c->checks));
     case SL_CHECK_FBO: return 1u << SL_CAPTURE_FBO;
@@ -281,8 +289,9 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
         bool ok;
         if (SL_PROBE_IS_MAP(p->type)) {
             int map = cJSON_IsString(v) ? sl_probe_map_parse(v->valuestring) : -1;
-            /* a samplerCube takes the cube maps, a 2D sampler the others */
-            ok = map >= 0 && sl_probe_map_is_cube((sl_probe_map)map) == (p->type == SL_PROBE_CUBE_MAP);
+            /* a samplerCube takes the cube maps, a sampler2DArray the texture array, a 2D sampler the others */
+            sl_probe_type takes = p->type == SL_PROBE_SHADOW_MAP ? SL_PROBE_MAP : p->type;
+            ok = map >= 0 && sl_probe_map_type((sl_probe_map)map) == takes;
             k->inputs[r][offset] = (float)map;
         } else if (size == 1) {
             ok = cJSON_IsNumber(v);
@@ -299,6 +308,9 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
             if (p->type == SL_PROBE_CUBE_MAP)
                 snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a cube map: cube_lit, cube_occluded, "
                          "cube_room or cube_positive", c->path, k->name, r, p->name);
+            else if (p->type == SL_PROBE_ARRAY_MAP)
+                snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a texture array: cascades", c->path,
+                         k->name, r, p->name);
             else if (SL_PROBE_IS_MAP(p->type))
                 snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a map: lit, occluded, step or ramp",
                          c->path, k->name, r, p->name);
@@ -377,7 +389,8 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
         !_sl_number(json, "threshold", &k->threshold, 0, 1e9, c->path, err, n) ||
         !_sl_number(json, "fail_percent", &percent, 0, 100, c->path, err, n) ||
         !_sl_number(json, "epsilon", &k->epsilon, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "mean_tolerance", &k->mean_tolerance, 0, 1, c->path, err, n))
+        !_sl_number(json, "mean_tolerance", &k->mean_tolerance, 0, 1, c->path, err, n) ||
+        !_sl_number(json, "binarise", &k->binarise, 0, 1, c->path, err, n))
         return false;
     k->fail_fraction = percent / 100;
     if (k->points < 0) {

@@ -65,6 +65,7 @@ typedef struct sl_check {
     double fail_fraction; /* of pixels (images) */
     double epsilon;       /* per matrix element, relative to the largest (matrices) */
     double mean_tolerance; /* of the mean per-pixel difference: systematic errors (images) */
+    double binarise;      /* visibility: > 0, both images read as lit (1) at or above it, shadowed (0) below */
     char hint[320];       /* added to the message when the check fails with one of hint_when's symptoms */
     uint32_t hint_when;   /* 1 << sl_symptom; 0: only when no more specific diagnosis was found */
     sl_probe probes[SL_CHECK_MAX_PROBES]; /* penumbra: the first is nearest to the contact */

@@ -94,6 +94,8 @@ void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_resu
 /* ---- lab 7 (grader/diagnose/lab7.c) ---- */
 /* Whether lab `lab`'s cases draw with lab `earlier`'s code (lab 7 makes its own map: none). */
 bool sl_lab_builds_on(int lab, int earlier);
+/* Whether the runner drew lab 7's cube map in one layered pass (its "path" capture). */
+bool sl_lab7_drawn_layered(const sl_case_result *r);
 /* Whether a lab 7 case calls the function `name` that failed its probe. */
 bool sl_lab7_case_calls(const sl_case *c, const sl_check *k, const char *name);
 void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
@@ -104,6 +106,15 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *student, cons
  * (0,0,1)") into text, and the row that shows it; text left empty when there is nothing more specific. */
 int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double *expected, uint32_t failing_rows,
                           char *text, size_t text_size);
+
+/* ---- functions judged by their contract, not by the solution's numbers ---- */
+/* True when the probe's function has a contract of its own (lab 6: lab6_cascade_matrices; lab 7:
+ * lab7_face_view): *broken then holds the rows that break it, text what breaks (empty when none does), and
+ * *shown the row that shows it best. */
+bool sl_lab6_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t text_size,
+                            int *shown);
+bool sl_lab7_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t text_size,
+                            int *shown);
 
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
