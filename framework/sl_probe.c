@@ -13,6 +13,7 @@
 #define _SL_SHADOW(n) {n, SL_PROBE_SHADOW_MAP}
 #define _SL_CUBE(n) {n, SL_PROBE_CUBE_MAP}
 #define _SL_ARRAY(n) {n, SL_PROBE_ARRAY_MAP}
+#define _SL_MOMENTS(n) {n, SL_PROBE_MOMENTS_MAP}
 #define _SL_MATRIX_OUT "m00,m10,m20,m30,m01,m11,m21,m31,m02,m12,m22,m32,m03,m13,m23,m33"
 
 /* Every function the labs ask students to write, with its signature as the
@@ -95,6 +96,11 @@ static const sl_probe_function _sl_functions[] = {
     {.name = "compute_moments", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/moments.glsl", .todo = "lab5.3",
      .outputs = "first moment,second moment", .output_count = 2, .params = {_SL_F("depth")}, .param_count = 1,
      .stub_param = -1, .stub_value = 1.0},
+    /* the stub returns the texel at uv, unblurred: no constant (lab5.c's verdict names it) */
+    {.name = "blur_moments", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/blur.glsl", .todo = "lab5.5",
+     .outputs = "first moment,second moment", .output_count = 2,
+     .params = {_SL_MOMENTS("moments"), _SL_V2("uv"), _SL_V2("direction"), _SL_I("radius")}, .param_count = 4,
+     .stub_param = -1, .stub_value = NAN},
     {.name = "chebyshev_upper_bound", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/vsm.glsl", .todo = "lab5.7",
      .outputs = "p_max", .output_count = 1, .params = {_SL_V2("moments"), _SL_F("t"), _SL_F("min_variance")},
      .param_count = 3, .stub_param = -1, .stub_value = 1.0},
@@ -178,7 +184,7 @@ int sl_probe_index(const sl_probe_function *f) { return (int)(f - _sl_functions)
 int sl_probe_type_size(sl_probe_type type) {
     static const int sizes[] = {[SL_PROBE_FLOAT] = 1, [SL_PROBE_INT] = 1, [SL_PROBE_VEC2] = 2, [SL_PROBE_VEC3] = 3,
                                 [SL_PROBE_VEC4] = 4, [SL_PROBE_MAT4] = 16, [SL_PROBE_MAP] = 1, [SL_PROBE_SHADOW_MAP] = 1,
-                                [SL_PROBE_CUBE_MAP] = 1, [SL_PROBE_ARRAY_MAP] = 1};
+                                [SL_PROBE_CUBE_MAP] = 1, [SL_PROBE_ARRAY_MAP] = 1, [SL_PROBE_MOMENTS_MAP] = 1};
     return sizes[type];
 }
 
@@ -190,7 +196,7 @@ int sl_probe_input_count(const sl_probe_function *f) {
 
 static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit",      "occluded",      "step",
                                                               "ramp",     "cube_lit",      "cube_occluded",
-                                                              "cube_room", "cube_positive", "cascades"};
+                                                              "cube_room", "cube_positive", "cascades", "moments_flat", "moments_step_x", "moments_step_y"};
 
 const char *sl_probe_map_name(sl_probe_map map) {
     return (unsigned)map < SL_PROBE_MAP_COUNT ? _sl_map_names[map] : "?";
@@ -216,7 +222,16 @@ float sl_probe_map_depth(sl_probe_map map, int x, int y) {
 bool sl_probe_map_is_cube(sl_probe_map map) { return map >= SL_PROBE_MAP_CUBE_LIT && map <= SL_PROBE_MAP_CUBE_POSITIVE; }
 
 sl_probe_type sl_probe_map_type(sl_probe_map map) {
+    if (map >= SL_PROBE_MAP_MOMENTS_FLAT && map <= SL_PROBE_MAP_MOMENTS_STEP_Y) return SL_PROBE_MOMENTS_MAP;
     return map == SL_PROBE_MAP_CASCADES ? SL_PROBE_ARRAY_MAP : sl_probe_map_is_cube(map) ? SL_PROBE_CUBE_MAP : SL_PROBE_MAP;
+}
+
+float sl_probe_moments_depth(sl_probe_map map, int x, int y) {
+    switch (map) {
+    case SL_PROBE_MAP_MOMENTS_STEP_X: return 2 * x < SL_PROBE_MAP_SIZE ? 0.25f : 0.75f;
+    case SL_PROBE_MAP_MOMENTS_STEP_Y: return 2 * y < SL_PROBE_MAP_SIZE ? 0.25f : 0.75f;
+    default: return 0.5f;
+    }
 }
 
 float sl_probe_layer_depth(sl_probe_map map, int layer, int x, int y) {

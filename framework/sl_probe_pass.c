@@ -71,6 +71,7 @@ static char *_sl_probe_source(const sl_probe_function *f, const _sl_maps *maps, 
                         f->params[maps[m].param].type == SL_PROBE_SHADOW_MAP  ? "sampler2DShadow"
                         : f->params[maps[m].param].type == SL_PROBE_CUBE_MAP  ? "samplerCube"
                         : f->params[maps[m].param].type == SL_PROBE_ARRAY_MAP ? "sampler2DArray"
+                        : f->params[maps[m].param].type == SL_PROBE_MOMENTS_MAP ? "sampler2D"
                                                                               : "sampler2D",
                         m, k);
     /* two pixels per row: a 2x2 quad holds one row only, so dFdx and dFdy of
@@ -170,6 +171,26 @@ static GLuint _sl_array_texture(sl_probe_map map) {
     return tex;
 }
 
+/* Lab 5's moments: (depth, depth^2), set up as lab 5's targets (GL_RG32F, linear, clamped to the edge). */
+static GLuint _sl_moments_texture(sl_probe_map map) {
+    static float texels[SL_PROBE_MAP_SIZE * SL_PROBE_MAP_SIZE * 2];
+    for (int y = 0; y < SL_PROBE_MAP_SIZE; y++)
+        for (int x = 0; x < SL_PROBE_MAP_SIZE; x++) {
+            float d = sl_probe_moments_depth(map, x, y);
+            texels[(y * SL_PROBE_MAP_SIZE + x) * 2] = d;
+            texels[(y * SL_PROBE_MAP_SIZE + x) * 2 + 1] = d * d;
+        }
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, SL_PROBE_MAP_SIZE, SL_PROBE_MAP_SIZE, 0, GL_RG, GL_FLOAT, texels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return tex;
+}
+
 static GLuint _sl_map_texture(sl_probe_map map, bool shadow, bool linear) {
     static float texels[SL_PROBE_MAP_SIZE * SL_PROBE_MAP_SIZE];
     for (int y = 0; y < SL_PROBE_MAP_SIZE; y++)
@@ -263,6 +284,7 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
             sl_probe_type type = f->params[maps[m].param].type;
             textures[texture_count++] = type == SL_PROBE_CUBE_MAP    ? _sl_cube_texture((sl_probe_map)k)
                                         : type == SL_PROBE_ARRAY_MAP ? _sl_array_texture((sl_probe_map)k)
+                                        : type == SL_PROBE_MOMENTS_MAP ? _sl_moments_texture((sl_probe_map)k)
                                                                      : _sl_map_texture((sl_probe_map)k, shadow,
                                                                                        shadow && f->linear_maps);
             char name[32];

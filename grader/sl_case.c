@@ -117,15 +117,16 @@ static uint32_t _sl_check_captures_of_kind(const sl_case *c, const sl_check *k) 
     case SL_CHECK_VISIBILITY:
         /* from lab 2 on, acne is told from shadow on the surfaces that face the light */
         /* lab 5: the moments target's format too, the first suspect of a VSM picture that is off */
+        /* and the blurred moments, where a target cleared to (0, 0) shows */
         return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0) |
-               (c->lab == 5 ? 1u << SL_CAPTURE_MOMENTS_TARGET : 0);
+               (c->lab == 5 ? (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_MOMENTS_BLURRED) : 0);
     case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
     case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
     case SL_CHECK_MOMENTS: return (1u << SL_CAPTURE_MOMENTS) | (1u << SL_CAPTURE_MOMENTS_TARGET);
     case SL_CHECK_MOMENTS_BLURRED: return (1u << SL_CAPTURE_MOMENTS_BLURRED) | (1u << SL_CAPTURE_MOMENTS_TARGET);
     case SL_CHECK_BLEEDING:
         return (1u << SL_CAPTURE_VISIBILITY) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED) | (1u << SL_CAPTURE_LIT_MASK) |
-               (1u << SL_CAPTURE_MOMENTS_TARGET);
+               (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_MOMENTS_BLURRED);
     case SL_CHECK_CASCADE_INDEX: return 1u << SL_CAPTURE_CASCADE_INDEX;
     case SL_CHECK_FLICKER: return (1u << SL_CAPTURE_FLICKER) | (1u << SL_CAPTURE_LIT_MASK);
     case SL_CHECK_CUBE_FACE: return 1u << (SL_CAPTURE_CUBE_FACE + k->face);
@@ -308,6 +309,9 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
             if (p->type == SL_PROBE_CUBE_MAP)
                 snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a cube map: cube_lit, cube_occluded, "
                          "cube_room or cube_positive", c->path, k->name, r, p->name);
+            else if (p->type == SL_PROBE_MOMENTS_MAP)
+                snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a moments map: moments_flat, "
+                         "moments_step_x or moments_step_y", c->path, k->name, r, p->name);
             else if (p->type == SL_PROBE_ARRAY_MAP)
                 snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a texture array: cascades", c->path,
                          k->name, r, p->name);

@@ -82,7 +82,8 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
 /* Light bleeding in the reference's umbra, with and without the reduction. */
 void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                           sl_check_result *out);
-/* The moments target's format, when it is the cause (said in out); false when it is fine. */
+/* The moments target, when it is the cause (said in out): its format, a clear to (0, 0), its mipmaps
+ * (made for the wrong texture, or not read); false when it is fine. */
 bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out);
 bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *student, const sl_image *reference,
                                  const sl_image *lit_mask, sl_check_result *out);

@@ -19,6 +19,8 @@ typedef struct sl_verdict_rows {
 /* The verdict in a few words into text, and the row that shows it best;
  * -1 (and an empty text, or one without a row) when the rows name no mistake. */
 int sl_probe_verdict(const sl_verdict_rows *rows, char *text, size_t text_size);
+/* Lab 5's functions (grader/diagnose/lab5.c), likewise. */
+int sl_verdict_lab5(const sl_verdict_rows *rows, char *text, size_t text_size);
 /* Lab 6's functions (grader/diagnose/lab6.c), likewise. */
 int sl_verdict_lab6(const sl_verdict_rows *rows, char *text, size_t text_size);
 

@@ -451,6 +451,7 @@ int sl_probe_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     if (strcmp(name, "slope_scaled_bias") == 0) return _sl_verdict_slope(v, text, n);
     if (strcmp(name, "normal_offset_position") == 0) return _sl_verdict_normal_offset(v, text, n);
     if (strcmp(name, "lab3_depth_pass_state") == 0) return _sl_verdict_depth_pass_state(v, text, n);
+    if (v->f->lab == 5) return sl_verdict_lab5(v, text, n);
     if (v->f->lab == 6) return sl_verdict_lab6(v, text, n);
     return -1;
 }
