@@ -39,6 +39,8 @@ typedef enum sl_probe_map {
     SL_PROBE_MAP_CUBE_OCCLUDED, /* 0.25 everywhere: a closed shell 2.5 units around the light */
     SL_PROBE_MAP_CUBE_ROOM,     /* the walls of a cube room of half-size 2: 2 |d| / max|d_i| / 10, seamless */
     SL_PROBE_MAP_CUBE_POSITIVE, /* 0.1 on the +X, +Y, +Z faces (an occluder 1 unit away), 1.0 on the others */
+    /* 2D again (after the cube maps, so the others keep their numbers) */
+    SL_PROBE_MAP_STEP_FLOOR,    /* 0.25 where u < 0.5, 0.9 where u >= 0.5: an occluder's edge over a floor */
     SL_PROBE_MAP_COUNT
 } sl_probe_map;
 #define SL_PROBE_MAP_SIZE 64
