@@ -19,6 +19,10 @@
 /* Every function the labs ask students to write, with its signature as the
  * stubs declare it. Outputs of matrices are column-major, as cglm and GLSL store them. */
 static const sl_probe_function _sl_functions[] = {
+    /* lab 1: the map as lab1_create_shadow_map makes it: its filtering, and what a lookup past its edge reads */
+    {.name = "lab1_create_shadow_map", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.1",
+     .outputs = "min filter,mag filter,wrap s,wrap t,border depth", .output_count = 5, .params = {_SL_I("size")},
+     .param_count = 1, .stub_param = -1, .stub_value = NAN},
     /* lab 1: the depth pass's state, on a map the probe makes (its depth texture filled with 0.5) */
     {.name = "lab1_begin_depth_pass", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.3",
      .outputs = "map's framebuffer bound,viewport width,viewport height,depth test,depth function,depth writes,"
@@ -52,10 +56,12 @@ static const sl_probe_function _sl_functions[] = {
      .todo = "lab2.6", .outputs = "visibility", .output_count = 1,
      .params = {_SL_SHADOW("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias")}, .param_count = 3, .stub_param = -1,
      .stub_value = 1.0},
-    /* lab 3 */
+    /* lab 3: the depth pass's state for a mode, from a neutral start or (previous_mode >= 0) right after
+     * the same function set another mode in the same context, as the viewer switches modes */
     {.name = "lab3_depth_pass_state", .lab = 3, .file = "lab3_bias/lab3.c", .todo = "lab3.1",
      .outputs = "polygon offset on,factor,units,culling on,cull face", .output_count = 5,
-     .params = {_SL_I("mode"), _SL_F("polygon_offset_factor"), _SL_F("polygon_offset_units")}, .param_count = 3,
+     .params = {_SL_I("mode"), _SL_F("polygon_offset_factor"), _SL_F("polygon_offset_units"), _SL_I("previous_mode")},
+     .param_count = 4,
      .stub_param = -1, .stub_value = NAN},
     {.name = "slope_scaled_bias", .lab = 3, .glsl = true, .file = "lab3_bias/shaders/bias.glsl", .todo = "lab3.2",
      .outputs = "bias", .output_count = 1,
@@ -196,7 +202,7 @@ int sl_probe_input_count(const sl_probe_function *f) {
 
 static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit",      "occluded",      "step",
                                                               "ramp",     "cube_lit",      "cube_occluded",
-                                                              "cube_room", "cube_positive", "cascades", "moments_flat", "moments_step_x", "moments_step_y"};
+                                                              "cube_room", "cube_positive", "step_floor", "cascades", "moments_flat", "moments_step_x", "moments_step_y"};
 
 const char *sl_probe_map_name(sl_probe_map map) {
     return (unsigned)map < SL_PROBE_MAP_COUNT ? _sl_map_names[map] : "?";
@@ -215,6 +221,7 @@ float sl_probe_map_depth(sl_probe_map map, int x, int y) {
     case SL_PROBE_MAP_OCCLUDED: return 0.25f;
     case SL_PROBE_MAP_STEP: return u < 0.5f ? 0.25f : 1.0f;
     case SL_PROBE_MAP_RAMP: return u;
+    case SL_PROBE_MAP_STEP_FLOOR: return u < 0.5f ? 0.25f : 0.9f;
     default: return 1.0f;
     }
 }

@@ -43,6 +43,8 @@ typedef enum sl_probe_map {
     SL_PROBE_MAP_CUBE_OCCLUDED, /* 0.25 everywhere: a closed shell 2.5 units around the light */
     SL_PROBE_MAP_CUBE_ROOM,     /* the walls of a cube room of half-size 2: 2 |d| / max|d_i| / 10, seamless */
     SL_PROBE_MAP_CUBE_POSITIVE, /* 0.1 on the +X, +Y, +Z faces (an occluder 1 unit away), 1.0 on the others */
+    /* 2D again (after the cube maps, so the others keep their numbers) */
+    SL_PROBE_MAP_STEP_FLOOR,    /* 0.25 where u < 0.5, 0.9 where u >= 0.5: an occluder's edge over a floor */
     /* lab 6's cascades: a depth texture array of SL_PROBE_LAYERS layers, each its own content
      * (0: "step", 1: "lit", 2: "occluded", 3: a surface at 0.6), so a lookup in another layer shows */
     SL_PROBE_MAP_CASCADES,

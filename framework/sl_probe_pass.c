@@ -394,6 +394,36 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     return status;
 }
 
+/* lab1_create_shadow_map(size): the map's filtering and wrapping, as glGet*
+ * reports them: what a lookup of a later lab reads between texels and past
+ * the map's edge. */
+static sl_status _sl_call_create_shadow_map(const sl_lab_functions *labs, int size, double *out) {
+    sl_shadow_map map = {0};
+    sl_status status = labs->lab1_create_shadow_map(size, &map);
+    while (glGetError() != GL_NO_ERROR) {}
+    if (map.depth_texture && glIsTexture(map.depth_texture)) {
+        GLint min = 0, mag = 0, s = 0, t = 0;
+        GLfloat border[4] = {0, 0, 0, 0};
+        glBindTexture(GL_TEXTURE_2D, map.depth_texture);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &mag);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, &s);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, &t);
+        glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        out[0] = min;
+        out[1] = mag;
+        out[2] = s;
+        out[3] = t;
+        /* a depth texture reads its border's first component: only past the edge does it count */
+        out[4] = s == GL_CLAMP_TO_BORDER || t == GL_CLAMP_TO_BORDER ? border[0] : -1;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (map.framebuffer) glDeleteFramebuffers(1, &map.framebuffer);
+    if (map.depth_texture) glDeleteTextures(1, &map.depth_texture);
+    return status;
+}
+
 /* lab7_create_cube_map(size): what it made, as glGet* reports it. */
 static sl_status _sl_call_create_cube_map(const sl_lab_functions *labs, int size, double *out) {
     sl_cube_map map = {0};
@@ -512,7 +542,9 @@ static sl_status _sl_call_c(const sl_probe_function *f, const float *in, double 
     mat4 m;
     glm_mat4_identity(m);
     sl_status status = SL_FAILED;
-    if (strcmp(f->name, "lab1_begin_depth_pass") == 0) {
+    if (strcmp(f->name, "lab1_create_shadow_map") == 0) {
+        status = _sl_call_create_shadow_map(labs, (int)in[0], out);
+    } else if (strcmp(f->name, "lab1_begin_depth_pass") == 0) {
         status = _sl_call_begin_depth_pass(labs, (int)in[0], out);
     } else if (strcmp(f->name, "lab2_light_view") == 0) {
         sl_light light = _sl_light((int)in[0], in + 1, in + 4);
@@ -555,7 +587,14 @@ static sl_status _sl_call_c(const sl_probe_function *f, const float *in, double 
         bias.polygon_offset_factor = in[1];
         bias.polygon_offset_units = in[2];
         _sl_neutral_depth_state();
-        status = labs->lab3_depth_pass_state(&bias);
+        int previous = (int)in[3];
+        if (previous >= 0 && previous < SL_BIAS_MODE_COUNT) {
+            /* the mode before: whatever it switched on must not outlive it */
+            sl_bias_settings before = bias;
+            before.mode = (sl_bias_mode)previous;
+            status = labs->lab3_depth_pass_state(&before);
+        }
+        if (status == SL_OK || previous < 0) status = labs->lab3_depth_pass_state(&bias);
         GLfloat factor = 0, units = 0;
         GLint face = 0;
         glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor);

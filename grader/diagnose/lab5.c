@@ -465,3 +465,28 @@ int sl_verdict_lab5(const sl_verdict_rows *v, char *text, size_t n) {
     if (strcmp(v->f->name, "reduce_light_bleeding") == 0) return _sl_verdict_bleeding(v, text, n);
     return -1;
 }
+
+/* ---- what lab 5's cases run (a first account from the renderer: sl_lab5_vsm.c) ---- */
+
+bool sl_lab5_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    /* lab 2's light camera and shadow coordinate; the moments instead of lab 1's map */
+    if (strcmp(fn, "lab2_light_view") == 0 || strcmp(fn, "lab2_light_projection") == 0 ||
+        strcmp(fn, "lab2_shadow_matrix") == 0)
+        return true;
+    if (strcmp(fn, "lab5_create_moments_target") == 0 || strcmp(fn, "lab5_begin_moments_pass") == 0 ||
+        strcmp(fn, "compute_moments") == 0)
+        return true;
+    if (k->kind == SL_CHECK_MOMENTS) return false;
+    bool blur = c->params.vsm.blur_radius > 0;
+    if (strcmp(fn, "lab5_begin_blur_pass") == 0 || strcmp(fn, "blur_moments") == 0) return blur;
+    if (strcmp(fn, "lab5_filter_moments") == 0) return true;
+    if (k->kind == SL_CHECK_MOMENTS_BLURRED) return false;
+    if (strcmp(fn, "shadow_coord") == 0) return true;
+    if (c->params.vsm_off) return sl_lab4_case_runs(c, k, fn); /* lab 4's filter draws instead */
+    return strcmp(fn, "chebyshev_upper_bound") == 0 || strcmp(fn, "reduce_light_bleeding") == 0;
+}
+
+void sl_lab5_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    (void)r;
+    if (c->params.vsm_off) sl_lab4_case_path(c, r, out, n);
+}

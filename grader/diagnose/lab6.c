@@ -581,3 +581,22 @@ int sl_verdict_lab6(const sl_verdict_rows *v, char *text, size_t n) {
     if (strcmp(name, "cascade_compare") == 0) return _sl_verdict_cascade_compare(v, text, n);
     return -1;
 }
+
+/* ---- what lab 6's cases run (a first account from the renderer: sl_lab6_cascades.c) ---- */
+
+bool sl_lab6_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    (void)k;
+    /* lab 1's depth shaders and lab 2's shadow matrix, per cascade; lab 6's own functions */
+    if (strcmp(fn, "depth.vert") == 0 || strcmp(fn, "lab2_shadow_matrix") == 0) return true;
+    if (strcmp(fn, "cascade_blend") == 0) return c->params.cascades.blend_band > 0; /* the bonus: only where it is on */
+    const sl_probe_function *f = sl_probe_find(fn);
+    if (f) return f->lab == 6;
+    return strcmp(fn, "cascade_compare") == 0;
+}
+
+void sl_lab6_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    (void)r;
+    const sl_cascade_params *p = &c->params.cascades;
+    snprintf(out, n, "%d cascades, lambda %g%s", p->count, (double)p->lambda,
+             p->blend_band > 0 ? ", blended across their borders" : ", no blend band");
+}

@@ -464,3 +464,17 @@ int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double
         return _sl_lookup_verdict(k, student, expected, failing, text, n);
     return -1;
 }
+
+/* ---- what lab 7's cases run ---- */
+
+bool sl_lab7_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    if (strcmp(fn, "cube_depth.frag") == 0) return true;
+    return sl_lab7_case_calls(c, k, fn);
+}
+
+void sl_lab7_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    (void)r;
+    if (c->params.cube.pass == SL_CUBE_PASS_LAYERED) snprintf(out, n, "the cube map drawn in one layered pass");
+    else if (c->params.cube.pass == SL_CUBE_PASS_SIX) snprintf(out, n, "the cube map drawn in six passes");
+    else snprintf(out, n, "the cube map drawn in one layered pass where lab7_begin_cube_pass takes all faces, else six");
+}

@@ -35,9 +35,9 @@ static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
 
 static void _sl_value(double v, char *out, size_t n) { _sl_value_named(v, false, out, n); }
 
-/* Outputs that hold GL enums: a filter, a face, a function. */
+/* Outputs that hold GL enums: a filter, a face, a function, a wrap mode. */
 static bool _sl_output_is_enum(const char *name) {
-    return strstr(name, "filter") || strstr(name, "face") || strstr(name, "function");
+    return strstr(name, "filter") || strstr(name, "face") || strstr(name, "function") || strstr(name, "wrap");
 }
 
 /* "n_dot_l = 0.05, constant_bias = 0.0005, shadow_map = step" */
@@ -195,7 +195,9 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         bool row_ok = true;
         for (int o = 0; o < f->output_count; o++) {
             double s = cap->numbers[row * f->output_count + o], e = ref->numbers[row * f->output_count + o];
-            row_ok &= _sl_close_enough(k, row, o, s, e);
+            bool close = _sl_close_enough(k, row, o, s, e);
+            row_ok &= close;
+            if (!close) out->row_outputs[row] |= (uint16_t)(1u << o);
             all_stub &= _sl_close_enough(k, row, o, s, _sl_stub_output(f, k->inputs[row], o));
         }
         if (!row_ok) {
@@ -222,6 +224,10 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
             out->passed = true;
             return;
         }
+        /* what each broken row predicts a picture shows (a matrix: anything) */
+        sl_verdict_rows judged = {.f = f, .k = k, .student = cap->numbers, .expected = ref->numbers, .failing = broken};
+        for (int row = 0; row < k->rows; row++)
+            if ((broken >> row) & 1u) out->row_predicts[row] = sl_probe_row_predicts(&judged, row);
         if (shown < 0 || !((broken >> shown) & 1u)) shown = first;
         char inputs[600];
         _sl_inputs(f, k->inputs[shown], inputs, sizeof inputs);
@@ -235,6 +241,12 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         out->passed = true;
         return;
     }
+    /* What each failing row predicts a picture shows: the evidence image checks need before they blame f. */
+    uint32_t verdict_predicts = 0;
+    sl_verdict_rows rows = {.f = f, .k = k, .student = cap->numbers, .expected = ref->numbers,
+                            .failing = out->failing_rows, .predicts = &verdict_predicts};
+    for (int row = 0; row < k->rows; row++)
+        if ((out->failing_rows >> row) & 1u) out->row_predicts[row] = sl_probe_row_predicts(&rows, row);
     if (all_stub && f->glsl) {
         char stub[64];
         if (f->stub_param >= 0) snprintf(stub, sizeof stub, "its parameter %s unchanged", f->params[f->stub_param].name);
@@ -245,13 +257,14 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         return;
     }
     /* What the rows say together, then the row that shows it (or the first that differs). */
-    sl_verdict_rows rows = {.f = f, .k = k, .student = cap->numbers, .expected = ref->numbers,
-                            .failing = out->failing_rows};
     shown = f->lab == 7 ? sl_lab7_probe_verdict(k, cap->numbers, ref->numbers, out->failing_rows, verdict,
                                                     sizeof verdict)
                             : -1;
     if (!verdict[0]) shown = sl_probe_verdict(&rows, verdict, sizeof verdict);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
+    /* a verdict that named the mistake says what it shows, for every failing row */
+    for (int row = 0; verdict[0] && verdict_predicts && row < k->rows; row++)
+        if ((out->failing_rows >> row) & 1u) out->row_predicts[row] = verdict_predicts;
     char evidence[1500];
     _sl_row_evidence(f, k, shown, &cap->numbers[shown * f->output_count], &ref->numbers[shown * f->output_count],
                      evidence, sizeof evidence);

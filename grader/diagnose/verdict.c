@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "sl_gl.h"
 #include "sl_params.h"
 
 /* The inputs of one parameter of a row, or NULL if the function has none of that name. */
@@ -141,6 +142,54 @@ static int _sl_radius_ignored(const sl_verdict_rows *v, char *text, size_t n) {
     return -1;
 }
 
+/* PCSS's blocker search, told apart from the filter that follows it:
+ * - over a floor (the "step_floor" map) the receiver's own surface, stored a
+ *   little nearer than p.z but within the bias, must not count as a blocker:
+ *   if it does, d_blocker comes out near d_receiver and the penumbra shrinks
+ *   (lighter there), while on the "step" map, with nothing behind the
+ *   occluder, every row still agrees;
+ * - on the lit side of an edge (a single comparison says lit) a wide light
+ *   still sees the occluder: a search region too small (a fixed width, not
+ *   light_size_uv * (d_receiver - near) / d_receiver) finds no blocker there
+ *   and returns 1.0, while inside the occluder, where the point itself is a
+ *   blocker, the penumbra, and so the result, is right. */
+static int _sl_verdict_pcss_search(const sl_verdict_rows *v, char *text, size_t n) {
+    int floor_lighter = -1, floor_rows = 0, other_failing = 0, lit_side_lost = -1, lit_side_fail = 0, shadow_partial_fail = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        const float *in = v->k->inputs[r];
+        const float *map = _sl_param(v->f, in, "shadow_map");
+        _sl_filter_row fr = _sl_filter_row_of(v->f, in);
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        bool failed = _sl_failed(v, r), floor = map && (int)*map == SL_PROBE_MAP_STEP_FLOOR;
+        if (floor) floor_rows++;
+        if (floor && failed && s > e && floor_lighter < 0) floor_lighter = r;
+        if (!floor && failed) other_failing++;
+        bool soft = e > 0.02 && e < 0.98, edge = fr.kind == _SL_ROW_EDGE;
+        if (edge && soft && fr.centre == 1.0 && failed) {
+            lit_side_fail++;
+            if (s >= 0.999 && lit_side_lost < 0) lit_side_lost = r;
+        }
+        if (edge && soft && fr.centre == 0.0 && failed) shadow_partial_fail++;
+    }
+    if (floor_rows && floor_lighter >= 0 && other_failing == 0) {
+        snprintf(text, n, "the blocker search counts the receiver's own surface as a blocker: over a floor it finds "
+                          "the floor itself, a little nearer than p.z, so d_blocker comes out near d_receiver and the "
+                          "penumbra shrinks — a blocker is a stored depth nearer than p.z - bias: the bias belongs in "
+                          "the blocker search too");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_NARROW_PENUMBRA | 1u << SL_SYMPTOM_GROSS);
+        return floor_lighter;
+    }
+    if (lit_side_lost >= 0 && lit_side_fail > 0 && shadow_partial_fail == 0) {
+        snprintf(text, n, "the blocker search looks too close: beside an occluder, where a wide light still sees it, it "
+                          "finds no blocker and returns 1.0, while inside the occluder the penumbra is right — search "
+                          "light_size_uv * (d_receiver - near) / d_receiver around p (the receiver's view of the light), "
+                          "not a fixed width");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_NARROW_PENUMBRA | 1u << SL_SYMPTOM_GROSS);
+        return lit_side_lost;
+    }
+    return -1;
+}
+
 static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     const sl_probe_function *f = v->f;
     bool kernel = strcmp(f->name, "pcf_grid") == 0 || strcmp(f->name, "pcf_poisson") == 0;
@@ -197,6 +246,7 @@ static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
                      _sl_got(v, row, 0));
         return row;
     }
+    if (pcss && (row = _sl_verdict_pcss_search(v, text, n)) >= 0) return row;
     if (!kernel) return -1; /* PCSS and single lookups: their rows say the rest */
     /* Across the edge: hard 0/1 results where soft ones are expected, then the width */
     int soft = 0, hard = 0, as_centre = 0, narrow = 0, wide = 0, first_soft = -1, first_width = -1;
@@ -369,8 +419,13 @@ static int _sl_verdict_normal_offset(const sl_verdict_rows *v, char *text, size_
 static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, size_t n) {
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r)) continue;
-        int mode = (int)v->k->inputs[r][0];
-        const char *name = sl_bias_mode_name((sl_bias_mode)mode);
+        int mode = (int)v->k->inputs[r][0], previous = v->f->param_count > 3 ? (int)v->k->inputs[r][3] : -1;
+        char name[96];
+        if (previous >= 0 && previous != mode)
+            snprintf(name, sizeof name, "%s (right after %s)", sl_bias_mode_name((sl_bias_mode)mode),
+                     sl_bias_mode_name((sl_bias_mode)previous));
+        else
+            snprintf(name, sizeof name, "%s", sl_bias_mode_name((sl_bias_mode)mode));
         double e[5], s[5];
         for (int o = 0; o < 5; o++) {
             e[o] = _sl_want(v, r, o);
@@ -383,12 +438,14 @@ static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, si
         }
         if (s[3] && !e[3]) {
             snprintf(text, n, "culling is left on in %s mode: switch GL_CULL_FACE off in every mode but front-culling — "
-                              "a plane with no thickness has only a front face, and culled it casts no shadow", name);
+                              "a plane with no thickness has only a front face, and culled it casts no shadow%s", name,
+                     previous >= 0 ? "; each mode sets every switch, whatever the mode before left on" : "");
             return r;
         }
         if (s[0] && !e[0]) {
             snprintf(text, n, "polygon offset is left on in %s mode: switch GL_POLYGON_OFFSET_FILL off in every mode "
-                              "but polygon-offset", name);
+                              "but polygon-offset%s", name,
+                     previous >= 0 ? "; each mode sets every switch, whatever the mode before left on" : "");
             return r;
         }
         if (!s[0] && e[0]) {
@@ -410,6 +467,44 @@ static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, si
 }
 
 /* ---- lab 1 ---- */
+
+/* Outputs: min filter, mag filter, wrap S, wrap T, the border's depth (-1 without a border). */
+static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
+        double wrap_s = _sl_got(v, r, 2), wrap_t = _sl_got(v, r, 3), border = _sl_got(v, r, 4);
+        bool wrap_wrong = wrap_s != _sl_want(v, r, 2) || wrap_t != _sl_want(v, r, 3);
+        if (wrap_wrong) {
+            double wrong = wrap_s != _sl_want(v, r, 2) ? wrap_s : wrap_t;
+            snprintf(text, n, "lookups past the map's edge do not read \"nothing there\": the wrap mode is %s, not "
+                              "GL_CLAMP_TO_BORDER on S and T — %s, so a filter's samples past the edge find shadow where "
+                              "there is none (lab 4's kernels); use GL_CLAMP_TO_BORDER with GL_TEXTURE_BORDER_COLOR "
+                              "(1, 1, 1, 1), the far plane, lit",
+                     sl_gl_enum_name((GLenum)wrong),
+                     wrong == GL_REPEAT || wrong == GL_MIRRORED_REPEAT ? "depths from the opposite edge wrap in"
+                                                                       : "the edge texels are stretched outwards");
+            sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+            return r;
+        }
+        if (fabs(border - _sl_want(v, r, 4)) > 1e-6) {
+            snprintf(text, n, "the border's depth is %g, not 1.0: a lookup past the map's edge must read the far plane, "
+                              "lit — GL_TEXTURE_BORDER_COLOR (1, 1, 1, 1) (a depth texture reads its first component)",
+                     border);
+            sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+            return r;
+        }
+        double min = _sl_got(v, r, 0), mag = _sl_got(v, r, 1);
+        if (min != _sl_want(v, r, 0) || mag != _sl_want(v, r, 1)) {
+            bool mipmap = min != GL_NEAREST && min != GL_LINEAR;
+            snprintf(text, n, "the map is filtered with %s (min) and %s (mag), not GL_NEAREST: %s",
+                     sl_gl_enum_name((GLenum)min), sl_gl_enum_name((GLenum)mag),
+                     mipmap ? "a mipmap min filter makes a map without mipmaps incomplete, and every read 0"
+                            : "a depth map is read exactly; GL_LINEAR blends the depths of different surfaces");
+            return r;
+        }
+    }
+    return -1;
+}
 
 /* Outputs: the map's framebuffer bound, viewport width and height, depth
  * test, depth function, depth writes, the depth after the call (cleared: 1). */
@@ -447,6 +542,7 @@ int sl_probe_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     const char *name = v->f->name;
     if (v->f->glsl && _sl_param(v->f, v->k->inputs[0], "shadow_map") && _sl_param(v->f, v->k->inputs[0], "shadow_coord"))
         return _sl_verdict_filter(v, text, n);
+    if (strcmp(name, "lab1_create_shadow_map") == 0) return _sl_verdict_create_shadow_map(v, text, n);
     if (strcmp(name, "lab1_begin_depth_pass") == 0) return _sl_verdict_begin_depth_pass(v, text, n);
     if (strcmp(name, "slope_scaled_bias") == 0) return _sl_verdict_slope(v, text, n);
     if (strcmp(name, "normal_offset_position") == 0) return _sl_verdict_normal_offset(v, text, n);
@@ -454,4 +550,73 @@ int sl_probe_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     if (v->f->lab == 5) return sl_verdict_lab5(v, text, n);
     if (v->f->lab == 6) return sl_verdict_lab6(v, text, n);
     return -1;
+}
+
+/* ---- what a failing row predicts a picture shows ---- */
+
+#define _SL_DARK (1u << SL_SYMPTOM_TOO_DARK)
+#define _SL_LIGHT (1u << SL_SYMPTOM_TOO_LIGHT)
+#define _SL_GROSS (1u << SL_SYMPTOM_GROSS)
+#define _SL_NARROW (1u << SL_SYMPTOM_NARROW_PENUMBRA)
+#define _SL_WIDE (1u << SL_SYMPTOM_WIDE_PENUMBRA)
+
+/* lab3_depth_pass_state: polygon offset on, factor, units, culling on, cull face. */
+static uint32_t _sl_state_row_predicts(const sl_verdict_rows *v, int row) {
+    double e[5], s[5];
+    for (int o = 0; o < 5; o++) {
+        e[o] = _sl_want(v, row, o);
+        s[o] = _sl_got(v, row, o);
+        if (isnan(s[o])) return SL_SYMPTOMS_ANY;
+    }
+    uint32_t p = 0;
+    if (s[0] && !e[0]) p |= _SL_LIGHT;                          /* an offset pushes depths away: detached shadows */
+    if (!s[0] && e[0]) p |= _SL_DARK | _SL_GROSS;               /* acne where the offset belonged */
+    if (s[0] && e[0] && (s[1] != e[1] || s[2] != e[2])) p |= _SL_DARK | _SL_LIGHT;
+    if (s[3] && !e[3]) p |= _SL_LIGHT | _SL_GROSS;              /* culled faces cast no shadow (a plane loses its own) */
+    if (!s[3] && e[3]) p |= _SL_DARK | _SL_GROSS;               /* the lit side stays in the map: acne */
+    if (s[3] && e[3] && s[4] != e[4]) p |= _SL_DARK | _SL_GROSS; /* the near faces kept: acne */
+    return p ? p : SL_SYMPTOMS_ANY;
+}
+
+/* normal_offset_position: a point moved less along the normal than it should shadows itself. */
+static uint32_t _sl_offset_row_predicts(const sl_verdict_rows *v, int row) {
+    const float *in = v->k->inputs[row];
+    const float *p = _sl_param(v->f, in, "world_position"), *normal = _sl_param(v->f, in, "normal");
+    if (!p || !normal) return SL_SYMPTOMS_ANY;
+    double along_s = 0, along_e = 0;
+    for (int i = 0; i < 3; i++) {
+        double got = _sl_got(v, row, i);
+        if (isnan(got)) return SL_SYMPTOMS_ANY;
+        along_s += (got - p[i]) * normal[i];
+        along_e += (_sl_want(v, row, i) - p[i]) * normal[i];
+    }
+    if (along_s < 0) return _SL_DARK | _SL_GROSS; /* into the surface */
+    return along_s < along_e ? _SL_DARK : _SL_LIGHT | (along_s > 4 * along_e + 1e-6 ? _SL_GROSS : 0);
+}
+
+uint32_t sl_probe_row_predicts(const sl_verdict_rows *v, int row) {
+    const sl_probe_function *f = v->f;
+    if (strcmp(f->name, "lab3_depth_pass_state") == 0) return _sl_state_row_predicts(v, row);
+    if (strcmp(f->name, "normal_offset_position") == 0) return _sl_offset_row_predicts(v, row);
+    if (f->output_count != 1) return SL_SYMPTOMS_ANY;
+    /* a visibility (a lighter one), or a bias (a larger one lightens) */
+    bool visibility = strcmp(f->outputs, "visibility") == 0 || strcmp(f->outputs, "p_max") == 0;
+    bool bias = strcmp(f->outputs, "bias") == 0;
+    if (!visibility && !bias) return SL_SYMPTOMS_ANY;
+    double s = _sl_got(v, row, 0), e = _sl_want(v, row, 0);
+    if (isnan(s) || isinf(s)) return SL_SYMPTOMS_ANY;
+    uint32_t p = s < e ? _SL_DARK : _SL_LIGHT;
+    if (bias) {
+        if (s <= 0.25 * e || s >= 4 * e + 1e-6) p |= _SL_GROSS;
+        return p;
+    }
+    if (fabs(s - e) >= 0.5) p |= _SL_GROSS;
+    /* across an edge: nearer a single comparison's 0 or 1 than the solution is narrower; a width
+     * off by much there grows with the kernel (a wide light, a large radius): gross in a picture */
+    if (e > 0.02 && e < 0.98 && _sl_param(f, v->k->inputs[row], "shadow_map")) {
+        _sl_filter_row fr = _sl_filter_row_of(f, v->k->inputs[row]);
+        p |= fabs(s - fr.centre) < fabs(e - fr.centre) ? _SL_NARROW : _SL_WIDE;
+        if (fabs(s - e) >= 0.15) p |= _SL_GROSS;
+    }
+    return p;
 }
