@@ -47,7 +47,7 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
     bool is_float = v[6] != 0;
     if (v[0] != GL_FRAMEBUFFER_COMPLETE) {
         sl_diag_say(out, "framebuffer[0] of the moments target is not complete (%s)", sl_gl_enum_name((GLenum)v[0]));
-        sl_diag_cause(out, "moments[0] as GL_COLOR_ATTACHMENT0 and a depth renderbuffer as GL_DEPTH_ATTACHMENT "
+        sl_diag_cause_in(out, "lab5_create_moments_target", "moments[0] as GL_COLOR_ATTACHMENT0 and a depth renderbuffer as GL_DEPTH_ATTACHMENT "
                            "(TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
         return false;
     }
@@ -56,7 +56,7 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
                      "difference of two nearly equal numbers, and %d bits round it away, so shadows show bands and "
                      "light leaks where the variance comes out wrong (precision)",
                 sl_gl_enum_name(format), red, is_float ? "float" : "fixed point", red);
-    sl_diag_cause(out, "create moments[0] and moments[1] as GL_RG32F (TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
+    sl_diag_cause_in(out, "lab5_create_moments_target", "create moments[0] and moments[1] as GL_RG32F (TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
     return false;
 }
 
@@ -76,7 +76,7 @@ static bool _sl_cleared_to_zero(const sl_case_result *r, sl_check_result *out) {
     sl_diag_say(out, "the moments hold exactly (0, 0) on %.0f%% of the map: \"an occluder at the light\" wherever "
                      "nothing is drawn, so everything outside the objects' footprint seen from the light is shadowed",
                 100 * zero);
-    sl_diag_cause(out, "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1), the "
+    sl_diag_cause_in(out, "lab5_begin_moments_pass", "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1), the "
                        "moments of \"nothing in front\" (glClearColor(1, 1, 0, 0); TODO(lab5.2) in labs/lab5_vsm/lab5.c)");
     return true;
 }
@@ -93,21 +93,21 @@ static bool _sl_mipmaps_ok(const sl_case_result *r, sl_check_result *out) {
         sl_diag_say(out, "moments[0], which the camera pass reads, has no mipmaps (min filter %s), while moments[1], the "
                          "blur's intermediate, has: distant receivers read unfiltered moments and alias",
                     sl_gl_enum_name((GLenum)filter0));
-        sl_diag_cause(out, "the mipmaps were made for the wrong texture: lab5_filter_moments() binds moments[0] before "
+        sl_diag_cause_in(out, "lab5_filter_moments", "the mipmaps were made for the wrong texture: lab5_filter_moments() binds moments[0] before "
                            "glGenerateMipmap and sets its GL_LINEAR_MIPMAP_LINEAR (TODO(lab5.6) in labs/lab5_vsm/lab5.c)");
         return false;
     }
     if (level1[0] <= 0 && mipmapped) {
         sl_diag_say(out, "moments[0] is filtered with %s but has no mipmaps: an incomplete texture, which reads as 0 "
                          "(every receiver shadowed)", sl_gl_enum_name((GLenum)filter0));
-        sl_diag_cause(out, "glGenerateMipmap on moments[0] in lab5_filter_moments() (TODO(lab5.6) in "
+        sl_diag_cause_in(out, "lab5_filter_moments", "glGenerateMipmap on moments[0] in lab5_filter_moments() (TODO(lab5.6) in "
                            "labs/lab5_vsm/lab5.c), after the blur wrote it");
         return false;
     }
     if (level1[0] > 0 && filter0 != 0 && !mipmapped) {
         sl_diag_say(out, "moments[0] has mipmaps but is read with %s: distant receivers read level 0 alone and alias",
                     sl_gl_enum_name((GLenum)filter0));
-        sl_diag_cause(out, "GL_LINEAR_MIPMAP_LINEAR as moments[0]'s min filter in lab5_filter_moments() (TODO(lab5.6) "
+        sl_diag_cause_in(out, "lab5_filter_moments", "GL_LINEAR_MIPMAP_LINEAR as moments[0]'s min filter in lab5_filter_moments() (TODO(lab5.6) "
                            "in labs/lab5_vsm/lab5.c)");
         return false;
     }
@@ -173,7 +173,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
     if (empty > n / 100 && zeroed > empty / 2) {
         sl_diag_say(out, "%.0f%% of the texels where nothing is drawn hold (0, 0), the reference (1, 1): \"an occluder "
                          "at the light\" instead of \"nothing in front\"", 100.0 * (double)zeroed / (double)empty);
-        sl_diag_cause(out, "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1) "
+        sl_diag_cause_in(out, "lab5_begin_moments_pass", "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1) "
                            "(glClearColor(1, 1, 0, 0); TODO(lab5.2) in labs/lab5_vsm/lab5.c)");
         return;
     }
@@ -193,7 +193,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
             sl_diag_say(out, "the blurred moments are %.3g times the reference's on %.0f%% of the texels: every texel "
                              "scaled alike, where a blur keeps a flat region as it is", ratio,
                         100.0 * (double)consistent / (double)ratios);
-            sl_diag_cause(out, "the blur's weights do not sum to 1 (%.3g per pass, as two passes multiply): divide "
+            sl_diag_cause_in(out, "blur_moments", "the blur's weights do not sum to 1 (%.3g per pass, as two passes multiply): divide "
                                "blur_moments()'s weighted sum by the sum of its weights (TODO(lab5.5) in "
                                "labs/lab5_vsm/shaders/blur.glsl)", sqrt(ratio));
             return;
@@ -201,7 +201,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
     }
     if (stub == n) {
         sl_diag_say(out, "the moments are (1, 1) on every texel: nothing in front of anything");
-        sl_diag_cause(out, "compute_moments() still returns its stub's vec2(1.0) (TODO(lab5.3) in "
+        sl_diag_cause_in(out, "compute_moments", "compute_moments() still returns its stub's vec2(1.0) (TODO(lab5.3) in "
                            "labs/lab5_vsm/shaders/moments.glsl), or nothing was drawn into framebuffer[0]");
         return;
     }
@@ -209,7 +209,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
         sl_diag_say(out, "the second moment equals the first on %.0f%% of the scene's texels: depth is stored where "
                          "depth^2 belongs, so the variance depth - depth^2 is large everywhere",
                     100.0 * (double)unsquared / (double)covered);
-        sl_diag_cause(out, "compute_moments() must return vec2(depth, depth * depth) (TODO(lab5.3) in "
+        sl_diag_cause_in(out, "compute_moments", "compute_moments() must return vec2(depth, depth * depth) (TODO(lab5.3) in "
                            "labs/lab5_vsm/shaders/moments.glsl)");
         return;
     }
@@ -221,7 +221,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
             sl_diag_say(out, "the moments are sharper than the reference's along both x and y (%.1fx and %.1fx the "
                              "differences between neighbours): not blurred, or blurred less",
                         sharp_x, sharp_y);
-            sl_diag_cause(out, "blur_moments() (TODO(lab5.5) in labs/lab5_vsm/shaders/blur.glsl): 2 * radius + 1 "
+            sl_diag_cause_in(out, "blur_moments", "blur_moments() (TODO(lab5.5) in labs/lab5_vsm/shaders/blur.glsl): 2 * radius + 1 "
                                "Gaussian weights, offsets of one texel (1.0 / textureSize) along direction");
             return;
         }
@@ -230,7 +230,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
             sl_diag_say(out, "the moments are blurred along %s only: along %s their edges are %.1fx as sharp as the "
                              "reference's, so a penumbra is wide one way and hard the other",
                         only_x ? "x" : "y", only_x ? "y" : "x", only_x ? sharp_y : sharp_x);
-            sl_diag_cause(out, "the vertical pass must read moments[1] and step along (0, 1): does blur_moments() use "
+            sl_diag_cause_in(out, "blur_moments", "the vertical pass must read moments[1] and step along (0, 1): does blur_moments() use "
                                "`direction` (TODO(lab5.5)), and lab5_begin_blur_pass() read and write the other "
                                "target for direction 1 (TODO(lab5.4))?");
             return;
@@ -238,7 +238,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
         if (sharp_x < 0.67 && sharp_y < 0.67) {
             sl_diag_say(out, "the moments are blurrier than the reference's (%.2fx and %.2fx its differences between "
                              "neighbours along x and y)", sharp_x, sharp_y);
-            sl_diag_cause(out, "blur_moments(): sigma = max(radius / 2, 0.5), offsets of one texel, radius texels "
+            sl_diag_cause_in(out, "blur_moments", "blur_moments(): sigma = max(radius / 2, 0.5), offsets of one texel, radius texels "
                                "each side (TODO(lab5.5))");
             return;
         }
@@ -248,9 +248,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
                      "difference %.5f)", names[ch], 100 * st[ch].failing_fraction, 100 * k->fail_fraction,
                 k->threshold, st[ch].mean_difference);
     if (st[ch].nan_pixels) sl_diag_append(out, "; %ld texels are NaN", st[ch].nan_pixels);
-    sl_diag_cause(out, blurred ? "the moments pass matches? then the blur (TODO(lab5.4), TODO(lab5.5))"
-                               : "compute_moments() (TODO(lab5.3)) gets the linear depth: return (depth, depth^2); "
-                                 "and lab5_begin_moments_pass() clears to (1, 1) with the depth test on (TODO(lab5.2))");
+    /* no finding of its own: the core lists the candidates, and what their probes ruled out */
 }
 
 /* Light bleeding: where the reference (with the reduction) is in umbra, the
@@ -295,15 +293,22 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
     }
     if (sl_diag_explain_missing(c, r, out)) return;
     if (sl_diagnose_lab5_format(r, out)) return;
+    if (with > 0.9 && without > 0.9) {
+        /* the whole umbra lit either way: the reduction has nothing to act on, the lookup is what is wrong */
+        sl_diag_say(out, "%.0f%% of the reference's umbra is lit, with the reduction and without it: there is no "
+                         "shadow here for the reduction to act on — the case's visibility check says why", 100 * with);
+        out->settled = true;
+        return;
+    }
     sl_diag_say(out, "light bleeding: %.1f%% of the reference's umbra is lit above %.2f with the reduction (amount "
                      "%.2f), %.1f%% without it; the reduction must at least halve it",
                 100 * with, 0.1, c->params.vsm.bleeding, 100 * without);
     if (with > without) {
         sl_diag_append(out, ", and the reduction adds light to the umbra instead");
-        sl_diag_cause(out, "are linstep's arguments swapped? reduce_light_bleeding() returns linstep(amount, 1.0, "
+        sl_diag_cause_in(out, "reduce_light_bleeding", "are linstep's arguments swapped? reduce_light_bleeding() returns linstep(amount, 1.0, "
                            "p_max) (TODO(lab5.8))");
     } else
-        sl_diag_cause(out, "reduce_light_bleeding() must cut p_max below `amount` off and stretch the rest: "
+        sl_diag_cause_in(out, "reduce_light_bleeding", "reduce_light_bleeding() must cut p_max below `amount` off and stretch the rest: "
                            "linstep(amount, 1.0, p_max) (TODO(lab5.8))");
 }
 
@@ -316,7 +321,7 @@ bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *s, const sl_i
     if (nan > 0 || sl_acne_is_pattern(&acne)) {
         sl_diag_say(out, "dark speckles on %.1f%% of the lit surfaces%s", 100 * acne.fraction,
                     nan ? " and NaN pixels" : "");
-        sl_diag_cause(out, "where t is just beyond mu and the moments are from one flat surface, the variance is 0 "
+        sl_diag_cause_in(out, "chebyshev_upper_bound", "where t is just beyond mu and the moments are from one flat surface, the variance is 0 "
                            "(or a rounding error below it): is it clamped to min_variance in "
                            "chebyshev_upper_bound() (TODO(lab5.7))?");
         return true;
@@ -324,7 +329,7 @@ bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *s, const sl_i
     if (acne.fraction > 0.2 && acne.mean > 0.5 && acne.mean < 0.97) {
         sl_diag_say(out, "lit surfaces are slightly darkened everywhere (mean visibility %.3f where the reference "
                          "is 1)", acne.mean);
-        sl_diag_cause(out, "the bound only holds for t > mu: chebyshev_upper_bound() returns 1.0 when t <= mu "
+        sl_diag_cause_in(out, "chebyshev_upper_bound", "the bound only holds for t > mu: chebyshev_upper_bound() returns 1.0 when t <= mu "
                            "(TODO(lab5.7))");
         return true;
     }
@@ -460,7 +465,38 @@ static int _sl_verdict_bleeding(const sl_verdict_rows *v, char *text, size_t n) 
     return -1;
 }
 
+/* chebyshev_upper_bound(moments, t, min_variance): the variance each failing row was computed with, read
+ * back from p_max = v / (v + d^2); one constant for all of them, not the row's minimum, is a minimum of its own. */
+static int _sl_verdict_chebyshev(const sl_verdict_rows *v, char *text, size_t n) {
+    int rows = v->k->rows, failing = 0, first = -1, implied_rows = 0;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double mu = in[0], m2 = in[1], t = in[2], min_variance = in[3], p = _sl_got5(v, r, 0), d = t - mu;
+        failing++;
+        if (first < 0) first = r;
+        if (t <= mu || p <= 0 || p >= 1) continue;
+        double implied = p * d * d / (1 - p);
+        /* the row's own variance is below the minimum that was used: a minimum decided it */
+        if (m2 - mu * mu < implied * 0.9 && fabs(implied - min_variance) > 0.05 * min_variance) {
+            implied_rows++;
+            lo = fmin(lo, implied);
+            hi = fmax(hi, implied);
+        }
+    }
+    if (!failing) return -1;
+    if (implied_rows == failing && hi - lo <= 0.05 * hi) {
+        snprintf(text, n, "the minimum variance is not the one given: every failing row used about %.2g whatever "
+                          "min_variance is — variance = max(M2 - M1^2, min_variance), with the parameter (the viewer's "
+                          "N and J change it)", 0.5 * (lo + hi));
+        return first;
+    }
+    return -1;
+}
+
 int sl_verdict_lab5(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "chebyshev_upper_bound") == 0) return _sl_verdict_chebyshev(v, text, n);
     if (strcmp(v->f->name, "blur_moments") == 0) return _sl_verdict_blur(v, text, n);
     if (strcmp(v->f->name, "reduce_light_bleeding") == 0) return _sl_verdict_bleeding(v, text, n);
     return -1;
@@ -469,6 +505,11 @@ int sl_verdict_lab5(const sl_verdict_rows *v, char *text, size_t n) {
 /* ---- what lab 5's cases run (a first account from the renderer: sl_lab5_vsm.c) ---- */
 
 bool sl_lab5_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    /* The bleeding check compares the case's visibility with and without the reduction: the moments and
+     * their blur are the same in both, so only the lookup's last two steps and the target can explain it. */
+    if (k->kind == SL_CHECK_BLEEDING && !c->params.vsm_off)
+        return strcmp(fn, "reduce_light_bleeding") == 0 || strcmp(fn, "chebyshev_upper_bound") == 0 ||
+               strcmp(fn, "lab5_create_moments_target") == 0;
     /* lab 2's light camera and shadow coordinate; the moments instead of lab 1's map */
     if (strcmp(fn, "lab2_light_view") == 0 || strcmp(fn, "lab2_light_projection") == 0 ||
         strcmp(fn, "lab2_shadow_matrix") == 0)

@@ -63,25 +63,25 @@ void sl_diagnose_cascade_index(const sl_case *c, const sl_check *k, const sl_cas
     if (covered && differ > 0.9 * covered && by_one > 0.95 * differ && (above > 0.95 * differ || below > 0.95 * differ)) {
         sl_diag_say(out, "the cascade index is off by one on %.0f%% of the surfaces (layer %s where the reference uses i)",
                     100 * fraction, above > below ? "i + 1" : "i - 1");
-        sl_diag_cause(out, "cascade_index() must return the FIRST cascade whose far split is beyond the depth: 0..count-1 "
+        sl_diag_cause_in(out, "cascade_index", "cascade_index() must return the FIRST cascade whose far split is beyond the depth: 0..count-1 "
                            "(an off-by-one layer; TODO lab6.4)");
     } else if (differ && above > 0.95 * differ && sides) {
         sl_diag_say(out, "%.1f%% of the surfaces use a farther cascade than the reference's, at the sides of the picture "
                          "only: the cascades' borders bend towards the camera there", 100 * fraction);
-        sl_diag_cause(out, "cascades chosen by the distance to the camera (length of the view position), not by view "
+        sl_diag_cause_in(out, "cascade_index", "cascades chosen by the distance to the camera (length of the view position), not by view "
                            "depth (-view_position.z): the splits are planes across the view direction (TODO lab6.4)");
     } else if (differ && (above > 0.95 * differ || below > 0.95 * differ)) {
         bool farther = above > below;
         sl_diag_say(out, "%.1f%% of the surfaces use a %s cascade than the reference's, across the whole picture: the "
                          "borders between cascades run where the reference's do not",
                     100 * fraction, farther ? "farther" : "nearer");
-        sl_diag_cause(out, "the cascades end %s than the reference's: are the split distances right (lambda, TODO lab6.1), "
+        sl_diag_cause_in(out, "lab6_split_distances", "the cascades end %s than the reference's: are the split distances right (lambda, TODO lab6.1), "
                            "and does cascade_index() compare with each cascade's FAR split (TODO lab6.4)?",
                       farther ? "nearer" : "farther out");
     } else {
         sl_diag_say(out, "the cascade index differs from the reference on %.1f%% of the surfaces (allowed %.1f%% of "
                          "pixels)", 100 * fraction, 100 * k->fail_fraction);
-        sl_diag_cause(out, "check the split distances (TODO lab6.1) and cascade_index() (TODO lab6.4)");
+        /* no finding of its own: the core lists the candidates (the splits, cascade_index) */
     }
     if (nan_pixels) sl_diag_append(out, "; %ld pixels are NaN", nan_pixels);
 }
@@ -154,10 +154,10 @@ void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_resu
                      "%.3f%%)",
                 100 * got.score, 100 * k->threshold, 100 * want.score);
     if (_sl_path_turns(c))
-        sl_diag_cause(out, "here the camera only turns: keep each cascade's size fixed as it turns (a bounding sphere, "
+        sl_diag_cause_in(out, "lab6_cascade_matrices", "here the camera only turns: keep each cascade's size fixed as it turns (a bounding sphere, "
                            "TODO lab6.2) and move its origin by whole texels (TODO lab6.3)");
     else
-        sl_diag_cause(out, "the camera moves by less than a texel per frame: move the projection's origin by whole "
+        sl_diag_cause_in(out, "lab6_cascade_matrices", "the camera moves by less than a texel per frame: move the projection's origin by whole "
                            "texels of the map (TODO lab6.3)");
 }
 
@@ -216,6 +216,25 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
     if (ends == failing) {
         snprintf(text, n, "the wrong near/far: splits[0] must be near and splits[count] far");
         return first;
+    }
+    /* rows that differ only in lambda, the same splits where the solution's differ: a scheme of its own */
+    for (int a = 0; a < rows; a++) {
+        if (!((v->failing >> a) & 1u)) continue;
+        for (int b = 0; b < rows; b++) {
+            const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
+            if (b == a || ia[0] != ib[0] || ia[1] != ib[1] || ia[2] != ib[2] || ia[3] == ib[3]) continue;
+            bool same = true, differ = false;
+            for (int i = 0; i <= (int)ia[2] && i <= SL_MAX_CASCADES; i++) {
+                same &= _sl_close(_sl_out(v->student, v, a, i), _sl_out(v->student, v, b, i));
+                differ |= !_sl_close(_sl_out(v->expected, v, a, i), _sl_out(v->expected, v, b, i));
+            }
+            if (same && differ) {
+                snprintf(text, n, "lambda is ignored: lambda %g and lambda %g give the same splits — fixed splits of "
+                                  "your own? The practical scheme is lambda * C_log + (1 - lambda) * C_uniform",
+                         (double)ia[3], (double)ib[3]);
+                return a;
+            }
+        }
     }
     return -1;
 }
@@ -462,8 +481,9 @@ bool sl_lab6_probe_contract(const sl_check *k, const double *student, uint32_t *
 
 /* ---- cascade_compare ---- */
 
-/* What one comparison in `layer` of the probe's texture array gives at a row's point (-1: a row of no use). */
-static double _sl_layer_compare(const float *in, int layer, bool divide) {
+/* What one comparison in layer `layer` of the probe's texture array gives at a row's point, with the bias
+ * `bias` (a negative layer: the row's own), divided by w or not; -1 where a layer does not exist. */
+static double _sl_layer_compare(const float *in, int layer, double bias, bool divide) {
     double w = divide ? in[5] : 1.0;
     if (w == 0) return -1;
     double p[3] = {in[2] / w, in[3] / w, in[4] / w};
@@ -472,51 +492,79 @@ static double _sl_layer_compare(const float *in, int layer, bool divide) {
     if (layer < 0 || layer >= SL_PROBE_LAYERS) return -1;
     int tx = (int)floor(p[0] * SL_PROBE_MAP_SIZE), ty = (int)floor(p[1] * SL_PROBE_MAP_SIZE);
     double stored = sl_probe_layer_depth(SL_PROBE_MAP_CASCADES, layer, tx, ty);
-    return p[2] - in[6] > stored ? 0.0 : 1.0;
+    return p[2] - bias > stored ? 0.0 : 1.0;
+}
+
+/* One way of reading the rows, to test on every row at once: the layer read (relative to the given one,
+ * or 0 for "always layer 0"), the bias used (a constant, or < 0 for the given one), the divide by w. */
+typedef struct _sl_compare_reading {
+    int layer_shift;
+    bool first_layer;
+    double bias;
+    bool divide;
+} _sl_compare_reading;
+
+static bool _sl_reading_explains(const sl_verdict_rows *v, _sl_compare_reading h) {
+    for (int r = 0; r < v->k->rows; r++) {
+        const float *in = v->k->inputs[r];
+        int layer = h.first_layer ? 0 : (int)in[1] + h.layer_shift;
+        double want = _sl_layer_compare(in, layer, h.bias < 0 ? in[6] : h.bias, h.divide);
+        if (want < 0 || fabs(_sl_out(v->student, v, r, 0) - want) > 1e-3) return false;
+    }
+    return true;
 }
 
 static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, size_t n) {
-    int rows = v->k->rows, failing = 0, first = -1, inverted = 0, as_layer0 = 0, as_next = 0, as_previous = 0;
-    int no_divide = 0, no_far = 0, far_rows = 0;
+    int rows = v->k->rows, failing = 0, first = -1, inverted = 0, far_rows = 0, no_far = 0;
     for (int r = 0; r < rows; r++) {
-        if (!((v->failing >> r) & 1u)) continue;
         const float *in = v->k->inputs[r];
         double got = _sl_out(v->student, v, r, 0), want = _sl_out(v->expected, v, r, 0);
-        int layer = (int)in[1];
-        failing++;
-        if (first < 0) first = r;
         inverted += fabs(got - (1 - want)) < 1e-3;
-        as_layer0 += fabs(got - _sl_layer_compare(in, 0, true)) < 1e-3;
-        as_next += fabs(got - _sl_layer_compare(in, layer + 1, true)) < 1e-3;
-        as_previous += fabs(got - _sl_layer_compare(in, layer - 1, true)) < 1e-3;
-        no_divide += in[5] != 1 && fabs(got - _sl_layer_compare(in, layer, false)) < 1e-3;
         if (in[4] / in[5] > 1.0) {
             far_rows++;
             no_far += got < 0.5;
         }
+        if (!((v->failing >> r) & 1u)) continue;
+        failing++;
+        if (first < 0) first = r;
     }
     if (!failing) return -1;
+    /* Each mistake is a whole reading of the rows: it must explain every row, failing or not. */
+    if (_sl_reading_explains(v, (_sl_compare_reading){.first_layer = true, .bias = -1, .divide = true})) {
+        snprintf(text, n, "it reads layer 0 whatever `layer` is: texture(cascades, vec3(p.xy, float(layer)))");
+        return first;
+    }
+    for (int shift = -1; shift <= 1; shift += 2)
+        if (_sl_reading_explains(v, (_sl_compare_reading){.layer_shift = shift, .bias = -1, .divide = true})) {
+            snprintf(text, n, "it reads the layer %s the one given: texture(cascades, vec3(p.xy, float(layer))), layer "
+                              "as cascade_index() chose it", shift > 0 ? "after" : "before");
+            return first;
+        }
+    if (_sl_reading_explains(v, (_sl_compare_reading){.bias = -1, .divide = false})) {
+        snprintf(text, n, "no divide by w: the shadow coordinate is homogeneous — divide xyz by w before the lookup");
+        return first;
+    }
+    static const double constants[] = {0, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 3e-3, 5e-3, 0.01, 0.02, 0.05};
+    for (size_t i = 0; i < sizeof constants / sizeof constants[0]; i++)
+        if (_sl_reading_explains(v, (_sl_compare_reading){.bias = constants[i], .divide = true})) {
+            if (constants[i] == 0)
+                snprintf(text, n, "the bias is not the one given: the rows read as no bias at all (or one too small "
+                                  "to show here), so points just behind a stored surface, within the bias, come out "
+                                  "shadowed (shadow acne) — compare p.z - bias with the stored depth");
+            else
+                snprintf(text, n, "the bias is not the one given: every row reads as a constant bias of %g — compare "
+                                  "p.z - bias (the framework's bias is one and a half texels of this cascade, "
+                                  "different in every cascade)", constants[i]);
+            return first;
+        }
     if (inverted == rows) {
         snprintf(text, n, "every answer is the opposite of the reference's: the comparison is inverted (shadowed where "
                           "p.z - bias is FARTHER than the stored depth)");
         return first;
     }
-    if (far_rows && no_far == far_rows && failing == far_rows) {
+    if (far_rows && no_far == far_rows) {
         snprintf(text, n, "beyond the cascade's far plane (p.z > 1) it answers shadowed: nothing was recorded there, so "
                           "it is lit (return 1.0)");
-        return first;
-    }
-    if (no_divide == failing) {
-        snprintf(text, n, "no divide by w: the shadow coordinate is homogeneous — divide xyz by w before the lookup");
-        return first;
-    }
-    if (as_layer0 == failing) {
-        snprintf(text, n, "it reads layer 0 whatever `layer` is: texture(cascades, vec3(p.xy, float(layer)))");
-        return first;
-    }
-    if (as_next == failing || as_previous == failing) {
-        snprintf(text, n, "it reads the layer %s the one given: texture(cascades, vec3(p.xy, float(layer))), layer as "
-                          "cascade_index() chose it", as_next == failing ? "after" : "before");
         return first;
     }
     /* rows that differ only in the bias, the same answer where the solution's differ: the bias is not the one given */
@@ -529,7 +577,7 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
             if (!twin) continue;
             if (fabs(_sl_out(v->student, v, a, 0) - _sl_out(v->student, v, b, 0)) < 1e-3 &&
                 fabs(_sl_out(v->expected, v, a, 0) - _sl_out(v->expected, v, b, 0)) > 0.5) {
-                snprintf(text, n, "the bias is not the one given (none, or a constant): the same point with bias %g and with bias %g gives "
+                snprintf(text, n, "the bias is not the one given: the same point with bias %g and with bias %g gives "
                                   "the same answer — compare p.z - bias (the framework's bias is one and a half texels "
                                   "of this cascade, different in every cascade)", (double)ia[6], (double)ib[6]);
                 return a;
@@ -585,18 +633,26 @@ int sl_verdict_lab6(const sl_verdict_rows *v, char *text, size_t n) {
 /* ---- what lab 6's cases run (a first account from the renderer: sl_lab6_cascades.c) ---- */
 
 bool sl_lab6_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
-    (void)k;
-    /* lab 1's depth shaders and lab 2's shadow matrix, per cascade; lab 6's own functions */
+    /* The flicker check: what changes between frames while only the camera the cascades are fitted to moves:
+     * each cascade's sphere and its light camera (the snapping), turned into shadow matrices */
+    if (k->kind == SL_CHECK_FLICKER)
+        return strcmp(fn, "lab6_slice_sphere") == 0 || strcmp(fn, "lab6_cascade_matrices") == 0 ||
+               strcmp(fn, "lab2_shadow_matrix") == 0;
+    /* The cascade-index picture: where the splits are, and which cascade each pixel picks; nothing of
+     * the light cameras, the depth passes or the lookup. */
+    if (k->kind == SL_CHECK_CASCADE_INDEX)
+        return strcmp(fn, "lab6_split_distances") == 0 || strcmp(fn, "cascade_index") == 0;
+    /* The pictures of visibility (and the flicker's frames): every cascade fitted, drawn with lab 1's
+     * depth shaders, turned into a shadow matrix by lab 2's function, then looked up */
     if (strcmp(fn, "depth.vert") == 0 || strcmp(fn, "lab2_shadow_matrix") == 0) return true;
     if (strcmp(fn, "cascade_blend") == 0) return c->params.cascades.blend_band > 0; /* the bonus: only where it is on */
     const sl_probe_function *f = sl_probe_find(fn);
-    if (f) return f->lab == 6;
-    return strcmp(fn, "cascade_compare") == 0;
+    return f && f->lab == 6;
 }
 
 void sl_lab6_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
     (void)r;
     const sl_cascade_params *p = &c->params.cascades;
-    snprintf(out, n, "%d cascades, lambda %g%s", p->count, (double)p->lambda,
+    snprintf(out, n, "%d cascades of %d texels, lambda %g%s", p->count, c->params.shadow_map_size, (double)p->lambda,
              p->blend_band > 0 ? ", blended across their borders" : ", no blend band");
 }

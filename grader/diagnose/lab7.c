@@ -155,44 +155,44 @@ void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_re
     } else if (empty > 0.999 && ref_empty < 0.99 && others_drawn) {
         sl_diag_say(out, "face %s holds 1.0 everywhere (\"nothing there\") where the reference holds distance / far, "
                          "while other faces hold distances: nothing was drawn into this face", face);
-        sl_diag_cause(out, "is this face attached in lab7_begin_cube_pass: GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, cleared, "
+        sl_diag_cause_in(out, "lab7_begin_cube_pass", "is this face attached in lab7_begin_cube_pass: GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, cleared, "
                            "with its viewport (TODO lab7.2)?");
     } else if (empty > 0.999 && ref_empty < 0.99) {
         sl_diag_say(out, "face %s holds 1.0 everywhere (\"nothing there\") where the reference holds distance / far, "
                          "and so does every other face%s", face, layered ? " (drawn in one layered pass)" : "");
-        sl_diag_cause(out, "is the far plane missing on the depth pass's side? Distances not divided by u_light_far in "
+        sl_diag_cause_in(out, "cube_depth.frag", "is the far plane missing on the depth pass's side? Distances not divided by u_light_far in "
                            "shaders/cube_depth.frag are clamped to 1.0 (TODO lab7.5). Or nothing was drawn at all: %s",
                       layered ? "in the layered pass, does shaders/cube_depth.geom emit each triangle to the six faces?"
                               : "are the faces attached in lab7_begin_cube_pass (TODO lab7.2)?");
     } else if (_sl_follows(s, t, _sl_not_divided, near, far) > 0.95) {
         sl_diag_say(out, "face %s holds the distance itself, clamped to 1.0, where the reference holds distance / far",
                     face);
-        sl_diag_cause(out, "the far plane is missing on the depth pass's side: divide by u_light_far in "
+        sl_diag_cause_in(out, "cube_depth.frag", "the far plane is missing on the depth pass's side: divide by u_light_far in "
                            "shaders/cube_depth.frag (TODO lab7.5), as point_shadow() divides the fragment's distance");
     } else if (_sl_follows(s, t, _sl_ndc_depth, near, far) > 0.9) {
         sl_diag_say(out, "face %s holds the depth buffer's own values (gl_FragCoord.z, the projection's non-linear "
                          "depth along the face's axis), not distance / far", face);
-        sl_diag_cause(out, "the lookup compares distances: write length(world position - light) / u_light_far into "
+        sl_diag_cause_in(out, "cube_depth.frag", "the lookup compares distances: write length(world position - light) / u_light_far into "
                            "gl_FragDepth in shaders/cube_depth.frag (TODO lab7.5)");
     } else if (_sl_match(s, t, _sl_scale, tan(glm_rad(22.5f)), k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s shows a narrower view than the reference: the reference's middle %.0f%%, magnified",
                     face, 100 * tan(glm_rad(22.5f)));
-        sl_diag_cause(out, "a field of view of 45 degrees: each face needs 90 (glm_rad(90.0f)) to meet its neighbours "
+        sl_diag_cause_in(out, "lab7_face_projection", "a field of view of 45 degrees: each face needs 90 (glm_rad(90.0f)) to meet its neighbours "
                            "edge to edge (lab7_face_projection, TODO lab7.4)");
     } else if (_sl_match(s, t, _sl_rotate_180, 0, k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s is the reference turned upside down (rotated 180 degrees)", face);
-        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+        sl_diag_cause_in(out, "lab7_face_view", "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
     } else if (_sl_match(s, t, _sl_mirror_y, 0, k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s is the reference flipped upside down (mirrored top to bottom)", face);
-        sl_diag_cause(out, "face %s: the up vector should be %s, and the face looks down %s (lab7_face_view, TODO "
+        sl_diag_cause_in(out, "lab7_face_view", "face %s: the up vector should be %s, and the face looks down %s (lab7_face_view, TODO "
                            "lab7.3)", face, up, face);
     } else if (_sl_match(s, t, _sl_mirror_x, 0, k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s is the reference mirrored left to right", face);
-        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+        sl_diag_cause_in(out, "lab7_face_view", "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
     } else if (_sl_match(s, t, _sl_rotate_90, 0, k->threshold * 5) > 0.95 ||
                _sl_match(s, t, _sl_rotate_270, 0, k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s is the reference turned by 90 degrees", face);
-        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+        sl_diag_cause_in(out, "lab7_face_view", "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
     } else {
         long nearer = 0, farther = 0, n = (long)s->width * s->height;
         for (long i = 0; i < n; i++) {
@@ -207,10 +207,9 @@ void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_re
             sl_diag_append(out, ". The cube map was drawn in one layered pass (lab7_begin_cube_pass attached all six "
                                 "faces), so this face's picture comes from shaders/cube_depth.geom");
             sl_diag_cause(out, "in cube_depth.geom, the copy sent to gl_Layer = f must be projected with "
-                               "u_face_view_projection[f], the same f, and carry its world position on (gs_out); or "
-                               "lab7_face_view gives face %s another view (its probe says)", face);
+                               "u_face_view_projection[f], the same f, and carry its world position on (gs_out)");
         } else
-            sl_diag_cause(out, "does the face look down %s with the up vector %s (lab7_face_view), and does "
+            sl_diag_cause_in(out, "lab7_face_view", "does the face look down %s with the up vector %s (lab7_face_view), and does "
                                "shaders/cube_depth.frag store length(world position - light) / far?", face, up);
     }
     if (st.nan_pixels) sl_diag_append(out, "; %ld texels are NaN", st.nan_pixels);
@@ -230,7 +229,7 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *s, const sl_i
         sl_diag_say(out, "shadow acne on %.0f%% of the lit surfaces: they shadow themselves in a fine pattern of "
                          "stripes and specks (%.0f%% of the darkened pixels sit next to lit ones)",
                     100 * acne.fraction, 100 * acne.pattern);
-        sl_diag_cause(out, "the bias is too small or missing: %s compares length(light_to_fragment) / far_plane - bias "
+        sl_diag_cause_in(out, fn, "the bias is too small or missing: %s compares length(light_to_fragment) / far_plane - bias "
                            "with the stored distance / far, the bias as given, in units of distance / far (this case: "
                            "%g, %.2g in world units; TODO %s)",
                       fn, c->params.cube.bias, c->params.cube.bias * c->scene.light.far, todo);
@@ -239,7 +238,7 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *s, const sl_i
     if (v.extra_shadow > 0.5 && v.missing_shadow < 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
         sl_diag_say(out, "almost everything is in shadow (%.0f%% of the reference's lit pixels)", 100 * v.extra_shadow);
-        sl_diag_cause(out, "does %s compare like with like — the fragment's distance divided by far_plane with the "
+        sl_diag_cause_in(out, fn, "does %s compare like with like — the fragment's distance divided by far_plane with the "
                            "stored distance / far (TODO %s)?", fn, todo);
         return true;
     }
@@ -247,7 +246,7 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *s, const sl_i
         out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
         sl_diag_say(out, "shadows fall on the wrong side of the room (%.0f%% of the reference's shadows lit, %.0f%% of "
                          "its lit pixels shadowed)", 100 * v.missing_shadow, 100 * v.extra_shadow);
-        sl_diag_cause(out, "is the lookup direction fragment - light (%s, TODO %s), and do the faces look the right "
+        sl_diag_cause_in(out, fn, "is the lookup direction fragment - light (%s, TODO %s), and do the faces look the right "
                            "way (lab7_face_view)?", fn, todo);
         return true;
     }
@@ -436,6 +435,22 @@ static int _sl_lookup_verdict(const sl_check *k, const double *s, const double *
         lighter += s[row] > e[row];
         if (first_bias < 0) first_bias = row;
     }
+    /* the soft lookup: rows that differ only in the radius, the same answer where the solution's differ */
+    const sl_probe_function *f = sl_probe_at(k->function);
+    for (int a = 0; f && f->param_count == 5 && a < k->rows; a++) {
+        if (!((failing >> a) & 1u)) continue;
+        for (int b = 0; b < k->rows; b++) {
+            const float *ia = k->inputs[a], *ib = k->inputs[b];
+            bool twin = b != a && ia[6] != ib[6];
+            for (int i = 0; twin && i < 6; i++) twin = ia[i] == ib[i];
+            if (twin && fabs(s[a] - s[b]) < 1e-3 && fabs(e[a] - e[b]) > 0.05) {
+                snprintf(text, n, "the disk ignores radius: radius %g and radius %g give the same — the samples go "
+                                  "out to radius * length(light_to_fragment) / far_plane around the direction",
+                         (double)ia[6], (double)ib[6]);
+                return a;
+            }
+        }
+    }
     if (bias_rows > 0 && bias_rows == failing_count) {
         if (darker == bias_rows)
             snprintf(text, n, "shadow acne: points just behind a surface, within the bias, come out shadowed — the bias "
@@ -469,12 +484,24 @@ int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double
 
 bool sl_lab7_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
     if (strcmp(fn, "cube_depth.frag") == 0) return true;
+    /* the geometry shader of the layered pass runs only when the lab's lab7_begin_cube_pass takes all
+     * faces, which the case cannot tell: the "path" capture can, and the face checks name it from there */
+    if (strcmp(fn, "cube_depth.geom") == 0) return false;
     return sl_lab7_case_calls(c, k, fn);
 }
 
 void sl_lab7_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
-    (void)r;
-    if (c->params.cube.pass == SL_CUBE_PASS_LAYERED) snprintf(out, n, "the cube map drawn in one layered pass");
-    else if (c->params.cube.pass == SL_CUBE_PASS_SIX) snprintf(out, n, "the cube map drawn in six passes");
-    else snprintf(out, n, "the cube map drawn in one layered pass where lab7_begin_cube_pass takes all faces, else six");
+    const sl_capture *path = r ? sl_result_capture(r, sl_capture_name(SL_CAPTURE_PATH)) : NULL;
+    const char *pass = path && path->number_count >= SL_PATH_NUMBERS
+                           ? (path->numbers[1] != 0 ? "in one layered pass (lab7_begin_cube_pass took all six faces, "
+                                                      "and shaders/cube_depth.geom, which has no probe, sent each "
+                                                      "triangle to them)"
+                                                    : "in six passes, one per face")
+                       : c->params.cube.pass == SL_CUBE_PASS_LAYERED ? "in one layered pass"
+                       : c->params.cube.pass == SL_CUBE_PASS_SIX     ? "in six passes"
+                                                                     : "in one layered pass where lab7_begin_cube_pass "
+                                                                       "takes all faces, else six";
+    bool lookup = r && (sl_result_capture(r, "visibility") || sl_result_capture(r, "image"));
+    snprintf(out, n, "the cube map drawn %s%s%s", pass, lookup ? ", looked up with " : "",
+             lookup ? (c->params.cube.soft ? "point_shadow_soft() (20 directions)" : "point_shadow()") : "");
 }

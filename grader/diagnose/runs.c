@@ -20,9 +20,7 @@ static const sl_lab_function _sl_unprobed[] = {
     {"lab5_create_moments_target", 5, "TODO(lab5.1)", false},
     {"lab5_begin_moments_pass", 5, "TODO(lab5.2)", false},
     {"lab5_begin_blur_pass", 5, "TODO(lab5.4)", false},
-    {"blur_moments", 5, "TODO(lab5.5)", false},
     {"lab5_filter_moments", 5, "TODO(lab5.6)", false},
-    {"cascade_compare", 6, "TODO(lab6.5)", false},
     {"cube_depth.frag", 7, "TODO(lab7.5)", false},
 };
 #define _SL_UNPROBED_COUNT ((int)(sizeof _sl_unprobed / sizeof _sl_unprobed[0]))
