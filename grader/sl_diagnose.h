@@ -89,6 +89,7 @@ bool sl_lab4_case_runs(const sl_case *c, const sl_check *k, const char *function
 bool sl_lab5_case_runs(const sl_case *c, const sl_check *k, const char *function);
 bool sl_lab6_case_runs(const sl_case *c, const sl_check *k, const char *function);
 bool sl_lab7_case_runs(const sl_case *c, const sl_check *k, const char *function);
+void sl_lab2_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
 void sl_lab3_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
 void sl_lab4_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
 void sl_lab5_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);

@@ -4,12 +4,11 @@
 # "find:" text is replaced by the "replace:" text after it, in the file named
 # by the last "file:" line before them (a variant may change several files).
 # "find+:" and "replace+:" lines continue the text above them on a new line,
-# for a change that spans lines. Fails when a find text is no longer in its
-# file, or is there more than once, so variants cannot rot or hit the wrong place.
-# "function: NAME" stands for a whole definition in that file, from the line
-# that starts it (a type at the line's start, then NAME and "(", no ";") to the
-# first line that is only "}" after it: the next "replace:" text replaces it
-# all (tests/external/'s adaptations write whole functions of their own).
+# for a change that spans lines. "function: NAME" stands for a find text that
+# is the whole definition of NAME in that file (from the line that declares it,
+# at the start of a line, to the next line that is just "}"), for a change that
+# rewrites a function (tests/external). Fails when a find text is no longer in
+# its file, or is there more than once, so variants cannot rot or hit the wrong place.
 set -euo pipefail
 spec=$1 solutions=$2 out=$3
 file="" files=() finds=() replaces=() last=""
@@ -21,7 +20,7 @@ while IFS= read -r line || [ -n "$line" ]; do
       files+=("$file"); finds+=("${line#find: }"); last=find ;;
     "function: "*)
       [ -n "$file" ] || { echo "$spec: a function: before any file:" >&2; exit 1; }
-      files+=("$file"); finds+=($'\x01'"${line#function: }"); last="" ;;
+      files+=("$file"); finds+=($'\001'"${line#function: }"); last=function ;;
     "find+: "* | "find+:")
       [ "$last" = find ] || { echo "$spec: find+: must follow a find: line" >&2; exit 1; }
       r=${line#find+:}; finds[${#finds[@]}-1]+=$'\n'"${r# }" ;;
@@ -40,23 +39,17 @@ for i in "${!finds[@]}"; do
   target="$out.tmp/${files[$i]}"
   [ -f "$target" ] || { echo "$spec: no file ${files[$i]} in the solutions" >&2; rm -rf "$out.tmp"; exit 1; }
   content=$(cat "$target"; printf x); content=${content%x}
-  if [ "${finds[$i]:0:1}" = $'\x01' ]; then
-    # a whole definition: its lines, found by name
-    name=${finds[$i]:1}
-    span=$(awk -v name="$name" '
-      BEGIN { pat = "^[A-Za-z_][A-Za-z0-9_ \\t\\*]*[ \\t\\*]" name "\\(" }
-      start == 0 && $0 ~ pat && $0 !~ /;[ \t]*$/ { start = NR; count++; next }
-      start > 0 && end == 0 && $0 == "}" { end = NR }
-      $0 ~ pat && $0 !~ /;[ \t]*$/ && NR != start { count++ }
-      END { print start, end, count }' "$target")
-    read -r first last_line count <<<"$span"
-    if [ "${count:-0}" != 1 ] || [ "${last_line:-0}" = 0 ]; then
-      echo "$spec: the definition of ${name}() is not in ${files[$i]} exactly once: update the variant" >&2
-      rm -rf "$out.tmp"; exit 1
+  if [[ "${finds[$i]}" == $'\001'* ]]; then
+    # the whole definition of a function: its declaring line, up to the first line that is "}"
+    fn=${finds[$i]#$'\001'}
+    if ! block=$(awk -v fn="$fn" '
+      !inside && $0 ~ ("^[A-Za-z_][A-Za-z0-9_ *]*[ *]" fn "[(]") { inside = 1; n++ }
+      inside { print }
+      inside && $0 == "}" { inside = 0 }
+      END { if (n != 1) exit 1 }' "$target"); then
+      echo "$spec: function $fn is not defined once in ${files[$i]}" >&2; rm -rf "$out.tmp"; exit 1
     fi
-    { head -n $((first - 1)) "$target"; printf '%s\n' "${replaces[$i]}"; tail -n +$((last_line + 1)) "$target"; } >"$target.new"
-    mv "$target.new" "$target"
-    continue
+    finds[$i]=$block
   fi
   case "$content" in
     *"${finds[$i]}"*) ;;

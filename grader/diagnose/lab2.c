@@ -133,3 +133,11 @@ bool sl_lab2_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
     if (strcmp(fn, "shadow_coord") == 0) return true;
     return strcmp(fn, c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware" : "shadow_compare_manual") == 0;
 }
+
+void sl_lab2_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    (void)r;
+    snprintf(out, n, "%s with %s map",
+             c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware() on a sampler2DShadow"
+                                                      : "shadow_compare_manual() on a sampler2D",
+             c->scene.light.type == SL_LIGHT_SPOT ? "a spot light's (perspective: w is not 1)" : "a sun's (orthographic)");
+}

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "sl_probe.h"
+#include "sl_verdict.h"
 
 /* Lab code without a probe of its own: files and C functions a case may run.
  * Listed so that a message can name them as candidates. */
@@ -74,6 +75,7 @@ bool sl_case_runs(const sl_case *c, const sl_check *k, const char *function) {
 void sl_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
     out[0] = '\0';
     switch (c->lab) {
+    case 2: sl_lab2_case_path(c, r, out, n); break;
     case 3: sl_lab3_case_path(c, r, out, n); break;
     case 4: sl_lab4_case_path(c, r, out, n); break;
     case 5: sl_lab5_case_path(c, r, out, n); break;
@@ -97,7 +99,21 @@ const float *sl_probe_row_param(const sl_probe_function *f, const float *row, co
 
 static bool _sl_perspective(const sl_case *c) { return c->scene.light.type != SL_LIGHT_DIRECTIONAL; }
 
-bool sl_case_meets_row(const sl_case *c, const sl_check *probe, int r) {
+/* The settings a lab's rows test (a radius): where a row's mistake is known not to depend on them, a
+ * case meets the row whatever its settings. */
+static bool _sl_meets_settings(const sl_case *c, const sl_check *probe, int r) {
+    const sl_probe_function *f = sl_probe_at(probe->function);
+    switch (f->lab) {
+    case 4: return sl_lab4_meets_row(c, probe, r);
+    default: return true;
+    }
+}
+
+static bool _sl_meets_row(const sl_case *c, const sl_check *probe, int r, bool every_setting);
+
+bool sl_case_meets_row(const sl_case *c, const sl_check *probe, int r) { return _sl_meets_row(c, probe, r, false); }
+
+static bool _sl_meets_row(const sl_case *c, const sl_check *probe, int r, bool every_setting) {
     const sl_probe_function *f = sl_probe_at(probe->function);
     if (!f || r < 0 || r >= probe->rows) return false;
     const float *row = probe->inputs[r];
@@ -113,10 +129,7 @@ bool sl_case_meets_row(const sl_case *c, const sl_check *probe, int r) {
     if (mode && strcmp(f->name, "lab3_depth_pass_state") == 0 && (int)*mode != (int)c->params.bias.mode) return false;
     if (mode && strcmp(f->name, "lab4_configure_shadow_texture") == 0 && (int)*mode != (int)c->params.filter.mode)
         return false;
-    switch (f->lab) {
-    case 4: return sl_lab4_meets_row(c, probe, r);
-    default: return true;
-    }
+    return every_setting || _sl_meets_settings(c, probe, r);
 }
 
 /* ---- what a failed probe predicts, and whether it explains a check ---- */
@@ -138,9 +151,10 @@ uint32_t sl_probe_failure_predicts(const sl_case *c, const sl_probe_failure *fai
     if (!failure->failing_rows || !failure->check) return SL_SYMPTOMS_ANY; /* failed as a whole: not called, a stub */
     uint32_t predicts = 0;
     for (int row = 0; row < failure->check->rows; row++)
-        if ((failure->failing_rows >> row) & 1u && sl_case_meets_row(c, failure->check, row) &&
+        if ((failure->failing_rows >> row) & 1u &&
+            _sl_meets_row(c, failure->check, row, (failure->row_predicts[row] & SL_PREDICTS_EVERY_SETTING) != 0) &&
             _sl_outputs_reach(c, f, failure->row_outputs[row]))
-            predicts |= failure->row_predicts[row] ? failure->row_predicts[row] : SL_SYMPTOMS_ANY;
+            predicts |= failure->row_predicts[row] ? failure->row_predicts[row] & ~SL_PREDICTS_EVERY_SETTING : SL_SYMPTOMS_ANY;
     return predicts;
 }
 

@@ -19,6 +19,11 @@ typedef struct sl_verdict_rows {
     uint32_t *predicts;
 } sl_verdict_rows;
 
+/* A flag in a prediction: the mistake the verdict names does not depend on the rows' settings (a
+ * kernel's spacing shows at every radius, even where the rows at one radius happen to pass), so a
+ * case at another setting than the failing rows' still runs it. */
+#define SL_PREDICTS_EVERY_SETTING (1u << 31)
+
 /* A verdict's prediction (see predicts above). */
 static inline void sl_verdict_predicts(const sl_verdict_rows *v, uint32_t symptoms) {
     if (v->predicts) *v->predicts = symptoms;

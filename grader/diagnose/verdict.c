@@ -190,6 +190,58 @@ static int _sl_verdict_pcss_search(const sl_verdict_rows *v, char *text, size_t 
     return -1;
 }
 
+/* A (2r+1)^2 grid whose samples are `spacing` texels apart, on a synthetic map (nearest texels, the
+ * border's depth 1.0 off the map): what pcf_grid gives for a row with that spacing. */
+static double _sl_grid_with_spacing(const sl_probe_function *f, const float *in, double spacing) {
+    const float *map = _sl_param(f, in, "shadow_map"), *coord = _sl_param(f, in, "shadow_coord");
+    const float *bias = _sl_param(f, in, "bias"), *radius = _sl_param(f, in, "radius");
+    if (!map || !coord || !bias || !radius || coord[3] <= 0) return NAN;
+    double x = coord[0] / coord[3], y = coord[1] / coord[3], z = coord[2] / coord[3] - *bias;
+    int r = (int)*radius, lit = 0, all = 0;
+    for (int j = -r; j <= r; j++)
+        for (int i = -r; i <= r; i++) {
+            double u = x + i * spacing / SL_PROBE_MAP_SIZE, w = y + j * spacing / SL_PROBE_MAP_SIZE;
+            double stored = u < 0 || u >= 1 || w < 0 || w >= 1
+                                ? 1.0
+                                : sl_probe_map_depth((sl_probe_map)(int)*map, (int)floor(u * SL_PROBE_MAP_SIZE),
+                                                     (int)floor(w * SL_PROBE_MAP_SIZE));
+            lit += !(z > stored);
+            all++;
+        }
+    return (double)lit / all;
+}
+
+/* The grid's samples another whole or half number of texels apart (a scale of 1.5, as some
+ * published kernels take, or 2): every failing row as such a grid gives it. */
+static int _sl_grid_spacing(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "pcf_grid") != 0) return -1;
+    static const double spacings[] = {0.5, 1.5, 2.0, 2.5, 3.0};
+    for (size_t k = 0; k < sizeof spacings / sizeof spacings[0]; k++) {
+        int matched = 0, failing = 0, first = -1;
+        for (int r = 0; r < v->k->rows; r++) {
+            if (!_sl_failed(v, r)) continue;
+            failing++;
+            double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
+            double model = _sl_grid_with_spacing(v->f, v->k->inputs[r], spacings[k]);
+            if (!isnan(model) && _sl_near(_sl_got(v, r, 0), model, tolerance + 1e-4)) {
+                matched++;
+                if (first < 0) first = r;
+            }
+        }
+        if (failing > 0 && matched == failing) {
+            snprintf(text, n, "the samples are %g texels apart, not one: offset (x, y) times the texel, 1.0 / "
+                              "textureSize(map, 0), with no other scale — a grid of radius r spans 2r + 1 texels, so "
+                              "its penumbra is %s",
+                     spacings[k], spacings[k] > 1 ? "wider than it should be" : "narrower than it should be");
+            sl_verdict_predicts(v, (spacings[k] > 1 ? 1u << SL_SYMPTOM_WIDE_PENUMBRA : 1u << SL_SYMPTOM_NARROW_PENUMBRA) |
+                                       1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT |
+                                       SL_PREDICTS_EVERY_SETTING);
+            return first;
+        }
+    }
+    return -1;
+}
+
 static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     const sl_probe_function *f = v->f;
     bool kernel = strcmp(f->name, "pcf_grid") == 0 || strcmp(f->name, "pcf_poisson") == 0;
@@ -281,6 +333,7 @@ static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     }
     /* fractional, but the same whatever the radius */
     if ((row = _sl_radius_ignored(v, text, n)) >= 0) return row;
+    if ((row = _sl_grid_spacing(v, text, n)) >= 0) return row;
     if (narrow > wide && first_width >= 0) {
         snprintf(text, n, "the kernel is too narrow: across an occluder's edge its results stay closer to a single "
                           "comparison's 0 or 1 than they should — are the offsets radius texels wide, each texel "
@@ -323,7 +376,7 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         }
     }
     /* Where the clamp does not act: which function of the angle does the slope term follow? */
-    int rows_seen = 0, as_sin = 0, as_angle = 0, first = -1;
+    int rows_seen = 0, as_sin = 0, as_angle = 0, as_one_minus = 0, as_max_one_minus = 0, first = -1;
     double ratio_lo = INFINITY, ratio_hi = -INFINITY, term_lo = INFINITY, term_hi = -INFINITY;
     for (int r = 0; r < rows; r++) {
         const float *in = v->k->inputs[r];
@@ -339,12 +392,25 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         rows_seen++;
         as_sin += _sl_near(term, sin_t, 0.02 * sin_t + 1e-4);
         as_angle += _sl_near(term, tan(cos_t), 0.02 * tan(cos_t) + 1e-4) || _sl_near(term, acos(cos_t), 0.02);
+        /* 1 - N.L: LearnOpenGL's bias, max(0.05 * (1 - N.L), 0.005), or that term added to the constant */
+        double one_minus = slope * (1 - cos_t);
+        as_one_minus += _sl_near(s, c + one_minus, 0.02 * (c + one_minus) + 1e-7);
+        as_max_one_minus += _sl_near(s, fmax(one_minus, c), 0.02 * fmax(one_minus, c) + 1e-7);
         ratio_lo = fmin(ratio_lo, s / e);
         ratio_hi = fmax(ratio_hi, s / e);
         term_lo = fmin(term_lo, term / ((e - c) / slope));
         term_hi = fmax(term_hi, term / ((e - c) / slope));
     }
     if (rows_seen == 0) return -1;
+    if (as_max_one_minus == rows_seen || as_one_minus == rows_seen) {
+        snprintf(text, n, "the slope term follows 1 - N.L, not tan(theta)%s: 1 - N.L stays below 1 where tan(theta) "
+                          "grows without bound, so grazing surfaces get too little bias — min(constant + slope * "
+                          "tan(theta), max_bias), tan(theta) = sqrt(1 - cos^2) / cos",
+                 as_max_one_minus == rows_seen ? ", and the larger of it and the constant where their sum belongs "
+                                                 "(LearnOpenGL's max(0.05 * (1 - N.L), 0.005))" : "");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+        return first;
+    }
     if (as_sin == rows_seen) {
         snprintf(text, n, "sin(theta) where tan(theta) belongs: the slope term follows sqrt(1 - cos^2), not "
                           "sqrt(1 - cos^2) / cos — divide by cos(theta) = N.L");
@@ -466,6 +532,69 @@ static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, si
     return -1;
 }
 
+/* ---- lab 2 ---- */
+
+/* glm_ortho's box and glm_perspective's field of view, read back from a
+ * column-major matrix (outputs m00, m10, ...: index col * 4 + row). */
+static bool _sl_ortho_box(const double *m, double box[6]) {
+    if (fabs(m[15] - 1) > 1e-6 || fabs(m[11]) > 1e-6 || m[0] == 0 || m[5] == 0 || m[10] == 0) return false;
+    double w = 2 / m[0], h = 2 / m[5], d = -2 / m[10];
+    double cx = -m[12] * w / 2, cy = -m[13] * h / 2, cz = -m[14] * d / 2;
+    box[0] = cx - w / 2, box[1] = cx + w / 2, box[2] = cy - h / 2, box[3] = cy + h / 2;
+    box[4] = cz - d / 2, box[5] = cz + d / 2; /* near, far */
+    return true;
+}
+
+static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double s[16], e[16], bs[6], be[6];
+        for (int o = 0; o < 16; o++) {
+            s[o] = _sl_got(v, r, o);
+            e[o] = _sl_want(v, r, o);
+        }
+        if (_sl_ortho_box(e, be)) {
+            if (!_sl_ortho_box(s, bs)) {
+                snprintf(text, n, "a sun needs an orthographic projection (glm_ortho): parallel rays");
+                return r;
+            }
+            double depth = be[5] - be[4], pad = depth / 1.02 * 0.01, tol = 1e-3 * fmax(1, depth);
+            bool sides = fabs(bs[0] - be[0]) < tol && fabs(bs[1] - be[1]) < tol && fabs(bs[2] - be[2]) < tol &&
+                         fabs(bs[3] - be[3]) < tol;
+            if (sides && fabs(bs[4] - (be[4] + pad)) < tol && fabs(bs[5] - (be[5] - pad)) < tol) {
+                snprintf(text, n, "near and far hug the scene's box with no padding: pad each by 1%% of the box's "
+                                  "depth range (near = -max z - pad, far = -min z + pad), or rounding clips the "
+                                  "farthest corner");
+                sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_TOO_DARK);
+                return r;
+            }
+            if (!sides) {
+                snprintf(text, n, "the box's sides are not the scene's corners' extent in light view space: left/right "
+                                  "and bottom/top are the min and max x and y of all 8 corners, transformed by the "
+                                  "light's view as points (w = 1)");
+                return r;
+            }
+            snprintf(text, n, "near and far are not -(max z) and -(min z) of the corners in light view space (the "
+                              "camera looks down -z), padded by 1%% of the range");
+            return r;
+        }
+        /* a spot light: glm_perspective(fovy, 1, near, far), fovy = 2 * spot_angle_deg in radians */
+        if (e[5] > 0 && s[5] > 0 && fabs(e[11] + 1) < 1e-6) {
+            double fov_e = 2 * atan(1 / e[5]), fov_s = 2 * atan(1 / s[5]);
+            if (fabs(fov_s * 2 - fov_e) < 1e-3) {
+                snprintf(text, n, "the field of view is the cone's half-angle: fovy is twice spot_angle_deg");
+                return r;
+            }
+            const double degrees_per_radian = 57.29577951308232;
+            if (fabs(s[5] - 1 / tan(fov_e * degrees_per_radian / 2)) < 1e-3) {
+                snprintf(text, n, "the angle is in degrees where glm_perspective takes radians: glm_rad(2 * spot_angle_deg)");
+                return r;
+            }
+        }
+    }
+    return -1;
+}
+
 /* ---- lab 1 ---- */
 
 /* Outputs: min filter, mag filter, wrap S, wrap T, the border's depth (-1 without a border). */
@@ -543,6 +672,7 @@ int sl_probe_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     if (v->f->glsl && _sl_param(v->f, v->k->inputs[0], "shadow_map") && _sl_param(v->f, v->k->inputs[0], "shadow_coord"))
         return _sl_verdict_filter(v, text, n);
     if (strcmp(name, "lab1_create_shadow_map") == 0) return _sl_verdict_create_shadow_map(v, text, n);
+    if (strcmp(name, "lab2_light_projection") == 0) return _sl_verdict_light_projection(v, text, n);
     if (strcmp(name, "lab1_begin_depth_pass") == 0) return _sl_verdict_begin_depth_pass(v, text, n);
     if (strcmp(name, "slope_scaled_bias") == 0) return _sl_verdict_slope(v, text, n);
     if (strcmp(name, "normal_offset_position") == 0) return _sl_verdict_normal_offset(v, text, n);
