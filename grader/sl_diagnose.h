@@ -192,6 +192,8 @@ bool sl_lab7_probe_contract(const sl_check *k, const double *student, uint32_t *
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                        sl_check_result *out);
+/* A GL enum's name ("GL_CLAMP_TO_EDGE"), "unknown GL enum" for others. */
+const char *sl_diag_enum_name(unsigned value);
 /* A probe reference: the outputs of the solution, and the inputs they were made from. */
 bool sl_probe_reference_read(const char *path, const sl_check *k, double *outputs, char *err, size_t err_size);
 bool sl_probe_reference_write(const char *path, const sl_check *k, const double *outputs, char *err, size_t err_size);

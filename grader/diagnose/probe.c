@@ -17,6 +17,17 @@
 #include "sl_probe.h"
 #include "sl_verdict.h"
 
+const char *sl_diag_enum_name(unsigned value) {
+    /* the wrap modes a probe reads back, which the framework's table leaves out */
+    switch (value) {
+    case GL_CLAMP_TO_EDGE: return "GL_CLAMP_TO_EDGE";
+    case GL_CLAMP_TO_BORDER: return "GL_CLAMP_TO_BORDER";
+    case GL_REPEAT: return "GL_REPEAT";
+    case GL_MIRRORED_REPEAT: return "GL_MIRRORED_REPEAT";
+    default: return sl_gl_enum_name((GLenum)value);
+    }
+}
+
 /* A number as a message shows it: a GL enum by its name where the output is one. */
 static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
     if (isnan(v)) {
@@ -24,7 +35,7 @@ static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
         return;
     }
     if (gl_enum && v >= 0x0200 && v <= 0x9000 && v == floor(v)) {
-        const char *name = sl_gl_enum_name((GLenum)v);
+        const char *name = sl_diag_enum_name((unsigned)v);
         if (strncmp(name, "unknown", 7) != 0) {
             snprintf(out, n, "%s", name);
             return;

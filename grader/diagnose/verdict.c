@@ -6,6 +6,7 @@
  * across the synthetic step edge, and so on. */
 #define _POSIX_C_SOURCE 200809L
 #include "sl_verdict.h"
+#include "sl_diagnose.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -152,7 +153,8 @@ static int _sl_radius_ignored(const sl_verdict_rows *v, char *text, size_t n) {
  *   still sees the occluder: a search region too small (a fixed width, not
  *   light_size_uv * (d_receiver - near) / d_receiver) finds no blocker there
  *   and returns 1.0, while inside the occluder, where the point itself is a
- *   blocker, the penumbra, and so the result, is right. */
+ *   blocker, the penumbra, and so every result, is right (a penumbra wrong
+ *   there too is the filter's width: raw depths, a fixed radius). */
 static int _sl_verdict_pcss_search(const sl_verdict_rows *v, char *text, size_t n) {
     int floor_lighter = -1, floor_rows = 0, other_failing = 0, lit_side_lost = -1, lit_side_fail = 0, shadow_partial_fail = 0;
     for (int r = 0; r < v->k->rows; r++) {
@@ -169,7 +171,7 @@ static int _sl_verdict_pcss_search(const sl_verdict_rows *v, char *text, size_t 
             lit_side_fail++;
             if (s >= 0.999 && lit_side_lost < 0) lit_side_lost = r;
         }
-        if (edge && soft && fr.centre == 0.0 && failed) shadow_partial_fail++;
+        if (edge && fr.centre == 0.0 && failed) shadow_partial_fail++; /* inside the occluder, the point is a blocker */
     }
     if (floor_rows && floor_lighter >= 0 && other_failing == 0) {
         snprintf(text, n, "the blocker search counts the receiver's own surface as a blocker: over a floor it finds "
@@ -211,35 +213,45 @@ static double _sl_grid_with_spacing(const sl_probe_function *f, const float *in,
     return (double)lit / all;
 }
 
-/* The grid's samples another whole or half number of texels apart (a scale of 1.5, as some
- * published kernels take, or 2): every failing row as such a grid gives it. */
+/* The grid's samples another distance apart than one texel (a scale of 1.5, as some published
+ * kernels take, or a fixed step in uv): the spacings, in texels of the 64-texel map, at which a grid
+ * gives every failing row what the student's gives. One map size cannot tell a scale from a uv
+ * step, so the message names both. */
 static int _sl_grid_spacing(const sl_verdict_rows *v, char *text, size_t n) {
     if (strcmp(v->f->name, "pcf_grid") != 0) return -1;
-    static const double spacings[] = {0.5, 1.5, 2.0, 2.5, 3.0};
-    for (size_t k = 0; k < sizeof spacings / sizeof spacings[0]; k++) {
-        int matched = 0, failing = 0, first = -1;
-        for (int r = 0; r < v->k->rows; r++) {
+    double lo = INFINITY, hi = -INFINITY;
+    int first = -1;
+    for (int step = 25; step <= 400; step++) {
+        double spacing = step / 100.0;
+        if (step == 100) continue;
+        bool all = true;
+        int failing = 0;
+        for (int r = 0; r < v->k->rows && all; r++) {
             if (!_sl_failed(v, r)) continue;
             failing++;
             double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
-            double model = _sl_grid_with_spacing(v->f, v->k->inputs[r], spacings[k]);
-            if (!isnan(model) && _sl_near(_sl_got(v, r, 0), model, tolerance + 1e-4)) {
-                matched++;
-                if (first < 0) first = r;
-            }
+            double model = _sl_grid_with_spacing(v->f, v->k->inputs[r], spacing);
+            all = !isnan(model) && _sl_near(_sl_got(v, r, 0), model, tolerance + 1e-4);
+            if (all && first < 0) first = r;
         }
-        if (failing > 0 && matched == failing) {
-            snprintf(text, n, "the samples are %g texels apart, not one: offset (x, y) times the texel, 1.0 / "
-                              "textureSize(map, 0), with no other scale — a grid of radius r spans 2r + 1 texels, so "
-                              "its penumbra is %s",
-                     spacings[k], spacings[k] > 1 ? "wider than it should be" : "narrower than it should be");
-            sl_verdict_predicts(v, (spacings[k] > 1 ? 1u << SL_SYMPTOM_WIDE_PENUMBRA : 1u << SL_SYMPTOM_NARROW_PENUMBRA) |
-                                       1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT |
-                                       SL_PREDICTS_EVERY_SETTING);
-            return first;
+        if (all && failing > 0) {
+            lo = fmin(lo, spacing);
+            hi = fmax(hi, spacing);
         }
     }
-    return -1;
+    if (first < 0 || !(lo <= hi) || (lo < 1 && hi > 1)) return -1;
+    bool wide = lo > 1;
+    char spacing[64];
+    if (hi - lo < 0.05) snprintf(spacing, sizeof spacing, "%.2g", lo);
+    else snprintf(spacing, sizeof spacing, "%.2g to %.2g", lo, hi);
+    snprintf(text, n, "the kernel is too %s: its samples are %s texels apart on this 64-texel map, not one — offset "
+                      "(x, y) times the texel, 1.0 / textureSize(map, 0), and nothing else: no scale (some published "
+                      "kernels spread a 3x3 grid 1.5 texels apart) and no fixed step in uv",
+             wide ? "wide" : "narrow", spacing);
+    sl_verdict_predicts(v, (wide ? 1u << SL_SYMPTOM_WIDE_PENUMBRA : 1u << SL_SYMPTOM_NARROW_PENUMBRA) |
+                               1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_GROSS |
+                               SL_PREDICTS_EVERY_SETTING);
+    return first;
 }
 
 static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
@@ -609,7 +621,7 @@ static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, s
                               "GL_CLAMP_TO_BORDER on S and T — %s, so a filter's samples past the edge find shadow where "
                               "there is none (lab 4's kernels); use GL_CLAMP_TO_BORDER with GL_TEXTURE_BORDER_COLOR "
                               "(1, 1, 1, 1), the far plane, lit",
-                     sl_gl_enum_name((GLenum)wrong),
+                     sl_diag_enum_name((unsigned)wrong),
                      wrong == GL_REPEAT || wrong == GL_MIRRORED_REPEAT ? "depths from the opposite edge wrap in"
                                                                        : "the edge texels are stretched outwards");
             sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
@@ -626,7 +638,7 @@ static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, s
         if (min != _sl_want(v, r, 0) || mag != _sl_want(v, r, 1)) {
             bool mipmap = min != GL_NEAREST && min != GL_LINEAR;
             snprintf(text, n, "the map is filtered with %s (min) and %s (mag), not GL_NEAREST: %s",
-                     sl_gl_enum_name((GLenum)min), sl_gl_enum_name((GLenum)mag),
+                     sl_diag_enum_name((unsigned)min), sl_diag_enum_name((unsigned)mag),
                      mipmap ? "a mipmap min filter makes a map without mipmaps incomplete, and every read 0"
                             : "a depth map is read exactly; GL_LINEAR blends the depths of different surfaces");
             return r;
