@@ -238,7 +238,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
         if (sharp_x < 0.67 && sharp_y < 0.67) {
             sl_diag_say(out, "the moments are blurrier than the reference's (%.2fx and %.2fx its differences between "
                              "neighbours along x and y)", sharp_x, sharp_y);
-            sl_diag_cause_in(out, "blur_moments", "blur_moments(): sigma = max(radius / 2, 0.5), offsets of one texel, radius texels "
+            sl_diag_cause_in(out, "blur_moments", "blur_moments(): sigma = max(float(radius) * 0.5, 0.5), offsets of one texel, radius texels "
                                "each side (TODO(lab5.5))");
             return;
         }
@@ -402,11 +402,39 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
             if (!twin) continue;
             if (fabs(_sl_got5(v, a, 0) - _sl_got5(v, b, 0)) < 1e-5 && fabs(_sl_want5(v, a, 0) - _sl_want5(v, b, 0)) > 1e-3) {
                 snprintf(text, n, "the radius is ignored: radius %d and radius %d give the same — a fixed kernel? "
-                                  "2 * radius + 1 taps with weights exp(-i^2 / (2 sigma^2)), sigma = max(radius / 2, 0.5)",
+                                  "2 * radius + 1 taps with weights exp(-i^2 / (2 sigma^2)), sigma = max(float(radius) * 0.5, 0.5)",
                          (int)ia[5], (int)ib[5]);
                 return a;
             }
         }
+    }
+    /* sigma = max(float(radius) * 0.5, 0.5) typed in GLSL: radius / 2 is an integer division, so an odd radius
+     * gets sigma 1 where 1.5 is meant (radius 3), 2 where 2.5 is meant (radius 5) */
+    int integer_sigma = 0, first_integer = -1;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        int radius = (int)in[5], dx = (int)in[3], dy = (int)in[4];
+        int x = (int)floor(in[1] * SL_PROBE_MAP_SIZE), y = (int)floor(in[2] * SL_PROBE_MAP_SIZE);
+        double sigma = fmax((double)(radius / 2), 0.5), sum = 0, weights = 0;
+        for (int i = -radius; i <= radius; i++) {
+            int tx = x + i * dx, ty = y + i * dy;
+            tx = tx < 0 ? 0 : tx >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : tx;
+            ty = ty < 0 ? 0 : ty >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : ty;
+            double w = exp(-(double)(i * i) / (2 * sigma * sigma));
+            sum += w * sl_probe_moments_depth((sl_probe_map)(int)in[0], tx, ty);
+            weights += w;
+        }
+        if (radius % 2 == 1 && radius > 1 && fabs(_sl_got5(v, r, 0) - sum / weights) < 1e-4) {
+            integer_sigma++;
+            if (first_integer < 0) first_integer = r;
+        }
+    }
+    if (integer_sigma > 0 && integer_sigma == failing) {
+        snprintf(text, n, "the kernel is too narrow at odd radii: radius %d blurs with sigma %d, as radius / 2 gives it "
+                          "in integer arithmetic — in GLSL write sigma = max(float(radius) * 0.5, 0.5)",
+                 (int)v->k->inputs[first_integer][5], (int)v->k->inputs[first_integer][5] / 2);
+        return first_integer;
     }
     /* across the edges: too little or too much of the other side */
     int narrow = 0, wide = 0, first_width = -1;
@@ -420,7 +448,7 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
     }
     if (narrow == failing || wide == failing) {
         snprintf(text, n, "the kernel is too %s: across an edge it takes %s of the other side than a Gaussian with "
-                          "sigma = max(radius / 2, 0.5) does — are the taps one texel apart (1.0 / textureSize), and "
+                          "sigma = max(float(radius) * 0.5, 0.5) does — are the taps one texel apart (1.0 / textureSize), and "
                           "the weights exp(-i^2 / (2 sigma^2))?",
                  narrow == failing ? "narrow" : "wide", narrow == failing ? "less" : "more");
         return first_width;

@@ -198,7 +198,7 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
         if (first < 0) first = r;
         uniform += is_u;
         logarithmic += is_l;
-        swapped += is_w && !is_u && !is_l;
+        swapped += is_w; /* at lambda 0 or 1 the swapped blend is the other pure scheme */
         ends += !_sl_close(_sl_out(v->student, v, r, 0), in[0]) || !_sl_close(_sl_out(v->student, v, r, count), in[1]);
     }
     if (!failing) return -1;
