@@ -272,5 +272,16 @@ void sl_vsm_describe_target(const sl_moments_target *t, double out[SL_MOMENTS_TA
         out[6] = type == GL_FLOAT;
         glBindTexture(GL_TEXTURE_2D, 0);
     }
+    /* the mipmaps: where they were made (level 1's width, 0 when it has none), and how each target is filtered */
+    for (int i = 0; i < 2; i++) {
+        if (!t->moments[i] || !glIsTexture(t->moments[i])) continue;
+        GLint level1 = 0, min_filter = 0;
+        glBindTexture(GL_TEXTURE_2D, t->moments[i]);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 1, GL_TEXTURE_WIDTH, &level1);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min_filter);
+        out[8 + 2 * i] = level1;
+        out[9 + 2 * i] = min_filter;
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
     while (glGetError() != GL_NO_ERROR) {}
 }

@@ -12,11 +12,17 @@
 #define _SL_MAP(n) {n, SL_PROBE_MAP}
 #define _SL_SHADOW(n) {n, SL_PROBE_SHADOW_MAP}
 #define _SL_CUBE(n) {n, SL_PROBE_CUBE_MAP}
+#define _SL_ARRAY(n) {n, SL_PROBE_ARRAY_MAP}
+#define _SL_MOMENTS(n) {n, SL_PROBE_MOMENTS_MAP}
 #define _SL_MATRIX_OUT "m00,m10,m20,m30,m01,m11,m21,m31,m02,m12,m22,m32,m03,m13,m23,m33"
 
 /* Every function the labs ask students to write, with its signature as the
  * stubs declare it. Outputs of matrices are column-major, as cglm and GLSL store them. */
 static const sl_probe_function _sl_functions[] = {
+    /* lab 1: the map as lab1_create_shadow_map makes it: its filtering, and what a lookup past its edge reads */
+    {.name = "lab1_create_shadow_map", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.1",
+     .outputs = "min filter,mag filter,wrap s,wrap t,border depth", .output_count = 5, .params = {_SL_I("size")},
+     .param_count = 1, .stub_param = -1, .stub_value = NAN},
     /* lab 1: the depth pass's state, on a map the probe makes (its depth texture filled with 0.5) */
     {.name = "lab1_begin_depth_pass", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.3",
      .outputs = "map's framebuffer bound,viewport width,viewport height,depth test,depth function,depth writes,"
@@ -50,10 +56,12 @@ static const sl_probe_function _sl_functions[] = {
      .todo = "lab2.6", .outputs = "visibility", .output_count = 1,
      .params = {_SL_SHADOW("shadow_map"), _SL_V4("shadow_coord"), _SL_F("bias")}, .param_count = 3, .stub_param = -1,
      .stub_value = 1.0},
-    /* lab 3 */
+    /* lab 3: the depth pass's state for a mode, from a neutral start or (previous_mode >= 0) right after
+     * the same function set another mode in the same context, as the viewer switches modes */
     {.name = "lab3_depth_pass_state", .lab = 3, .file = "lab3_bias/lab3.c", .todo = "lab3.1",
      .outputs = "polygon offset on,factor,units,culling on,cull face", .output_count = 5,
-     .params = {_SL_I("mode"), _SL_F("polygon_offset_factor"), _SL_F("polygon_offset_units")}, .param_count = 3,
+     .params = {_SL_I("mode"), _SL_F("polygon_offset_factor"), _SL_F("polygon_offset_units"), _SL_I("previous_mode")},
+     .param_count = 4,
      .stub_param = -1, .stub_value = NAN},
     {.name = "slope_scaled_bias", .lab = 3, .glsl = true, .file = "lab3_bias/shaders/bias.glsl", .todo = "lab3.2",
      .outputs = "bias", .output_count = 1,
@@ -94,6 +102,11 @@ static const sl_probe_function _sl_functions[] = {
     {.name = "compute_moments", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/moments.glsl", .todo = "lab5.3",
      .outputs = "first moment,second moment", .output_count = 2, .params = {_SL_F("depth")}, .param_count = 1,
      .stub_param = -1, .stub_value = 1.0},
+    /* the stub returns the texel at uv, unblurred: no constant (lab5.c's verdict names it) */
+    {.name = "blur_moments", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/blur.glsl", .todo = "lab5.5",
+     .outputs = "first moment,second moment", .output_count = 2,
+     .params = {_SL_MOMENTS("moments"), _SL_V2("uv"), _SL_V2("direction"), _SL_I("radius")}, .param_count = 4,
+     .stub_param = -1, .stub_value = NAN},
     {.name = "chebyshev_upper_bound", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/vsm.glsl", .todo = "lab5.7",
      .outputs = "p_max", .output_count = 1, .params = {_SL_V2("moments"), _SL_F("t"), _SL_F("min_variance")},
      .param_count = 3, .stub_param = -1, .stub_value = 1.0},
@@ -125,6 +138,10 @@ static const sl_probe_function _sl_functions[] = {
      .outputs = "layer", .output_count = 1,
      .params = {_SL_V3("view_position"), _SL_V4("split_far"), _SL_I("count")}, .param_count = 3, .stub_param = -1,
      .stub_value = 0.0},
+    {.name = "cascade_compare", .lab = 6, .glsl = true, .file = "lab6_cascades/shaders/cascades.glsl",
+     .todo = "lab6.5", .outputs = "visibility", .output_count = 1,
+     .params = {_SL_ARRAY("cascades"), _SL_I("layer"), _SL_V4("shadow_coord"), _SL_F("bias")}, .param_count = 4,
+     .stub_param = -1, .stub_value = 1.0},
     {.name = "cascade_blend", .lab = 6, .glsl = true, .file = "lab6_cascades/shaders/cascades.glsl", .todo = "lab6.6",
      .outputs = "weight", .output_count = 1,
      .params = {_SL_F("view_depth"), _SL_F("split_near"), _SL_F("split_far"), _SL_F("band")}, .param_count = 4,
@@ -173,7 +190,7 @@ int sl_probe_index(const sl_probe_function *f) { return (int)(f - _sl_functions)
 int sl_probe_type_size(sl_probe_type type) {
     static const int sizes[] = {[SL_PROBE_FLOAT] = 1, [SL_PROBE_INT] = 1, [SL_PROBE_VEC2] = 2, [SL_PROBE_VEC3] = 3,
                                 [SL_PROBE_VEC4] = 4, [SL_PROBE_MAT4] = 16, [SL_PROBE_MAP] = 1, [SL_PROBE_SHADOW_MAP] = 1,
-                                [SL_PROBE_CUBE_MAP] = 1};
+                                [SL_PROBE_CUBE_MAP] = 1, [SL_PROBE_ARRAY_MAP] = 1, [SL_PROBE_MOMENTS_MAP] = 1};
     return sizes[type];
 }
 
@@ -185,7 +202,7 @@ int sl_probe_input_count(const sl_probe_function *f) {
 
 static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit",      "occluded",      "step",
                                                               "ramp",     "cube_lit",      "cube_occluded",
-                                                              "cube_room", "cube_positive"};
+                                                              "cube_room", "cube_positive", "step_floor", "cascades", "moments_flat", "moments_step_x", "moments_step_y"};
 
 const char *sl_probe_map_name(sl_probe_map map) {
     return (unsigned)map < SL_PROBE_MAP_COUNT ? _sl_map_names[map] : "?";
@@ -204,11 +221,35 @@ float sl_probe_map_depth(sl_probe_map map, int x, int y) {
     case SL_PROBE_MAP_OCCLUDED: return 0.25f;
     case SL_PROBE_MAP_STEP: return u < 0.5f ? 0.25f : 1.0f;
     case SL_PROBE_MAP_RAMP: return u;
+    case SL_PROBE_MAP_STEP_FLOOR: return u < 0.5f ? 0.25f : 0.9f;
     default: return 1.0f;
     }
 }
 
-bool sl_probe_map_is_cube(sl_probe_map map) { return map >= SL_PROBE_MAP_CUBE_LIT && map < SL_PROBE_MAP_COUNT; }
+bool sl_probe_map_is_cube(sl_probe_map map) { return map >= SL_PROBE_MAP_CUBE_LIT && map <= SL_PROBE_MAP_CUBE_POSITIVE; }
+
+sl_probe_type sl_probe_map_type(sl_probe_map map) {
+    if (map >= SL_PROBE_MAP_MOMENTS_FLAT && map <= SL_PROBE_MAP_MOMENTS_STEP_Y) return SL_PROBE_MOMENTS_MAP;
+    return map == SL_PROBE_MAP_CASCADES ? SL_PROBE_ARRAY_MAP : sl_probe_map_is_cube(map) ? SL_PROBE_CUBE_MAP : SL_PROBE_MAP;
+}
+
+float sl_probe_moments_depth(sl_probe_map map, int x, int y) {
+    switch (map) {
+    case SL_PROBE_MAP_MOMENTS_STEP_X: return 2 * x < SL_PROBE_MAP_SIZE ? 0.25f : 0.75f;
+    case SL_PROBE_MAP_MOMENTS_STEP_Y: return 2 * y < SL_PROBE_MAP_SIZE ? 0.25f : 0.75f;
+    default: return 0.5f;
+    }
+}
+
+float sl_probe_layer_depth(sl_probe_map map, int layer, int x, int y) {
+    (void)map;
+    switch (layer) {
+    case 0: return sl_probe_map_depth(SL_PROBE_MAP_STEP, x, y);
+    case 2: return sl_probe_map_depth(SL_PROBE_MAP_OCCLUDED, x, y);
+    case 3: return 0.6f;
+    default: return 1.0f;
+    }
+}
 
 float sl_probe_cube_depth(sl_probe_map map, int face, int x, int y) {
     /* The direction through texel (x, y) of the face: GL's table of cube map

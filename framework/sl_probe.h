@@ -24,9 +24,13 @@ typedef enum sl_probe_type {
     SL_PROBE_MAP,        /* GLSL sampler2D over a synthetic depth map (sl_probe_map) */
     SL_PROBE_SHADOW_MAP, /* GLSL sampler2DShadow over one (compare mode on, GL_LEQUAL) */
     SL_PROBE_CUBE_MAP,   /* GLSL samplerCube over a synthetic depth cube map (lab 7; the cube_* maps) */
+    SL_PROBE_ARRAY_MAP,  /* GLSL sampler2DArray over a synthetic depth texture array (lab 6; "cascades") */
+    SL_PROBE_MOMENTS_MAP, /* GLSL sampler2D over synthetic moments, GL_RG32F as lab 5's targets (the moments_* maps) */
 } sl_probe_type;
 /* A parameter that names a synthetic map (its one float is the sl_probe_map). */
-#define SL_PROBE_IS_MAP(type) ((type) == SL_PROBE_MAP || (type) == SL_PROBE_SHADOW_MAP || (type) == SL_PROBE_CUBE_MAP)
+#define SL_PROBE_IS_MAP(type)                                                                                          \
+    ((type) == SL_PROBE_MAP || (type) == SL_PROBE_SHADOW_MAP || (type) == SL_PROBE_CUBE_MAP ||                         \
+     (type) == SL_PROBE_ARRAY_MAP || (type) == SL_PROBE_MOMENTS_MAP)
 
 /* Synthetic depth maps, 64 x 64 texels, for the functions that read one. */
 typedef enum sl_probe_map {
@@ -39,9 +43,19 @@ typedef enum sl_probe_map {
     SL_PROBE_MAP_CUBE_OCCLUDED, /* 0.25 everywhere: a closed shell 2.5 units around the light */
     SL_PROBE_MAP_CUBE_ROOM,     /* the walls of a cube room of half-size 2: 2 |d| / max|d_i| / 10, seamless */
     SL_PROBE_MAP_CUBE_POSITIVE, /* 0.1 on the +X, +Y, +Z faces (an occluder 1 unit away), 1.0 on the others */
+    /* 2D again (after the cube maps, so the others keep their numbers) */
+    SL_PROBE_MAP_STEP_FLOOR,    /* 0.25 where u < 0.5, 0.9 where u >= 0.5: an occluder's edge over a floor */
+    /* lab 6's cascades: a depth texture array of SL_PROBE_LAYERS layers, each its own content
+     * (0: "step", 1: "lit", 2: "occluded", 3: a surface at 0.6), so a lookup in another layer shows */
+    SL_PROBE_MAP_CASCADES,
+    /* lab 5's moments, (depth, depth^2) per texel, GL_RG32F, linear, clamped to the edge as lab 5's targets */
+    SL_PROBE_MAP_MOMENTS_FLAT,   /* depth 0.5 everywhere */
+    SL_PROBE_MAP_MOMENTS_STEP_X, /* depth 0.25 where u < 0.5, 0.75 where u >= 0.5: an edge across x */
+    SL_PROBE_MAP_MOMENTS_STEP_Y, /* depth 0.25 where v < 0.5, 0.75 where v >= 0.5: an edge across y */
     SL_PROBE_MAP_COUNT
 } sl_probe_map;
 #define SL_PROBE_MAP_SIZE 64
+#define SL_PROBE_LAYERS 4
 
 typedef struct sl_probe_param {
     const char *name;
@@ -82,6 +96,12 @@ float sl_probe_map_depth(sl_probe_map map, int x, int y);
 float sl_probe_cube_depth(sl_probe_map map, int face, int x, int y);
 /* Whether a map is one of the cube maps (for samplerCube parameters) or a 2D one. */
 bool sl_probe_map_is_cube(sl_probe_map map);
+/* The parameter type that takes a map: SL_PROBE_CUBE_MAP, SL_PROBE_ARRAY_MAP, or SL_PROBE_MAP for the 2D ones. */
+sl_probe_type sl_probe_map_type(sl_probe_map map);
+/* A moments map's first moment (the depth) at texel (x, y); the second is its square. */
+float sl_probe_moments_depth(sl_probe_map map, int x, int y);
+/* A texture array's depth in layer `layer` at texel (x, y). */
+float sl_probe_layer_depth(sl_probe_map map, int layer, int x, int y);
 
 /* A table of inputs as the runner receives it. */
 typedef struct sl_probe_table {

@@ -68,11 +68,16 @@ static char *_sl_probe_source(const sl_probe_function *f, const _sl_maps *maps, 
         for (int k = 0; k < SL_PROBE_MAP_COUNT; k++)
             if (maps[m].used[k])
                 _sl_add(&t, "uniform %s u_p%d_m%d;\n",
-                        f->params[maps[m].param].type == SL_PROBE_SHADOW_MAP ? "sampler2DShadow"
-                        : f->params[maps[m].param].type == SL_PROBE_CUBE_MAP ? "samplerCube"
-                                                                             : "sampler2D",
+                        f->params[maps[m].param].type == SL_PROBE_SHADOW_MAP  ? "sampler2DShadow"
+                        : f->params[maps[m].param].type == SL_PROBE_CUBE_MAP  ? "samplerCube"
+                        : f->params[maps[m].param].type == SL_PROBE_ARRAY_MAP ? "sampler2DArray"
+                        : f->params[maps[m].param].type == SL_PROBE_MOMENTS_MAP ? "sampler2D"
+                                                                              : "sampler2D",
                         m, k);
-    _sl_add(&t, "float sl_in(int i) { return texelFetch(u_inputs, ivec2(i >> 2, int(gl_FragCoord.y)), 0)[i & 3]; }\n");
+    /* two pixels per row: a 2x2 quad holds one row only, so dFdx and dFdy of
+     * anything computed from the inputs are 0 (a function is probed at a point,
+     * not along a surface: compute_moments' derivative term adds nothing here) */
+    _sl_add(&t, "float sl_in(int i) { return texelFetch(u_inputs, ivec2(i >> 2, int(gl_FragCoord.y) / 2), 0)[i & 3]; }\n");
     _sl_add(&t, "void main() {\n");
     int offset = 0;
     for (int i = 0; i < f->param_count; i++) {
@@ -144,6 +149,48 @@ static GLuint _sl_cube_texture(sl_probe_map map) {
     return tex;
 }
 
+/* Lab 6's cascades: a depth texture array set up as the framework's (nearest, a border of 1.0 outside). */
+static GLuint _sl_array_texture(sl_probe_map map) {
+    static float texels[SL_PROBE_LAYERS * SL_PROBE_MAP_SIZE * SL_PROBE_MAP_SIZE];
+    for (int layer = 0; layer < SL_PROBE_LAYERS; layer++)
+        for (int y = 0; y < SL_PROBE_MAP_SIZE; y++)
+            for (int x = 0; x < SL_PROBE_MAP_SIZE; x++)
+                texels[(layer * SL_PROBE_MAP_SIZE + y) * SL_PROBE_MAP_SIZE + x] = sl_probe_layer_depth(map, layer, x, y);
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, tex);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, SL_PROBE_MAP_SIZE, SL_PROBE_MAP_SIZE, SL_PROBE_LAYERS,
+                 0, GL_DEPTH_COMPONENT, GL_FLOAT, texels);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[4] = {1, 1, 1, 1};
+    glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, border);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    return tex;
+}
+
+/* Lab 5's moments: (depth, depth^2), set up as lab 5's targets (GL_RG32F, linear, clamped to the edge). */
+static GLuint _sl_moments_texture(sl_probe_map map) {
+    static float texels[SL_PROBE_MAP_SIZE * SL_PROBE_MAP_SIZE * 2];
+    for (int y = 0; y < SL_PROBE_MAP_SIZE; y++)
+        for (int x = 0; x < SL_PROBE_MAP_SIZE; x++) {
+            float d = sl_probe_moments_depth(map, x, y);
+            texels[(y * SL_PROBE_MAP_SIZE + x) * 2] = d;
+            texels[(y * SL_PROBE_MAP_SIZE + x) * 2 + 1] = d * d;
+        }
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, SL_PROBE_MAP_SIZE, SL_PROBE_MAP_SIZE, 0, GL_RG, GL_FLOAT, texels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return tex;
+}
+
 static GLuint _sl_map_texture(sl_probe_map map, bool shadow, bool linear) {
     static float texels[SL_PROBE_MAP_SIZE * SL_PROBE_MAP_SIZE];
     for (int y = 0; y < SL_PROBE_MAP_SIZE; y++)
@@ -203,7 +250,7 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     }
     int floats = sl_probe_input_count(f), width = (floats + 3) / 4;
     float *texels = calloc((size_t)width * 4 * (size_t)t->rows, sizeof(float));
-    float *pixels = calloc((size_t)t->rows * 4, sizeof(float));
+    float *pixels = calloc((size_t)t->rows * 2 * 4, sizeof(float));
     if (!texels || !pixels) {
         free(texels);
         free(pixels);
@@ -222,7 +269,7 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glGenTextures(1, &target);
     glBindTexture(GL_TEXTURE_2D, target);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, t->rows, 0, GL_RGBA, GL_FLOAT, NULL);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 2 * t->rows, 0, GL_RGBA, GL_FLOAT, NULL);
     glGenFramebuffers(1, &framebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
@@ -234,9 +281,12 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
         for (int k = 0; k < SL_PROBE_MAP_COUNT; k++) {
             if (!maps[m].used[k]) continue;
             glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
-            bool cube = f->params[maps[m].param].type == SL_PROBE_CUBE_MAP;
-            textures[texture_count++] = cube ? _sl_cube_texture((sl_probe_map)k)
-                                             : _sl_map_texture((sl_probe_map)k, shadow, shadow && f->linear_maps);
+            sl_probe_type type = f->params[maps[m].param].type;
+            textures[texture_count++] = type == SL_PROBE_CUBE_MAP    ? _sl_cube_texture((sl_probe_map)k)
+                                        : type == SL_PROBE_ARRAY_MAP ? _sl_array_texture((sl_probe_map)k)
+                                        : type == SL_PROBE_MOMENTS_MAP ? _sl_moments_texture((sl_probe_map)k)
+                                                                     : _sl_map_texture((sl_probe_map)k, shadow,
+                                                                                       shadow && f->linear_maps);
             char name[32];
             snprintf(name, sizeof name, "u_p%d_m%d", m, k);
             glUniform1i(sl_program_uniform(&program, name), unit++);
@@ -244,7 +294,7 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     }
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, inputs); /* unit 0 had the target bound while it was made */
-    glViewport(0, 0, 1, t->rows);
+    glViewport(0, 0, 1, 2 * t->rows);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
@@ -252,9 +302,9 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     glBindVertexArray(vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, 1, t->rows, GL_RGBA, GL_FLOAT, pixels);
+    glReadPixels(0, 0, 1, 2 * t->rows, GL_RGBA, GL_FLOAT, pixels);
     for (int r = 0; r < t->rows; r++)
-        for (int o = 0; o < f->output_count; o++) outputs[r * f->output_count + o] = pixels[r * 4 + o];
+        for (int o = 0; o < f->output_count; o++) outputs[r * f->output_count + o] = pixels[2 * r * 4 + o];
     glBindVertexArray(0);
     glDeleteVertexArrays(1, &vao);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -341,6 +391,36 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     glDeleteTextures(1, &map.depth_texture);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
+    return status;
+}
+
+/* lab1_create_shadow_map(size): the map's filtering and wrapping, as glGet*
+ * reports them: what a lookup of a later lab reads between texels and past
+ * the map's edge. */
+static sl_status _sl_call_create_shadow_map(const sl_lab_functions *labs, int size, double *out) {
+    sl_shadow_map map = {0};
+    sl_status status = labs->lab1_create_shadow_map(size, &map);
+    while (glGetError() != GL_NO_ERROR) {}
+    if (map.depth_texture && glIsTexture(map.depth_texture)) {
+        GLint min = 0, mag = 0, s = 0, t = 0;
+        GLfloat border[4] = {0, 0, 0, 0};
+        glBindTexture(GL_TEXTURE_2D, map.depth_texture);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &mag);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, &s);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, &t);
+        glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        out[0] = min;
+        out[1] = mag;
+        out[2] = s;
+        out[3] = t;
+        /* a depth texture reads its border's first component: only past the edge does it count */
+        out[4] = s == GL_CLAMP_TO_BORDER || t == GL_CLAMP_TO_BORDER ? border[0] : -1;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (map.framebuffer) glDeleteFramebuffers(1, &map.framebuffer);
+    if (map.depth_texture) glDeleteTextures(1, &map.depth_texture);
     return status;
 }
 
@@ -462,7 +542,9 @@ static sl_status _sl_call_c(const sl_probe_function *f, const float *in, double 
     mat4 m;
     glm_mat4_identity(m);
     sl_status status = SL_FAILED;
-    if (strcmp(f->name, "lab1_begin_depth_pass") == 0) {
+    if (strcmp(f->name, "lab1_create_shadow_map") == 0) {
+        status = _sl_call_create_shadow_map(labs, (int)in[0], out);
+    } else if (strcmp(f->name, "lab1_begin_depth_pass") == 0) {
         status = _sl_call_begin_depth_pass(labs, (int)in[0], out);
     } else if (strcmp(f->name, "lab2_light_view") == 0) {
         sl_light light = _sl_light((int)in[0], in + 1, in + 4);
@@ -505,7 +587,14 @@ static sl_status _sl_call_c(const sl_probe_function *f, const float *in, double 
         bias.polygon_offset_factor = in[1];
         bias.polygon_offset_units = in[2];
         _sl_neutral_depth_state();
-        status = labs->lab3_depth_pass_state(&bias);
+        int previous = (int)in[3];
+        if (previous >= 0 && previous < SL_BIAS_MODE_COUNT) {
+            /* the mode before: whatever it switched on must not outlive it */
+            sl_bias_settings before = bias;
+            before.mode = (sl_bias_mode)previous;
+            status = labs->lab3_depth_pass_state(&before);
+        }
+        if (status == SL_OK || previous < 0) status = labs->lab3_depth_pass_state(&bias);
         GLfloat factor = 0, units = 0;
         GLint face = 0;
         glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor);

@@ -47,6 +47,7 @@ typedef enum sl_capture_kind {
     /* lab 7: image, 1 channel: one face of the cube map (face f = SL_CAPTURE_CUBE_FACE + f), face size */
     SL_CAPTURE_CUBE_FACE,
     SL_CAPTURE_CUBE_FACE_LAST = SL_CAPTURE_CUBE_FACE + 5,
+    SL_CAPTURE_PATH,       /* numbers: the path the framework took (SL_PATH_NUMBERS, see sl_runner.c) */
     SL_CAPTURE_KIND_COUNT,
     /* numbers: the outputs of probe table k, "probe_k"; rows x outputs */
     SL_CAPTURE_PROBE = SL_CAPTURE_KIND_COUNT,
@@ -60,7 +61,8 @@ int sl_capture_parse(const char *name);
 
 #define SL_FBO_NUMBERS 10     /* see sl_runner.c: status, attachment type, ..., requested size */
 #define SL_MATRICES_NUMBERS 48
-#define SL_MOMENTS_TARGET_NUMBERS 8 /* see sl_vsm_describe_target */
+#define SL_MOMENTS_TARGET_NUMBERS 12 /* see sl_vsm_describe_target */
+#define SL_PATH_NUMBERS 2           /* the highest lab whose code drew the last frame; lab 7's cube map drawn layered (1) */
 
 typedef struct sl_job {
     uint32_t magic, version, size; /* SL_JOB_MAGIC, SL_PROTOCOL_VERSION, sizeof(sl_job) */

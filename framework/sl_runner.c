@@ -287,6 +287,11 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
             _sl_send_text(SL_MSG_CAPTURE_ERROR, sl_capture_name(SL_CAPTURE_CUBE_FACE + face), err);
         }
     }
+    if (_sl_wants(job, SL_CAPTURE_PATH)) {
+        /* which way the framework drew: a message can then say which code ran (a layered pass, another lab's) */
+        double path[SL_PATH_NUMBERS] = {info->lab_in_use, info->cube_layered};
+        _sl_send_numbers(SL_CAPTURE_PATH, path, SL_PATH_NUMBERS);
+    }
     if (_sl_wants(job, SL_CAPTURE_MATRICES) && info->lab2_ready) {
         double m[SL_MATRICES_NUMBERS];
         for (int i = 0; i < 16; i++) {

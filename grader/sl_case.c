@@ -48,6 +48,9 @@ static const char *const _sl_symptom_names[SL_SYMPTOM_COUNT] = {
     [SL_SYMPTOM_EXTRA_SHADOW] = "extra_shadow",     [SL_SYMPTOM_ACNE] = "acne",
     [SL_SYMPTOM_DETACHED] = "detached",             [SL_SYMPTOM_SWAPPED] = "swapped",
     [SL_SYMPTOM_HARD_EDGES] = "hard_edges",         [SL_SYMPTOM_STALE_DEPTH] = "stale_depth",
+    [SL_SYMPTOM_TOO_DARK] = "too_dark",             [SL_SYMPTOM_TOO_LIGHT] = "too_light",
+    [SL_SYMPTOM_NARROW_PENUMBRA] = "narrow_penumbra", [SL_SYMPTOM_WIDE_PENUMBRA] = "wide_penumbra",
+    [SL_SYMPTOM_GROSS] = "gross",
 };
 
 const char *sl_symptom_name(sl_symptom symptom) {
@@ -78,7 +81,7 @@ static bool _sl_hint_when(const sl_case *c, sl_check *k, const cJSON *json, char
         }
     }
     if (!ok) {
-        char names[300] = "";
+        char names[400] = "";
         for (int s = 0; s < SL_SYMPTOM_COUNT; s++)
             snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", s ? ", " : "", _sl_symptom_names[s]);
         snprintf(err, n, "%s: checks \"%s\": \"hint_when\" must name symptoms: %s", c->path, k->name, names);
@@ -100,7 +103,15 @@ const char *sl_check_capture_name(const sl_case *c, const sl_check *k) {
     return k->kind == SL_CHECK_PENUMBRA || k->kind == SL_CHECK_BLEEDING ? "visibility" : _sl_kinds[k->kind].name;
 }
 
+static uint32_t _sl_check_captures_of_kind(const sl_case *c, const sl_check *k);
+
 uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
+    /* lab 7: which way the cube map was drawn (six passes or one layered pass), for the messages */
+    if (c->lab == 7 && k->kind != SL_CHECK_PROBE) return _sl_check_captures_of_kind(c, k) | 1u << SL_CAPTURE_PATH;
+    return _sl_check_captures_of_kind(c, k);
+}
+
+static uint32_t _sl_check_captures_of_kind(const sl_case *c, const sl_check *k) {
     switch (k->kind) {
     case SL_CHECK_PROBE: return 1u << (SL_CAPTURE_PROBE + (int)(k - c->checks));
     case SL_CHECK_FBO: return 1u << SL_CAPTURE_FBO;
@@ -109,15 +120,16 @@ uint32_t sl_check_captures(const sl_case *c, const sl_check *k) {
     case SL_CHECK_VISIBILITY:
         /* from lab 2 on, acne is told from shadow on the surfaces that face the light */
         /* lab 5: the moments target's format too, the first suspect of a VSM picture that is off */
+        /* and the blurred moments, where a target cleared to (0, 0) shows */
         return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0) |
-               (c->lab == 5 ? 1u << SL_CAPTURE_MOMENTS_TARGET : 0);
+               (c->lab == 5 ? (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_MOMENTS_BLURRED) : 0);
     case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
     case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
     case SL_CHECK_MOMENTS: return (1u << SL_CAPTURE_MOMENTS) | (1u << SL_CAPTURE_MOMENTS_TARGET);
     case SL_CHECK_MOMENTS_BLURRED: return (1u << SL_CAPTURE_MOMENTS_BLURRED) | (1u << SL_CAPTURE_MOMENTS_TARGET);
     case SL_CHECK_BLEEDING:
         return (1u << SL_CAPTURE_VISIBILITY) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED) | (1u << SL_CAPTURE_LIT_MASK) |
-               (1u << SL_CAPTURE_MOMENTS_TARGET);
+               (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_MOMENTS_BLURRED);
     case SL_CHECK_CASCADE_INDEX: return 1u << SL_CAPTURE_CASCADE_INDEX;
     case SL_CHECK_FLICKER: return (1u << SL_CAPTURE_FLICKER) | (1u << SL_CAPTURE_LIT_MASK);
     case SL_CHECK_CUBE_FACE: return 1u << (SL_CAPTURE_CUBE_FACE + k->face);
@@ -261,7 +273,8 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
     }
     const cJSON *item;
     cJSON_ArrayForEach(item, row) {
-        bool known = strcmp(item->string, "about") == 0 || strcmp(item->string, "tolerance") == 0;
+        bool known = strcmp(item->string, "about") == 0 || strcmp(item->string, "tolerance") == 0 ||
+                     strcmp(item->string, "keep") == 0;
         for (int i = 0; i < f->param_count; i++) known |= strcmp(item->string, f->params[i].name) == 0;
         if (!known) {
             snprintf(err, n, "%s: checks \"%s\": rows[%d]: %s() has no parameter \"%s\"", c->path, k->name, r, f->name,
@@ -273,6 +286,25 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
     snprintf(k->about[r], sizeof k->about[r], "%s", about ? about : "");
     const cJSON *tolerance = cJSON_GetObjectItemCaseSensitive(row, "tolerance");
     k->row_tolerance[r] = cJSON_IsNumber(tolerance) && tolerance->valuedouble > 0 ? (float)tolerance->valuedouble : 0;
+    /* "keep": true (every parameter), or the names of the parameters a hidden variant leaves as written */
+    const cJSON *keep = cJSON_GetObjectItemCaseSensitive(row, "keep");
+    if (cJSON_IsTrue(keep)) k->row_keep[r] = 0xffffffffu;
+    else if (cJSON_IsArray(keep)) {
+        cJSON_ArrayForEach(item, keep) {
+            int found = -1;
+            for (int i = 0; cJSON_IsString(item) && i < f->param_count; i++)
+                if (strcmp(item->valuestring, f->params[i].name) == 0) found = i;
+            if (found < 0) {
+                snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"keep\" names parameters of %s()", c->path, k->name, r,
+                         f->name);
+                return false;
+            }
+            k->row_keep[r] |= 1u << found;
+        }
+    } else if (keep && !cJSON_IsFalse(keep)) {
+        snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"keep\" is true or a list of parameters", c->path, k->name, r);
+        return false;
+    }
     int offset = 0;
     for (int i = 0; i < f->param_count; i++) {
         const sl_probe_param *p = &f->params[i];
@@ -281,8 +313,9 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
         bool ok;
         if (SL_PROBE_IS_MAP(p->type)) {
             int map = cJSON_IsString(v) ? sl_probe_map_parse(v->valuestring) : -1;
-            /* a samplerCube takes the cube maps, a 2D sampler the others */
-            ok = map >= 0 && sl_probe_map_is_cube((sl_probe_map)map) == (p->type == SL_PROBE_CUBE_MAP);
+            /* a samplerCube takes the cube maps, a sampler2DArray the texture array, a 2D sampler the others */
+            sl_probe_type takes = p->type == SL_PROBE_SHADOW_MAP ? SL_PROBE_MAP : p->type;
+            ok = map >= 0 && sl_probe_map_type((sl_probe_map)map) == takes;
             k->inputs[r][offset] = (float)map;
         } else if (size == 1) {
             ok = cJSON_IsNumber(v);
@@ -299,6 +332,12 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
             if (p->type == SL_PROBE_CUBE_MAP)
                 snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a cube map: cube_lit, cube_occluded, "
                          "cube_room or cube_positive", c->path, k->name, r, p->name);
+            else if (p->type == SL_PROBE_MOMENTS_MAP)
+                snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a moments map: moments_flat, "
+                         "moments_step_x or moments_step_y", c->path, k->name, r, p->name);
+            else if (p->type == SL_PROBE_ARRAY_MAP)
+                snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a texture array: cascades", c->path,
+                         k->name, r, p->name);
             else if (SL_PROBE_IS_MAP(p->type))
                 snprintf(err, n, "%s: checks \"%s\": rows[%d]: \"%s\" must name a map: lit, occluded, step or ramp",
                          c->path, k->name, r, p->name);
@@ -308,6 +347,80 @@ static bool _sl_probe_row(const sl_case *c, sl_check *k, const sl_probe_function
             return false;
         }
         offset += size;
+    }
+    return true;
+}
+
+/* "vary": {"param": {"scale": [lo, hi]} | {"add": a or [a0, a1, ...], "homogeneous": true} |
+ * {"pick": [v, ...]} | {"turn": degrees}, optionally with "group": "name"}. */
+static bool _sl_probe_vary(const sl_case *c, sl_check *k, const sl_probe_function *f, const cJSON *json, char *err,
+                           size_t n) {
+    const cJSON *vary = cJSON_GetObjectItemCaseSensitive(json, "vary"), *item;
+    if (!vary) return true;
+    if (!cJSON_IsObject(vary)) {
+        snprintf(err, n, "%s: checks \"%s\": \"vary\" must be an object of parameters", c->path, k->name);
+        return false;
+    }
+    cJSON_ArrayForEach(item, vary) {
+        int param = -1;
+        for (int i = 0; i < f->param_count; i++)
+            if (strcmp(item->string, f->params[i].name) == 0) param = i;
+        const sl_probe_param *p = param >= 0 ? &f->params[param] : NULL;
+        int size = p ? sl_probe_type_size(p->type) : 0;
+        sl_probe_vary *v = param >= 0 ? &k->vary[param] : NULL;
+        bool ok = v && cJSON_IsObject(item) && !SL_PROBE_IS_MAP(p->type) && size <= 4;
+        const cJSON *scale = ok ? cJSON_GetObjectItemCaseSensitive(item, "scale") : NULL;
+        const cJSON *add = ok ? cJSON_GetObjectItemCaseSensitive(item, "add") : NULL;
+        const cJSON *pick = ok ? cJSON_GetObjectItemCaseSensitive(item, "pick") : NULL;
+        const cJSON *turn = ok ? cJSON_GetObjectItemCaseSensitive(item, "turn") : NULL;
+        const cJSON *group = ok ? cJSON_GetObjectItemCaseSensitive(item, "group") : NULL;
+        if (ok) snprintf(v->group, sizeof v->group, "%s", cJSON_IsString(group) ? group->valuestring : p->name);
+        if (ok && scale) {
+            v->kind = SL_VARY_SCALE;
+            ok = cJSON_IsArray(scale) && cJSON_GetArraySize(scale) == 2 && cJSON_IsNumber(cJSON_GetArrayItem(scale, 0)) &&
+                 cJSON_IsNumber(cJSON_GetArrayItem(scale, 1));
+            if (ok) {
+                v->range[0] = (float)cJSON_GetArrayItem(scale, 0)->valuedouble;
+                v->range[1] = (float)cJSON_GetArrayItem(scale, 1)->valuedouble;
+                ok = v->range[0] > 0 && v->range[1] >= v->range[0];
+            }
+        } else if (ok && add) {
+            v->kind = SL_VARY_ADD;
+            v->homogeneous = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(item, "homogeneous"));
+            if (cJSON_IsNumber(add)) {
+                for (int j = 0; j < size; j++) v->range[j] = (float)add->valuedouble;
+            } else {
+                ok = cJSON_IsArray(add) && cJSON_GetArraySize(add) == size;
+                for (int j = 0; ok && j < size; j++) {
+                    ok = cJSON_IsNumber(cJSON_GetArrayItem(add, j));
+                    if (ok) v->range[j] = (float)cJSON_GetArrayItem(add, j)->valuedouble;
+                }
+            }
+            ok &= !v->homogeneous || size == 4;
+        } else if (ok && pick) {
+            v->kind = SL_VARY_PICK;
+            ok = cJSON_IsArray(pick) && cJSON_GetArraySize(pick) >= 1 && cJSON_GetArraySize(pick) <= SL_VARY_MAX_PICKS;
+            const cJSON *e, *picks = ok ? pick : NULL;
+            cJSON_ArrayForEach(e, picks) {
+                float *to = v->picks[v->pick_count++];
+                if (size == 1 && cJSON_IsNumber(e)) to[0] = (float)e->valuedouble;
+                else if (size > 1 && cJSON_IsArray(e) && cJSON_GetArraySize(e) == size)
+                    for (int j = 0; j < size; j++) to[j] = (float)cJSON_GetArrayItem(e, j)->valuedouble;
+                else ok = false;
+            }
+        } else if (ok && turn) {
+            v->kind = SL_VARY_TURN;
+            ok = cJSON_IsNumber(turn) && size == 3;
+            if (ok) v->range[0] = (float)turn->valuedouble;
+        } else {
+            ok = false;
+        }
+        if (!ok) {
+            snprintf(err, n, "%s: checks \"%s\": \"vary\": \"%s\" must be a number or vector parameter of %s() with "
+                             "\"scale\": [lo, hi], \"add\": amplitudes (\"homogeneous\" for a vec4), \"pick\": values, or "
+                             "\"turn\": degrees (a vec3)", c->path, k->name, item->string, f->name);
+            return false;
+        }
     }
     return true;
 }
@@ -335,7 +448,7 @@ static bool _sl_probe_check(const sl_case *c, sl_check *k, const cJSON *json, ch
         if (!_sl_probe_row(c, k, f, row, k->rows, err, n)) return false;
         k->rows++;
     }
-    return true;
+    return _sl_probe_vary(c, k, f, json, err, n);
 }
 
 static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, char *err, size_t n) {
@@ -377,7 +490,8 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
         !_sl_number(json, "threshold", &k->threshold, 0, 1e9, c->path, err, n) ||
         !_sl_number(json, "fail_percent", &percent, 0, 100, c->path, err, n) ||
         !_sl_number(json, "epsilon", &k->epsilon, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "mean_tolerance", &k->mean_tolerance, 0, 1, c->path, err, n))
+        !_sl_number(json, "mean_tolerance", &k->mean_tolerance, 0, 1, c->path, err, n) ||
+        !_sl_number(json, "binarise", &k->binarise, 0, 1, c->path, err, n))
         return false;
     k->fail_fraction = percent / 100;
     if (k->points < 0) {

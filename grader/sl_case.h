@@ -46,8 +46,17 @@ typedef enum sl_symptom {
     SL_SYMPTOM_SWAPPED,        /* lit and shadowed exchanged */
     SL_SYMPTOM_HARD_EDGES,     /* hard edges where the reference's are soft */
     SL_SYMPTOM_STALE_DEPTH,    /* a depth map with depths nearer than the scene's */
+    /* Measured on every failed capture the same way (grader/diagnose/visibility.c): the
+     * evidence a function's probe must predict before a message may blame it. */
+    SL_SYMPTOM_TOO_DARK,        /* darker than the reference somewhere (a depth map: nearer) */
+    SL_SYMPTOM_TOO_LIGHT,       /* lighter than the reference somewhere (a depth map: farther) */
+    SL_SYMPTOM_NARROW_PENUMBRA, /* less soft area than the reference's */
+    SL_SYMPTOM_WIDE_PENUMBRA,   /* more soft area than the reference's */
+    SL_SYMPTOM_GROSS,           /* most of the shadow or of the lit area wrong: no small mistake explains it */
     SL_SYMPTOM_COUNT
 } sl_symptom;
+/* Every symptom: what a mistake of unknown effect may show. */
+#define SL_SYMPTOMS_ANY ((1u << SL_SYMPTOM_COUNT) - 1u)
 const char *sl_symptom_name(sl_symptom symptom);
 
 /* A line across a shadow edge, in pixels of the camera image (x right, y down). */
@@ -55,6 +64,19 @@ typedef struct sl_probe {
     char name[32];
     float from[2], to[2];
 } sl_probe;
+
+/* How one parameter of a probe's rows varies under --hidden --seed (grader/sl_hidden.c): one
+ * draw per check and group, the same for every row, so rows keep their relations. */
+typedef enum sl_vary_kind { SL_VARY_NONE, SL_VARY_SCALE, SL_VARY_ADD, SL_VARY_PICK, SL_VARY_TURN } sl_vary_kind;
+#define SL_VARY_MAX_PICKS 8
+typedef struct sl_probe_vary {
+    sl_vary_kind kind;
+    float range[4];        /* scale: lo, hi; add: the amplitude of each component (+-); turn: degrees about +y */
+    bool homogeneous;      /* add: to the divided coordinate xyz / w (the offset times w) */
+    int pick_count;
+    float picks[SL_VARY_MAX_PICKS][4]; /* pick: one of these values */
+    char group[32];        /* parameters of one group share the draw; default: the parameter's name */
+} sl_probe_vary;
 
 typedef struct sl_check {
     char name[64];
@@ -65,6 +87,7 @@ typedef struct sl_check {
     double fail_fraction; /* of pixels (images) */
     double epsilon;       /* per matrix element, relative to the largest (matrices) */
     double mean_tolerance; /* of the mean per-pixel difference: systematic errors (images) */
+    double binarise;      /* visibility: > 0, both images read as lit (1) at or above it, shadowed (0) below */
     char hint[320];       /* added to the message when the check fails with one of hint_when's symptoms */
     uint32_t hint_when;   /* 1 << sl_symptom; 0: only when no more specific diagnosis was found */
     sl_probe probes[SL_CHECK_MAX_PROBES]; /* penumbra: the first is nearest to the contact */
@@ -75,6 +98,8 @@ typedef struct sl_check {
     float inputs[SL_PROBE_MAX_ROWS][SL_PROBE_MAX_INPUTS];
     char about[SL_PROBE_MAX_ROWS][256];
     float row_tolerance[SL_PROBE_MAX_ROWS]; /* a row's own tolerance (0: the check's) */
+    sl_probe_vary vary[SL_PROBE_MAX_PARAMS]; /* by parameter: how hidden variants change it ("vary") */
+    uint32_t row_keep[SL_PROBE_MAX_ROWS];    /* 1 << parameter: the row keeps it as written ("keep") */
     double tolerance, relative; /* an output passes within tolerance + relative * |expected| */
     int face;             /* cube_face: 0..5, GL's order (+x, -x, +y, -y, +z, -z) */
 } sl_check;

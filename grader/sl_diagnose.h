@@ -26,6 +26,12 @@ void sl_diag_say(sl_check_result *out, const char *fmt, ...) __attribute__((form
 void sl_diag_append(sl_check_result *out, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* The likely cause of the symptom in out->message. */
 void sl_diag_cause(sl_check_result *out, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* A likely cause that names a lab function (a probe's, or "depth.vert"): the core
+ * keeps it only on evidence (runs.c): the case runs that function, and its probe,
+ * when it was graded, failed in a way that explains the symptoms; otherwise the
+ * message says the function was ruled out and lists the candidates instead. */
+void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 /* Adds a case's hint after the message. */
 void sl_diag_hint(sl_check_result *out, const char *hint);
 /* "not implemented" for this lab's stubs first, then "needs lab K"; false if no stub is in the way. */
@@ -39,7 +45,73 @@ bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const c
 /* The TODO tag and file of a lab function ("TODO(lab3.2)", "labs/lab3_bias/shaders/bias.glsl"). */
 bool sl_diag_stub_location(const char *function, const char **todo, const char **file);
 
+/* ---- evidence: what a case runs, what a failed probe explains (grader/diagnose/runs.c) ----
+ * The rules (grader/diagnose/README.md): a message names a function as the cause
+ * only when (a) its probe failed, (b) the check's case runs it, on inputs like
+ * a failing row's, and (c) what the failing rows predict is what the capture
+ * shows; a bonus function never answers for a regular check. */
+/* A lab function a message may name: a probe's, or one without a probe (a shader file, a C function). */
+typedef struct sl_lab_function {
+    const char *name; /* "pcf_grid", "depth.vert" */
+    int lab;
+    const char *todo; /* "lab4.3" for a probe's; "TODO(lab1.4)" for the others */
+    bool bonus;
+} sl_lab_function;
+int sl_lab_function_count(void);
+sl_lab_function sl_lab_function_at(int i); /* probe functions first, in sl_probe_at order */
+/* Whether check k of case c runs `function` as the framework draws that case
+ * (filter, bias and compare modes; the lab's passes; the extensions the case
+ * turns on). Labs answer for their own cases, earlier labs' code included. */
+bool sl_case_runs(const sl_case *c, const sl_check *k, const char *function);
+/* Whether the situation of row `row` of a probe check can occur in case c: a
+ * mode the case is in, a radius it uses, w != 1 only under a perspective light. */
+bool sl_case_meets_row(const sl_case *c, const sl_check *probe, int row);
+/* What a failed probe predicts for case c (1 << sl_symptom): its failing rows' predictions, over the rows the case meets. */
+uint32_t sl_probe_failure_predicts(const sl_case *c, const sl_probe_failure *failure);
+/* Whether a prediction meets measured symptoms: a direction in common (too dark, too light, narrower or
+ * wider penumbrae), and a gross symptom only for a gross mistake; symptoms without a direction: any. */
+bool sl_prediction_meets(uint32_t predicts, uint32_t symptoms);
+/* (a), (b) and (c) together, for a failure of a function of lab c->lab or of a lab it builds on
+ * (never an earlier lab's under --isolate). */
+bool sl_probe_failure_explains(const sl_case *c, const sl_check *k, const sl_probe_failure *failure, uint32_t symptoms,
+                               bool isolated);
+/* (b) alone, for a function with or without a probe; never a bonus function for a regular check. */
+bool sl_function_may_be_blamed(const sl_case *c, const sl_check *k, const char *function, bool isolated);
+/* The path the framework takes for case c, in a few words ("pcf_grid() with radius 1"); empty when there is nothing to say. */
+void sl_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+/* The inputs of one parameter of a probe row, or NULL if the function has none of that name. */
+const float *sl_probe_row_param(const sl_probe_function *f, const float *row, const char *name);
+/* Per lab (grader/diagnose/labN.c): sl_case_runs for that lab's cases, and its path. */
+bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *function);
+bool sl_lab2_case_runs(const sl_case *c, const sl_check *k, const char *function);
+bool sl_lab3_case_runs(const sl_case *c, const sl_check *k, const char *function);
+bool sl_lab4_case_runs(const sl_case *c, const sl_check *k, const char *function);
+bool sl_lab5_case_runs(const sl_case *c, const sl_check *k, const char *function);
+bool sl_lab6_case_runs(const sl_case *c, const sl_check *k, const char *function);
+bool sl_lab7_case_runs(const sl_case *c, const sl_check *k, const char *function);
+void sl_lab2_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+void sl_lab3_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+void sl_lab4_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+void sl_lab5_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+void sl_lab6_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+void sl_lab7_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+bool sl_lab4_meets_row(const sl_case *c, const sl_check *probe, int row);
+/* Shared by labs 1-4 (lab1.c, lab2.c, lab3.c): the depth pass (lab 1's map, from lab 2 on lab 2's
+ * light camera, from lab 3 on lab 3's state), a check of the camera's picture, lab 3's biased lookup. */
+bool sl_depth_pass_runs(const sl_case *c, const sl_check *k, const char *function);
+bool sl_camera_check(const sl_check *k);
+bool sl_biased_lookup_runs(const sl_case *c, const char *function);
+
 /* ---- shared visibility measures (grader/diagnose/visibility.c) ---- */
+/* The symptoms every failed capture is measured for, the same way: darker or
+ * lighter than the reference's 3x3 neighbourhood by more than `threshold`
+ * (too_dark, too_light); for a visibility (`soft`), less or more soft area
+ * (0.1 < v < 0.9) than the reference's (narrow_penumbra, wide_penumbra), and
+ * gross when lit and shadowed (across 0.5) are exchanged over most of the
+ * reference's shadow or a quarter of its lit area. Higher values are
+ * lighter (a depth map: farther). On the mask's pixels, if there is a mask. */
+uint32_t sl_measure_symptoms(const sl_image *student, const sl_image *reference, const sl_image *mask, double threshold,
+                             bool soft);
 /* Acne: on surfaces facing the light (the mask; every pixel without one),
  * the reference's fully lit pixels that are darker here, as a fraction of
  * them, and how many of those differ from a neighbour: self-shadowing comes
@@ -82,7 +154,8 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
 /* Light bleeding in the reference's umbra, with and without the reduction. */
 void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                           sl_check_result *out);
-/* The moments target's format, when it is the cause (said in out); false when it is fine. */
+/* The moments target, when it is the cause (said in out): its format, a clear to (0, 0), its mipmaps
+ * (made for the wrong texture, or not read); false when it is fine. */
 bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out);
 bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *student, const sl_image *reference,
                                  const sl_image *lit_mask, sl_check_result *out);
@@ -94,6 +167,8 @@ void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_resu
 /* ---- lab 7 (grader/diagnose/lab7.c) ---- */
 /* Whether lab `lab`'s cases draw with lab `earlier`'s code (lab 7 makes its own map: none). */
 bool sl_lab_builds_on(int lab, int earlier);
+/* Whether the runner drew lab 7's cube map in one layered pass (its "path" capture). */
+bool sl_lab7_drawn_layered(const sl_case_result *r);
 /* Whether a lab 7 case calls the function `name` that failed its probe. */
 bool sl_lab7_case_calls(const sl_case *c, const sl_check *k, const char *name);
 void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
@@ -105,9 +180,20 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *student, cons
 int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double *expected, uint32_t failing_rows,
                           char *text, size_t text_size);
 
+/* ---- functions judged by their contract, not by the solution's numbers ---- */
+/* True when the probe's function has a contract of its own (lab 6: lab6_cascade_matrices; lab 7:
+ * lab7_face_view): *broken then holds the rows that break it, text what breaks (empty when none does), and
+ * *shown the row that shows it best. */
+bool sl_lab6_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t text_size,
+                            int *shown);
+bool sl_lab7_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t text_size,
+                            int *shown);
+
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                        sl_check_result *out);
+/* A GL enum's name ("GL_CLAMP_TO_EDGE"), "unknown GL enum" for others. */
+const char *sl_diag_enum_name(unsigned value);
 /* A probe reference: the outputs of the solution, and the inputs they were made from. */
 bool sl_probe_reference_read(const char *path, const sl_check *k, double *outputs, char *err, size_t err_size);
 bool sl_probe_reference_write(const char *path, const sl_check *k, const double *outputs, char *err, size_t err_size);

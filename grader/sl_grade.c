@@ -67,6 +67,15 @@ void sl_diag_cause(sl_check_result *out, const char *fmt, ...) {
     va_end(args);
 }
 
+void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fmt, ...) {
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(out->cause, sizeof out->cause, fmt, args);
+    va_end(args);
+    /* "pcf_grid()", "shadow_compare_manual() (lab 2)": the name alone */
+    snprintf(out->blamed, sizeof out->blamed, "%.*s", (int)strcspn(function, "( "), function);
+}
+
 /* Adds a case's hint after the message. */
 void sl_diag_hint(sl_check_result *out, const char *hint) {
     if (!hint[0]) return;
@@ -367,12 +376,12 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
         out->symptoms |= 1u << SL_SYMPTOM_NO_SHADOWS;
         if (c->lab >= 4 && c->lab != 7 && exactly_lit < ref_dark / 2) {
             sl_diag_say(out, "shadows far too faint: where the reference is shadowed, %s leaves most pixels nearly lit", fn);
-            sl_diag_cause(out, "most samples land off the map, where the border counts as lit — are the offsets scaled "
-                               "by the texel size, 1.0 / textureSize(map, 0) (TODO %s)?", todo);
+            sl_diag_cause_in(out, fn, "most samples land off the map, where the border counts as lit — are the offsets "
+                                      "scaled by the texel size, 1.0 / textureSize(map, 0) (TODO %s)?", todo);
         } else {
             sl_diag_say(out, "no shadows at all");
-            sl_diag_cause(out, "%s returns 1.0 everywhere — not implemented (TODO %s), or every point taken for outside "
-                               "the light's frustum?", fn, todo);
+            sl_diag_cause_in(out, fn, "%s returns 1.0 everywhere — not implemented (TODO %s), or every point taken for "
+                                      "outside the light's frustum?", fn, todo);
         }
         return;
     }
@@ -401,6 +410,18 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
 #define _SL_MIN_SHADOW_PIXELS SL_VISIBILITY_MIN_SHADOW_PIXELS
 #define _SL_MAX_SHADOW_LOST SL_VISIBILITY_MAX_SHADOW_LOST
 
+static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_image *s,
+                              const sl_image *t, sl_check_result *out);
+
+/* An image read as 0 below `level` and 1 from it on (NaN stays NaN). */
+static sl_image _sl_binarised(const sl_image *img, double level) {
+    sl_image out = sl_image_alloc(img->width, img->height, img->channels);
+    long n = (long)img->width * img->height * img->channels;
+    for (long i = 0; out.data && i < n; i++)
+        out.data[i] = isnan(img->data[i]) ? img->data[i] : img->data[i] >= level ? 1.0f : 0.0f;
+    return out;
+}
+
 static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                             sl_check_result *out) {
     const char *capture = sl_check_capture_name(c, k);
@@ -410,7 +431,20 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
         out->settled = true;
         return;
     }
-    const sl_image *s = &cap->image, *t = &ref->image;
+    if (k->binarise > 0 && k->kind == SL_CHECK_VISIBILITY) {
+        /* where the shadows are, not how soft their edges are (lab 6: a filter in the lookup is allowed) */
+        sl_image s = _sl_binarised(&cap->image, k->binarise), t = _sl_binarised(&ref->image, k->binarise);
+        if (s.data && t.data) _sl_compare_image(c, k, r, &s, &t, out);
+        else sl_diag_say(out, "out of memory comparing the images");
+        sl_image_free(&s);
+        sl_image_free(&t);
+        return;
+    }
+    _sl_compare_image(c, k, r, &cap->image, &ref->image, out);
+}
+
+static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_image *s,
+                              const sl_image *t, sl_check_result *out) {
     sl_compare_stats st = sl_compare_images(s, t, k->threshold, &out->diff);
     if (st.size_mismatch) {
         sl_diag_say(out, "the image is %dx%dx%d, the reference %dx%dx%d", s->width, s->height, s->channels, t->width,
@@ -439,8 +473,8 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
         sl_diag_say(out, "the reference's shadows are missing: %.0f%% of its %ld shadowed pixels are lit in yours, even "
                          "allowing a pixel's shift (they cover %.2f%% of the image, so the pixel count alone would pass)",
                     100 * lost, shadowed, 100.0 * (double)shadowed / ((double)t->width * t->height));
-        sl_diag_cause(out, "does %s return 1.0 there — not implemented (TODO %s), or those points taken for outside the "
-                           "light's frustum?", fn, todo);
+        sl_diag_cause_in(out, fn, "does %s return 1.0 there — not implemented (TODO %s), or those points taken for "
+                                  "outside the light's frustum?", fn, todo);
         return;
     }
     if (sl_diag_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
@@ -456,99 +490,56 @@ static void _sl_check_image(const sl_case *c, const sl_check *k, const sl_case_r
     if (st.nan_pixels) sl_diag_append(out, "; %ld pixels are NaN (a division by zero?)", st.nan_pixels);
 }
 
-/* ---- what to fix first ---- */
+/* ---- what to fix first: blame on evidence (grader/diagnose/README.md) ---- */
 
-/* The probe function that computes a lab 4 filter mode's visibility. */
-static const char *_sl_filter_function(sl_filter_mode mode) {
-    static const char *const names[SL_FILTER_MODE_COUNT] = {"shadow_compare_manual", "pcf_hardware", "pcf_grid",
-                                                            "pcf_poisson", "pcss"};
-    return (unsigned)mode < SL_FILTER_MODE_COUNT ? names[mode] : "";
-}
-
-/* Does this check's case call the function that failed its probe, in a way
- * that failed? Image checks of the function's own lab only: an earlier lab's
- * failures have that lab's own cases to say so. */
-static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_failure *failure, bool isolated) {
-    const sl_probe_function *f = sl_probe_at(failure->function);
-    if (!f || f->lab > c->lab) return false;
-    if (c->lab == 6) { /* lab 6 draws with lab 1's depth shaders, lab 2's shadow matrix and its own functions */
-        bool image = k->kind == SL_CHECK_VISIBILITY || k->kind == SL_CHECK_CASCADE_INDEX || k->kind == SL_CHECK_FLICKER;
-        if (f->lab < 6) return image && !isolated && strcmp(f->name, "lab2_shadow_matrix") == 0;
-        if (strcmp(f->name, "cascade_index") == 0) return image;
-        return image;
-    }
-    if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE && k->kind != SL_CHECK_PENUMBRA &&
-        k->kind != SL_CHECK_DEPTH_MAP && k->kind != SL_CHECK_MOMENTS && k->kind != SL_CHECK_MOMENTS_BLURRED &&
-        k->kind != SL_CHECK_BLEEDING &&
-        k->kind != SL_CHECK_CUBE_FACE)
-        return false;
-    const char *name = f->name;
-    sl_bias_mode bias = c->params.bias.mode;
-    sl_filter_mode filter = c->params.filter.mode;
-    if (f->lab < c->lab && !sl_lab_builds_on(c->lab, f->lab)) return false;
-    if (f->lab < c->lab) {
-        /* labs build on each other: an earlier lab's function draws this case too, unless the solutions stand in */
-        if (isolated) return false;
-        if (f->lab == 1 || (f->lab == 2 && !f->glsl) || strcmp(name, "shadow_coord") == 0) return true;
-        bool lab2_lookup = c->lab == 3 && bias != SL_BIAS_MIDPOINT;
-        if (strcmp(name, "shadow_compare_manual") == 0) return lab2_lookup && c->params.compare == SL_COMPARE_MANUAL;
-        if (strcmp(name, "shadow_compare_hardware") == 0) return lab2_lookup && c->params.compare == SL_COMPARE_HARDWARE;
-        if (strcmp(name, "lab3_depth_pass_state") == 0) return (failure->failing_modes >> bias) & 1u;
-        return false;
-    }
-    switch (c->lab) {
-    case 1: return k->kind == SL_CHECK_DEPTH_MAP && strcmp(name, "lab1_begin_depth_pass") == 0;
-    case 2:
-        if (strcmp(name, "shadow_compare_manual") == 0) return c->params.compare == SL_COMPARE_MANUAL;
-        if (strcmp(name, "shadow_compare_hardware") == 0) return c->params.compare == SL_COMPARE_HARDWARE;
-        return true;
-    case 3:
-        if (strcmp(name, "lab3_depth_pass_state") == 0) return (failure->failing_modes >> bias) & 1u;
-        if (strcmp(name, "slope_scaled_bias") == 0) return bias == SL_BIAS_SLOPE_SCALED;
-        if (strcmp(name, "normal_offset_position") == 0) return bias == SL_BIAS_NORMAL_OFFSET;
-        if (strcmp(name, "midpoint_compare") == 0) return bias == SL_BIAS_MIDPOINT;
-        return false;
-    case 4:
-        if (strcmp(name, "lab4_configure_shadow_texture") == 0) return (failure->failing_modes >> filter) & 1u;
-        return strcmp(name, _sl_filter_function(filter)) == 0;
-    case 5:
-        /* the moments feed every check; the lookup only what the camera sees */
-        if (strcmp(name, "compute_moments") == 0) return true;
-        return k->kind != SL_CHECK_MOMENTS && k->kind != SL_CHECK_MOMENTS_BLURRED;
-    case 7: return sl_lab7_case_calls(c, k, name);
-    default: return false;
-    }
-}
-
-/* A probe failure of `lab` whose function this check's case calls, or NULL. */
-static const sl_probe_failure *_sl_failed_probe_of(const sl_case *c, const sl_check *k,
-                                                   const sl_grade_context *context, int lab) {
+/* The failure of a function of `lab` that explains this check's symptoms, or NULL. */
+static const sl_probe_failure *_sl_explaining_failure(const sl_case *c, const sl_check *k,
+                                                     const sl_grade_context *context, int lab, uint32_t symptoms) {
     for (int i = 0; i < context->probe_failure_count; i++) {
         const sl_probe_failure *f = &context->probe_failures[i];
-        if (sl_probe_at(f->function)->lab == lab && _sl_case_calls(c, k, f, context->isolated)) return f;
+        if (sl_probe_at(f->function)->lab == lab &&
+            sl_probe_failure_explains(c, k, f, symptoms, context->isolated))
+            return f;
     }
     return NULL;
 }
 
+/* Whether an earlier lab's failed check `lf` can be behind this check: the
+ * case draws with all of that lab's code the failed check drew with, along
+ * the same path (the light's kind; lab 1's moving light, lab 3's bias mode),
+ * and the symptoms point the same way. */
+static bool _sl_shares_failure(const sl_case *c, const sl_check *k, const sl_lab_failure *lf, uint32_t symptoms) {
+    if (!lf->c || !lf->k || lf->k->kind == SL_CHECK_PROBE) return false; /* probes: their own evidence */
+    if ((lf->c->scene.light.type == SL_LIGHT_DIRECTIONAL) != (c->scene.light.type == SL_LIGHT_DIRECTIONAL)) return false;
+    if (lf->lab == 1 && lf->c->frame_count > 1 && c->frame_count <= 1) return false;
+    if (lf->lab == 3 && lf->c->params.bias.mode != c->params.bias.mode) return false;
+    for (int i = 0; i < sl_lab_function_count(); i++) {
+        sl_lab_function fn = sl_lab_function_at(i);
+        if (fn.lab == lf->lab && sl_case_runs(lf->c, lf->k, fn.name) && !sl_case_runs(c, k, fn.name)) return false;
+    }
+    return sl_prediction_meets(lf->symptoms ? lf->symptoms : SL_SYMPTOMS_ANY, symptoms);
+}
+
 /* What to fix before this check's own symptoms mean anything, as the lead
  * of its message, from the root: an earlier lab this one builds on (a
- * function of it that failed its probe, or else its first failed check),
- * a failed earlier check of the case (the framebuffer, the matrices), a
- * failed probe of a function of this lab that the case calls. False when
- * nothing is known. */
-static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_context *context, char *lead,
-                           size_t n) {
+ * function of it whose failed probe explains the symptoms, or else a failed
+ * check drawn with the same code), a failed earlier check of the case (the
+ * framebuffer, the matrices), a failed probe of a function of this lab that
+ * explains the symptoms. False when nothing is known. */
+static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_context *context, uint32_t symptoms,
+                           char *lead, size_t n) {
     if (!context || k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_FBO || k->kind == SL_CHECK_MATRICES) return false;
     for (int lab = 1; lab < c->lab && !context->isolated; lab++) {
         if (!sl_lab_builds_on(c->lab, lab)) continue;
-        const sl_probe_failure *f = _sl_failed_probe_of(c, k, context, lab);
+        const sl_probe_failure *f = _sl_explaining_failure(c, k, context, lab, symptoms);
         if (f) {
             snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,
                      sl_probe_at(f->function)->name, f->where, f->summary);
             return true;
         }
-        const sl_lab_failure *lf = context->lab_failures ? &context->lab_failures[lab] : NULL;
-        if (lf && lf->failed) {
+        for (int i = 0; context->lab_failures && i < context->lab_failure_count; i++) {
+            const sl_lab_failure *lf = &context->lab_failures[i];
+            if (lf->lab != lab || !lf->failed || !_sl_shares_failure(c, k, lf, symptoms)) continue;
             snprintf(lead, n, "needs lab %d first: its %s fails (%s)", lab, lf->where, lf->summary);
             return true;
         }
@@ -573,7 +564,7 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
             return true;
         }
     }
-    const sl_probe_failure *f = _sl_failed_probe_of(c, k, context, c->lab);
+    const sl_probe_failure *f = _sl_explaining_failure(c, k, context, c->lab, symptoms);
     if (!f) return false;
     if (f->stub) snprintf(lead, n, "%s (%s)", f->summary, f->where);
     else snprintf(lead, n, "%s() is wrong on its own (%s: %s): fix it first", sl_probe_at(f->function)->name, f->where,
@@ -581,16 +572,124 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
     return true;
 }
 
+/* The failure of `function`'s probe, or NULL. */
+static const sl_probe_failure *_sl_failure_of(const sl_grade_context *context, const char *function) {
+    const sl_probe_function *f = sl_probe_find(function);
+    for (int i = 0; f && context && i < context->probe_failure_count; i++)
+        if (context->probe_failures[i].function == sl_probe_index(f)) return &context->probe_failures[i];
+    return NULL;
+}
+
+static bool _sl_probe_passed(const sl_grade_context *context, const char *function) {
+    const sl_probe_function *f = sl_probe_find(function);
+    int i = f ? sl_probe_index(f) : -1;
+    return context && i >= 0 && i < 64 && ((context->probes_passed >> i) & 1u) && !_sl_failure_of(context, function);
+}
+
+/* Whether a diagnosis may give `function` as the cause: the case runs it,
+ * and its probe, if graded, failed in a way that explains the symptoms. */
+static bool _sl_blame_allowed(const sl_case *c, const sl_check *k, const sl_grade_context *context,
+                              const char *function, uint32_t symptoms) {
+    bool isolated = context && context->isolated;
+    if (!sl_function_may_be_blamed(c, k, function, isolated)) return false;
+    if (_sl_probe_passed(context, function)) return false;
+    const sl_probe_failure *f = _sl_failure_of(context, function);
+    return !f || sl_probe_failure_explains(c, k, f, symptoms, isolated);
+}
+
+/* No cause on evidence: the path the case took, the candidates in order of
+ * likelihood (a function whose probe fails, then code without a probe, this
+ * lab's first), and what was ruled out (the probes that pass). */
+static void _sl_candidates(const sl_case *c, const sl_check *k, const sl_case_result *r,
+                           const sl_grade_context *context, const char *dropped, char *out, size_t n) {
+    bool isolated = context && context->isolated;
+    char path[300], failing[400] = "", others[400] = "", ruled[500] = "";
+    int candidates = 0, ruled_count = 0;
+    sl_case_path(c, r, path, sizeof path);
+    for (int pass = 0; pass < 2; pass++)
+        for (int lab = c->lab; lab >= 1; lab--)
+            for (int i = 0; i < sl_lab_function_count(); i++) {
+                sl_lab_function fn = sl_lab_function_at(i);
+                if (fn.lab != lab || !sl_function_may_be_blamed(c, k, fn.name, isolated)) continue;
+                bool passed = _sl_probe_passed(context, fn.name), fails = _sl_failure_of(context, fn.name) != NULL;
+                bool probe = sl_probe_find(fn.name) != NULL;
+                const char *suffix = probe ? "()" : "";
+                if (pass == 0 && passed) {
+                    if (ruled_count++ < 6)
+                        snprintf(ruled + strlen(ruled), sizeof ruled - strlen(ruled), "%s%s%s", ruled[0] ? ", " : "",
+                                 fn.name, suffix);
+                } else if (pass == 0 && fails) {
+                    if (candidates++ < 4)
+                        snprintf(failing + strlen(failing), sizeof failing - strlen(failing),
+                                 "%s%s() (its probe fails, though not in a way that shows here alone)",
+                                 failing[0] ? ", " : "", fn.name);
+                } else if (pass == 1 && !passed && !fails) {
+                    if (candidates++ < 4)
+                        snprintf(others + strlen(others), sizeof others - strlen(others), "%s%s%s", others[0] ? ", " : "",
+                                 fn.name, probe ? "()" : "");
+                }
+            }
+    size_t used = 0;
+    out[0] = '\0';
+    if (path[0]) used += (size_t)snprintf(out + used, n - used, "This case ran %s. ", path);
+    if (used < n && dropped && dropped[0])
+        used += (size_t)snprintf(out + used, n - used, "%s(), which this symptom suggests, %s. ", dropped,
+                                 _sl_probe_passed(context, dropped) ? "passes its probe"
+                                                                    : "fails its probe in a way that does not explain it");
+    if (used < n && (failing[0] || others[0]))
+        used += (size_t)snprintf(out + used, n - used, "Candidates: %s%s%s", failing, failing[0] && others[0] ? ", " : "",
+                                 others);
+    if (used < n && ruled[0])
+        used += (size_t)snprintf(out + used, n - used, "%sruled out: %s%s (%s)", failing[0] || others[0] ? "; " : "Ruled out: ",
+                                 ruled, ruled_count > 6 ? " and more" : "", ruled_count > 1 ? "their probes pass" : "its probe passes");
+    if (used > 0 && used < n && out[used - 1] != ' ') snprintf(out + used, n - used, ".");
+}
+
+/* A capture of the checked picture, and what it shows against its reference. */
+static uint32_t _sl_measured_symptoms(const sl_case *c, const sl_check *k, const sl_case_result *r,
+                                      const sl_reference *ref) {
+    if (!ref->loaded || !ref->image.data) return 0;
+    double threshold = k->threshold > 0 ? k->threshold : 0.05;
+    bool visibility = k->kind == SL_CHECK_VISIBILITY || k->kind == SL_CHECK_IMAGE || k->kind == SL_CHECK_PENUMBRA ||
+                      k->kind == SL_CHECK_BLEEDING;
+    bool depth = k->kind == SL_CHECK_DEPTH_MAP || k->kind == SL_CHECK_CUBE_FACE || k->kind == SL_CHECK_MOMENTS ||
+                 k->kind == SL_CHECK_MOMENTS_BLURRED;
+    if (!visibility && !depth) return 0;
+    if (k->kind == SL_CHECK_PENUMBRA || k->kind == SL_CHECK_BLEEDING) threshold = 0.1;
+    const sl_capture *cap = sl_result_capture(r, sl_check_capture_name(c, k));
+    if (!cap || !cap->is_image) return 0;
+    const sl_capture *mask = visibility ? sl_result_capture(r, "lit_mask") : NULL;
+    return sl_measure_symptoms(&cap->image, &ref->image, mask && mask->is_image ? &mask->image : NULL, threshold,
+                               visibility);
+}
+
 /* Joins the diagnosis: the known root cause and the symptom, or the symptom
- * and its likely cause, then the case's hint if the symptom is its own. */
-static void _sl_compose(const sl_case *c, const sl_check *k, const sl_grade_context *context, sl_check_result *out) {
+ * and its likely cause, then the case's hint if the symptom is its own. A
+ * likely cause that names a function stands only on evidence; without one,
+ * the candidates. */
+static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_grade_context *context,
+                        sl_check_result *out) {
     char symptom[sizeof out->message], lead[1200];
     snprintf(symptom, sizeof symptom, "%s", out->message);
-    bool root = !out->settled && _sl_root_cause(c, k, context, lead, sizeof lead);
+    bool root = !out->settled && _sl_root_cause(c, k, context, out->symptoms, lead, sizeof lead);
+    char dropped[64] = "";
+    if (out->cause[0] && out->blamed[0] && !_sl_blame_allowed(c, k, context, out->blamed, out->symptoms)) {
+        snprintf(dropped, sizeof dropped, "%s", sl_function_may_be_blamed(c, k, out->blamed, context && context->isolated)
+                                                    ? out->blamed : "");
+        out->cause[0] = '\0';
+    }
     if (root) {
         snprintf(out->message, sizeof out->message, "%s. Here: %s", lead, symptom);
     } else if (out->cause[0]) {
         snprintf(out->message, sizeof out->message, "%s: %s", symptom, out->cause);
+    } else if (!out->settled && k->kind != SL_CHECK_PROBE && k->kind != SL_CHECK_FBO && k->kind != SL_CHECK_MATRICES) {
+        char candidates[1200];
+        _sl_candidates(c, k, r, context, dropped, candidates, sizeof candidates);
+        if (candidates[0]) {
+            size_t len = strlen(symptom);
+            bool ends_sentence = len > 0 && strchr(".?!", symptom[len - 1]) != NULL;
+            snprintf(out->message, sizeof out->message, "%s%s %s", symptom, ends_sentence ? "" : ".", candidates);
+        }
     }
     if (!out->summary[0]) snprintf(out->summary, sizeof out->summary, "%s", out->cause[0] ? out->cause : symptom);
     /* A hint is a guess: never over a known cause, and only for its own symptoms
@@ -607,6 +706,10 @@ bool sl_probe_failure_of(const sl_case *c, const sl_check *k, const sl_check_res
     snprintf(out->where, sizeof out->where, "%s / %s", c->name, k->name);
     snprintf(out->summary, sizeof out->summary, "%s", result->summary[0] ? result->summary : result->message);
     out->stub = result->stub;
+    out->check = k;
+    out->failing_rows = result->failing_rows;
+    memcpy(out->row_predicts, result->row_predicts, sizeof out->row_predicts);
+    memcpy(out->row_outputs, result->row_outputs, sizeof out->row_outputs);
     const sl_probe_function *f = sl_probe_at(k->function);
     bool by_mode = f && f->param_count > 0 && strcmp(f->params[0].name, "mode") == 0;
     for (int row = 0; row < k->rows; row++) {
@@ -755,5 +858,6 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
         out->cause[0] = '\0';
         return;
     }
-    _sl_compose(c, k, context, out);
+    out->symptoms |= _sl_measured_symptoms(c, k, r, ref);
+    _sl_compose(c, k, r, context, out);
 }

@@ -9,6 +9,7 @@
 #include "sl_case.h"
 #include "sl_image.h"
 #include "sl_manifest.h"
+#include "sl_probe.h"
 #include "sl_run.h"
 
 typedef struct sl_reference {
@@ -36,7 +37,12 @@ typedef struct sl_check_result {
     uint32_t symptoms;      /* 1 << sl_symptom: what the capture shows (a hint is shown for its own only) */
     uint32_t failing_rows;  /* probe checks: 1 << row for each row that differs */
     bool stub;              /* probe checks: the function still returns what its stub returns */
+    /* probe checks: what each failing row's mistake can show in a picture (1 << sl_symptom), from
+     * the row's outputs, or the verdict's when it named the mistake (grader/diagnose/probe.c) */
+    uint32_t row_predicts[SL_PROBE_MAX_ROWS];
+    uint16_t row_outputs[SL_PROBE_MAX_ROWS]; /* probe checks: 1 << output for each output of a row that differs */
     char cause[1024];       /* while a check is diagnosed: the likely cause of the symptom in message */
+    char blamed[64];        /* while a check is diagnosed: the lab function the cause names (sl_diag_cause_in) */
     bool settled;           /* the message needs no lead: a stub, a run that failed, a capture missing */
     /* A failed check's diagnosis, the same for every student it fits: the
      * mistake in a few words (the summary; a probe's with its function; for a
@@ -48,21 +54,31 @@ typedef struct sl_check_result {
     char diagnosis_text[320];
 } sl_check_result;
 
-/* A function probe that failed: image checks of its lab that call the
- * function lead with it, since their pictures only show its consequences. */
+/* A function probe that failed. A check whose case runs the function leads
+ * with it only on evidence (grader/diagnose/README.md): the case runs it on
+ * inputs like a failing row's, and what those rows predict is what the
+ * check's capture shows. */
 typedef struct sl_probe_failure {
     int function;            /* sl_probe_at index */
     char where[200];         /* "lab4_probes / pcf_grid" */
     char summary[512];       /* what is wrong with it */
     bool stub;               /* not implemented yet */
     uint32_t failing_modes;  /* functions whose first input is a mode: 1 << mode of each failing row */
+    const sl_check *check;   /* the probe check: its rows' inputs */
+    uint32_t failing_rows;   /* 1 << row */
+    uint32_t row_predicts[SL_PROBE_MAX_ROWS]; /* what each failing row's mistake can show (1 << sl_symptom) */
+    uint16_t row_outputs[SL_PROBE_MAX_ROWS];  /* 1 << output for each output of a row that differs */
 } sl_probe_failure;
 
-/* A lab's first failed check (not a bonus one), for the later labs that build on it. */
+/* A failed check of a lab (not a bonus one), for the later labs that build on it. */
 typedef struct sl_lab_failure {
     bool failed;
+    int lab;
     char where[200];     /* "lab1_depth_boxes / depth" */
     char summary[512];
+    const sl_case *c;    /* the failed check, and what its capture showed */
+    const sl_check *k;
+    uint32_t symptoms;
 } sl_lab_failure;
 
 /* What is known when a check is graded: the checks of its case graded
@@ -74,7 +90,10 @@ typedef struct sl_grade_context {
     int earlier_count;
     const sl_probe_failure *probe_failures;
     int probe_failure_count;
-    const sl_lab_failure *lab_failures; /* indexed by lab, 1..SL_LAB_MAX; NULL: unknown */
+    /* functions (1 << sl_probe index) whose every probe check was graded and passed: ruled out */
+    uint64_t probes_passed;
+    const sl_lab_failure *lab_failures; /* the earlier labs' failed checks, in lab order; NULL: unknown */
+    int lab_failure_count;
     bool isolated;  /* --isolate: the solutions stand in for the other labs, whose failures do not show here */
 } sl_grade_context;
 

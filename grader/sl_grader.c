@@ -841,11 +841,16 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
          * failed its probe leads with that function. */
         static sl_probe_failure probe_failures[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
         int probe_failure_count = 0;
+        uint64_t probes_graded = 0, probes_failed = 0; /* by sl_probe index: what a message may rule out */
         for (int i = 0; i < count; i++)
             for (int k = 0; k < cases[i].check_count; k++) {
                 if (cases[i].checks[k].kind != SL_CHECK_PROBE) continue;
                 sl_check_result *cr = &graded[i].checks[k];
                 sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k], NULL, cr);
+                int function = cases[i].checks[k].function;
+                uint64_t bit = function >= 0 && function < 64 ? 1ull << function : 0;
+                if (!cr->reference_problem && !results[i].interrupted) probes_graded |= bit;
+                if (!cr->passed) probes_failed |= bit;
                 if (sl_probe_failure_of(&cases[i], &cases[i].checks[k], cr, &probe_failures[probe_failure_count]))
                     probe_failure_count++;
             }
@@ -862,7 +867,8 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             }
         }
         /* Lab by lab, so that a later lab's check knows what failed in the labs it builds on. */
-        static sl_lab_failure lab_failures[SL_LAB_MAX + 1];
+        static sl_lab_failure lab_failures[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
+        int lab_failure_count = 0;
         memset(lab_failures, 0, sizeof lab_failures);
         for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
             for (int i = 0; i < count; i++) {
@@ -873,24 +879,27 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                         sl_grade_context context = {.earlier = graded[i].checks, .earlier_count = k,
                                                     .probe_failures = probe_failures,
                                                     .probe_failure_count = probe_failure_count,
-                                                    .lab_failures = lab_failures, .isolated = o.isolate};
+                                                    .probes_passed = probes_graded & ~probes_failed,
+                                                    .lab_failures = lab_failures,
+                                                    .lab_failure_count = lab_failure_count, .isolated = o.isolate};
                         sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k],
                                        &context, cr);
                     }
                     reference_problem |= cr->reference_problem;
                 }
             }
-            /* the lab's first failure: a picture's before a probe's (it says what a later lab will see) */
-            sl_lab_failure *lf = &lab_failures[lab];
-            for (int probe = 0; probe < 2 && !lf->failed; probe++)
-                for (int i = 0; i < count && !lf->failed; i++)
-                    for (int k = 0; k < cases[i].check_count && !lf->failed; k++) {
+            /* the lab's failures: pictures' before probes' (they say what a later lab will see) */
+            for (int probe = 0; probe < 2; probe++)
+                for (int i = 0; i < count; i++)
+                    for (int k = 0; k < cases[i].check_count; k++) {
                         const sl_check *ck = &cases[i].checks[k];
                         const sl_check_result *cr = &graded[i].checks[k];
                         if (cases[i].lab != lab || (ck->kind == SL_CHECK_PROBE) != (probe == 1) || cr->passed ||
                             cr->bonus || cr->reference_problem)
                             continue;
-                        lf->failed = true;
+                        sl_lab_failure *lf = &lab_failures[lab_failure_count++];
+                        *lf = (sl_lab_failure){.failed = true, .lab = lab, .c = &cases[i], .k = ck,
+                                               .symptoms = cr->symptoms};
                         snprintf(lf->where, sizeof lf->where, "%s / %s", cases[i].name, ck->name);
                         snprintf(lf->summary, sizeof lf->summary, "%s", cr->summary[0] ? cr->summary : cr->message);
                     }

@@ -13,6 +13,7 @@
 #include "sl_grade.h"
 #include "sl_manifest.h"
 #include "sl_sandbox.h"
+#include "sl_probe.h"
 #include "sl_scene.h"
 
 /* ---- the bounds of every change (degrees, world units, factors) ---- */
@@ -232,10 +233,74 @@ static int _sl_map_size(int original, int choice, const sl_case *c) {
     return original;
 }
 
+/* ---- function probes: their rows' inputs, as each check's "vary" allows ---- */
+
+/* One draw per case, check and group: every row of the check moves alike. */
+static _sl_stream _sl_group_stream(uint64_t seed, const sl_case *c, const sl_check *k, const char *group) {
+    char key[256];
+    snprintf(key, sizeof key, "%s/%s/%s", c->name, k->name, group);
+    return _sl_case_stream(seed, key);
+}
+
+/* Varies the rows of every probe check of c that says how; the number of checks varied. */
+static int _sl_vary_probes(sl_case *c, uint64_t seed) {
+    int varied = 0;
+    for (int ki = 0; ki < c->check_count; ki++) {
+        sl_check *k = &c->checks[ki];
+        const sl_probe_function *f = k->kind == SL_CHECK_PROBE ? sl_probe_at(k->function) : NULL;
+        if (!f) continue;
+        bool any = false;
+        int offset = 0;
+        for (int p = 0; p < f->param_count; offset += sl_probe_type_size(f->params[p].type), p++) {
+            const sl_probe_vary *v = &k->vary[p];
+            if (v->kind == SL_VARY_NONE) continue;
+            int size = sl_probe_type_size(f->params[p].type);
+            bool integer = f->params[p].type == SL_PROBE_INT;
+            _sl_stream s = _sl_group_stream(seed, c, k, v->group);
+            /* the draw, before any row: the same for every row */
+            float u = (_sl_signed(&s) + 1) * 0.5f, d[4];
+            for (int j = 0; j < 4; j++) d[j] = _sl_signed(&s);
+            int pick = v->pick_count ? (int)(_sl_next(&s) % (uint64_t)v->pick_count) : 0;
+            for (int r = 0; r < k->rows; r++) {
+                if ((k->row_keep[r] >> p) & 1u) continue;
+                float *x = &k->inputs[r][offset];
+                switch (v->kind) {
+                case SL_VARY_SCALE: {
+                    float factor = v->range[0] + (v->range[1] - v->range[0]) * u;
+                    for (int j = 0; j < size; j++) x[j] *= factor;
+                    break;
+                }
+                case SL_VARY_ADD:
+                    for (int j = 0; j < size; j++) {
+                        if (v->homogeneous && j == 3) continue;
+                        x[j] += d[j] * v->range[j] * (v->homogeneous ? x[3] : 1.0f);
+                    }
+                    break;
+                case SL_VARY_PICK:
+                    for (int j = 0; j < size; j++) x[j] = v->picks[pick][j];
+                    break;
+                case SL_VARY_TURN: {
+                    vec3 origin = {0, 0, 0};
+                    _sl_turn_point(x, origin, d[0] * v->range[0]);
+                    break;
+                }
+                default: break;
+                }
+                if (integer)
+                    for (int j = 0; j < size; j++) x[j] = roundf(x[j]);
+                any = true;
+            }
+        }
+        varied += any;
+    }
+    return varied;
+}
+
 void sl_hidden_derive(sl_case *c, uint64_t seed, char *note, size_t n) {
     note[0] = '\0';
+    int varied = _sl_vary_probes(c, seed);
     if (c->frame_count == 0) {
-        snprintf(note, n, "function tables kept");
+        snprintf(note, n, "%s", varied ? "function tables varied" : "function tables kept");
         return;
     }
     if (c->camera_path) { /* lab 6: a path measured in texels of the cascades it was written for */

@@ -203,6 +203,7 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
         s->received |= 1u << capture;
         int expected = capture == SL_CAPTURE_FBO ? SL_FBO_NUMBERS : capture == SL_CAPTURE_MATRICES ? SL_MATRICES_NUMBERS : -1;
         if (capture == SL_CAPTURE_MOMENTS_TARGET) expected = SL_MOMENTS_TARGET_NUMBERS;
+        if (capture == SL_CAPTURE_PATH) expected = SL_PATH_NUMBERS;
         if (capture >= SL_CAPTURE_PROBE) {
             const sl_check *k = &s->c->checks[capture - SL_CAPTURE_PROBE];
             const sl_probe_function *f = sl_probe_at(k->function);

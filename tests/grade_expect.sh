@@ -5,8 +5,11 @@
 #   --loses LAB    a check of lab LAB (not a bonus one) must fail
 #   --full LAB     every check of lab LAB but bonus ones must pass
 #   --expect RE    the output must match RE (grep -E); --reject RE: must not
+#   --expect-readme SPEC  each "readme:" line of the variant SPEC, a message as a lab README's
+#                  table writes it, must be in the output ("…" and the spaces around it stand for any text, a trailing one for nothing, a number
+#                  or N, M, X, K, LINE, COL for any number)
 set -u
-exe="" want_exit="" loses=() full=() expect=() reject=()
+exe="" want_exit="" loses=() full=() expect=() reject=() readme_specs=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --exe) exe=$2; shift 2 ;;
@@ -16,6 +19,7 @@ while [ $# -gt 0 ]; do
     --full) full+=("$2"); shift 2 ;;
     --expect) expect+=("$2"); shift 2 ;;
     --reject) reject+=("$2"); shift 2 ;;
+    --expect-readme) readme_specs+=("$2"); shift 2 ;;
     --) shift; break ;;
     *) echo "grade_expect: unknown argument $1" >&2; exit 2 ;;
   esac
@@ -44,4 +48,25 @@ for lab in "${full[@]+"${full[@]}"}"; do
 done
 for re in "${expect[@]+"${expect[@]}"}"; do grep -qE -- "$re" "$out" || problem "output does not match: $re"; done
 for re in "${reject[@]+"${reject[@]}"}"; do ! grep -qE -- "$re" "$out" || problem "output matches what it must not: $re"; done
+# A README row's message as a regular expression: its example numbers and placeholders match any number.
+readme_regex() {
+  printf '%s' "$1" | perl -CSD -Mutf8 -pe '
+    s/ ?[:;,—]? ?…$//;
+    s/WxH/\x01NUMx\x01NUM/g;
+    s/(?<![A-Za-z_0-9.])[0-9]+(?:\.[0-9]+)?(?![A-Za-z_0-9])/\x01NUM/g;
+    s/(?<![A-Za-z_])(?:N|M|X|K|LINE|COL)(?![A-Za-z_(])/\x01NUM/g;
+    s/([\\.^\$*+?()\[\]{}|])/\\$1/g;
+    s/ ?… ?/\x01ANY/g;
+    s/\x01NUM/[-+0-9.e]+/g;
+    s/\x01ANY/.*/g;'
+}
+for spec in "${readme_specs[@]+"${readme_specs[@]}"}"; do
+  while IFS= read -r line || [ -n "$line" ]; do
+    case "$line" in
+      "readme: "*)
+        text=${line#readme: }
+        grep -qE -- "$(readme_regex "$text")" "$out" || problem "the README's message does not fire: $text" ;;
+    esac
+  done <"$spec"
+done
 exit $fail

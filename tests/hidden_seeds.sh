@@ -23,9 +23,10 @@ first=$(list "$seed")
 [ "$first" != "$(list $((seed + 1000)))" ] || problem "seeds $seed and $((seed + 1000)) gave the same cases"
 grep -q 'hidden: light turned' <<<"$first" || problem "no case of seed $seed turned its light"
 grep -q 'probe lines carried' <<<"$first" || problem "the penumbra case of seed $seed kept its camera"
+grep -q 'function tables varied' <<<"$first" || problem "no probe's inputs varied with seed $seed"
 
 echo "== the solutions, seed $seed"
-"$expect" --exe "$grader" --exit 0 --full 1 --full 2 --full 3 --full 4 --reject FAIL \
+"$expect" --exe "$grader" --exit 0 --full 1 --full 2 --full 3 --full 4 --full 5 --full 6 --full 7 --reject FAIL \
   --expect "hidden cases: variants of the public ones drawn from seed $seed" \
   -- "${solutions[@]}" --hidden --seed "$seed" "${limit[@]}" || problem "the solutions lost points on seed $seed"
 

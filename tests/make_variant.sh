@@ -4,8 +4,11 @@
 # "find:" text is replaced by the "replace:" text after it, in the file named
 # by the last "file:" line before them (a variant may change several files).
 # "find+:" and "replace+:" lines continue the text above them on a new line,
-# for a change that spans lines. Fails when a find text is no longer in its
-# file, or is there more than once, so variants cannot rot or hit the wrong place.
+# for a change that spans lines. "function: NAME" stands for a find text that
+# is the whole definition of NAME in that file (from the line that declares it,
+# at the start of a line, to the next line that is just "}"), for a change that
+# rewrites a function (tests/external). Fails when a find text is no longer in
+# its file, or is there more than once, so variants cannot rot or hit the wrong place.
 set -euo pipefail
 spec=$1 solutions=$2 out=$3
 file="" files=() finds=() replaces=() last=""
@@ -15,6 +18,9 @@ while IFS= read -r line || [ -n "$line" ]; do
     "find: "*)
       [ -n "$file" ] || { echo "$spec: a find: before any file:" >&2; exit 1; }
       files+=("$file"); finds+=("${line#find: }"); last=find ;;
+    "function: "*)
+      [ -n "$file" ] || { echo "$spec: a function: before any file:" >&2; exit 1; }
+      files+=("$file"); finds+=($'\001'"${line#function: }"); last=function ;;
     "find+: "* | "find+:")
       [ "$last" = find ] || { echo "$spec: find+: must follow a find: line" >&2; exit 1; }
       r=${line#find+:}; finds[${#finds[@]}-1]+=$'\n'"${r# }" ;;
@@ -33,6 +39,18 @@ for i in "${!finds[@]}"; do
   target="$out.tmp/${files[$i]}"
   [ -f "$target" ] || { echo "$spec: no file ${files[$i]} in the solutions" >&2; rm -rf "$out.tmp"; exit 1; }
   content=$(cat "$target"; printf x); content=${content%x}
+  if [[ "${finds[$i]}" == $'\001'* ]]; then
+    # the whole definition of a function: its declaring line, up to the first line that is "}"
+    fn=${finds[$i]#$'\001'}
+    if ! block=$(awk -v fn="$fn" '
+      !inside && $0 ~ ("^[A-Za-z_][A-Za-z0-9_ *]*[ *]" fn "[(]") { inside = 1; n++ }
+      inside { print }
+      inside && $0 == "}" { inside = 0 }
+      END { if (n != 1) exit 1 }' "$target"); then
+      echo "$spec: function $fn is not defined once in ${files[$i]}" >&2; rm -rf "$out.tmp"; exit 1
+    fi
+    finds[$i]=$block
+  fi
   case "$content" in
     *"${finds[$i]}"*) ;;
     *) echo "$spec: '${finds[$i]}' is not in ${files[$i]} any more: update the variant" >&2; rm -rf "$out.tmp"; exit 1 ;;
@@ -44,5 +62,12 @@ for i in "${!finds[@]}"; do
   content=${content/"${finds[$i]}"/"${replaces[$i]}"}
   printf '%s' "$content" >"$target"
 done
+# A file that comes out as it was keeps its time stamp, so a change to a variant's comments or
+# expectations recompiles nothing.
+if [ -d "$out" ]; then
+  (cd "$out.tmp" && find . -type f) | while IFS= read -r f; do
+    if cmp -s "$out.tmp/$f" "$out/$f"; then cp -p "$out/$f" "$out.tmp/$f"; fi
+  done
+fi
 rm -rf "$out"
 mv "$out.tmp" "$out"

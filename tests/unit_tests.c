@@ -15,6 +15,7 @@
 #include "sl_case.h"
 #include "sl_compare.h"
 #include "sl_grade.h"
+#include "sl_hidden.h"
 #include "sl_mesh.h"
 #include "sl_scene.h"
 #include "sl_protocol.h"
@@ -819,6 +820,127 @@ static void test_grade_small_shadow_missing(void) {
     sl_image_free(&reference);
 }
 
+/* Blame on evidence: a failed probe leads a picture's message only when the
+ * case runs the function, on a failing row's settings, and the rows predict
+ * what the picture shows; a bonus function never answers for a regular check. */
+static void test_grade_blames_on_evidence(void) {
+    /* a lab 4 grid case, radius 1, whose picture is darker on its lit surfaces */
+    sl_case c = grade_case(4, SL_CHECK_VISIBILITY);
+    c.params.filter.mode = SL_FILTER_GRID;
+    c.params.filter.grid_radius = 1;
+    c.params.bias.mode = SL_BIAS_CONSTANT;
+    sl_image reference = square(64, 64, 0, 1, 20, 20, 40, 40), darker = square(64, 64, 0, 0.8f, 20, 20, 40, 40);
+    /* pcf_grid's probe: two rows on the lit map, radius 0 and radius 1 */
+    sl_check probe = {.kind = SL_CHECK_PROBE, .rows = 2, .function = sl_probe_index(sl_probe_find("pcf_grid"))};
+    const float lit_row[] = {SL_PROBE_MAP_LIT, 0.5f, 0.5f, 0.5f, 1, 0.005f};
+    for (int r = 0; r < 2; r++) {
+        memcpy(probe.inputs[r], lit_row, sizeof lit_row);
+        probe.inputs[r][6] = (float)r; /* radius */
+    }
+    sl_probe_failure failure = {.function = probe.function, .check = &probe};
+    snprintf(failure.where, sizeof failure.where, "lab4_probes / pcf_grid");
+    snprintf(failure.summary, sizeof failure.summary, "the weights sum to 0.8");
+    sl_grade_context context = {.probe_failures = &failure, .probe_failure_count = 1};
+    struct {
+        uint32_t rows;       /* failing rows */
+        uint32_t predicts;   /* what they predict */
+        bool bonus_function; /* the failure is the bonus cascade_blend's, on a lab 6 case */
+        bool leads;
+    } tries[] = {
+        {1u << 1, 1u << SL_SYMPTOM_TOO_DARK, false, true},   /* radius 1, darker: explains it */
+        {1u << 0, 1u << SL_SYMPTOM_TOO_DARK, false, false},  /* radius 0 only: the case never meets it */
+        {1u << 1, 1u << SL_SYMPTOM_TOO_LIGHT, false, false}, /* predicts lighter: cannot explain darker */
+        {1u << 1, SL_SYMPTOMS_ANY, true, false},             /* a bonus stub: never for a regular check */
+    };
+    for (size_t i = 0; i < sizeof tries / sizeof tries[0]; i++) {
+        sl_case cc = c;
+        failure.failing_rows = tries[i].rows;
+        for (int r = 0; r < 2; r++) failure.row_predicts[r] = tries[i].predicts;
+        failure.function = probe.function;
+        if (tries[i].bonus_function) {
+            cc.lab = 6; /* blend band 0: the case does not run the bonus */
+            cc.params.cascades.blend_band = 0;
+            failure.function = sl_probe_index(sl_probe_find("cascade_blend"));
+            failure.stub = true;
+            probe.function = failure.function;
+        }
+        sl_case_result r = {.finished = true};
+        sl_image student = sl_image_alloc(64, 64, 1), ref_copy = sl_image_alloc(64, 64, 1);
+        memcpy(student.data, darker.data, sizeof(float) * 64 * 64);
+        memcpy(ref_copy.data, reference.data, sizeof(float) * 64 * 64);
+        add_capture(&r, "visibility", student);
+        sl_reference ref = image_reference(ref_copy);
+        sl_check_result out;
+        sl_grade_check(&cc, &cc.checks[0], &r, &ref, &context, &out);
+        bool leads = strstr(out.message, "is wrong on its own") != NULL || strstr(out.message, "not implemented") != NULL;
+        CHECK(!out.passed && leads == tries[i].leads);
+        if (leads != tries[i].leads) printf("  try %zu: %s\n", i, out.message);
+        if (tries[i].bonus_function) CHECK(strstr(out.message, "cascade_blend") == NULL);
+        sl_image_free(&out.diff);
+        sl_case_result_free(&r);
+        sl_reference_free(&ref);
+    }
+    /* a diagnosis's cause that names a function whose probe passes gives way to the candidates */
+    sl_case_result r = {.finished = true};
+    sl_image student = sl_image_alloc(64, 64, 1), ref_copy = sl_image_alloc(64, 64, 1);
+    memcpy(student.data, darker.data, sizeof(float) * 64 * 64);
+    memcpy(ref_copy.data, reference.data, sizeof(float) * 64 * 64);
+    add_capture(&r, "visibility", student);
+    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
+    sl_reference ref = image_reference(ref_copy);
+    sl_grade_context passed = {.probes_passed = 1ull << sl_probe_index(sl_probe_find("pcf_grid"))};
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[0], &r, &ref, &passed, &out);
+    CHECK(!out.passed && strstr(out.message, "divide by the number of samples in pcf_grid") == NULL);
+    CHECK(strstr(out.message, "pcf_grid(), which this symptom suggests, passes its probe") != NULL);
+    CHECK(strstr(out.message, "This case ran pcf_grid() with radius 1") != NULL);
+    printf("  %s\n", out.message);
+    sl_image_free(&out.diff);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+    sl_image_free(&reference);
+    sl_image_free(&darker);
+}
+
+/* Under --hidden --seed a probe's rows move as its "vary" says: one draw per
+ * check and group, so rows keep their relations; kept parameters stay; two
+ * seeds give two tables. */
+static void test_hidden_varies_probe_inputs(void) {
+    write_file("vary.json",
+               "{\"name\": \"v\", \"lab\": 2, \"checks\": [{\"name\": \"m\", \"kind\": \"probe\", \"points\": 1,"
+               " \"function\": \"shadow_compare_manual\","
+               " \"vary\": {\"shadow_coord\": {\"add\": [0.1, 0.3, 0.1, 0], \"homogeneous\": true},"
+               "          \"bias\": {\"scale\": [0.8, 1.25]}},"
+               " \"rows\": [{\"shadow_map\": \"step\", \"shadow_coord\": [0.25, 0.5, 0.5, 1], \"bias\": 0.005},"
+               "          {\"shadow_map\": \"step\", \"shadow_coord\": [0.125, 0.25, 0.25, 0.5], \"bias\": 0.005},"
+               "          {\"shadow_map\": \"step\", \"shadow_coord\": [0.25, 0.5, 0.252, 1], \"bias\": 0.005,"
+               "           \"keep\": [\"shadow_coord\"]}]}]}");
+    char path[512], err[2048], note[400];
+    snprintf(path, sizeof path, "%s/vary.json", tmp_dir);
+    sl_case a, b, written;
+    CHECK(sl_case_load(&written, path, err, sizeof err));
+    a = written;
+    b = written;
+    sl_hidden_derive(&a, 3, note, sizeof note);
+    CHECK(strcmp(note, "function tables varied") == 0);
+    sl_hidden_derive(&b, 1003, note, sizeof note);
+    const sl_check *ka = &a.checks[0], *kb = &b.checks[0], *kw = &written.checks[0];
+    CHECK(memcmp(ka->inputs, kb->inputs, sizeof ka->inputs) != 0); /* another seed, another table */
+    CHECK(memcmp(ka->inputs, kw->inputs, sizeof ka->inputs) != 0);
+    /* the homogeneous twin still divides to the same point as row 0 */
+    for (int i = 0; i < 3; i++)
+        CHECK(fabsf(ka->inputs[1][1 + i] / ka->inputs[1][4] - ka->inputs[0][1 + i]) < 1e-6f);
+    CHECK(ka->inputs[1][4] == 0.5f && ka->inputs[0][4] == 1.0f);
+    /* one bias for every row, within the scale's range */
+    CHECK(ka->inputs[0][5] == ka->inputs[2][5] && ka->inputs[0][5] >= 0.004f && ka->inputs[0][5] <= 0.00625f);
+    /* the kept coordinate is as written */
+    CHECK(memcmp(&ka->inputs[2][1], &kw->inputs[2][1], 4 * sizeof(float)) == 0);
+    /* the same seed, the same table */
+    sl_case again = written;
+    sl_hidden_derive(&again, 3, note, sizeof note);
+    CHECK(memcmp(again.checks[0].inputs, ka->inputs, sizeof ka->inputs) == 0);
+}
+
 /* Text as editors write it: a byte-order mark, CRLF and lone CR go; bytes
  * that are not UTF-8 text are found at their offset (RFC 3629's cases). */
 static void test_text_normalise_and_check(void) {
@@ -872,6 +994,8 @@ int main(int argc, char **argv) {
         {"grade_small_shadow_missing", test_grade_small_shadow_missing},
         {"grade_leads_with_root_cause", test_grade_leads_with_root_cause},
         {"grade_probe_verdicts", test_grade_probe_verdicts},
+        {"grade_blames_on_evidence", test_grade_blames_on_evidence},
+        {"hidden_varies_probe_inputs", test_hidden_varies_probe_inputs},
         {"grade_run_failures", test_grade_run_failures},
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},

@@ -77,29 +77,29 @@ void sl_diagnose_depth(const sl_case *c, const sl_check *k, const sl_case_result
     double near_fraction = (double)nearer / (double)n, far_fraction = (double)farther / (double)n;
     if (stu_empty > 0.999 && ref_empty < 0.99) {
         sl_diag_say(out, "the depth map is empty (all 1.0): nothing was written into it");
-        sl_diag_cause(out, "no fragment reached it — shaders/depth.vert must output u_light_view_projection * u_model * "
+        sl_diag_cause_in(out, "depth.vert", "no fragment reached it — shaders/depth.vert must output u_light_view_projection * u_model * "
                            "position (still the stub? TODO lab1.4); with the depth test off, or a depth function no "
                            "fragment passes, nothing is written either (TODO lab1.3)");
     } else if (stu_zero > 0.9) {
         sl_diag_say(out, "the depth map is all 0.0: no fragment passed the depth test");
-        sl_diag_cause(out, "is the depth buffer cleared (glClear(GL_DEPTH_BUFFER_BIT)) after binding the framebuffer, "
+        sl_diag_cause_in(out, "lab1_begin_depth_pass", "is the depth buffer cleared (glClear(GL_DEPTH_BUFFER_BIT)) after binding the framebuffer, "
                            "with depth writes on (TODO lab1.3)?");
     } else if (sl_content_only_in_lower_left(s, 1.0f, c->width, c->height)) {
         sl_diag_say(out, "only the lower-left %dx%d texels of the %dx%d map hold depths", c->width, c->height, s->width,
                     s->height);
-        sl_diag_cause(out, "the viewport is still the window's — call glViewport(0, 0, size, size) in "
+        sl_diag_cause_in(out, "lab1_begin_depth_pass", "the viewport is still the window's — call glViewport(0, 0, size, size) in "
                            "lab1_begin_depth_pass (TODO lab1.3)");
     } else if (nearer > 20 * (farther + 1) && near_fraction > k->fail_fraction) {
         /* stale depths from earlier frames: many texels nearer than they should be, few farther */
         out->symptoms |= 1u << SL_SYMPTOM_STALE_DEPTH;
         sl_diag_say(out, "%.1f%% of texels hold depths nearer than the scene's", 100.0 * near_fraction);
-        sl_diag_cause(out, "depths from earlier frames remain — clear the depth buffer at the start of every depth pass");
+        sl_diag_cause_in(out, "lab1_begin_depth_pass", "depths from earlier frames remain — clear the depth buffer at the start of every depth pass");
     } else if (far_fraction > k->fail_fraction / 2 && far_fraction > near_fraction && st.failing_fraction < 0.25) {
         /* the background (the floor, whose model matrix is the identity) right, the objects missing or elsewhere */
         sl_diag_say(out, "objects are missing from the map while the floor agrees: %.1f%% of texels are farther than "
                          "the reference's (an object missing there), %.1f%% nearer (one where none should be)",
                     100 * far_fraction, 100 * near_fraction);
-        sl_diag_cause(out, "is each object's u_model applied, in the order u_light_view_projection * u_model * "
+        sl_diag_cause_in(out, "depth.vert", "is each object's u_model applied, in the order u_light_view_projection * u_model * "
                            "position (shaders/depth.vert, TODO lab1.4)?");
     } else {
         sl_diag_say(out, "the depth map differs from the reference on %.1f%% of texels (allowed %.1f%%): %.1f%% are "
@@ -108,3 +108,22 @@ void sl_diagnose_depth(const sl_case *c, const sl_check *k, const sl_case_result
     }
     if (st.nan_pixels) sl_diag_append(out, "; %ld texels are NaN", st.nan_pixels);
 }
+
+/* ---- what lab 1's cases run ---- */
+
+bool sl_depth_pass_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    if (strcmp(fn, "lab1_create_shadow_map") == 0) return true;
+    if (k->kind == SL_CHECK_FBO) return false;
+    if (strcmp(fn, "lab1_begin_depth_pass") == 0 || strcmp(fn, "depth.vert") == 0) return true;
+    /* from lab 2 on the light's camera is lab 2's, from lab 3 on the pass's state lab 3's */
+    if (c->lab >= 2 && (strcmp(fn, "lab2_light_view") == 0 || strcmp(fn, "lab2_light_projection") == 0 ||
+                        strcmp(fn, "lab2_shadow_matrix") == 0))
+        return true;
+    if (c->lab >= 3 && strcmp(fn, "lab3_depth_pass_state") == 0) return true;
+    /* the extension's second map: only in its own mode, in lab 3 */
+    if (c->lab == 3 && c->params.bias.mode == SL_BIAS_MIDPOINT && strcmp(fn, "lab3_second_depth_state") == 0)
+        return true;
+    return false;
+}
+
+bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *fn) { return sl_depth_pass_runs(c, k, fn); }

@@ -100,7 +100,7 @@ bool sl_diagnose_lab2_visibility(const sl_case *c, const sl_image *s, const sl_i
     if (sl_acne_is_pattern(&acne)) {
         out->symptoms |= 1u << SL_SYMPTOM_ACNE;
         sl_diag_say(out, "shadow acne on %.0f%% of lit surfaces: they shadow themselves in stripes", 100 * acne.fraction);
-        sl_diag_cause(out, "the bias is missing or added — a surface compared with its own stored depth needs "
+        sl_diag_cause_in(out, fn, "the bias is missing or added — a surface compared with its own stored depth needs "
                            "p.z - bias > closest to be shadowed, in %s (TODO %s)", fn, todo);
         return true;
     }
@@ -108,9 +108,36 @@ bool sl_diagnose_lab2_visibility(const sl_case *c, const sl_image *s, const sl_i
         /* a solid region: the floor past the spot light's far plane */
         out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
         sl_diag_say(out, "%.0f%% of lit surfaces are shadowed in solid regions, not in the stripes of acne", 100 * acne.fraction);
-        sl_diag_cause(out, "points beyond the light's far plane (depth > 1) are outside the frustum, so lit: test "
+        sl_diag_cause_in(out, fn, "points beyond the light's far plane (depth > 1) are outside the frustum, so lit: test "
                            "p.z as well as x and y in %s (TODO %s)", fn, todo);
         return true;
     }
     return false;
+}
+
+/* ---- what lab 2's cases run ---- */
+
+static bool _sl_is_matrix_function(const char *fn) {
+    return strcmp(fn, "lab2_light_view") == 0 || strcmp(fn, "lab2_light_projection") == 0 ||
+           strcmp(fn, "lab2_shadow_matrix") == 0;
+}
+
+bool sl_camera_check(const sl_check *k) {
+    return k->kind == SL_CHECK_VISIBILITY || k->kind == SL_CHECK_IMAGE || k->kind == SL_CHECK_PENUMBRA;
+}
+
+bool sl_lab2_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    if (k->kind == SL_CHECK_MATRICES) return _sl_is_matrix_function(fn);
+    if (sl_depth_pass_runs(c, k, fn)) return true;
+    if (!sl_camera_check(k)) return false;
+    if (strcmp(fn, "shadow_coord") == 0) return true;
+    return strcmp(fn, c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware" : "shadow_compare_manual") == 0;
+}
+
+void sl_lab2_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    (void)r;
+    snprintf(out, n, "%s with %s map",
+             c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware() on a sampler2DShadow"
+                                                      : "shadow_compare_manual() on a sampler2D",
+             c->scene.light.type == SL_LIGHT_SPOT ? "a spot light's (perspective: w is not 1)" : "a sun's (orthographic)");
 }

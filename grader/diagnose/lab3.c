@@ -89,9 +89,20 @@ bool sl_diagnose_lab3_visibility(const sl_case *c, const sl_image *s, const sl_i
         /* not acne's stripes: lit surfaces shadowed as a whole */
         out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
         sl_diag_say(out, "%.0f%% of lit surfaces are shadowed, in solid regions rather than acne's stripes", 100 * a.acne);
-        sl_diag_cause(out, "is lab 2's comparison inverted, or the bias added instead of subtracted?");
+        const char *fn, *todo;
+        sl_diag_lookup_function(c, &fn, &todo);
+        sl_diag_cause_in(out, fn, "is lab 2's comparison inverted, or the bias added instead of subtracted?");
         return true;
     }
+    /* the function each mode's tip is about */
+    static const char *const owners[SL_BIAS_MODE_COUNT] = {
+        [SL_BIAS_SLOPE_SCALED] = "slope_scaled_bias", [SL_BIAS_POLYGON_OFFSET] = "lab3_depth_pass_state",
+        [SL_BIAS_FRONT_FACE_CULLING] = "lab3_depth_pass_state", [SL_BIAS_NORMAL_OFFSET] = "normal_offset_position",
+        [SL_BIAS_MIDPOINT] = "lab3_second_depth_state",
+    };
+    const char *lookup, *lookup_todo;
+    sl_diag_lookup_function(c, &lookup, &lookup_todo);
+    const char *owner = owners[mode] ? owners[mode] : lookup;
     if (a.acne > 0.01 && a.acne >= a.missing) {
         static const char *const tips[SL_BIAS_MODE_COUNT] = {
             [SL_BIAS_CONSTANT] = "is the constant bias subtracted in the comparison?",
@@ -104,7 +115,7 @@ bool sl_diagnose_lab3_visibility(const sl_case *c, const sl_image *s, const sl_i
         };
         out->symptoms |= 1u << SL_SYMPTOM_ACNE;
         sl_diag_say(out, "shadow acne on %.0f%% of lit surfaces", 100 * a.acne);
-        sl_diag_cause(out, "bias too small or missing — %s", tips[mode] ? tips[mode] : "compare with a bias");
+        sl_diag_cause_in(out, owner, "bias too small or missing — %s", tips[mode] ? tips[mode] : "compare with a bias");
         return true;
     }
     if (a.missing > 0.02 && a.gap_px >= 1.5f) {
@@ -117,8 +128,48 @@ bool sl_diagnose_lab3_visibility(const sl_case *c, const sl_image *s, const sl_i
         out->symptoms |= 1u << SL_SYMPTOM_DETACHED;
         sl_diag_say(out, "shadows detached from their casters by about %.0f px (Peter Panning; %.0f%% of the reference's "
                          "shadow missing)", a.gap_px, 100 * a.missing);
-        sl_diag_cause(out, "bias too large%s%s", tips[mode] ? " — " : "", tips[mode] ? tips[mode] : "");
+        if (tips[mode] && mode != SL_BIAS_FRONT_FACE_CULLING)
+            sl_diag_cause_in(out, owner, "bias too large — %s", tips[mode]);
+        else
+            sl_diag_cause(out, "bias too large%s%s", tips[mode] ? " — " : "", tips[mode] ? tips[mode] : "");
         return true;
     }
     return false;
+}
+
+/* ---- what lab 3's cases run ---- */
+
+/* The camera pass's biased lookup of labs 3 and 4 (framework/shaders/shadow_inputs.glsl): lab 3's
+ * function for the mode, and the shadow coordinate, which normal offset computes anew. */
+bool sl_biased_lookup_runs(const sl_case *c, const char *fn) {
+    sl_bias_mode mode = c->params.bias.mode;
+    if (strcmp(fn, "slope_scaled_bias") == 0) return mode == SL_BIAS_SLOPE_SCALED;
+    if (strcmp(fn, "normal_offset_position") == 0) return mode == SL_BIAS_NORMAL_OFFSET;
+    if (strcmp(fn, "shadow_coord") == 0) return mode != SL_BIAS_NORMAL_OFFSET;
+    return false;
+}
+
+bool sl_lab3_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    if (k->kind == SL_CHECK_MATRICES) return sl_lab2_case_runs(c, k, fn);
+    if (sl_depth_pass_runs(c, k, fn)) return true;
+    if (!sl_camera_check(k)) return false;
+    if (sl_biased_lookup_runs(c, fn)) return true;
+    if (c->params.bias.mode == SL_BIAS_MIDPOINT) return strcmp(fn, "midpoint_compare") == 0;
+    return strcmp(fn, c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware" : "shadow_compare_manual") == 0;
+}
+
+void sl_lab3_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    (void)r;
+    static const char *const modes[SL_BIAS_MODE_COUNT] = {
+        [SL_BIAS_NONE] = "no bias", [SL_BIAS_CONSTANT] = "the constant bias",
+        [SL_BIAS_SLOPE_SCALED] = "slope_scaled_bias()", [SL_BIAS_POLYGON_OFFSET] = "polygon offset in the depth pass",
+        [SL_BIAS_FRONT_FACE_CULLING] = "front faces culled in the depth pass",
+        [SL_BIAS_NORMAL_OFFSET] = "normal_offset_position()", [SL_BIAS_MIDPOINT] = "the midpoint of two maps (the extension)",
+    };
+    sl_bias_mode mode = c->params.bias.mode;
+    if (mode == SL_BIAS_MIDPOINT)
+        snprintf(out, n, "%s, compared by midpoint_compare()", modes[mode]);
+    else
+        snprintf(out, n, "%s, compared by lab 2's %s()", modes[mode] ? modes[mode] : "?",
+                 c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware" : "shadow_compare_manual");
 }

@@ -68,53 +68,53 @@ bool sl_diagnose_lab4_visibility(const sl_case *c, const sl_image *s, const sl_i
     if (acne.mean < 0.93 && lit_exact < lit / 5 && mode_count > lit * 7 / 10 && cores_intact) {
         /* weights summing to less than 1 scale every lit pixel to one value */
         sl_diag_say(out, "lit surfaces are too dark (visibility %.2f where the reference is fully lit)", mode / 255.0);
-        sl_diag_cause(out, "the kernel's weights sum to less than 1 — divide by the number of samples in %s", fn);
+        sl_diag_cause_in(out, fn, "the kernel's weights sum to less than 1 — divide by the number of samples in %s", fn);
     } else if (acne.fraction > 0.05 && sl_acne_is_pattern(&acne)) {
         out->symptoms |= 1u << SL_SYMPTOM_ACNE;
         sl_diag_say(out, "shadow acne on %.0f%% of lit surfaces: they shadow themselves in a fine pattern, softened by "
                          "the filter (mean visibility %.2f where the reference is fully lit)", 100 * acne.fraction,
                     acne.mean);
-        sl_diag_cause(out, "is the bias subtracted in every comparison of %s, p.z - bias (TODO %s)?", fn, todo);
+        sl_diag_cause_in(out, fn, "is the bias subtracted in every comparison of %s, p.z - bias (TODO %s)?", fn, todo);
     } else if (acne.mean < 0.93) {
         /* smoothly darkened: samples far away compare the receiver with the surface's own distant depths */
         sl_diag_say(out, "lit surfaces are darkened smoothly (mean visibility %.2f where the reference is fully lit)",
                     acne.mean);
-        sl_diag_cause(out, "the kernel reaches too far and compares with distant depths — are the sample offsets "
+        sl_diag_cause_in(out, fn, "the kernel reaches too far and compares with distant depths — are the sample offsets "
                            "scaled by the texel size, 1.0 / textureSize(map, 0)?");
     } else if (c->params.filter.mode == SL_FILTER_HARDWARE && soft_ref > n / 500 && soft_stu < soft_ref / 4) {
         out->symptoms |= 1u << SL_SYMPTOM_HARD_EDGES;
         sl_diag_say(out, "hard edges where the 2x2 hardware filter blends (%.1f%% of pixels in penumbra, reference "
                          "%.1f%%)", soft_stu_pc, soft_ref_pc);
-        sl_diag_cause(out, "the depth texture needs GL_LINEAR filtering with compare mode on "
+        sl_diag_cause_in(out, "lab4_configure_shadow_texture", "the depth texture needs GL_LINEAR filtering with compare mode on "
                            "(lab4_configure_shadow_texture, TODO lab4.1)");
     } else if (!cores_intact && core > n / 200) {
         sl_diag_say(out, "shadows too faint: %.0f%% of the reference's fully shadowed pixels are partly lit here",
                     100.0 * (double)(core - core_kept) / (double)core);
-        sl_diag_cause(out, "samples land outside the shadow, or off the map — are the offsets scaled by the texel "
+        sl_diag_cause_in(out, fn, "samples land outside the shadow, or off the map — are the offsets scaled by the texel "
                            "size, 1.0 / textureSize(map, 0), in %s?", fn);
     } else if (penumbra > n / 1000 && ratio_mid > 1.3 && ratio_low > 1.15 && ratio_high < 2.5 * ratio_low) {
         sl_diag_say(out, "penumbrae too bright (mean %.2f, reference %.2f; about %.1f times the reference's value)",
                     pen_s / (double)penumbra, pen_t / (double)penumbra, ratio_mid);
-        sl_diag_cause(out, "the kernel's weights sum to more than 1 — divide by the number of samples in %s", fn);
+        sl_diag_cause_in(out, fn, "the kernel's weights sum to more than 1 — divide by the number of samples in %s", fn);
     } else if (c->params.filter.mode == SL_FILTER_PCSS && soft_ref > n / 200 && soft_stu < soft_ref / 2) {
         sl_diag_say(out, "penumbrae too narrow for this light (%.1f%% of pixels in penumbra, reference %.1f%%)",
                     soft_stu_pc, soft_ref_pc);
-        sl_diag_cause(out, "does pcss() filter with the width from the blocker search, w = (d_receiver - d_blocker) * "
+        sl_diag_cause_in(out, "pcss", "does pcss() filter with the width from the blocker search, w = (d_receiver - d_blocker) * "
                            "w_light / d_blocker (TODO lab4.5)?");
     } else if (soft_ref > n / 200 && soft_stu < soft_ref / 4 && binary > penumbra * 9 / 10) {
         out->symptoms |= 1u << SL_SYMPTOM_HARD_EDGES;
         sl_diag_say(out, "hard edges where soft ones are expected (%.1f%% of pixels in penumbra, reference %.1f%%)",
                     soft_stu_pc, soft_ref_pc);
-        sl_diag_cause(out, "one comparison per pixel, or depths averaged before the comparison (Reeves 1987)? Compare "
+        sl_diag_cause_in(out, fn, "one comparison per pixel, or depths averaged before the comparison (Reeves 1987)? Compare "
                            "every sample in %s, then average the 0/1 results", fn);
     } else if (soft_ref > n / 200 && soft_stu < soft_ref * 2 / 3) {
         sl_diag_say(out, "penumbrae too narrow (%.1f%% of pixels in penumbra, reference %.1f%%)", soft_stu_pc, soft_ref_pc);
-        sl_diag_cause(out, "does the kernel's width follow its radius, in texels times 1.0 / textureSize(map, 0), in %s?",
+        sl_diag_cause_in(out, fn, "does the kernel's width follow its radius, in texels times 1.0 / textureSize(map, 0), in %s?",
                       fn);
     } else if (soft_stu > 3 * soft_ref && soft_stu > n / 50) {
         sl_diag_say(out, "the kernel is far too wide (%.1f%% of pixels in penumbra, reference %.1f%%)", soft_stu_pc,
                     soft_ref_pc);
-        sl_diag_cause(out, "are the sample offsets scaled by the texel size, 1.0 / textureSize(map, 0)?");
+        sl_diag_cause_in(out, fn, "are the sample offsets scaled by the texel size, 1.0 / textureSize(map, 0)?");
     } else {
         return false;
     }
@@ -176,20 +176,73 @@ void sl_diagnose_penumbra(const sl_case *c, const sl_check *k, const sl_case_res
     sl_diag_lookup_function(c, &fn, &todo);
     if (last > 0 && wt[0] < wt[last] && ws[0] > ws[last] + 1) {
         sl_diag_say(out, "penumbrae inverted: wide at the contact, narrow far from it (%s)", widths);
-        sl_diag_cause(out, "penumbra formula inverted — w = (d_receiver - d_blocker) * w_light / d_blocker (TODO %s)",
+        sl_diag_cause_in(out, "pcss", "penumbra formula inverted — w = (d_receiver - d_blocker) * w_light / d_blocker (TODO %s)",
                       todo);
         return;
     }
     sl_diag_say(out, "penumbra widths differ from the reference: %s", widths);
     if (least <= 1 && wt[last] >= 3) {
         out->symptoms |= 1u << SL_SYMPTOM_HARD_EDGES;
-        sl_diag_cause(out, "hard edges where soft ones are expected: %s filters depths instead of comparison results, "
+        sl_diag_cause_in(out, fn, "hard edges where soft ones are expected: %s filters depths instead of comparison results, "
                            "or finds no blockers?", fn);
     } else if (most > 2.5f) {
-        sl_diag_cause(out, "penumbrae far too wide: are the offsets scaled by the texel size, and the penumbra projected "
+        sl_diag_cause_in(out, fn, "penumbrae far too wide: are the offsets scaled by the texel size, and the penumbra projected "
                            "onto the map (* near / d_receiver)?");
     } else if (last > 0 && wt[last] > 1.5f * wt[0] && ws[last] <= 1.2f * ws[0]) {
-        sl_diag_cause(out, "no contact hardening: the penumbra does not widen away from the contact — does the filter "
+        sl_diag_cause_in(out, "pcss", "no contact hardening: the penumbra does not widen away from the contact — does the filter "
                            "radius come from the blocker search (TODO %s)?", todo);
+    }
+}
+
+/* ---- what lab 4's cases run ---- */
+
+static const char *const _sl_filters[SL_FILTER_MODE_COUNT] = {"shadow_compare_manual", "pcf_hardware", "pcf_grid",
+                                                              "pcf_poisson", "pcss"};
+
+bool sl_lab4_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    if (k->kind == SL_CHECK_MATRICES) return sl_lab2_case_runs(c, k, fn);
+    if (sl_depth_pass_runs(c, k, fn)) return true;
+    if (!sl_camera_check(k)) return false;
+    if (sl_biased_lookup_runs(c, fn)) return true;
+    if (strcmp(fn, "lab4_configure_shadow_texture") == 0) return true;
+    sl_filter_mode mode = c->params.filter.mode;
+    return (unsigned)mode < SL_FILTER_MODE_COUNT && strcmp(fn, _sl_filters[mode]) == 0;
+}
+
+/* A filter's probe row at another radius than the case's says nothing about
+ * the case, when some row has the case's radius. */
+bool sl_lab4_meets_row(const sl_case *c, const sl_check *probe, int row) {
+    const sl_probe_function *f = sl_probe_at(probe->function);
+    const char *param = NULL;
+    double want = 0;
+    if (strcmp(f->name, "pcf_grid") == 0 && c->params.filter.mode == SL_FILTER_GRID) {
+        param = "radius";
+        want = c->params.filter.grid_radius;
+    } else if (strcmp(f->name, "pcf_poisson") == 0 && c->params.filter.mode == SL_FILTER_POISSON) {
+        param = "radius_texels";
+        want = c->params.filter.poisson_radius;
+    }
+    if (!param) return true;
+    bool any = false;
+    for (int r = 0; r < probe->rows; r++) any |= fabs(*sl_probe_row_param(f, probe->inputs[r], param) - want) < 1e-6;
+    return !any || fabs(*sl_probe_row_param(f, probe->inputs[row], param) - want) < 1e-6;
+}
+
+void sl_lab4_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    (void)r;
+    const sl_filter_settings *f = &c->params.filter;
+    switch (f->mode) {
+    case SL_FILTER_NONE: snprintf(out, n, "no filter: lab 2's shadow_compare_manual()"); break;
+    case SL_FILTER_HARDWARE: snprintf(out, n, "pcf_hardware() on a GL_LINEAR map"); break;
+    case SL_FILTER_GRID: snprintf(out, n, "pcf_grid() with radius %d", f->grid_radius); break;
+    case SL_FILTER_POISSON: snprintf(out, n, "pcf_poisson() with radius %g texels", (double)f->poisson_radius); break;
+    case SL_FILTER_PCSS: snprintf(out, n, "pcss() with light size %g", (double)c->scene.light.size); break;
+    default: break;
+    }
+    if (c->params.bias.mode != SL_BIAS_CONSTANT) {
+        char bias[200];
+        sl_lab3_case_path(c, r, bias, sizeof bias);
+        size_t used = strlen(out);
+        snprintf(out + used, n - used, ", on lab 3's %.*s", (int)strcspn(bias, ","), bias);
     }
 }

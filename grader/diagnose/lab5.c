@@ -11,6 +11,8 @@
 
 #include "sl_compare.h"
 #include "sl_gl.h"
+#include "sl_probe.h"
+#include "sl_verdict.h"
 
 /* One channel of an image, as an image of its own (the compare's threshold then holds per channel). */
 static sl_image _sl_channel(const sl_image *img, int channel) {
@@ -45,7 +47,7 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
     bool is_float = v[6] != 0;
     if (v[0] != GL_FRAMEBUFFER_COMPLETE) {
         sl_diag_say(out, "framebuffer[0] of the moments target is not complete (%s)", sl_gl_enum_name((GLenum)v[0]));
-        sl_diag_cause(out, "moments[0] as GL_COLOR_ATTACHMENT0 and a depth renderbuffer as GL_DEPTH_ATTACHMENT "
+        sl_diag_cause_in(out, "lab5_create_moments_target", "moments[0] as GL_COLOR_ATTACHMENT0 and a depth renderbuffer as GL_DEPTH_ATTACHMENT "
                            "(TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
         return false;
     }
@@ -54,11 +56,67 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
                      "difference of two nearly equal numbers, and %d bits round it away, so shadows show bands and "
                      "light leaks where the variance comes out wrong (precision)",
                 sl_gl_enum_name(format), red, is_float ? "float" : "fixed point", red);
-    sl_diag_cause(out, "create moments[0] and moments[1] as GL_RG32F (TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
+    sl_diag_cause_in(out, "lab5_create_moments_target", "create moments[0] and moments[1] as GL_RG32F (TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
     return false;
 }
 
-bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out) { return !_sl_format_ok(r, out); }
+/* Where nothing is drawn the moments must say "nothing in front", (1, 1); cleared to (0, 0) they say "an
+ * occluder at the light". Exactly (0, 0) survives the blur inside such a region, so the blurred moments show it. */
+static double _sl_zero_share(const sl_image *m) {
+    long n = (long)m->width * m->height, zero = 0;
+    for (long i = 0; i < n; i++) zero += m->data[2 * i] == 0.0f && m->data[2 * i + 1] == 0.0f;
+    return n ? (double)zero / (double)n : 0;
+}
+
+static bool _sl_cleared_to_zero(const sl_case_result *r, sl_check_result *out) {
+    const sl_capture *m = sl_result_capture(r, "moments_blurred");
+    if (!m || !m->image.data || m->image.channels != 2) return false;
+    double zero = _sl_zero_share(&m->image);
+    if (zero < 0.02) return false;
+    sl_diag_say(out, "the moments hold exactly (0, 0) on %.0f%% of the map: \"an occluder at the light\" wherever "
+                     "nothing is drawn, so everything outside the objects' footprint seen from the light is shadowed",
+                100 * zero);
+    sl_diag_cause_in(out, "lab5_begin_moments_pass", "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1), the "
+                       "moments of \"nothing in front\" (glClearColor(1, 1, 0, 0); TODO(lab5.2) in labs/lab5_vsm/lab5.c)");
+    return true;
+}
+
+/* The camera pass reads moments[0] with its mipmaps: made for it, and its min filter mipmapped. */
+static bool _sl_mipmaps_ok(const sl_case_result *r, sl_check_result *out) {
+    const sl_capture *t = sl_result_capture(r, "moments_target");
+    if (!t || t->number_count < SL_MOMENTS_TARGET_NUMBERS) return true;
+    const double *v = t->numbers;
+    double level1[2] = {v[8], v[10]}, filter0 = v[9];
+    bool mipmapped = filter0 == GL_LINEAR_MIPMAP_LINEAR || filter0 == GL_LINEAR_MIPMAP_NEAREST ||
+                     filter0 == GL_NEAREST_MIPMAP_LINEAR || filter0 == GL_NEAREST_MIPMAP_NEAREST;
+    if (level1[0] <= 0 && level1[1] > 0) {
+        sl_diag_say(out, "moments[0], which the camera pass reads, has no mipmaps (min filter %s), while moments[1], the "
+                         "blur's intermediate, has: distant receivers read unfiltered moments and alias",
+                    sl_gl_enum_name((GLenum)filter0));
+        sl_diag_cause_in(out, "lab5_filter_moments", "the mipmaps were made for the wrong texture: lab5_filter_moments() binds moments[0] before "
+                           "glGenerateMipmap and sets its GL_LINEAR_MIPMAP_LINEAR (TODO(lab5.6) in labs/lab5_vsm/lab5.c)");
+        return false;
+    }
+    if (level1[0] <= 0 && mipmapped) {
+        sl_diag_say(out, "moments[0] is filtered with %s but has no mipmaps: an incomplete texture, which reads as 0 "
+                         "(every receiver shadowed)", sl_gl_enum_name((GLenum)filter0));
+        sl_diag_cause_in(out, "lab5_filter_moments", "glGenerateMipmap on moments[0] in lab5_filter_moments() (TODO(lab5.6) in "
+                           "labs/lab5_vsm/lab5.c), after the blur wrote it");
+        return false;
+    }
+    if (level1[0] > 0 && filter0 != 0 && !mipmapped) {
+        sl_diag_say(out, "moments[0] has mipmaps but is read with %s: distant receivers read level 0 alone and alias",
+                    sl_gl_enum_name((GLenum)filter0));
+        sl_diag_cause_in(out, "lab5_filter_moments", "GL_LINEAR_MIPMAP_LINEAR as moments[0]'s min filter in lab5_filter_moments() (TODO(lab5.6) "
+                           "in labs/lab5_vsm/lab5.c)");
+        return false;
+    }
+    return true;
+}
+
+bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out) {
+    return !_sl_format_ok(r, out) || _sl_cleared_to_zero(r, out) || !_sl_mipmaps_ok(r, out);
+}
 
 void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                          sl_check_result *out) {
@@ -106,9 +164,44 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
             unsquared += fabsf(m2 - m1) < 1e-4f && fabsf(m1 - m1 * m1) > 1e-3f;
         }
     }
+    long empty = 0, zeroed = 0; /* the reference's texels with nothing drawn, (1, 1): here (0, 0)? */
+    for (long i = 0; i < n; i++)
+        if (t->data[2 * i] > 0.999f && t->data[2 * i + 1] > 0.999f) {
+            empty++;
+            zeroed += s->data[2 * i] == 0.0f && s->data[2 * i + 1] == 0.0f;
+        }
+    if (empty > n / 100 && zeroed > empty / 2) {
+        sl_diag_say(out, "%.0f%% of the texels where nothing is drawn hold (0, 0), the reference (1, 1): \"an occluder "
+                         "at the light\" instead of \"nothing in front\"", 100.0 * (double)zeroed / (double)empty);
+        sl_diag_cause_in(out, "lab5_begin_moments_pass", "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1) "
+                           "(glClearColor(1, 1, 0, 0); TODO(lab5.2) in labs/lab5_vsm/lab5.c)");
+        return;
+    }
+    if (blurred) {
+        /* a blur whose weights do not sum to 1 scales every texel by their sum (squared: two passes) */
+        double ratio_sum = 0;
+        long ratios = 0, consistent = 0;
+        for (long i = 0; i < n; i++)
+            if (t->data[2 * i] > 0.05f && isfinite(s->data[2 * i])) {
+                ratio_sum += s->data[2 * i] / t->data[2 * i];
+                ratios++;
+            }
+        double ratio = ratios ? ratio_sum / (double)ratios : 1;
+        for (long i = 0; i < n; i++)
+            if (t->data[2 * i] > 0.05f) consistent += fabs(s->data[2 * i] / t->data[2 * i] - ratio) < 0.05 * ratio;
+        if (ratios > n / 2 && (ratio > 1.2 || ratio < 0.8) && consistent > ratios * 0.9) {
+            sl_diag_say(out, "the blurred moments are %.3g times the reference's on %.0f%% of the texels: every texel "
+                             "scaled alike, where a blur keeps a flat region as it is", ratio,
+                        100.0 * (double)consistent / (double)ratios);
+            sl_diag_cause_in(out, "blur_moments", "the blur's weights do not sum to 1 (%.3g per pass, as two passes multiply): divide "
+                               "blur_moments()'s weighted sum by the sum of its weights (TODO(lab5.5) in "
+                               "labs/lab5_vsm/shaders/blur.glsl)", sqrt(ratio));
+            return;
+        }
+    }
     if (stub == n) {
         sl_diag_say(out, "the moments are (1, 1) on every texel: nothing in front of anything");
-        sl_diag_cause(out, "compute_moments() still returns its stub's vec2(1.0) (TODO(lab5.3) in "
+        sl_diag_cause_in(out, "compute_moments", "compute_moments() still returns its stub's vec2(1.0) (TODO(lab5.3) in "
                            "labs/lab5_vsm/shaders/moments.glsl), or nothing was drawn into framebuffer[0]");
         return;
     }
@@ -116,7 +209,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
         sl_diag_say(out, "the second moment equals the first on %.0f%% of the scene's texels: depth is stored where "
                          "depth^2 belongs, so the variance depth - depth^2 is large everywhere",
                     100.0 * (double)unsquared / (double)covered);
-        sl_diag_cause(out, "compute_moments() must return vec2(depth, depth * depth) (TODO(lab5.3) in "
+        sl_diag_cause_in(out, "compute_moments", "compute_moments() must return vec2(depth, depth * depth) (TODO(lab5.3) in "
                            "labs/lab5_vsm/shaders/moments.glsl)");
         return;
     }
@@ -128,7 +221,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
             sl_diag_say(out, "the moments are sharper than the reference's along both x and y (%.1fx and %.1fx the "
                              "differences between neighbours): not blurred, or blurred less",
                         sharp_x, sharp_y);
-            sl_diag_cause(out, "blur_moments() (TODO(lab5.5) in labs/lab5_vsm/shaders/blur.glsl): 2 * radius + 1 "
+            sl_diag_cause_in(out, "blur_moments", "blur_moments() (TODO(lab5.5) in labs/lab5_vsm/shaders/blur.glsl): 2 * radius + 1 "
                                "Gaussian weights, offsets of one texel (1.0 / textureSize) along direction");
             return;
         }
@@ -137,7 +230,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
             sl_diag_say(out, "the moments are blurred along %s only: along %s their edges are %.1fx as sharp as the "
                              "reference's, so a penumbra is wide one way and hard the other",
                         only_x ? "x" : "y", only_x ? "y" : "x", only_x ? sharp_y : sharp_x);
-            sl_diag_cause(out, "the vertical pass must read moments[1] and step along (0, 1): does blur_moments() use "
+            sl_diag_cause_in(out, "blur_moments", "the vertical pass must read moments[1] and step along (0, 1): does blur_moments() use "
                                "`direction` (TODO(lab5.5)), and lab5_begin_blur_pass() read and write the other "
                                "target for direction 1 (TODO(lab5.4))?");
             return;
@@ -145,7 +238,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
         if (sharp_x < 0.67 && sharp_y < 0.67) {
             sl_diag_say(out, "the moments are blurrier than the reference's (%.2fx and %.2fx its differences between "
                              "neighbours along x and y)", sharp_x, sharp_y);
-            sl_diag_cause(out, "blur_moments(): sigma = max(radius / 2, 0.5), offsets of one texel, radius texels "
+            sl_diag_cause_in(out, "blur_moments", "blur_moments(): sigma = max(float(radius) * 0.5, 0.5), offsets of one texel, radius texels "
                                "each side (TODO(lab5.5))");
             return;
         }
@@ -155,9 +248,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
                      "difference %.5f)", names[ch], 100 * st[ch].failing_fraction, 100 * k->fail_fraction,
                 k->threshold, st[ch].mean_difference);
     if (st[ch].nan_pixels) sl_diag_append(out, "; %ld texels are NaN", st[ch].nan_pixels);
-    sl_diag_cause(out, blurred ? "the moments pass matches? then the blur (TODO(lab5.4), TODO(lab5.5))"
-                               : "compute_moments() (TODO(lab5.3)) gets the linear depth: return (depth, depth^2); "
-                                 "and lab5_begin_moments_pass() clears to (1, 1) with the depth test on (TODO(lab5.2))");
+    /* no finding of its own: the core lists the candidates, and what their probes ruled out */
 }
 
 /* Light bleeding: where the reference (with the reduction) is in umbra, the
@@ -202,15 +293,22 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
     }
     if (sl_diag_explain_missing(c, r, out)) return;
     if (sl_diagnose_lab5_format(r, out)) return;
+    if (with > 0.9 && without > 0.9) {
+        /* the whole umbra lit either way: the reduction has nothing to act on, the lookup is what is wrong */
+        sl_diag_say(out, "%.0f%% of the reference's umbra is lit, with the reduction and without it: there is no "
+                         "shadow here for the reduction to act on — the case's visibility check says why", 100 * with);
+        out->settled = true;
+        return;
+    }
     sl_diag_say(out, "light bleeding: %.1f%% of the reference's umbra is lit above %.2f with the reduction (amount "
                      "%.2f), %.1f%% without it; the reduction must at least halve it",
                 100 * with, 0.1, c->params.vsm.bleeding, 100 * without);
     if (with > without) {
         sl_diag_append(out, ", and the reduction adds light to the umbra instead");
-        sl_diag_cause(out, "are linstep's arguments swapped? reduce_light_bleeding() returns linstep(amount, 1.0, "
+        sl_diag_cause_in(out, "reduce_light_bleeding", "are linstep's arguments swapped? reduce_light_bleeding() returns linstep(amount, 1.0, "
                            "p_max) (TODO(lab5.8))");
     } else
-        sl_diag_cause(out, "reduce_light_bleeding() must cut p_max below `amount` off and stretch the rest: "
+        sl_diag_cause_in(out, "reduce_light_bleeding", "reduce_light_bleeding() must cut p_max below `amount` off and stretch the rest: "
                            "linstep(amount, 1.0, p_max) (TODO(lab5.8))");
 }
 
@@ -223,7 +321,7 @@ bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *s, const sl_i
     if (nan > 0 || sl_acne_is_pattern(&acne)) {
         sl_diag_say(out, "dark speckles on %.1f%% of the lit surfaces%s", 100 * acne.fraction,
                     nan ? " and NaN pixels" : "");
-        sl_diag_cause(out, "where t is just beyond mu and the moments are from one flat surface, the variance is 0 "
+        sl_diag_cause_in(out, "chebyshev_upper_bound", "where t is just beyond mu and the moments are from one flat surface, the variance is 0 "
                            "(or a rounding error below it): is it clamped to min_variance in "
                            "chebyshev_upper_bound() (TODO(lab5.7))?");
         return true;
@@ -231,9 +329,233 @@ bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *s, const sl_i
     if (acne.fraction > 0.2 && acne.mean > 0.5 && acne.mean < 0.97) {
         sl_diag_say(out, "lit surfaces are slightly darkened everywhere (mean visibility %.3f where the reference "
                          "is 1)", acne.mean);
-        sl_diag_cause(out, "the bound only holds for t > mu: chebyshev_upper_bound() returns 1.0 when t <= mu "
+        sl_diag_cause_in(out, "chebyshev_upper_bound", "the bound only holds for t > mu: chebyshev_upper_bound() returns 1.0 when t <= mu "
                            "(TODO(lab5.7))");
         return true;
     }
     return false;
+}
+
+/* ---- what lab 5's probes show together ---- */
+
+static double _sl_got5(const sl_verdict_rows *v, int row, int o) { return v->student[row * v->f->output_count + o]; }
+static double _sl_want5(const sl_verdict_rows *v, int row, int o) { return v->expected[row * v->f->output_count + o]; }
+static bool _sl_failed5(const sl_verdict_rows *v, int row) { return (v->failing >> row) & 1u; }
+
+/* The texel of a moments map at a row's uv: what the stub (no blur) returns. */
+static double _sl_centre_texel(const float *in) {
+    int x = (int)floor(in[1] * SL_PROBE_MAP_SIZE), y = (int)floor(in[2] * SL_PROBE_MAP_SIZE);
+    return sl_probe_moments_depth((sl_probe_map)(int)in[0], x, y);
+}
+
+/* blur_moments(moments, uv, direction, radius): inputs map, uv.x, uv.y, direction.x, direction.y, radius. */
+static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
+    int rows = v->k->rows, failing = 0, first = -1, as_stub = 0;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        failing++;
+        if (first < 0) first = r;
+        as_stub += fabs(_sl_got5(v, r, 0) - _sl_centre_texel(v->k->inputs[r])) < 1e-5;
+    }
+    if (!failing) return -1;
+    if (as_stub == failing) {
+        snprintf(text, n, "not implemented: it returns the texel at uv unblurred, as the stub does — the weighted sum "
+                          "of 2 * radius + 1 texels along direction");
+        return first;
+    }
+    /* a flat map stays flat whatever the kernel: what it gives there is the sum of the weights */
+    for (int r = 0; r < rows; r++) {
+        const float *in = v->k->inputs[r];
+        if (!_sl_failed5(v, r) || (int)in[0] != SL_PROBE_MAP_MOMENTS_FLAT) continue;
+        double sum = _sl_got5(v, r, 0) / 0.5;
+        snprintf(text, n, "the weights sum to %.3g, not 1 (a flat map at depth 0.5 comes out at %.4g): divide the "
+                          "weighted sum by the sum of the weights", sum, _sl_got5(v, r, 0));
+        return r;
+    }
+    /* only the rows of one direction fail: the other direction is followed, this one not */
+    int fail_x = 0, fail_y = 0, first_y = -1, first_x = -1;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        if (in[3] == 0 && in[4] != 0) {
+            fail_y++;
+            if (first_y < 0) first_y = r;
+        } else if (in[4] == 0 && in[3] != 0) {
+            fail_x++;
+            if (first_x < 0) first_x = r;
+        }
+    }
+    if ((fail_y == failing) != (fail_x == failing) && (fail_x == failing || fail_y == failing)) {
+        bool y_wrong = fail_y == failing;
+        snprintf(text, n, "it blurs along %s whatever direction is: every row with direction %s differs, every row "
+                          "with direction %s is right — step along `direction`, one texel at a time",
+                 y_wrong ? "x" : "y", y_wrong ? "(0, 1)" : "(1, 0)", y_wrong ? "(1, 0)" : "(0, 1)");
+        return y_wrong ? first_y : first_x;
+    }
+    /* rows that differ in the radius alone, the same answer where the solution's differ */
+    for (int a = 0; a < rows; a++) {
+        if (!_sl_failed5(v, a)) continue;
+        for (int b = 0; b < rows; b++) {
+            const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
+            bool twin = b != a && ia[5] != ib[5];
+            for (int i = 0; twin && i < 5; i++) twin = ia[i] == ib[i];
+            if (!twin) continue;
+            if (fabs(_sl_got5(v, a, 0) - _sl_got5(v, b, 0)) < 1e-5 && fabs(_sl_want5(v, a, 0) - _sl_want5(v, b, 0)) > 1e-3) {
+                snprintf(text, n, "the radius is ignored: radius %d and radius %d give the same — a fixed kernel? "
+                                  "2 * radius + 1 taps with weights exp(-i^2 / (2 sigma^2)), sigma = max(float(radius) * 0.5, 0.5)",
+                         (int)ia[5], (int)ib[5]);
+                return a;
+            }
+        }
+    }
+    /* sigma = max(float(radius) * 0.5, 0.5) typed in GLSL: radius / 2 is an integer division, so an odd radius
+     * gets sigma 1 where 1.5 is meant (radius 3), 2 where 2.5 is meant (radius 5) */
+    int integer_sigma = 0, first_integer = -1;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        int radius = (int)in[5], dx = (int)in[3], dy = (int)in[4];
+        int x = (int)floor(in[1] * SL_PROBE_MAP_SIZE), y = (int)floor(in[2] * SL_PROBE_MAP_SIZE);
+        double sigma = fmax((double)(radius / 2), 0.5), sum = 0, weights = 0;
+        for (int i = -radius; i <= radius; i++) {
+            int tx = x + i * dx, ty = y + i * dy;
+            tx = tx < 0 ? 0 : tx >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : tx;
+            ty = ty < 0 ? 0 : ty >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : ty;
+            double w = exp(-(double)(i * i) / (2 * sigma * sigma));
+            sum += w * sl_probe_moments_depth((sl_probe_map)(int)in[0], tx, ty);
+            weights += w;
+        }
+        if (radius % 2 == 1 && radius > 1 && fabs(_sl_got5(v, r, 0) - sum / weights) < 1e-4) {
+            integer_sigma++;
+            if (first_integer < 0) first_integer = r;
+        }
+    }
+    if (integer_sigma > 0 && integer_sigma == failing) {
+        snprintf(text, n, "the kernel is too narrow at odd radii: radius %d blurs with sigma %d, as radius / 2 gives it "
+                          "in integer arithmetic — in GLSL write sigma = max(float(radius) * 0.5, 0.5)",
+                 (int)v->k->inputs[first_integer][5], (int)v->k->inputs[first_integer][5] / 2);
+        return first_integer;
+    }
+    /* across the edges: too little or too much of the other side */
+    int narrow = 0, wide = 0, first_width = -1;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        double centre = _sl_centre_texel(v->k->inputs[r]);
+        double here = fabs(_sl_got5(v, r, 0) - centre), there = fabs(_sl_want5(v, r, 0) - centre);
+        narrow += here < there;
+        wide += here > there;
+        if (first_width < 0) first_width = r;
+    }
+    if (narrow == failing || wide == failing) {
+        snprintf(text, n, "the kernel is too %s: across an edge it takes %s of the other side than a Gaussian with "
+                          "sigma = max(float(radius) * 0.5, 0.5) does — are the taps one texel apart (1.0 / textureSize), and "
+                          "the weights exp(-i^2 / (2 sigma^2))?",
+                 narrow == failing ? "narrow" : "wide", narrow == failing ? "less" : "more");
+        return first_width;
+    }
+    return -1;
+}
+
+/* reduce_light_bleeding(p_max, amount) */
+static int _sl_verdict_bleeding(const sl_verdict_rows *v, char *text, size_t n) {
+    int rows = v->k->rows, failing = 0, first = -1, swapped = 0;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double p = in[0], amount = in[1];
+        failing++;
+        if (first < 0) first = r;
+        double lo = p, hi = 1, x = amount; /* linstep(p_max, 1, amount) */
+        double inverted = hi - lo > 1e-9 ? fmin(fmax((x - lo) / (hi - lo), 0), 1) : (x >= lo ? 1 : 0);
+        swapped += fabs(_sl_got5(v, r, 0) - inverted) < 1e-3;
+    }
+    if (!failing) return -1;
+    if (swapped == failing) {
+        snprintf(text, n, "linstep's arguments swapped: linstep(amount, 1.0, p_max) cuts p_max below amount off, "
+                          "linstep(p_max, 1.0, amount) does something else");
+        return first;
+    }
+    /* one amount that explains every row: a constant of its own */
+    for (int k = 1; k < 100; k++) {
+        double amount = k / 100.0;
+        bool all = true;
+        for (int r = 0; r < rows && all; r++) {
+            double p = v->k->inputs[r][0];
+            double want = fmin(fmax((p - amount) / (1 - amount), 0), 1);
+            all = fabs(_sl_got5(v, r, 0) - want) < 1e-3;
+        }
+        if (all) {
+            snprintf(text, n, "the amount is not the one given: every row is linstep(%.2f, 1.0, p_max), whatever "
+                              "amount is — use the parameter (the viewer's K and L change it)", amount);
+            return first;
+        }
+    }
+    return -1;
+}
+
+/* chebyshev_upper_bound(moments, t, min_variance): the variance each failing row was computed with, read
+ * back from p_max = v / (v + d^2); one constant for all of them, not the row's minimum, is a minimum of its own. */
+static int _sl_verdict_chebyshev(const sl_verdict_rows *v, char *text, size_t n) {
+    int rows = v->k->rows, failing = 0, first = -1, implied_rows = 0;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double mu = in[0], m2 = in[1], t = in[2], min_variance = in[3], p = _sl_got5(v, r, 0), d = t - mu;
+        failing++;
+        if (first < 0) first = r;
+        if (t <= mu || p <= 0 || p >= 1) continue;
+        double implied = p * d * d / (1 - p);
+        /* the row's own variance is below the minimum that was used: a minimum decided it */
+        if (m2 - mu * mu < implied * 0.9 && fabs(implied - min_variance) > 0.05 * min_variance) {
+            implied_rows++;
+            lo = fmin(lo, implied);
+            hi = fmax(hi, implied);
+        }
+    }
+    if (!failing) return -1;
+    if (implied_rows == failing && hi - lo <= 0.05 * hi) {
+        snprintf(text, n, "the minimum variance is not the one given: every failing row used about %.2g whatever "
+                          "min_variance is — variance = max(M2 - M1^2, min_variance), with the parameter (the viewer's "
+                          "N and J change it)", 0.5 * (lo + hi));
+        return first;
+    }
+    return -1;
+}
+
+int sl_verdict_lab5(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "chebyshev_upper_bound") == 0) return _sl_verdict_chebyshev(v, text, n);
+    if (strcmp(v->f->name, "blur_moments") == 0) return _sl_verdict_blur(v, text, n);
+    if (strcmp(v->f->name, "reduce_light_bleeding") == 0) return _sl_verdict_bleeding(v, text, n);
+    return -1;
+}
+
+/* ---- what lab 5's cases run (a first account from the renderer: sl_lab5_vsm.c) ---- */
+
+bool sl_lab5_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    /* The bleeding check compares the case's visibility with and without the reduction: the moments and
+     * their blur are the same in both, so only the lookup's last two steps and the target can explain it. */
+    if (k->kind == SL_CHECK_BLEEDING && !c->params.vsm_off)
+        return strcmp(fn, "reduce_light_bleeding") == 0 || strcmp(fn, "chebyshev_upper_bound") == 0 ||
+               strcmp(fn, "lab5_create_moments_target") == 0;
+    /* lab 2's light camera and shadow coordinate; the moments instead of lab 1's map */
+    if (strcmp(fn, "lab2_light_view") == 0 || strcmp(fn, "lab2_light_projection") == 0 ||
+        strcmp(fn, "lab2_shadow_matrix") == 0)
+        return true;
+    if (strcmp(fn, "lab5_create_moments_target") == 0 || strcmp(fn, "lab5_begin_moments_pass") == 0 ||
+        strcmp(fn, "compute_moments") == 0)
+        return true;
+    if (k->kind == SL_CHECK_MOMENTS) return false;
+    bool blur = c->params.vsm.blur_radius > 0;
+    if (strcmp(fn, "lab5_begin_blur_pass") == 0 || strcmp(fn, "blur_moments") == 0) return blur;
+    if (strcmp(fn, "lab5_filter_moments") == 0) return true;
+    if (k->kind == SL_CHECK_MOMENTS_BLURRED) return false;
+    if (strcmp(fn, "shadow_coord") == 0) return true;
+    if (c->params.vsm_off) return sl_lab4_case_runs(c, k, fn); /* lab 4's filter draws instead */
+    return strcmp(fn, "chebyshev_upper_bound") == 0 || strcmp(fn, "reduce_light_bleeding") == 0;
+}
+
+void sl_lab5_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    (void)r;
+    if (c->params.vsm_off) sl_lab4_case_path(c, r, out, n);
 }

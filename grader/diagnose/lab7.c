@@ -17,6 +17,11 @@ static const char *const _sl_face_names[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"
 
 static const char *_sl_face(int face) { return face >= 0 && face < 6 ? _sl_face_names[face] : "?"; }
 
+bool sl_lab7_drawn_layered(const sl_case_result *r) {
+    const sl_capture *path = sl_result_capture(r, sl_capture_name(SL_CAPTURE_PATH));
+    return path && path->number_count >= SL_PATH_NUMBERS && path->numbers[1] != 0;
+}
+
 bool sl_lab_builds_on(int lab, int earlier) {
     if (earlier >= lab) return false;
     if (lab == 7) return false;        /* its own cube map, matrices and lookup: no earlier lab's code draws its cases */
@@ -136,41 +141,58 @@ void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_re
     double empty = sl_fraction_equal(s, 1.0f, 1e-6f), ref_empty = sl_fraction_equal(t, 1.0f, 1e-6f);
     char up[40];
     _sl_vector(_sl_ups[k->face], up, sizeof up);
-    if (empty > 0.999 && ref_empty < 0.99) {
-        sl_diag_say(out, "face %s holds 1.0 everywhere (\"nothing there\") where the reference holds distance / far",
-                    face);
-        sl_diag_cause(out, "is the far plane missing on the depth pass's side? Distances not divided by u_light_far in "
-                           "shaders/cube_depth.frag are clamped to 1.0 (TODO lab7.5). Or nothing was drawn into the "
-                           "face: is it attached in lab7_begin_cube_pass (TODO lab7.2)?");
+    bool layered = sl_lab7_drawn_layered(r), others_drawn = false;
+    for (int f = 0; f < 6; f++) {
+        const sl_capture *other = f == k->face ? NULL : sl_result_capture(r, sl_capture_name(SL_CAPTURE_CUBE_FACE + f));
+        others_drawn |= other && other->image.data && sl_fraction_equal(&other->image, 1.0f, 1e-6f) < 0.999;
+    }
+    if (empty > 0.999 && ref_empty < 0.99 && layered && others_drawn) {
+        sl_diag_say(out, "face %s holds 1.0 everywhere (\"nothing there\") where the reference holds distance / far, "
+                         "while other faces hold distances: nothing was drawn into this face. The cube map was drawn in "
+                         "one layered pass (lab7_begin_cube_pass attached all six faces)", face);
+        sl_diag_cause(out, "in the layered pass shaders/cube_depth.geom chooses each copy's face: set gl_Layer = face "
+                           "before every EmitVertex of that copy (left unset, every triangle lands in layer 0, +X)");
+    } else if (empty > 0.999 && ref_empty < 0.99 && others_drawn) {
+        sl_diag_say(out, "face %s holds 1.0 everywhere (\"nothing there\") where the reference holds distance / far, "
+                         "while other faces hold distances: nothing was drawn into this face", face);
+        sl_diag_cause_in(out, "lab7_begin_cube_pass", "is this face attached in lab7_begin_cube_pass: GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, cleared, "
+                           "with its viewport (TODO lab7.2)?");
+    } else if (empty > 0.999 && ref_empty < 0.99) {
+        sl_diag_say(out, "face %s holds 1.0 everywhere (\"nothing there\") where the reference holds distance / far, "
+                         "and so does every other face%s", face, layered ? " (drawn in one layered pass)" : "");
+        sl_diag_cause_in(out, "cube_depth.frag", "is the far plane missing on the depth pass's side? Distances not divided by u_light_far in "
+                           "shaders/cube_depth.frag are clamped to 1.0 (TODO lab7.5). Or nothing was drawn at all: %s",
+                      layered ? "in the layered pass, does shaders/cube_depth.geom emit each triangle to the six faces?"
+                              : "are the faces attached in lab7_begin_cube_pass (TODO lab7.2)?");
     } else if (_sl_follows(s, t, _sl_not_divided, near, far) > 0.95) {
         sl_diag_say(out, "face %s holds the distance itself, clamped to 1.0, where the reference holds distance / far",
                     face);
-        sl_diag_cause(out, "the far plane is missing on the depth pass's side: divide by u_light_far in "
+        sl_diag_cause_in(out, "cube_depth.frag", "the far plane is missing on the depth pass's side: divide by u_light_far in "
                            "shaders/cube_depth.frag (TODO lab7.5), as point_shadow() divides the fragment's distance");
     } else if (_sl_follows(s, t, _sl_ndc_depth, near, far) > 0.9) {
         sl_diag_say(out, "face %s holds the depth buffer's own values (gl_FragCoord.z, the projection's non-linear "
                          "depth along the face's axis), not distance / far", face);
-        sl_diag_cause(out, "the lookup compares distances: write length(world position - light) / u_light_far into "
+        sl_diag_cause_in(out, "cube_depth.frag", "the lookup compares distances: write length(world position - light) / u_light_far into "
                            "gl_FragDepth in shaders/cube_depth.frag (TODO lab7.5)");
     } else if (_sl_match(s, t, _sl_scale, tan(glm_rad(22.5f)), k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s shows a narrower view than the reference: the reference's middle %.0f%%, magnified",
                     face, 100 * tan(glm_rad(22.5f)));
-        sl_diag_cause(out, "a field of view of 45 degrees: each face needs 90 (glm_rad(90.0f)) to meet its neighbours "
+        sl_diag_cause_in(out, "lab7_face_projection", "a field of view of 45 degrees: each face needs 90 (glm_rad(90.0f)) to meet its neighbours "
                            "edge to edge (lab7_face_projection, TODO lab7.4)");
     } else if (_sl_match(s, t, _sl_rotate_180, 0, k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s is the reference turned upside down (rotated 180 degrees)", face);
-        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+        sl_diag_cause_in(out, "lab7_face_view", "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
     } else if (_sl_match(s, t, _sl_mirror_y, 0, k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s is the reference flipped upside down (mirrored top to bottom)", face);
-        sl_diag_cause(out, "face %s: the up vector should be %s, and the face looks down %s (lab7_face_view, TODO "
+        sl_diag_cause_in(out, "lab7_face_view", "face %s: the up vector should be %s, and the face looks down %s (lab7_face_view, TODO "
                            "lab7.3)", face, up, face);
     } else if (_sl_match(s, t, _sl_mirror_x, 0, k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s is the reference mirrored left to right", face);
-        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+        sl_diag_cause_in(out, "lab7_face_view", "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
     } else if (_sl_match(s, t, _sl_rotate_90, 0, k->threshold * 5) > 0.95 ||
                _sl_match(s, t, _sl_rotate_270, 0, k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s is the reference turned by 90 degrees", face);
-        sl_diag_cause(out, "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
+        sl_diag_cause_in(out, "lab7_face_view", "face %s: the up vector should be %s (lab7_face_view, TODO lab7.3)", face, up);
     } else {
         long nearer = 0, farther = 0, n = (long)s->width * s->height;
         for (long i = 0; i < n; i++) {
@@ -181,8 +203,14 @@ void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_re
         sl_diag_say(out, "face %s differs from the reference on %.1f%% of texels (allowed %.1f%%): %.1f%% hold nearer "
                          "distances than the reference's, %.1f%% farther", face, 100 * st.failing_fraction,
                     100 * k->fail_fraction, 100.0 * nearer / n, 100.0 * farther / n);
-        sl_diag_cause(out, "does the face look down %s with the up vector %s (lab7_face_view), and does "
-                           "shaders/cube_depth.frag store length(world position - light) / far?", face, up);
+        if (layered) {
+            sl_diag_append(out, ". The cube map was drawn in one layered pass (lab7_begin_cube_pass attached all six "
+                                "faces), so this face's picture comes from shaders/cube_depth.geom");
+            sl_diag_cause(out, "in cube_depth.geom, the copy sent to gl_Layer = f must be projected with "
+                               "u_face_view_projection[f], the same f, and carry its world position on (gs_out)");
+        } else
+            sl_diag_cause_in(out, "lab7_face_view", "does the face look down %s with the up vector %s (lab7_face_view), and does "
+                               "shaders/cube_depth.frag store length(world position - light) / far?", face, up);
     }
     if (st.nan_pixels) sl_diag_append(out, "; %ld texels are NaN", st.nan_pixels);
 }
@@ -194,11 +222,23 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *s, const sl_i
     sl_visibility_stats v = sl_visibility_compare(s, t);
     const char *fn = c->params.cube.soft ? "point_shadow_soft()" : "point_shadow()";
     const char *todo = c->params.cube.soft ? "lab7.7" : "lab7.6";
-    (void)mask;
+    /* Self-shadowing: surfaces facing the light darkened in a fine pattern, not in solid regions. */
+    sl_acne acne = sl_measure_acne(s, t, mask);
+    if (sl_acne_is_pattern(&acne)) {
+        out->symptoms |= 1u << SL_SYMPTOM_ACNE;
+        sl_diag_say(out, "shadow acne on %.0f%% of the lit surfaces: they shadow themselves in a fine pattern of "
+                         "stripes and specks (%.0f%% of the darkened pixels sit next to lit ones)",
+                    100 * acne.fraction, 100 * acne.pattern);
+        sl_diag_cause_in(out, fn, "the bias is too small or missing: %s compares length(light_to_fragment) / far_plane - bias "
+                           "with the stored distance / far, the bias as given, in units of distance / far (this case: "
+                           "%g, %.2g in world units; TODO %s)",
+                      fn, c->params.cube.bias, c->params.cube.bias * c->scene.light.far, todo);
+        return true;
+    }
     if (v.extra_shadow > 0.5 && v.missing_shadow < 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
         sl_diag_say(out, "almost everything is in shadow (%.0f%% of the reference's lit pixels)", 100 * v.extra_shadow);
-        sl_diag_cause(out, "does %s compare like with like — the fragment's distance divided by far_plane with the "
+        sl_diag_cause_in(out, fn, "does %s compare like with like — the fragment's distance divided by far_plane with the "
                            "stored distance / far (TODO %s)?", fn, todo);
         return true;
     }
@@ -206,7 +246,7 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *s, const sl_i
         out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
         sl_diag_say(out, "shadows fall on the wrong side of the room (%.0f%% of the reference's shadows lit, %.0f%% of "
                          "its lit pixels shadowed)", 100 * v.missing_shadow, 100 * v.extra_shadow);
-        sl_diag_cause(out, "is the lookup direction fragment - light (%s, TODO %s), and do the faces look the right "
+        sl_diag_cause_in(out, fn, "is the lookup direction fragment - light (%s, TODO %s), and do the faces look the right "
                            "way (lab7_face_view)?", fn, todo);
         return true;
     }
@@ -220,39 +260,97 @@ static void _sl_matrix_row(const double *m, int row, double out[3]) {
     for (int i = 0; i < 3; i++) out[i] = m[i * 4 + row];
 }
 
-static bool _sl_same3(const double a[3], const double b[3], double eps) {
-    return fabs(a[0] - b[0]) <= eps && fabs(a[1] - b[1]) <= eps && fabs(a[2] - b[2]) <= eps;
+/* ---- lab7_face_view by its contract ----
+ *
+ * A face's view may be built with glm_lookat (the target one step or ten
+ * along the axis) or written out by hand; what it must do is put the eye at
+ * the light and turn the face's axis to the image's centre (view -z), its up
+ * vector to the image's +y and GL's "image right" of that face (s, the
+ * table's column) to +x, without scaling: a rigid motion. */
+static const float _sl_rights[6][3] = {{0, 0, -1}, {0, 0, 1}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {-1, 0, 0}};
+
+/* The view's linear part applied to a world direction (column-major 4x4). */
+static void _sl_turn(const double *m, const float v[3], double out[3]) {
+    for (int i = 0; i < 3; i++) out[i] = m[0 * 4 + i] * v[0] + m[1 * 4 + i] * v[1] + m[2 * 4 + i] * v[2];
 }
 
-static int _sl_face_view_verdict(const sl_check *k, const double *s, const double *e, uint32_t failing, char *text,
-                                 size_t n) {
-    for (int row = 0; row < k->rows; row++) {
-        if (!((failing >> row) & 1u)) continue;
-        const double *sm = s + row * 16, *em = e + row * 16;
-        int face = (int)k->inputs[row][0];
-        if (face < 0 || face > 5) continue;
-        double s_up[3], e_up[3], s_back[3], e_back[3];
-        _sl_matrix_row(sm, 1, s_up);
-        _sl_matrix_row(em, 1, e_up);
-        _sl_matrix_row(sm, 2, s_back);
-        _sl_matrix_row(em, 2, e_back);
-        char up[40];
-        _sl_vector(_sl_ups[face], up, sizeof up);
-        if (!_sl_same3(s_back, e_back, 1e-3)) {
-            char axis[40];
-            _sl_vector(_sl_axes[face], axis, sizeof axis);
-            snprintf(text, n, "face %s: the camera should look down %s, it looks down (%.3g,%.3g,%.3g)",
-                     _sl_face(face), axis, -s_back[0], -s_back[1], -s_back[2]);
-        } else if (!_sl_same3(s_up, e_up, 1e-3)) {
-            snprintf(text, n, "face %s: the up vector should be %s, not (%.3g,%.3g,%.3g)", _sl_face(face), up,
-                     s_up[0], s_up[1], s_up[2]);
-        } else {
-            snprintf(text, n, "face %s: the axes are right but the eye is not at the light (the translation, "
-                              "column 3, differs)", _sl_face(face));
+static bool _sl_is(const double a[3], double x, double y, double z, double eps) {
+    return fabs(a[0] - x) <= eps && fabs(a[1] - y) <= eps && fabs(a[2] - z) <= eps;
+}
+
+/* What face `face`'s view breaks, into text; false when it keeps the contract. */
+static bool _sl_face_view_broken(const float *in, const double *m, double eps, char *text, size_t n) {
+    int face = (int)in[0];
+    const float *light = in + 1;
+    if (face < 0 || face > 5) return false;
+    for (int i = 0; i < 16; i++)
+        if (!isfinite(m[i])) {
+            snprintf(text, n, "face %s: the matrix is not finite (NaN): with up (0,1,0) on the +-Y faces, glm_lookat "
+                              "divides by zero — those faces need up (0,0,1) and (0,0,-1)", _sl_face(face));
+            return true;
         }
-        return row;
+    char axis[40], up[40], right[40];
+    _sl_vector(_sl_axes[face], axis, sizeof axis);
+    _sl_vector(_sl_ups[face], up, sizeof up);
+    _sl_vector(_sl_rights[face], right, sizeof right);
+    double a[3], u[3], s[3];
+    _sl_turn(m, _sl_axes[face], a);
+    _sl_turn(m, _sl_ups[face], u);
+    _sl_turn(m, _sl_rights[face], s);
+    double forward[3], image_up[3], image_right[3];
+    _sl_matrix_row(m, 2, forward);
+    _sl_matrix_row(m, 1, image_up);
+    _sl_matrix_row(m, 0, image_right);
+    if (fabs(m[3]) + fabs(m[7]) + fabs(m[11]) > eps || fabs(m[15] - 1) > eps) {
+        snprintf(text, n, "face %s: the view is not a rigid motion (its last row is not 0, 0, 0, 1): glm_lookat(light, "
+                          "light + axis, up)", _sl_face(face));
+        return true;
     }
-    return -1;
+    if (!_sl_is(a, 0, 0, -1, eps)) {
+        snprintf(text, n, "face %s: the camera should look down %s, it looks down (%.3g,%.3g,%.3g)", _sl_face(face),
+                 axis, -forward[0], -forward[1], -forward[2]);
+        return true;
+    }
+    if (!_sl_is(u, 0, 1, 0, eps)) {
+        snprintf(text, n, "face %s: the up vector should be %s, not (%.3g,%.3g,%.3g)", _sl_face(face), up,
+                 image_up[0], image_up[1], image_up[2]);
+        return true;
+    }
+    if (!_sl_is(s, 1, 0, 0, eps)) {
+        snprintf(text, n, "face %s is mirrored: the image's right (+x) must be %s, as GL's table of cube map faces reads "
+                          "it; here it is (%.3g,%.3g,%.3g) — a lookAt's right is forward x up", _sl_face(face), right,
+                 image_right[0], image_right[1], image_right[2]);
+        return true;
+    }
+    double eye[3] = {m[12], m[13], m[14]};
+    for (int i = 0; i < 3; i++) eye[i] += m[0 * 4 + i] * light[0] + m[1 * 4 + i] * light[1] + m[2 * 4 + i] * light[2];
+    if (!_sl_is(eye, 0, 0, 0, eps * (1 + fabs(light[0]) + fabs(light[1]) + fabs(light[2])))) {
+        snprintf(text, n, "face %s: the axes are right but the eye is not at the light (%g,%g,%g): the light lands at "
+                          "(%.3g,%.3g,%.3g) in view space, not at the origin", _sl_face(face), (double)light[0],
+                 (double)light[1], (double)light[2], eye[0], eye[1], eye[2]);
+        return true;
+    }
+    return false;
+}
+
+bool sl_lab7_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t n,
+                            int *shown) {
+    const sl_probe_function *f = sl_probe_at(k->function);
+    if (!f || strcmp(f->name, "lab7_face_view") != 0) return false;
+    *broken = 0;
+    *shown = -1;
+    text[0] = '\0';
+    double eps = k->tolerance > 0 ? k->tolerance : 1e-4;
+    for (int row = 0; row < k->rows; row++) {
+        char why[400];
+        if (!_sl_face_view_broken(k->inputs[row], student + row * 16, eps, why, sizeof why)) continue;
+        *broken |= 1u << row;
+        if (*shown < 0) {
+            *shown = row;
+            snprintf(text, n, "%s", why);
+        }
+    }
+    return true;
 }
 
 static int _sl_projection_verdict(const sl_check *k, const double *s, const double *e, uint32_t failing, char *text,
@@ -324,6 +422,49 @@ static int _sl_lookup_verdict(const sl_check *k, const double *s, const double *
                           "light_to_fragment (from the light to the fragment), not fragment-to-light");
         return first_pos;
     }
+    /* Rows just behind the shell of "cube_occluded" (0.25), by less than 0.05 of distance / far: the bias decides
+     * them. When they are the only rows that fail, the bias is what is wrong, and how they fail says how. */
+    int bias_rows = 0, darker = 0, lighter = 0, first_bias = -1;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        sl_probe_map map = (sl_probe_map)(int)k->inputs[row][0];
+        double behind = _sl_length3(&k->inputs[row][1]) / k->inputs[row][4] - sl_probe_cube_depth(map, 0, 0, 0);
+        if (map != SL_PROBE_MAP_CUBE_OCCLUDED || behind <= 0 || behind >= 0.05) continue;
+        bias_rows++;
+        darker += s[row] < e[row];
+        lighter += s[row] > e[row];
+        if (first_bias < 0) first_bias = row;
+    }
+    /* the soft lookup: rows that differ only in the radius, the same answer where the solution's differ */
+    const sl_probe_function *f = sl_probe_at(k->function);
+    for (int a = 0; f && f->param_count == 5 && a < k->rows; a++) {
+        if (!((failing >> a) & 1u)) continue;
+        for (int b = 0; b < k->rows; b++) {
+            const float *ia = k->inputs[a], *ib = k->inputs[b];
+            bool twin = b != a && ia[6] != ib[6];
+            for (int i = 0; twin && i < 6; i++) twin = ia[i] == ib[i];
+            if (twin && fabs(s[a] - s[b]) < 1e-3 && fabs(e[a] - e[b]) > 0.05) {
+                snprintf(text, n, "the disk ignores radius: radius %g and radius %g give the same — the samples go "
+                                  "out to radius * length(light_to_fragment) / far_plane around the direction",
+                         (double)ia[6], (double)ib[6]);
+                return a;
+            }
+        }
+    }
+    if (bias_rows > 0 && bias_rows == failing_count) {
+        if (darker == bias_rows)
+            snprintf(text, n, "shadow acne: points just behind a surface, within the bias, come out shadowed — the bias "
+                              "is missing or too small: compare length(light_to_fragment) / far_plane - bias with the "
+                              "stored distance / far, the bias as given (in units of distance / far)");
+        else if (lighter == bias_rows)
+            snprintf(text, n, "the bias is too large: points behind a surface by more than the bias come out lit — the "
+                              "bias is in units of distance / far, subtracted once");
+        else
+            snprintf(text, n, "the bias is not the one given: within it some points come out shadowed, beyond it some lit "
+                              "— a constant of your own, or the bias in world units? Compare length(light_to_fragment) / "
+                              "far_plane - bias with the stored distance / far");
+        return first_bias;
+    }
     return -1;
 }
 
@@ -332,10 +473,35 @@ int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double
     text[0] = '\0';
     const sl_probe_function *f = sl_probe_at(k->function);
     if (!f) return -1;
-    if (strcmp(f->name, "lab7_face_view") == 0) return _sl_face_view_verdict(k, student, expected, failing, text, n);
     if (strcmp(f->name, "lab7_face_projection") == 0)
         return _sl_projection_verdict(k, student, expected, failing, text, n);
     if (strcmp(f->name, "point_shadow") == 0 || strcmp(f->name, "point_shadow_soft") == 0)
         return _sl_lookup_verdict(k, student, expected, failing, text, n);
     return -1;
+}
+
+/* ---- what lab 7's cases run ---- */
+
+bool sl_lab7_case_runs(const sl_case *c, const sl_check *k, const char *fn) {
+    if (strcmp(fn, "cube_depth.frag") == 0) return true;
+    /* the geometry shader of the layered pass runs only when the lab's lab7_begin_cube_pass takes all
+     * faces, which the case cannot tell: the "path" capture can, and the face checks name it from there */
+    if (strcmp(fn, "cube_depth.geom") == 0) return false;
+    return sl_lab7_case_calls(c, k, fn);
+}
+
+void sl_lab7_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    const sl_capture *path = r ? sl_result_capture(r, sl_capture_name(SL_CAPTURE_PATH)) : NULL;
+    const char *pass = path && path->number_count >= SL_PATH_NUMBERS
+                           ? (path->numbers[1] != 0 ? "in one layered pass (lab7_begin_cube_pass took all six faces, "
+                                                      "and shaders/cube_depth.geom, which has no probe, sent each "
+                                                      "triangle to them)"
+                                                    : "in six passes, one per face")
+                       : c->params.cube.pass == SL_CUBE_PASS_LAYERED ? "in one layered pass"
+                       : c->params.cube.pass == SL_CUBE_PASS_SIX     ? "in six passes"
+                                                                     : "in one layered pass where lab7_begin_cube_pass "
+                                                                       "takes all faces, else six";
+    bool lookup = r && (sl_result_capture(r, "visibility") || sl_result_capture(r, "image"));
+    snprintf(out, n, "the cube map drawn %s%s%s", pass, lookup ? ", looked up with " : "",
+             lookup ? (c->params.cube.soft ? "point_shadow_soft() (20 directions)" : "point_shadow()") : "");
 }

@@ -6,11 +6,13 @@
  * across the synthetic step edge, and so on. */
 #define _POSIX_C_SOURCE 200809L
 #include "sl_verdict.h"
+#include "sl_diagnose.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "sl_gl.h"
 #include "sl_params.h"
 
 /* The inputs of one parameter of a row, or NULL if the function has none of that name. */
@@ -141,6 +143,117 @@ static int _sl_radius_ignored(const sl_verdict_rows *v, char *text, size_t n) {
     return -1;
 }
 
+/* PCSS's blocker search, told apart from the filter that follows it:
+ * - over a floor (the "step_floor" map) the receiver's own surface, stored a
+ *   little nearer than p.z but within the bias, must not count as a blocker:
+ *   if it does, d_blocker comes out near d_receiver and the penumbra shrinks
+ *   (lighter there), while on the "step" map, with nothing behind the
+ *   occluder, every row still agrees;
+ * - on the lit side of an edge (a single comparison says lit) a wide light
+ *   still sees the occluder: a search region too small (a fixed width, not
+ *   light_size_uv * (d_receiver - near) / d_receiver) finds no blocker there
+ *   and returns 1.0, while inside the occluder, where the point itself is a
+ *   blocker, the penumbra, and so every result, is right (a penumbra wrong
+ *   there too is the filter's width: raw depths, a fixed radius). */
+static int _sl_verdict_pcss_search(const sl_verdict_rows *v, char *text, size_t n) {
+    int floor_lighter = -1, floor_rows = 0, other_failing = 0, lit_side_lost = -1, lit_side_fail = 0, shadow_partial_fail = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        const float *in = v->k->inputs[r];
+        const float *map = _sl_param(v->f, in, "shadow_map");
+        _sl_filter_row fr = _sl_filter_row_of(v->f, in);
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        bool failed = _sl_failed(v, r), floor = map && (int)*map == SL_PROBE_MAP_STEP_FLOOR;
+        if (floor) floor_rows++;
+        if (floor && failed && s > e && floor_lighter < 0) floor_lighter = r;
+        if (!floor && failed) other_failing++;
+        bool soft = e > 0.02 && e < 0.98, edge = fr.kind == _SL_ROW_EDGE;
+        if (edge && soft && fr.centre == 1.0 && failed) {
+            lit_side_fail++;
+            if (s >= 0.999 && lit_side_lost < 0) lit_side_lost = r;
+        }
+        if (edge && fr.centre == 0.0 && failed) shadow_partial_fail++; /* inside the occluder, the point is a blocker */
+    }
+    if (floor_rows && floor_lighter >= 0 && other_failing == 0) {
+        snprintf(text, n, "the blocker search counts the receiver's own surface as a blocker: over a floor it finds "
+                          "the floor itself, a little nearer than p.z, so d_blocker comes out near d_receiver and the "
+                          "penumbra shrinks — a blocker is a stored depth nearer than p.z - bias: the bias belongs in "
+                          "the blocker search too");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_NARROW_PENUMBRA | 1u << SL_SYMPTOM_GROSS);
+        return floor_lighter;
+    }
+    if (lit_side_lost >= 0 && lit_side_fail > 0 && shadow_partial_fail == 0) {
+        snprintf(text, n, "the blocker search looks too close: beside an occluder, where a wide light still sees it, it "
+                          "finds no blocker and returns 1.0, while inside the occluder the penumbra is right — search "
+                          "light_size_uv * (d_receiver - near) / d_receiver around p (the receiver's view of the light), "
+                          "not a fixed width");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_NARROW_PENUMBRA | 1u << SL_SYMPTOM_GROSS);
+        return lit_side_lost;
+    }
+    return -1;
+}
+
+/* A (2r+1)^2 grid whose samples are `spacing` texels apart, on a synthetic map (nearest texels, the
+ * border's depth 1.0 off the map): what pcf_grid gives for a row with that spacing. */
+static double _sl_grid_with_spacing(const sl_probe_function *f, const float *in, double spacing) {
+    const float *map = _sl_param(f, in, "shadow_map"), *coord = _sl_param(f, in, "shadow_coord");
+    const float *bias = _sl_param(f, in, "bias"), *radius = _sl_param(f, in, "radius");
+    if (!map || !coord || !bias || !radius || coord[3] <= 0) return NAN;
+    double x = coord[0] / coord[3], y = coord[1] / coord[3], z = coord[2] / coord[3] - *bias;
+    int r = (int)*radius, lit = 0, all = 0;
+    for (int j = -r; j <= r; j++)
+        for (int i = -r; i <= r; i++) {
+            double u = x + i * spacing / SL_PROBE_MAP_SIZE, w = y + j * spacing / SL_PROBE_MAP_SIZE;
+            double stored = u < 0 || u >= 1 || w < 0 || w >= 1
+                                ? 1.0
+                                : sl_probe_map_depth((sl_probe_map)(int)*map, (int)floor(u * SL_PROBE_MAP_SIZE),
+                                                     (int)floor(w * SL_PROBE_MAP_SIZE));
+            lit += !(z > stored);
+            all++;
+        }
+    return (double)lit / all;
+}
+
+/* The grid's samples another distance apart than one texel (a scale of 1.5, as some published
+ * kernels take, or a fixed step in uv): the spacings, in texels of the 64-texel map, at which a grid
+ * gives every failing row what the student's gives. One map size cannot tell a scale from a uv
+ * step, so the message names both. */
+static int _sl_grid_spacing(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "pcf_grid") != 0) return -1;
+    double lo = INFINITY, hi = -INFINITY;
+    int first = -1;
+    for (int step = 25; step <= 400; step++) {
+        double spacing = step / 100.0;
+        if (step == 100) continue;
+        bool all = true;
+        int failing = 0;
+        for (int r = 0; r < v->k->rows && all; r++) {
+            if (!_sl_failed(v, r)) continue;
+            failing++;
+            double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
+            double model = _sl_grid_with_spacing(v->f, v->k->inputs[r], spacing);
+            all = !isnan(model) && _sl_near(_sl_got(v, r, 0), model, tolerance + 1e-4);
+            if (all && first < 0) first = r;
+        }
+        if (all && failing > 0) {
+            lo = fmin(lo, spacing);
+            hi = fmax(hi, spacing);
+        }
+    }
+    if (first < 0 || !(lo <= hi) || (lo < 1 && hi > 1)) return -1;
+    bool wide = lo > 1;
+    char spacing[64];
+    if (hi - lo < 0.05) snprintf(spacing, sizeof spacing, "%.2g", lo);
+    else snprintf(spacing, sizeof spacing, "%.2g to %.2g", lo, hi);
+    snprintf(text, n, "the kernel is too %s: its samples are %s texels apart on this 64-texel map, not one — offset "
+                      "(x, y) times the texel, 1.0 / textureSize(map, 0), and nothing else: no scale (some published "
+                      "kernels spread a 3x3 grid 1.5 texels apart) and no fixed step in uv",
+             wide ? "wide" : "narrow", spacing);
+    sl_verdict_predicts(v, (wide ? 1u << SL_SYMPTOM_WIDE_PENUMBRA : 1u << SL_SYMPTOM_NARROW_PENUMBRA) |
+                               1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_GROSS |
+                               SL_PREDICTS_EVERY_SETTING);
+    return first;
+}
+
 static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     const sl_probe_function *f = v->f;
     bool kernel = strcmp(f->name, "pcf_grid") == 0 || strcmp(f->name, "pcf_poisson") == 0;
@@ -197,6 +310,7 @@ static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
                      _sl_got(v, row, 0));
         return row;
     }
+    if (pcss && (row = _sl_verdict_pcss_search(v, text, n)) >= 0) return row;
     if (!kernel) return -1; /* PCSS and single lookups: their rows say the rest */
     /* Across the edge: hard 0/1 results where soft ones are expected, then the width */
     int soft = 0, hard = 0, as_centre = 0, narrow = 0, wide = 0, first_soft = -1, first_width = -1;
@@ -231,6 +345,7 @@ static int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     }
     /* fractional, but the same whatever the radius */
     if ((row = _sl_radius_ignored(v, text, n)) >= 0) return row;
+    if ((row = _sl_grid_spacing(v, text, n)) >= 0) return row;
     if (narrow > wide && first_width >= 0) {
         snprintf(text, n, "the kernel is too narrow: across an occluder's edge its results stay closer to a single "
                           "comparison's 0 or 1 than they should — are the offsets radius texels wide, each texel "
@@ -273,7 +388,7 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         }
     }
     /* Where the clamp does not act: which function of the angle does the slope term follow? */
-    int rows_seen = 0, as_sin = 0, as_angle = 0, first = -1;
+    int rows_seen = 0, as_sin = 0, as_angle = 0, as_one_minus = 0, as_max_one_minus = 0, first = -1;
     double ratio_lo = INFINITY, ratio_hi = -INFINITY, term_lo = INFINITY, term_hi = -INFINITY;
     for (int r = 0; r < rows; r++) {
         const float *in = v->k->inputs[r];
@@ -289,12 +404,25 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         rows_seen++;
         as_sin += _sl_near(term, sin_t, 0.02 * sin_t + 1e-4);
         as_angle += _sl_near(term, tan(cos_t), 0.02 * tan(cos_t) + 1e-4) || _sl_near(term, acos(cos_t), 0.02);
+        /* 1 - N.L: LearnOpenGL's bias, max(0.05 * (1 - N.L), 0.005), or that term added to the constant */
+        double one_minus = slope * (1 - cos_t);
+        as_one_minus += _sl_near(s, c + one_minus, 0.02 * (c + one_minus) + 1e-7);
+        as_max_one_minus += _sl_near(s, fmax(one_minus, c), 0.02 * fmax(one_minus, c) + 1e-7);
         ratio_lo = fmin(ratio_lo, s / e);
         ratio_hi = fmax(ratio_hi, s / e);
         term_lo = fmin(term_lo, term / ((e - c) / slope));
         term_hi = fmax(term_hi, term / ((e - c) / slope));
     }
     if (rows_seen == 0) return -1;
+    if (as_max_one_minus == rows_seen || as_one_minus == rows_seen) {
+        snprintf(text, n, "the slope term follows 1 - N.L, not tan(theta)%s: 1 - N.L stays below 1 where tan(theta) "
+                          "grows without bound, so grazing surfaces get too little bias — min(constant + slope * "
+                          "tan(theta), max_bias), tan(theta) = sqrt(1 - cos^2) / cos",
+                 as_max_one_minus == rows_seen ? ", and the larger of it and the constant where their sum belongs "
+                                                 "(LearnOpenGL's max(0.05 * (1 - N.L), 0.005))" : "");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+        return first;
+    }
     if (as_sin == rows_seen) {
         snprintf(text, n, "sin(theta) where tan(theta) belongs: the slope term follows sqrt(1 - cos^2), not "
                           "sqrt(1 - cos^2) / cos — divide by cos(theta) = N.L");
@@ -369,8 +497,13 @@ static int _sl_verdict_normal_offset(const sl_verdict_rows *v, char *text, size_
 static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, size_t n) {
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r)) continue;
-        int mode = (int)v->k->inputs[r][0];
-        const char *name = sl_bias_mode_name((sl_bias_mode)mode);
+        int mode = (int)v->k->inputs[r][0], previous = v->f->param_count > 3 ? (int)v->k->inputs[r][3] : -1;
+        char name[96];
+        if (previous >= 0 && previous != mode)
+            snprintf(name, sizeof name, "%s (right after %s)", sl_bias_mode_name((sl_bias_mode)mode),
+                     sl_bias_mode_name((sl_bias_mode)previous));
+        else
+            snprintf(name, sizeof name, "%s", sl_bias_mode_name((sl_bias_mode)mode));
         double e[5], s[5];
         for (int o = 0; o < 5; o++) {
             e[o] = _sl_want(v, r, o);
@@ -383,12 +516,14 @@ static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, si
         }
         if (s[3] && !e[3]) {
             snprintf(text, n, "culling is left on in %s mode: switch GL_CULL_FACE off in every mode but front-culling — "
-                              "a plane with no thickness has only a front face, and culled it casts no shadow", name);
+                              "a plane with no thickness has only a front face, and culled it casts no shadow%s", name,
+                     previous >= 0 ? "; each mode sets every switch, whatever the mode before left on" : "");
             return r;
         }
         if (s[0] && !e[0]) {
             snprintf(text, n, "polygon offset is left on in %s mode: switch GL_POLYGON_OFFSET_FILL off in every mode "
-                              "but polygon-offset", name);
+                              "but polygon-offset%s", name,
+                     previous >= 0 ? "; each mode sets every switch, whatever the mode before left on" : "");
             return r;
         }
         if (!s[0] && e[0]) {
@@ -409,7 +544,108 @@ static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, si
     return -1;
 }
 
+/* ---- lab 2 ---- */
+
+/* glm_ortho's box and glm_perspective's field of view, read back from a
+ * column-major matrix (outputs m00, m10, ...: index col * 4 + row). */
+static bool _sl_ortho_box(const double *m, double box[6]) {
+    if (fabs(m[15] - 1) > 1e-6 || fabs(m[11]) > 1e-6 || m[0] == 0 || m[5] == 0 || m[10] == 0) return false;
+    double w = 2 / m[0], h = 2 / m[5], d = -2 / m[10];
+    double cx = -m[12] * w / 2, cy = -m[13] * h / 2, cz = -m[14] * d / 2;
+    box[0] = cx - w / 2, box[1] = cx + w / 2, box[2] = cy - h / 2, box[3] = cy + h / 2;
+    box[4] = cz - d / 2, box[5] = cz + d / 2; /* near, far */
+    return true;
+}
+
+static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double s[16], e[16], bs[6], be[6];
+        for (int o = 0; o < 16; o++) {
+            s[o] = _sl_got(v, r, o);
+            e[o] = _sl_want(v, r, o);
+        }
+        if (_sl_ortho_box(e, be)) {
+            if (!_sl_ortho_box(s, bs)) {
+                snprintf(text, n, "a sun needs an orthographic projection (glm_ortho): parallel rays");
+                return r;
+            }
+            double depth = be[5] - be[4], pad = depth / 1.02 * 0.01, tol = 1e-3 * fmax(1, depth);
+            bool sides = fabs(bs[0] - be[0]) < tol && fabs(bs[1] - be[1]) < tol && fabs(bs[2] - be[2]) < tol &&
+                         fabs(bs[3] - be[3]) < tol;
+            if (sides && fabs(bs[4] - (be[4] + pad)) < tol && fabs(bs[5] - (be[5] - pad)) < tol) {
+                snprintf(text, n, "near and far hug the scene's box with no padding: pad each by 1%% of the box's "
+                                  "depth range (near = -max z - pad, far = -min z + pad), or rounding clips the "
+                                  "farthest corner");
+                sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_TOO_DARK);
+                return r;
+            }
+            if (!sides) {
+                snprintf(text, n, "the box's sides are not the scene's corners' extent in light view space: left/right "
+                                  "and bottom/top are the min and max x and y of all 8 corners, transformed by the "
+                                  "light's view as points (w = 1)");
+                return r;
+            }
+            snprintf(text, n, "near and far are not -(max z) and -(min z) of the corners in light view space (the "
+                              "camera looks down -z), padded by 1%% of the range");
+            return r;
+        }
+        /* a spot light: glm_perspective(fovy, 1, near, far), fovy = 2 * spot_angle_deg in radians */
+        if (e[5] > 0 && s[5] > 0 && fabs(e[11] + 1) < 1e-6) {
+            double fov_e = 2 * atan(1 / e[5]), fov_s = 2 * atan(1 / s[5]);
+            if (fabs(fov_s * 2 - fov_e) < 1e-3) {
+                snprintf(text, n, "the field of view is the cone's half-angle: fovy is twice spot_angle_deg");
+                return r;
+            }
+            const double degrees_per_radian = 57.29577951308232;
+            if (fabs(s[5] - 1 / tan(fov_e * degrees_per_radian / 2)) < 1e-3) {
+                snprintf(text, n, "the angle is in degrees where glm_perspective takes radians: glm_rad(2 * spot_angle_deg)");
+                return r;
+            }
+        }
+    }
+    return -1;
+}
+
 /* ---- lab 1 ---- */
+
+/* Outputs: min filter, mag filter, wrap S, wrap T, the border's depth (-1 without a border). */
+static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
+        double wrap_s = _sl_got(v, r, 2), wrap_t = _sl_got(v, r, 3), border = _sl_got(v, r, 4);
+        bool wrap_wrong = wrap_s != _sl_want(v, r, 2) || wrap_t != _sl_want(v, r, 3);
+        if (wrap_wrong) {
+            double wrong = wrap_s != _sl_want(v, r, 2) ? wrap_s : wrap_t;
+            snprintf(text, n, "lookups past the map's edge do not read \"nothing there\": the wrap mode is %s, not "
+                              "GL_CLAMP_TO_BORDER on S and T — %s, so a filter's samples past the edge find shadow where "
+                              "there is none (lab 4's kernels); use GL_CLAMP_TO_BORDER with GL_TEXTURE_BORDER_COLOR "
+                              "(1, 1, 1, 1), the far plane, lit",
+                     sl_diag_enum_name((unsigned)wrong),
+                     wrong == GL_REPEAT || wrong == GL_MIRRORED_REPEAT ? "depths from the opposite edge wrap in"
+                                                                       : "the edge texels are stretched outwards");
+            sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+            return r;
+        }
+        if (fabs(border - _sl_want(v, r, 4)) > 1e-6) {
+            snprintf(text, n, "the border's depth is %g, not 1.0: a lookup past the map's edge must read the far plane, "
+                              "lit — GL_TEXTURE_BORDER_COLOR (1, 1, 1, 1) (a depth texture reads its first component)",
+                     border);
+            sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+            return r;
+        }
+        double min = _sl_got(v, r, 0), mag = _sl_got(v, r, 1);
+        if (min != _sl_want(v, r, 0) || mag != _sl_want(v, r, 1)) {
+            bool mipmap = min != GL_NEAREST && min != GL_LINEAR;
+            snprintf(text, n, "the map is filtered with %s (min) and %s (mag), not GL_NEAREST: %s",
+                     sl_diag_enum_name((unsigned)min), sl_diag_enum_name((unsigned)mag),
+                     mipmap ? "a mipmap min filter makes a map without mipmaps incomplete, and every read 0"
+                            : "a depth map is read exactly; GL_LINEAR blends the depths of different surfaces");
+            return r;
+        }
+    }
+    return -1;
+}
 
 /* Outputs: the map's framebuffer bound, viewport width and height, depth
  * test, depth function, depth writes, the depth after the call (cleared: 1). */
@@ -447,10 +683,82 @@ int sl_probe_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     const char *name = v->f->name;
     if (v->f->glsl && _sl_param(v->f, v->k->inputs[0], "shadow_map") && _sl_param(v->f, v->k->inputs[0], "shadow_coord"))
         return _sl_verdict_filter(v, text, n);
+    if (strcmp(name, "lab1_create_shadow_map") == 0) return _sl_verdict_create_shadow_map(v, text, n);
+    if (strcmp(name, "lab2_light_projection") == 0) return _sl_verdict_light_projection(v, text, n);
     if (strcmp(name, "lab1_begin_depth_pass") == 0) return _sl_verdict_begin_depth_pass(v, text, n);
     if (strcmp(name, "slope_scaled_bias") == 0) return _sl_verdict_slope(v, text, n);
     if (strcmp(name, "normal_offset_position") == 0) return _sl_verdict_normal_offset(v, text, n);
     if (strcmp(name, "lab3_depth_pass_state") == 0) return _sl_verdict_depth_pass_state(v, text, n);
+    if (v->f->lab == 5) return sl_verdict_lab5(v, text, n);
     if (v->f->lab == 6) return sl_verdict_lab6(v, text, n);
     return -1;
+}
+
+/* ---- what a failing row predicts a picture shows ---- */
+
+#define _SL_DARK (1u << SL_SYMPTOM_TOO_DARK)
+#define _SL_LIGHT (1u << SL_SYMPTOM_TOO_LIGHT)
+#define _SL_GROSS (1u << SL_SYMPTOM_GROSS)
+#define _SL_NARROW (1u << SL_SYMPTOM_NARROW_PENUMBRA)
+#define _SL_WIDE (1u << SL_SYMPTOM_WIDE_PENUMBRA)
+
+/* lab3_depth_pass_state: polygon offset on, factor, units, culling on, cull face. */
+static uint32_t _sl_state_row_predicts(const sl_verdict_rows *v, int row) {
+    double e[5], s[5];
+    for (int o = 0; o < 5; o++) {
+        e[o] = _sl_want(v, row, o);
+        s[o] = _sl_got(v, row, o);
+        if (isnan(s[o])) return SL_SYMPTOMS_ANY;
+    }
+    uint32_t p = 0;
+    if (s[0] && !e[0]) p |= _SL_LIGHT;                          /* an offset pushes depths away: detached shadows */
+    if (!s[0] && e[0]) p |= _SL_DARK | _SL_GROSS;               /* acne where the offset belonged */
+    if (s[0] && e[0] && (s[1] != e[1] || s[2] != e[2])) p |= _SL_DARK | _SL_LIGHT;
+    if (s[3] && !e[3]) p |= _SL_LIGHT | _SL_GROSS;              /* culled faces cast no shadow (a plane loses its own) */
+    if (!s[3] && e[3]) p |= _SL_DARK | _SL_GROSS;               /* the lit side stays in the map: acne */
+    if (s[3] && e[3] && s[4] != e[4]) p |= _SL_DARK | _SL_GROSS; /* the near faces kept: acne */
+    return p ? p : SL_SYMPTOMS_ANY;
+}
+
+/* normal_offset_position: a point moved less along the normal than it should shadows itself. */
+static uint32_t _sl_offset_row_predicts(const sl_verdict_rows *v, int row) {
+    const float *in = v->k->inputs[row];
+    const float *p = _sl_param(v->f, in, "world_position"), *normal = _sl_param(v->f, in, "normal");
+    if (!p || !normal) return SL_SYMPTOMS_ANY;
+    double along_s = 0, along_e = 0;
+    for (int i = 0; i < 3; i++) {
+        double got = _sl_got(v, row, i);
+        if (isnan(got)) return SL_SYMPTOMS_ANY;
+        along_s += (got - p[i]) * normal[i];
+        along_e += (_sl_want(v, row, i) - p[i]) * normal[i];
+    }
+    if (along_s < 0) return _SL_DARK | _SL_GROSS; /* into the surface */
+    return along_s < along_e ? _SL_DARK : _SL_LIGHT | (along_s > 4 * along_e + 1e-6 ? _SL_GROSS : 0);
+}
+
+uint32_t sl_probe_row_predicts(const sl_verdict_rows *v, int row) {
+    const sl_probe_function *f = v->f;
+    if (strcmp(f->name, "lab3_depth_pass_state") == 0) return _sl_state_row_predicts(v, row);
+    if (strcmp(f->name, "normal_offset_position") == 0) return _sl_offset_row_predicts(v, row);
+    if (f->output_count != 1) return SL_SYMPTOMS_ANY;
+    /* a visibility (a lighter one), or a bias (a larger one lightens) */
+    bool visibility = strcmp(f->outputs, "visibility") == 0 || strcmp(f->outputs, "p_max") == 0;
+    bool bias = strcmp(f->outputs, "bias") == 0;
+    if (!visibility && !bias) return SL_SYMPTOMS_ANY;
+    double s = _sl_got(v, row, 0), e = _sl_want(v, row, 0);
+    if (isnan(s) || isinf(s)) return SL_SYMPTOMS_ANY;
+    uint32_t p = s < e ? _SL_DARK : _SL_LIGHT;
+    if (bias) {
+        if (s <= 0.25 * e || s >= 4 * e + 1e-6) p |= _SL_GROSS;
+        return p;
+    }
+    if (fabs(s - e) >= 0.5) p |= _SL_GROSS;
+    /* across an edge: nearer a single comparison's 0 or 1 than the solution is narrower; a width
+     * off by much there grows with the kernel (a wide light, a large radius): gross in a picture */
+    if (e > 0.02 && e < 0.98 && _sl_param(f, v->k->inputs[row], "shadow_map")) {
+        _sl_filter_row fr = _sl_filter_row_of(f, v->k->inputs[row]);
+        p |= fabs(s - fr.centre) < fabs(e - fr.centre) ? _SL_NARROW : _SL_WIDE;
+        if (fabs(s - e) >= 0.15) p |= _SL_GROSS;
+    }
+    return p;
 }

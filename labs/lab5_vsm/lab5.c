@@ -19,7 +19,8 @@
 
 /* 1. ---------------------------------------------------------------------- */
 sl_status lab5_create_moments_target(int size, sl_moments_target *target) {
-    /* TODO(lab5.1): README.md, "The moments targets". For i = 0 and 1:
+    /* TODO(lab5.1): README.md, "What to do", step 1, and "Precision: why GL_RG32F".
+     * For i = 0 and 1:
      *   - a texture moments[i], size x size, internal format GL_RG32F (32-bit
      *     floats: the variance is a small difference of two large numbers),
      *     GL_LINEAR filtering, GL_CLAMP_TO_EDGE on both axes;

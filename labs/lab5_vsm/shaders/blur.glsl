@@ -7,11 +7,13 @@
 vec2 blur_moments(sampler2D moments, vec2 uv, vec2 direction, int radius) {
     // TODO(lab5.5): README.md, "Separable blur": the weighted sum of the
     // 2 * radius + 1 texels i whole texels from uv along `direction`,
-    // i in [-radius, radius], with Gaussian weights exp(-i^2 / (2 sigma^2)),
-    // sigma = max(radius / 2, 0.5), divided by the sum of the weights. Read
-    // level 0 only: texelFetch(moments, texel, 0) with the texel clamped to
-    // the map (the edge repeats), or textureLod(moments, uv + i * direction /
-    // textureSize(moments, 0), 0.0). `radius` arrives as a constant: the loop
+    // i in [-radius, radius], with Gaussian weights
+    // exp(-float(i * i) / (2.0 * sigma * sigma)),
+    // sigma = max(float(radius) * 0.5, 0.5) (float: radius / 2 would divide
+    // integers), divided by the sum of the weights. Read level 0 only:
+    // texelFetch(moments, texel, 0) with the texel clamped to the map (the edge
+    // repeats), or textureLod(moments, uv + float(i) * direction /
+    // vec2(textureSize(moments, 0)), 0.0). `radius` arrives as a constant: the loop
     // unrolls, so compute what does not change (sigma, the size) before it.
     return textureLod(moments, uv, 0.0).rg;
 }

@@ -5,7 +5,7 @@
 // ---- Step 3: the two moments ---------------------------------------------------
 vec2 compute_moments(float depth) {
     // The first two moments of the depth distribution: E[x] and E[x^2] once
-    // filtered. (The derivative term of Donnelly & Lauritzen 2006 is left out:
-    // README.md, "The second moment".)
+    // filtered. (The derivative term of Donnelly & Lauritzen 2006 is left out
+    // here; adding it is right too: README.md, "The second moment".)
     return vec2(depth, depth * depth);
 }

@@ -1,0 +1,203 @@
+/* Evidence for blame: what a case runs, and whether a failed probe explains
+ * what a check's capture shows (grader/diagnose/README.md, "Blame needs
+ * evidence"). The per-lab knowledge of which functions a case's frames call
+ * sits with each lab's diagnoses (sl_labN_case_runs in grader/diagnose/labN.c);
+ * this file holds the rules every lab shares. */
+#define _POSIX_C_SOURCE 200809L
+#include "sl_diagnose.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "sl_probe.h"
+#include "sl_verdict.h"
+
+/* Lab code without a probe of its own: files and C functions a case may run.
+ * Listed so that a message can name them as candidates. */
+static const sl_lab_function _sl_unprobed[] = {
+    {"depth.vert", 1, "TODO(lab1.4)", false},
+    {"lab3_second_depth_state", 3, "TODO(lab3.4)", true},
+    {"lab5_create_moments_target", 5, "TODO(lab5.1)", false},
+    {"lab5_begin_moments_pass", 5, "TODO(lab5.2)", false},
+    {"lab5_begin_blur_pass", 5, "TODO(lab5.4)", false},
+    {"lab5_filter_moments", 5, "TODO(lab5.6)", false},
+    {"cube_depth.frag", 7, "TODO(lab7.5)", false},
+};
+#define _SL_UNPROBED_COUNT ((int)(sizeof _sl_unprobed / sizeof _sl_unprobed[0]))
+
+int sl_lab_function_count(void) {
+    int probed = 0;
+    while (sl_probe_at(probed)) probed++;
+    return probed + _SL_UNPROBED_COUNT;
+}
+
+sl_lab_function sl_lab_function_at(int i) {
+    int probed = 0;
+    while (sl_probe_at(probed)) probed++;
+    if (i < probed) {
+        const sl_probe_function *f = sl_probe_at(i);
+        return (sl_lab_function){f->name, f->lab, f->todo, f->bonus};
+    }
+    i -= probed;
+    return i >= 0 && i < _SL_UNPROBED_COUNT ? _sl_unprobed[i] : (sl_lab_function){NULL, 0, NULL, false};
+}
+
+static bool _sl_is_bonus(const char *function) {
+    const sl_probe_function *f = sl_probe_find(function);
+    if (f) return f->bonus;
+    for (int i = 0; i < _SL_UNPROBED_COUNT; i++)
+        if (strcmp(_sl_unprobed[i].name, function) == 0) return _sl_unprobed[i].bonus;
+    return false;
+}
+
+/* ---- what a case runs ---- */
+
+bool sl_case_runs(const sl_case *c, const sl_check *k, const char *function) {
+    if (!function || !function[0]) return false;
+    /* a probe check calls its own function alone */
+    if (k->kind == SL_CHECK_PROBE) {
+        const sl_probe_function *f = sl_probe_at(k->function);
+        return f && strcmp(f->name, function) == 0;
+    }
+    switch (c->lab) {
+    case 1: return sl_lab1_case_runs(c, k, function);
+    case 2: return sl_lab2_case_runs(c, k, function);
+    case 3: return sl_lab3_case_runs(c, k, function);
+    case 4: return sl_lab4_case_runs(c, k, function);
+    case 5: return sl_lab5_case_runs(c, k, function);
+    case 6: return sl_lab6_case_runs(c, k, function);
+    case 7: return sl_lab7_case_runs(c, k, function);
+    default: return false;
+    }
+}
+
+void sl_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
+    out[0] = '\0';
+    switch (c->lab) {
+    case 2: sl_lab2_case_path(c, r, out, n); break;
+    case 3: sl_lab3_case_path(c, r, out, n); break;
+    case 4: sl_lab4_case_path(c, r, out, n); break;
+    case 5: sl_lab5_case_path(c, r, out, n); break;
+    case 6: sl_lab6_case_path(c, r, out, n); break;
+    case 7: sl_lab7_case_path(c, r, out, n); break;
+    default: break;
+    }
+}
+
+/* ---- whether a case meets a probe row ---- */
+
+/* The inputs of one parameter of a row, or NULL if the function has none of that name. */
+const float *sl_probe_row_param(const sl_probe_function *f, const float *row, const char *name) {
+    int offset = 0;
+    for (int i = 0; i < f->param_count; i++) {
+        if (strcmp(f->params[i].name, name) == 0) return row + offset;
+        offset += sl_probe_type_size(f->params[i].type);
+    }
+    return NULL;
+}
+
+static bool _sl_perspective(const sl_case *c) { return c->scene.light.type != SL_LIGHT_DIRECTIONAL; }
+
+/* The settings a lab's rows test (a radius): where a row's mistake is known not to depend on them, a
+ * case meets the row whatever its settings. */
+static bool _sl_meets_settings(const sl_case *c, const sl_check *probe, int r) {
+    const sl_probe_function *f = sl_probe_at(probe->function);
+    switch (f->lab) {
+    case 4: return sl_lab4_meets_row(c, probe, r);
+    default: return true;
+    }
+}
+
+static bool _sl_meets_row(const sl_case *c, const sl_check *probe, int r, bool every_setting);
+
+bool sl_case_meets_row(const sl_case *c, const sl_check *probe, int r) { return _sl_meets_row(c, probe, r, false); }
+
+static bool _sl_meets_row(const sl_case *c, const sl_check *probe, int r, bool every_setting) {
+    const sl_probe_function *f = sl_probe_at(probe->function);
+    if (!f || r < 0 || r >= probe->rows) return false;
+    const float *row = probe->inputs[r];
+    /* A shadow coordinate with w other than 1 comes only from a perspective
+     * light: under a sun's orthographic projection w is 1 everywhere. */
+    const float *coord = sl_probe_row_param(f, row, "shadow_coord");
+    if (coord && coord[3] != 1.0f && !_sl_perspective(c)) return false;
+    /* A call right after another mode's: a case draws in one mode from its start, only the viewer switches. */
+    const float *previous = sl_probe_row_param(f, row, "previous_mode");
+    if (previous && *previous >= 0) return false;
+    /* A mode: the case's own (a lab N function with a mode of lab N's settings). */
+    const float *mode = sl_probe_row_param(f, row, "mode");
+    if (mode && strcmp(f->name, "lab3_depth_pass_state") == 0 && (int)*mode != (int)c->params.bias.mode) return false;
+    if (mode && strcmp(f->name, "lab4_configure_shadow_texture") == 0 && (int)*mode != (int)c->params.filter.mode)
+        return false;
+    return every_setting || _sl_meets_settings(c, probe, r);
+}
+
+/* ---- what a failed probe predicts, and whether it explains a check ---- */
+
+/* Whether a row's mistake, in the outputs that differ, can show in case c at all. */
+static bool _sl_outputs_reach(const sl_case *c, const sl_probe_function *f, uint16_t outputs) {
+    /* lab 1's wrap mode and border matter only to a filter that reads past the map's edge: lab 2's
+     * lookups call a point off the map lit before they read it */
+    if (strcmp(f->name, "lab1_create_shadow_map") == 0 && outputs && !(outputs & 0x3u)) {
+        bool filtered = (c->lab == 4 || (c->lab == 5 && c->params.vsm_off)) && c->params.filter.mode != SL_FILTER_NONE;
+        return filtered;
+    }
+    return true;
+}
+
+uint32_t sl_probe_failure_predicts(const sl_case *c, const sl_probe_failure *failure) {
+    const sl_probe_function *f = sl_probe_at(failure->function);
+    if (!f) return 0;
+    if (!failure->failing_rows || !failure->check) return SL_SYMPTOMS_ANY; /* failed as a whole: not called, a stub */
+    uint32_t predicts = 0;
+    for (int row = 0; row < failure->check->rows; row++)
+        if ((failure->failing_rows >> row) & 1u &&
+            _sl_meets_row(c, failure->check, row, (failure->row_predicts[row] & SL_PREDICTS_EVERY_SETTING) != 0) &&
+            _sl_outputs_reach(c, f, failure->row_outputs[row]))
+            predicts |= failure->row_predicts[row] ? failure->row_predicts[row] & ~SL_PREDICTS_EVERY_SETTING : SL_SYMPTOMS_ANY;
+    return predicts;
+}
+
+/* What a check's symptoms need a mistake to predict: its direction, and a
+ * gross symptom a gross mistake. Symptoms of the old kind say their direction. */
+static uint32_t _sl_with_directions(uint32_t s) {
+    if (s & (1u << SL_SYMPTOM_ACNE | 1u << SL_SYMPTOM_EXTRA_SHADOW | 1u << SL_SYMPTOM_STALE_DEPTH))
+        s |= 1u << SL_SYMPTOM_TOO_DARK;
+    if (s & (1u << SL_SYMPTOM_MISSING_SHADOW | 1u << SL_SYMPTOM_DETACHED | 1u << SL_SYMPTOM_NO_SHADOWS))
+        s |= 1u << SL_SYMPTOM_TOO_LIGHT;
+    if (s & (1u << SL_SYMPTOM_SWAPPED)) s |= 1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT;
+    if (s & (1u << SL_SYMPTOM_HARD_EDGES)) s |= 1u << SL_SYMPTOM_NARROW_PENUMBRA;
+    return s;
+}
+
+bool sl_prediction_meets(uint32_t predicts, uint32_t symptoms) {
+    symptoms = _sl_with_directions(symptoms);
+    predicts = _sl_with_directions(predicts);
+    const uint32_t directions = 1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT |
+                                1u << SL_SYMPTOM_NARROW_PENUMBRA | 1u << SL_SYMPTOM_WIDE_PENUMBRA;
+    const uint32_t gross = 1u << SL_SYMPTOM_GROSS;
+    if ((symptoms & gross) && !(predicts & gross)) return false; /* a small mistake cannot explain a gross symptom */
+    if (!(symptoms & directions)) return predicts != 0;          /* the capture says no direction: any mistake */
+    return (predicts & symptoms & directions) != 0;
+}
+
+bool sl_probe_failure_explains(const sl_case *c, const sl_check *k, const sl_probe_failure *failure, uint32_t symptoms,
+                               bool isolated) {
+    const sl_probe_function *f = sl_probe_at(failure->function);
+    if (!f || f->lab > c->lab) return false;
+    if (f->bonus && !k->bonus) return false;       /* an extension never answers for a regular check */
+    if (isolated && f->lab != c->lab) return false; /* the solutions stand in for the other labs */
+    if (f->lab < c->lab && !sl_lab_builds_on(c->lab, f->lab)) return false;
+    if (!sl_case_runs(c, k, f->name)) return false;
+    return sl_prediction_meets(sl_probe_failure_predicts(c, failure), symptoms);
+}
+
+bool sl_function_may_be_blamed(const sl_case *c, const sl_check *k, const char *function, bool isolated) {
+    if (_sl_is_bonus(function) && !k->bonus) return false;
+    const sl_probe_function *f = sl_probe_find(function);
+    int lab = f ? f->lab : 0;
+    for (int i = 0; !f && i < _SL_UNPROBED_COUNT; i++)
+        if (strcmp(_sl_unprobed[i].name, function) == 0) lab = _sl_unprobed[i].lab;
+    if (isolated && lab && lab != c->lab) return false;
+    return sl_case_runs(c, k, function);
+}
