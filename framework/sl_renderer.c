@@ -628,18 +628,20 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     sl_frame_info *info = &r->info;
     /* The highest lab whose code can run this frame. */
     int lab = 0;
-    if (info->shadow_map_ready && info->lab2_ready) {
+    if (p->lab == 5 && !p->vsm_off && info->moments_ready && info->lab2_ready) {
+        lab = 5; /* VSM reads its moments and lab 2's matrices only: no lab 1 map, no lab 3 state */
+    } else if (info->shadow_map_ready && info->lab2_ready) {
         /* labs 6 and 7 draw in their own modules; asked for otherwise (a light they do not cast from), labs 1-4 draw */
         lab = _sl_planar_lab(p->lab > 5 ? 4 : p->lab);
-        if (depth_lab < 3 && lab > 2) {
-            lab = 2;
-            sl_renderer_note_stop(r, 3);
-        }
-        /* lab 5: its moments, or lab 4's filters when they are not there (or VSM is switched off) */
-        if (lab == 5 && (!info->moments_ready || p->vsm_off)) {
+        /* lab 5 without its moments (or VSM switched off): lab 4's filters */
+        if (lab == 5) {
             lab = 4;
             if (p->vsm_off) sl_renderer_note_off(r, 5, SL_STOP_SWITCHED_OFF);
             else sl_renderer_note_stop(r, 5);
+        }
+        if (depth_lab < 3 && lab > 2) {
+            lab = 2;
+            sl_renderer_note_stop(r, 3);
         }
     } else if (p->lab >= 1) { /* no map to look up: lab 1's or lab 2's step stopped */
         if (!info->shadow_map_ready) sl_renderer_note_stop(r, 1);
@@ -652,7 +654,7 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
             lab = 3;
             sl_renderer_note_stop(r, 4);
         }
-    } else if (p->lab >= 4 && !(info->shadow_map_ready && info->lab2_ready)) {
+    } else if (p->lab >= 4 && lab != 5 && !(info->shadow_map_ready && info->lab2_ready)) {
         /* asked anyway, on no texture, to learn whether it is still a stub (see _sl_depth_pass) */
         glBindTexture(GL_TEXTURE_2D, 0);
         _SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, 0, p->filter.mode);
@@ -791,11 +793,15 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     if (params->lab == 7) sl_renderer_note_off(r, 7, SL_STOP_NO_POINT_LIGHT); /* labs 1-4 draw instead */
     _sl_light_matrices(r, scene, params);
     sl_renderer_reset_state(0, width, height);
-    int depth_lab = _sl_depth_pass(r, scene, params);
     info->moments_ready = false;
-    if (params->lab == 5 && !params->vsm_off) { /* off: lab 4's filter alone, as fast as in lab 4 */
+    bool vsm = params->lab == 5 && !params->vsm_off; /* off: lab 4's filter alone, as fast as in lab 4 */
+    if (vsm) sl_vsm_passes(r, scene, params);
+    /* VSM needs neither lab 1's map nor lab 3's depth-pass state: the depth pass runs
+     * only for labs 1-4, and for lab 5 when its moments are not there (lab 4 draws instead) */
+    int depth_lab = 0;
+    if (!vsm || !(info->moments_ready && info->lab2_ready)) {
         sl_renderer_reset_state(0, width, height);
-        sl_vsm_passes(r, scene, params);
+        depth_lab = _sl_depth_pass(r, scene, params);
     }
     sl_renderer_reset_state(target, width, height);
     _sl_scene_pass(r, scene, params, depth_lab, width, height);
