@@ -623,18 +623,26 @@ static int _sl_planar_lab(int lab) {
     return lab;
 }
 
-static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab, int width,
-                           int height) {
+/* Lab 5's camera pass can draw VSM this frame: its moments, lab 2's matrices, and its shaders compile. */
+static bool _sl_vsm_draws(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
+    if (!r->info.moments_ready || !r->info.lab2_ready) return false;
+    _sl_variant_key key = _sl_variant_for(r, scene, p, 5);
+    return _sl_variant_program(r, &key) != NULL;
+}
+
+static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab,
+                           bool vsm_draws, int width, int height) {
     sl_frame_info *info = &r->info;
     /* The highest lab whose code can run this frame. */
     int lab = 0;
-    if (p->lab == 5 && !p->vsm_off && info->moments_ready && info->lab2_ready) {
+    if (vsm_draws) {
         lab = 5; /* VSM reads its moments and lab 2's matrices only: no lab 1 map, no lab 3 state */
     } else if (info->shadow_map_ready && info->lab2_ready) {
         /* labs 6 and 7 draw in their own modules; asked for otherwise (a light they do not cast from), labs 1-4 draw */
         lab = _sl_planar_lab(p->lab > 5 ? 4 : p->lab);
-        /* lab 5 without its moments (or VSM switched off): lab 4's filters */
-        if (lab == 5) {
+        /* lab 5 without its moments (or VSM switched off): lab 4's filters; with them, its camera
+         * pass's shaders do not compile, and _sl_camera_program says so as it steps down */
+        if (lab == 5 && !info->moments_ready) {
             lab = 4;
             if (p->vsm_off) sl_renderer_note_off(r, 5, SL_STOP_SWITCHED_OFF);
             else sl_renderer_note_stop(r, 5);
@@ -798,13 +806,14 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     if (vsm) sl_vsm_passes(r, scene, params);
     /* VSM needs neither lab 1's map nor lab 3's depth-pass state: the depth pass runs
      * only for labs 1-4, and for lab 5 when its moments are not there (lab 4 draws instead) */
+    bool vsm_draws = vsm && _sl_vsm_draws(r, scene, params);
     int depth_lab = 0;
-    if (!vsm || !(info->moments_ready && info->lab2_ready)) {
+    if (!vsm_draws) {
         sl_renderer_reset_state(0, width, height);
         depth_lab = _sl_depth_pass(r, scene, params);
     }
     sl_renderer_reset_state(target, width, height);
-    _sl_scene_pass(r, scene, params, depth_lab, width, height);
+    _sl_scene_pass(r, scene, params, depth_lab, vsm_draws, width, height);
     if (params->show_shadow_map && info->lab_in_use == 5) sl_vsm_debug_view(r, width, height);
     else if (params->show_shadow_map) _sl_debug_view(r, &scene->light, width, height);
     glBindVertexArray(0);
