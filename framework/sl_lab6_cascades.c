@@ -11,9 +11,6 @@
 #define _SL_LAB6_CALL(r, N, fn, ...)                                                                              \
     (sl_renderer_lab_enter(#fn), sl_renderer_lab_result((r), #fn, (r)->fns[N]->fn(__VA_ARGS__)))
 
-const float sl_cascade_colours[SL_MAX_CASCADES][3] = {
-    {1.0f, 0.35f, 0.3f}, {0.35f, 1.0f, 0.35f}, {0.35f, 0.5f, 1.0f}, {1.0f, 0.9f, 0.3f}};
-
 typedef struct _sl_lab6_program {
     sl_program program;
     bool attempted;

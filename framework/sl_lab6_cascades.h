@@ -17,9 +17,6 @@
 
 #include "sl_renderer.h"
 
-/* Each cascade's colour (K's tint, the frozen view's boxes; red, green, blue, yellow): the viewer's legend
- * and the --case view's cascade-index panels use the same. */
-extern const float sl_cascade_colours[SL_MAX_CASCADES][3];
 
 void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target, int width,
                   int height);

@@ -81,13 +81,15 @@ const char *sl_lab_title(int lab) {
     return lab >= 1 && lab <= SL_LAB_MAX ? titles[lab] : "?";
 }
 
+const float sl_cascade_colours[SL_MAX_CASCADES][3] = {
+    {1.0f, 0.35f, 0.3f}, {0.35f, 1.0f, 0.35f}, {0.35f, 0.5f, 1.0f}, {1.0f, 0.9f, 0.3f}};
+
 const char *sl_cascade_colour(int cascade, float rgb[3]) {
-    static const float colours[SL_MAX_CASCADES + 1][3] = {
-        {1, 0.3f, 0.25f}, {0.2f, 0.9f, 0.3f}, {0.3f, 0.45f, 1}, {1, 0.85f, 0.2f}, {0.3f, 0.3f, 0.3f}};
+    static const float none[3] = {0.3f, 0.3f, 0.3f};
     static const char *const names[SL_MAX_CASCADES + 1] = {"red", "green", "blue", "yellow", "grey"};
-    int i = cascade >= 0 && cascade < SL_MAX_CASCADES ? cascade : SL_MAX_CASCADES;
-    for (int c = 0; c < 3; c++) rgb[c] = colours[i][c];
-    return names[i];
+    bool in_range = cascade >= 0 && cascade < SL_MAX_CASCADES;
+    for (int c = 0; c < 3; c++) rgb[c] = in_range ? sl_cascade_colours[cascade][c] : none[c];
+    return names[in_range ? cascade : SL_MAX_CASCADES];
 }
 
 static const char *const _sl_cube_pass_names[SL_CUBE_PASS_COUNT] = {"auto", "six", "layered"};

@@ -101,5 +101,7 @@ const char *sl_lab_title(int lab);
  * the grader's report): 0 red, 1 green, 2 blue, 3 yellow; grey for none (-1)
  * or a number out of range. Its name ("red", ..., "grey") for legends. */
 const char *sl_cascade_colour(int cascade, float rgb[3]);
+/* The same four colours as a table (the lab 6 shader's tint takes them as a uniform). */
+extern const float sl_cascade_colours[SL_MAX_CASCADES][3];
 
 #endif

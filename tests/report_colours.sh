@@ -24,8 +24,8 @@ for role in student reference; do
   "$colour_check" colour "$images/lab6_field.cascade_index.$role.png" 0.3 0.3 0.3 5 || problem "no grey background in the $role's cascades"
 done
 # the reference's near ground is cascade 0 (red), the mistake's cascade 1 (green)
-"$colour_check" colour "$images/lab6_field.cascade_index.reference.png" 1 0.3 0.25 5 || problem "the reference's cascade 0 is not red"
-"$colour_check" colour "$images/lab6_field.cascade_index.student.png" 0.2 0.9 0.3 5 || problem "the off-by-one cascade 1 is not green"
+"$colour_check" colour "$images/lab6_field.cascade_index.reference.png" 1 0.35 0.3 5 || problem "the reference's cascade 0 is not red"
+"$colour_check" colour "$images/lab6_field.cascade_index.student.png" 0.35 1 0.35 5 || problem "the off-by-one cascade 1 is not green"
 grep -q 'class="legend".*cascade 0.*no cascade' "$work/cascades/report.html" || problem "no cascade legend in report.html"
 # the reference's depth² (green) is below its depth (red) wherever depth < 1; the
 # mistake stores depth twice (yellow); the far background is yellow in both

@@ -21,7 +21,7 @@ uniform int u_show_cascades;
 
 out vec4 frag_color;
 
-// One colour per cascade for the debug tint (sl_cascade_colours in sl_lab6_cascades.c, which the viewer's
+// One colour per cascade for the debug tint (sl_cascade_colours in sl_params.c, which the viewer's
 // legend and the --case view show too).
 uniform vec3 u_cascade_colours[4];
 
