@@ -623,23 +623,33 @@ static int _sl_planar_lab(int lab) {
     return lab;
 }
 
-static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab, int width,
-                           int height) {
+/* Lab 5's camera pass can draw VSM this frame: its moments, lab 2's matrices, and its shaders compile. */
+static bool _sl_vsm_draws(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
+    if (!r->info.moments_ready || !r->info.lab2_ready) return false;
+    _sl_variant_key key = _sl_variant_for(r, scene, p, 5);
+    return _sl_variant_program(r, &key) != NULL;
+}
+
+static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab,
+                           bool vsm_draws, int width, int height) {
     sl_frame_info *info = &r->info;
     /* The highest lab whose code can run this frame. */
     int lab = 0;
-    if (info->shadow_map_ready && info->lab2_ready) {
+    if (vsm_draws) {
+        lab = 5; /* VSM reads its moments and lab 2's matrices only: no lab 1 map, no lab 3 state */
+    } else if (info->shadow_map_ready && info->lab2_ready) {
         /* labs 6 and 7 draw in their own modules; asked for otherwise (a light they do not cast from), labs 1-4 draw */
         lab = _sl_planar_lab(p->lab > 5 ? 4 : p->lab);
-        if (depth_lab < 3 && lab > 2) {
-            lab = 2;
-            sl_renderer_note_stop(r, 3);
-        }
-        /* lab 5: its moments, or lab 4's filters when they are not there (or VSM is switched off) */
-        if (lab == 5 && (!info->moments_ready || p->vsm_off)) {
+        /* lab 5 without its moments (or VSM switched off): lab 4's filters; with them, its camera
+         * pass's shaders do not compile, and _sl_camera_program says so as it steps down */
+        if (lab == 5 && !info->moments_ready) {
             lab = 4;
             if (p->vsm_off) sl_renderer_note_off(r, 5, SL_STOP_SWITCHED_OFF);
             else sl_renderer_note_stop(r, 5);
+        }
+        if (depth_lab < 3 && lab > 2) {
+            lab = 2;
+            sl_renderer_note_stop(r, 3);
         }
     } else if (p->lab >= 1) { /* no map to look up: lab 1's or lab 2's step stopped */
         if (!info->shadow_map_ready) sl_renderer_note_stop(r, 1);
@@ -652,7 +662,7 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
             lab = 3;
             sl_renderer_note_stop(r, 4);
         }
-    } else if (p->lab >= 4 && !(info->shadow_map_ready && info->lab2_ready)) {
+    } else if (p->lab >= 4 && lab != 5 && !(info->shadow_map_ready && info->lab2_ready)) {
         /* asked anyway, on no texture, to learn whether it is still a stub (see _sl_depth_pass) */
         glBindTexture(GL_TEXTURE_2D, 0);
         _SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, 0, p->filter.mode);
@@ -791,14 +801,19 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     if (params->lab == 7) sl_renderer_note_off(r, 7, SL_STOP_NO_POINT_LIGHT); /* labs 1-4 draw instead */
     _sl_light_matrices(r, scene, params);
     sl_renderer_reset_state(0, width, height);
-    int depth_lab = _sl_depth_pass(r, scene, params);
     info->moments_ready = false;
-    if (params->lab == 5 && !params->vsm_off) { /* off: lab 4's filter alone, as fast as in lab 4 */
+    bool vsm = params->lab == 5 && !params->vsm_off; /* off: lab 4's filter alone, as fast as in lab 4 */
+    if (vsm) sl_vsm_passes(r, scene, params);
+    /* VSM needs neither lab 1's map nor lab 3's depth-pass state: the depth pass runs
+     * only for labs 1-4, and for lab 5 when its moments are not there (lab 4 draws instead) */
+    bool vsm_draws = vsm && _sl_vsm_draws(r, scene, params);
+    int depth_lab = 0;
+    if (!vsm_draws) {
         sl_renderer_reset_state(0, width, height);
-        sl_vsm_passes(r, scene, params);
+        depth_lab = _sl_depth_pass(r, scene, params);
     }
     sl_renderer_reset_state(target, width, height);
-    _sl_scene_pass(r, scene, params, depth_lab, width, height);
+    _sl_scene_pass(r, scene, params, depth_lab, vsm_draws, width, height);
     if (params->show_shadow_map && info->lab_in_use == 5) sl_vsm_debug_view(r, width, height);
     else if (params->show_shadow_map) _sl_debug_view(r, &scene->light, width, height);
     glBindVertexArray(0);

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# render-readme-figures.sh VIEWER [OUT_DIR]
+# render-readme-figures.sh --check IMAGE_COMPARE VIEWER WORK_DIR
+#
+# Renders the pictures each lab README opens with ("What a finished lab looks
+# like"), from the commands written there: every README line of the form
+#
+#   ./build/bin/shadowlab ARGS --screenshot labN_NAME.png
+#
+# runs with VIEWER in place of ./build/bin/shadowlab, headless, one frame, and
+# its picture goes to OUT_DIR (default docs/labs, where the READMEs show them).
+# VIEWER must draw the solutions (a -DSL_LABS=solutions build's
+# build/bin/shadowlab, or the tests' shadowlab-solutions).
+#
+# --check renders them into WORK_DIR and compares each with the one in
+# docs/labs (IMAGE_COMPARE: the grader's neighbourhood compare, a small
+# tolerance): a README command, a solution or the renderer changed without
+# its picture. It also fails when a picture in docs/labs is named by no
+# README, or a README names one that is not there.
+set -u
+here=$(cd "$(dirname "$0")/.." && pwd)
+check=""
+if [ "${1:-}" = "--check" ]; then check=$2; shift 2; fi
+[ $# -ge 1 ] || { echo "usage: render-readme-figures.sh [--check IMAGE_COMPARE] VIEWER [OUT_DIR]" >&2; exit 2; }
+viewer=$1
+out=${2:-$here/docs/labs}
+mkdir -p "$out"
+pattern='^\./build/bin/shadowlab (.*) --screenshot (lab[0-9]_[a-z0-9_]+\.png)$'
+fail=0 count=0
+declare -A named=()
+for readme in "$here"/labs/lab*/README.md; do
+  while IFS= read -r line; do
+    [[ $line =~ $pattern ]] || continue
+    args=${BASH_REMATCH[1]} name=${BASH_REMATCH[2]}
+    named[$name]=1
+    count=$((count + 1))
+    # the arguments are the README's own words: split as a shell would, without running one
+    read -r -a argv <<<"$args"
+    if ! "$viewer" --headless --frames 1 "${argv[@]}" --screenshot "$out/$name" >"$out/$name.log" 2>&1; then
+      echo "render-readme-figures: ${readme#"$here"/}: '$line' failed:" >&2
+      cat "$out/$name.log" >&2
+      fail=1
+      continue
+    fi
+    rm -f "$out/$name.log"
+    if [ -n "$check" ]; then
+      shipped=$here/docs/labs/$name
+      if [ ! -f "$shipped" ]; then
+        echo "render-readme-figures: ${readme#"$here"/} shows docs/labs/$name, which is not there" >&2
+        fail=1
+      elif ! "$check" "$out/$name" "$shipped" 0.05 0.2; then
+        echo "render-readme-figures: docs/labs/$name does not match what '$line' renders" >&2
+        fail=1
+      fi
+    fi
+  done <"$readme"
+done
+[ "$count" -gt 0 ] || { echo "render-readme-figures: no figure commands in labs/*/README.md" >&2; exit 1; }
+if [ -n "$check" ]; then
+  for shipped in "$here"/docs/labs/*.png; do
+    [ -e "$shipped" ] || continue
+    name=$(basename "$shipped")
+    [ -n "${named[$name]:-}" ] || { echo "render-readme-figures: docs/labs/$name is shown by no lab README" >&2; fail=1; }
+  done
+fi
+echo "render-readme-figures: $count pictures${check:+ checked}"
+exit $fail
