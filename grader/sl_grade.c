@@ -481,7 +481,7 @@ static bool _sl_case_calls(const sl_case *c, const sl_check *k, const sl_probe_f
     const char *name = f->name;
     sl_bias_mode bias = c->params.bias.mode;
     sl_filter_mode filter = c->params.filter.mode;
-    if (f->lab < c->lab && !sl_lab_builds_on(c->lab, f->lab)) return false;
+    if (f->lab < c->lab && !sl_lab_shows(c->lab, f->lab)) return false;
     if (f->lab < c->lab) {
         /* labs build on each other: an earlier lab's function draws this case too, unless the solutions stand in */
         if (isolated) return false;
@@ -536,7 +536,7 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
                            size_t n) {
     if (!context || k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_FBO || k->kind == SL_CHECK_MATRICES) return false;
     for (int lab = 1; lab < c->lab && !context->isolated; lab++) {
-        if (!sl_lab_builds_on(c->lab, lab)) continue;
+        if (!sl_lab_shows(c->lab, lab)) continue;
         const sl_probe_failure *f = _sl_failed_probe_of(c, k, context, lab);
         if (f) {
             snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,

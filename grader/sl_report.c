@@ -6,6 +6,7 @@
 
 #include <cjson/cJSON.h>
 
+#include "sl_build_failure.h"
 #include "sl_files.h"
 #include "sl_params.h"
 
@@ -222,6 +223,27 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
     return sl_atomic_commit(&file, err, err_size);
 }
 
+/* Labs graded on their own that did not build (the others were graded):
+ * "labs_not_built" [{lab, error}], and the first as "build_error". */
+static void _sl_add_labs_not_built(const sl_grade_report *rep, cJSON *root) {
+    cJSON *list = NULL;
+    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+        if (!rep->lab_not_built[lab]) continue;
+        if (!list) {
+            list = cJSON_AddArrayToObject(root, "labs_not_built");
+            if (!rep->not_built) {
+                char text[SL_BUILD_ERROR_MAX + 64];
+                snprintf(text, sizeof text, "lab %d did not build: %s", lab, rep->lab_not_built[lab]);
+                cJSON_AddStringToObject(root, "build_error", text);
+            }
+        }
+        cJSON *l = cJSON_CreateObject();
+        cJSON_AddNumberToObject(l, "lab", lab);
+        cJSON_AddStringToObject(l, "error", rep->lab_not_built[lab]);
+        cJSON_AddItemToArray(list, l);
+    }
+}
+
 bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err, size_t err_size) {
     char images[1100];
     snprintf(images, sizeof images, "%s/images", dir);
@@ -244,6 +266,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     if (rep->case_set[0]) cJSON_AddStringToObject(root, "case_set", rep->case_set);
     cJSON_AddBoolToObject(root, "built", rep->not_built == NULL);
     if (rep->not_built) cJSON_AddStringToObject(root, "build_error", rep->not_built);
+    _sl_add_labs_not_built(rep, root);
     cJSON *labs = cJSON_AddArrayToObject(root, "lab_scores");
     for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
         double s = 0, m = 0, b = 0;

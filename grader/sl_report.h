@@ -31,7 +31,9 @@ typedef struct sl_grade_report {
     bool interrupted;        /* stopped early: the score is incomplete */
     int cases_finished;      /* cases that ran to their end */
     char case_set[160];      /* which cases, when not the public ones ("hidden variants, seed 42") */
+    bool hidden;             /* hidden variants (--hidden): Gradescope shows their tests after the due date */
     const char *not_built;   /* the compiler's first error, when the submission did not build */
+    const char *lab_not_built[SL_LAB_MAX + 1]; /* graded per lab: each lab's first error, when that lab did not build */
 } sl_grade_report;
 
 /* score and max_score leave bonus checks out; bonus is what they earned. */

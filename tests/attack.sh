@@ -2,9 +2,9 @@
 # attack.sh NAME plain|isolate GRADER SOURCE_DIR WORK_DIR [GRADER ARGS...]
 # Grades one attack's labs tree and checks that the attack got nothing and
 # left nothing: the score is the stubs' 0 (exit 1, one Score line, reports
-# agree), no file of the project, the build or the reports changed after the
-# grader finished, no process the attack started is alive, and no marker file
-# it tried to leave exists.
+# agree), no line of a solution shows in the output or the reports, no file of
+# the project, the build or the reports changed after the grader finished, no
+# process the attack started is alive, and no marker file it tried to leave exists.
 set -u
 name=$1 mode=$2 grader=$3 src=$4 work=$5
 shift 5
@@ -50,6 +50,8 @@ fi
 tail -n 1 "$out" | grep -qE '^Score: 0/[0-9.]+$' || problem "the score is not 0: $(tail -n 1 "$out")"
 grep -qE '"score":[[:space:]]*0([,.}[:space:]]|$)' "$work/report/results.json" || problem "results.json's score is not 0"
 grep -qE '"score":[[:space:]]*0([,.}[:space:]]|$)' "$work/gradescope.json" || problem "gradescope.json's score is not 0"
+leaks=$(bash "$src/tests/solution_leaks.sh" "$src" "$out" "$work/report/results.json" "$work/gradescope.json")
+[ $? = 0 ] || problem "$leaks"
 reports=$(sha256sum "$work/report/results.json" "$work/gradescope.json")
 # Give anything the attack left running the time to act, then look.
 sleep 2

@@ -3,7 +3,9 @@
 # A labs tree for one attack: the untouched stubs (SOURCE_DIR/labs) with the
 # attack's files laid over them. In those files, @SOURCE_DIR@ becomes the
 # project's absolute path and @RELATIVE_SOURCE_DIR@ its path relative to the
-# file's own folder, as a student who knows the layout would write them.
+# file's own folder, as a student who knows the layout would write them. The
+# attacks' shared helpers (tests/attack_util.h) are copied beside the file that
+# includes them: the compile fence shows the compiler a lab's own folder only.
 set -euo pipefail
 attack=$1 src=$2 out=$3
 rm -rf "$out.tmp"
@@ -16,7 +18,9 @@ while IFS= read -r file; do
   mkdir -p "$(dirname "$target")"
   folder=$(dirname "$out/$rel")
   relative=$(realpath -m --relative-to="$folder" "$src")
-  sed -e "s|@SOURCE_DIR@|$src|g" -e "s|@RELATIVE_SOURCE_DIR@|$relative|g" "$file" >"$target"
+  if grep -q '@SOURCE_DIR@/tests/attack_util.h' "$file"; then cp "$src/tests/attack_util.h" "$(dirname "$target")/"; fi
+  sed -e 's|"@SOURCE_DIR@/tests/attack_util.h"|"attack_util.h"|' \
+      -e "s|@SOURCE_DIR@|$src|g" -e "s|@RELATIVE_SOURCE_DIR@|$relative|g" "$file" >"$target"
 done < <(find "$attack" -type f | sort)
 rm -rf "$out"
 mv "$out.tmp" "$out"
