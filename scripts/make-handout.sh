@@ -15,8 +15,11 @@ out=$(cd "$out" && pwd)
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 mkdir "$stage/$name"
-# staff-only material: solutions, wrong variants, attacks, the handout maker itself
-git ls-files -z | grep -zvE '^(solutions/|tests/variants/|tests/attacks/|tests/attack_util\.h$|tests/attack\.sh$|tests/make_attack\.sh$|tests/make_variant\.sh$|scripts/make-handout\.sh$|tests/handout\.sh$|\.ci/)' |
+# staff-only material: solutions (with the benchmark's plain-GL program), wrong
+# variants, attacks, the tests that read the solutions, the handout maker itself
+staff='^(solutions/|tests/variants/|tests/attacks/|\.ci/|scripts/make-handout\.sh$|tests/(attack_util\.h|attack\.sh'
+staff+='|make_attack\.sh|make_variant\.sh|compile_attacks\.sh|solution_leaks\.sh|handout_answers\.sh|handout\.sh)$)'
+git ls-files -z | grep -zvE "$staff" |
   tar --null -T - -cf - | tar -xf - -C "$stage/$name"
 if [ -e "$stage/$name/solutions" ] || grep -rqs "sl_solution" "$stage/$name/labs"; then
   echo "make-handout: solutions leaked into the handout" >&2
