@@ -45,6 +45,11 @@ if ! grep -q "sandbox: namespaces" "$out"; then
   echo "the attack suite needs the namespaces sandbox (root, or unprivileged user namespaces)" >&2
   exit 77
 fi
+if grep -q "^shadowlab-grade: compiler: NOT fenced" "$out"; then
+  echo "attack $name ($mode): this machine gives the compiler no fence: the attack's lab code was built where it could" >&2
+  echo "read the answers (the build said why when it was configured)" >&2
+  exit 77
+fi
 [ "$status" = 1 ] || problem "exit status $status, expected 1 (checks failed)"
 [ "$(grep -c '^Score:' "$out")" = 1 ] || problem "more than one line starts with 'Score:' (forged output reached the report)"
 tail -n 1 "$out" | grep -qE '^Score: 0/[0-9.]+$' || problem "the score is not 0: $(tail -n 1 "$out")"
