@@ -10,7 +10,9 @@
 #include "sl_compare.h"
 #include "sl_context.h"
 #include "sl_lab5_vsm.h"
+#include "sl_lab6_cascades.h"
 #include "sl_lab7_cube.h"
+#include "sl_overlay.h"
 #include "sl_renderer.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -38,8 +40,17 @@ typedef struct _sl_case_view {
     GLuint textures[_SL_PANELS], vao, target_fbo, target_texture, target_depth;
     bool side_by_side, show_reference, show_diff;
     int scale;
-    char summary[256];
+    char summary[320];   /* what this render scores, as the grader counts it */
+    char criterion[400]; /* how the grader decides the check, from the case and the compare code */
+    /* depth and distance pictures are stretched to their own range: each panel's, for its label */
+    bool stretched[_SL_PANELS];
+    float range[_SL_PANELS][2];
+    sl_overlay *overlay;   /* the panels' labels and the summary */
+    int band;              /* pixels below the panels for the summary */
+    int text_scale;
 } _sl_case_view;
+
+#define _SL_BAND_LINES 4
 
 /* Checks whose capture is a picture the reference can be set beside (probes and
  * matrices are numbers). Flicker's capture is every frame of a camera path,
@@ -60,11 +71,42 @@ static bool _sl_is_map(sl_check_kind k) {
     return k == SL_CHECK_DEPTH_MAP || k == SL_CHECK_MOMENTS || k == SL_CHECK_MOMENTS_BLURRED || k == SL_CHECK_CUBE_FACE;
 }
 
+/* Depths and distances: their values crowd a small part of 0..1, so each picture is stretched. */
+static bool _sl_is_distance(sl_check_kind k) { return k == SL_CHECK_DEPTH_MAP || k == SL_CHECK_CUBE_FACE; }
+
+/* The smallest and largest finite value of channel 0; false if there is none. A
+ * depth map's texels the clear left at 1 (nothing drawn there) are left out
+ * when it has others, so the drawn ones get the whole grey scale. */
+static bool _sl_value_range(const sl_image *img, sl_check_kind kind, float out[2]) {
+    bool any = false, drawn = false;
+    for (long i = 0; kind == SL_CHECK_DEPTH_MAP && img->data && i < (long)img->width * img->height && !drawn; i++)
+        drawn = img->data[i * img->channels] < 1.0f;
+    for (long i = 0; img->data && i < (long)img->width * img->height; i++) {
+        float x = img->data[i * img->channels];
+        if (!isfinite(x) || (drawn && x >= 1.0f)) continue;
+        if (!any || x < out[0]) out[0] = x;
+        if (!any || x > out[1]) out[1] = x;
+        any = true;
+    }
+    return any;
+}
+
+/* The difference panel's colours where yours and the reference's disagree: red (yours brighter), blue. */
+static void _sl_diff_legend(sl_check_kind k, const char **red, const char **blue) {
+    switch (k) {
+    case SL_CHECK_DEPTH_MAP: case SL_CHECK_CUBE_FACE: *red = "red: yours farther", *blue = "blue: yours nearer"; break;
+    case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: case SL_CHECK_CASCADE_INDEX:
+        *red = "red: yours higher", *blue = "blue: yours lower";
+        break;
+    default: *red = "red: a shadow missing", *blue = "blue: one too many"; break;
+    }
+}
+
 /* What the panels show, for the title and the terminal. */
 static const char *_sl_legend(sl_check_kind k) {
     switch (k) {
-    case SL_CHECK_DEPTH_MAP: return "depth (black near, white far)";
-    case SL_CHECK_CUBE_FACE: return "distance / far (black near, white far)";
+    case SL_CHECK_DEPTH_MAP: return "depth (black nearest, white farthest of each picture's own range)";
+    case SL_CHECK_CUBE_FACE: return "distance / far (black nearest, white farthest of each picture's own range)";
     case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: return "moments (red: depth, green: depth squared)";
     case SL_CHECK_CASCADE_INDEX: return "cascade (red 0, green 1, blue 2, yellow 3, grey none)";
     case SL_CHECK_IMAGE: return "shaded image";
@@ -111,11 +153,18 @@ static sl_image _sl_last_frame(const sl_image *stacked, int frames) {
  * check's colours: cascade numbers as the viewer's K key colours them, the two
  * moments as red and green; the difference panel (kind < 0) as it is. */
 static void _sl_upload(_sl_case_view *v, int panel, const sl_image *img, int kind) {
-    static const float cascade_rgb[5][3] = {{0.3f, 0.3f, 0.3f}, {1, 0.3f, 0.25f}, {0.2f, 0.9f, 0.3f},
-                                           {0.3f, 0.45f, 1}, {1, 0.85f, 0.2f}};
+    static const float no_cascade[3] = {0.3f, 0.3f, 0.3f};
     GLuint texture = v->textures[panel];
     v->panel_size[panel][0] = img->width;
     v->panel_size[panel][1] = img->height;
+    /* depths and distances: black at the picture's nearest, white at its farthest */
+    float lo = 0, scale = 1;
+    v->stretched[panel] = kind >= 0 && _sl_is_distance((sl_check_kind)kind) &&
+                          _sl_value_range(img, (sl_check_kind)kind, v->range[panel]);
+    if (v->stretched[panel]) {
+        lo = v->range[panel][0];
+        scale = v->range[panel][1] > lo ? 1.0f / (v->range[panel][1] - lo) : 0;
+    }
     float *rgb = malloc(sizeof(float) * 3 * (size_t)img->width * (size_t)img->height);
     if (!rgb) return;
     for (int y = 0; y < img->height; y++)
@@ -123,9 +172,12 @@ static void _sl_upload(_sl_case_view *v, int panel, const sl_image *img, int kin
             const float *p = sl_image_pixel(img, x, img->height - 1 - y);
             float *q = rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
             if (kind == SL_CHECK_CASCADE_INDEX) {
-                int i = (int)floorf(p[0] + 0.5f) + 1; /* -1: no cascade */
-                if (i < 0 || i > 4) i = 0;
-                for (int c = 0; c < 3; c++) q[c] = cascade_rgb[i][c];
+                int i = (int)floorf(p[0] + 0.5f); /* -1: no cascade */
+                const float *c = i >= 0 && i < SL_MAX_CASCADES ? sl_cascade_colours[i] : no_cascade;
+                for (int k = 0; k < 3; k++) q[k] = c[k];
+            } else if (v->stretched[panel]) {
+                float g = scale > 0 ? (p[0] - lo) * scale : p[0]; /* one value throughout: as it is */
+                q[0] = q[1] = q[2] = g > 1 ? 1 : g; /* a cleared texel: white */
             } else if (img->channels == 2) {
                 q[0] = p[0], q[1] = p[1], q[2] = 0;
             } else {
@@ -186,6 +238,118 @@ static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
     return sl_capture_framebuffer(v->target_fbo, c->width, c->height, kind == SL_CHECK_IMAGE ? 3 : 1, out);
 }
 
+/* The surfaces facing the light, as the runner captures them for a visibility check (from lab 2 on). */
+static bool _sl_render_lit_mask(_sl_case_view *v, sl_image *out) {
+    const sl_case *c = &v->c;
+    if (c->lab < 2) return false;
+    sl_scene scene = c->scene;
+    sl_render_params p = c->params;
+    scene.light = c->frame_lights[c->frame_count > 0 ? c->frame_count - 1 : 0];
+    p.output = SL_OUTPUT_LIT_MASK;
+    sl_renderer_draw(&v->renderer, &scene, &p, v->target_fbo, c->width, c->height);
+    return sl_capture_framebuffer(v->target_fbo, c->width, c->height, 1, out);
+}
+
+/* One channel of an image, as an image of its own (the grader compares lab 5's moments per channel). */
+static sl_image _sl_channel(const sl_image *img, int channel) {
+    sl_image out = sl_image_alloc(img->width, img->height, 1);
+    for (long i = 0; out.data && i < (long)img->width * img->height; i++) out.data[i] = img->data[i * img->channels + channel];
+    return out;
+}
+
+/* The check's verdict on these pictures, counted as the grader counts it: the
+ * failing pixels (sl_compare's neighbourhood and the check's threshold), NaN,
+ * the mean difference where the case bounds it, per channel for the moments,
+ * and for visibility the reference's shadow that is lost. Says it in
+ * v->summary and v->criterion; `diff` receives the difference picture. */
+static void _sl_judge(_sl_case_view *v, const sl_image *student, sl_image *diff) {
+    const sl_check *k = v->check;
+    const sl_frame_info *info = sl_renderer_info(&v->renderer);
+    char missing[160] = "";
+    if (info->not_implemented_count)
+        snprintf(missing, sizeof missing, "; not implemented: %s", info->not_implemented[0]);
+    bool moments = k->kind == SL_CHECK_MOMENTS || k->kind == SL_CHECK_MOMENTS_BLURRED;
+    int channels = moments && student->channels == 2 && v->reference.channels == 2 ? 2 : 1;
+    sl_compare_stats st[2];
+    bool size_mismatch = false, passes = true;
+    double failing = 0, mean = 0;
+    long nan_pixels = 0;
+    for (int ch = 0; ch < channels; ch++) {
+        sl_image a = channels == 2 ? _sl_channel(student, ch) : *student;
+        sl_image b = channels == 2 ? _sl_channel(&v->reference, ch) : v->reference;
+        sl_image d = {0};
+        st[ch] = sl_compare_images(&a, &b, k->threshold, &d);
+        if (channels == 2) {
+            sl_image_free(&a);
+            sl_image_free(&b);
+        }
+        /* the first channel's difference, or the first that fails (as the grader's report shows) */
+        bool fails = st[ch].failing_fraction > k->fail_fraction || st[ch].nan_pixels > 0;
+        if (!diff->data || (fails && passes)) {
+            sl_image_free(diff);
+            *diff = d;
+        } else {
+            sl_image_free(&d);
+        }
+        size_mismatch |= st[ch].size_mismatch;
+        bool ok = !fails && (k->mean_tolerance <= 0 || st[ch].mean_difference <= k->mean_tolerance);
+        passes &= ok;
+        if (st[ch].failing_fraction > failing) failing = st[ch].failing_fraction;
+        if (st[ch].mean_difference > mean) mean = st[ch].mean_difference;
+        nan_pixels += st[ch].nan_pixels;
+    }
+    if (size_mismatch) {
+        snprintf(v->summary, sizeof v->summary, "%s / %s: yours is %dx%d, the reference %dx%d: fails", v->c.name,
+                 k->name, student->width, student->height, v->reference.width, v->reference.height);
+        snprintf(v->criterion, sizeof v->criterion, "criterion: the same size as the reference");
+        return;
+    }
+    /* visibility: the reference's shadow may not be lost, whatever the pixel count */
+    char lost_text[200] = "";
+    if (k->kind == SL_CHECK_VISIBILITY) {
+        sl_image mask = {0};
+        bool have_mask = _sl_render_lit_mask(v, &mask);
+        long shadowed = 0;
+        double lost = sl_visibility_shadow_lost(student, &v->reference, have_mask ? &mask : NULL, &shadowed);
+        bool lost_fails = shadowed >= SL_VISIBILITY_MIN_SHADOW_PIXELS && lost > SL_VISIBILITY_MAX_SHADOW_LOST;
+        passes &= !lost_fails;
+        snprintf(lost_text, sizeof lost_text, "; at most %.0f%% of the reference's shadow lost, where it has %d or "
+                 "more pixels (here %.1f%% of %ld lost)", 100 * SL_VISIBILITY_MAX_SHADOW_LOST,
+                 SL_VISIBILITY_MIN_SHADOW_PIXELS, 100 * lost, shadowed);
+        sl_image_free(&mask);
+    }
+    char figures[200];
+    if (channels == 2)
+        snprintf(figures, sizeof figures, "%.2f%% of pixels differ (depth %.2f%%, depth squared %.2f%%; allowed %.2f%% "
+                 "each)", 100 * failing, 100 * st[0].failing_fraction, 100 * st[1].failing_fraction,
+                 100 * k->fail_fraction);
+    else
+        snprintf(figures, sizeof figures, "%.2f%% of pixels differ (allowed %.2f%%)", 100 * failing,
+                 100 * k->fail_fraction);
+    char extra[200] = "";
+    if (k->kind == SL_CHECK_PENUMBRA || k->kind == SL_CHECK_BLEEDING) {
+        snprintf(v->summary, sizeof v->summary, "%s / %s: %.2f%% of pixels differ from the reference's by more than "
+                 "%g: for the eye, not the grade%s", v->c.name, k->name, 100 * failing, k->threshold, missing);
+        if (k->kind == SL_CHECK_PENUMBRA)
+            snprintf(v->criterion, sizeof v->criterion, "criterion: the penumbra widths along the case's %d probe "
+                     "lines, each within %g of the reference's (shadowlab-grade --case %s gives the verdict)",
+                     k->probe_count, k->threshold, v->c.name);
+        else
+            snprintf(v->criterion, sizeof v->criterion, "criterion: light bleeding in the reference's umbra, with the "
+                     "reduction (amount %.2f) and without it (shadowlab-grade --case %s gives the verdict)",
+                     (double)v->c.params.vsm.bleeding, v->c.name);
+        return;
+    }
+    if (k->mean_tolerance > 0)
+        snprintf(extra, sizeof extra, "; mean difference at most %g (here %.4f)", k->mean_tolerance, mean);
+    snprintf(v->summary, sizeof v->summary, "%s / %s: %s: %s%s%s", v->c.name, k->name, figures,
+             passes ? "passes" : "fails", nan_pixels ? ", NaN pixels" : "", missing);
+    snprintf(v->criterion, sizeof v->criterion, "criterion: a pixel differs when no pixel of the other picture's "
+             "%dx%d neighbourhood is within %g of it%s (both ways); no NaN%s%s",
+             2 * SL_COMPARE_RADIUS + 1, 2 * SL_COMPARE_RADIUS + 1, k->threshold, channels == 2 ? ", per channel" : "",
+             extra, lost_text);
+}
+
 static void _sl_update(_sl_case_view *v) {
     sl_image student = {0}, diff = {0};
     _sl_render_student(v, &student);
@@ -201,6 +365,10 @@ static void _sl_update(_sl_case_view *v) {
                  "the reference%s%s", v->c.name, v->check->name, 100 * yours, 100 * reference,
                  info->not_implemented_count ? "; not implemented: " : "",
                  info->not_implemented_count ? info->not_implemented[0] : "");
+        snprintf(v->criterion, sizeof v->criterion, "criterion: of the pixels on surfaces facing the light, at most "
+                 "%.3f%% may change between lit and shadowed from one frame to the next, keeping the reference's "
+                 "shadows (shadowlab-grade --case %s gives the verdict; the share above is of all pixels)",
+                 100 * v->check->threshold, v->c.name);
         if (marks.data) _sl_upload(v, _SL_STUDENT, &marks, -1);
         if (diff.data) _sl_upload(v, _SL_DIFF, &diff, -1);
         sl_image_free(&marks);
@@ -208,22 +376,26 @@ static void _sl_update(_sl_case_view *v) {
         sl_image_free(&diff);
         return;
     }
-    sl_compare_stats st = sl_compare_images(&student, &v->reference, v->check->threshold, &diff);
-    const sl_frame_info *info = sl_renderer_info(&v->renderer);
-    if (st.size_mismatch)
-        snprintf(v->summary, sizeof v->summary, "%s: yours is %dx%d, the reference %dx%d", v->c.name, student.width,
-                 student.height, v->reference.width, v->reference.height);
-    else
-        snprintf(v->summary, sizeof v->summary, "%s / %s: %.2f%% of pixels differ (allowed %.2f%%)%s%s", v->c.name,
-                 v->check->name, 100 * st.failing_fraction, 100 * v->check->fail_fraction,
-                 info->not_implemented_count ? "; not implemented: " : "",
-                 info->not_implemented_count ? info->not_implemented[0] : "");
+    _sl_judge(v, &student, &diff);
     if (student.data) _sl_upload(v, _SL_STUDENT, &student, v->check->kind);
+    if (diff.data && _sl_is_distance(v->check->kind) && v->stretched[_SL_REFERENCE]) {
+        /* the reference under the marks, darkened, in its stretched greys (sl_compare leaves grey where
+         * nothing differs: 0.35 of the raw value, nearly black for distances) */
+        float lo = v->range[_SL_REFERENCE][0], span = v->range[_SL_REFERENCE][1] - lo;
+        for (long i = 0; i < (long)diff.width * diff.height; i++) {
+            float *q = diff.data + i * 3;
+            if (q[0] != q[1] || q[1] != q[2]) continue; /* a mark */
+            float r = v->reference.data[i * v->reference.channels];
+            float g = span > 0 && isfinite(r) ? 0.35f * fminf((r - lo) / span, 1) : 0;
+            q[0] = q[1] = q[2] = g;
+        }
+    }
     if (diff.data) _sl_upload(v, _SL_DIFF, &diff, -1);
     sl_image_free(&student);
     sl_image_free(&diff);
 }
 
+/* Draws a panel's picture in slot `slot` (width x height, above the summary band); false if it has none yet. */
 static void _sl_draw_panel(_sl_case_view *v, int panel, int slot, int width, int height) {
     /* the picture's aspect kept: a square map in a wide panel is centred */
     int pw = v->panel_size[panel][0], ph = v->panel_size[panel][1], w = width, h = height;
@@ -231,28 +403,89 @@ static void _sl_draw_panel(_sl_case_view *v, int panel, int slot, int width, int
         if ((long)width * ph > (long)height * pw) w = (int)((long)height * pw / ph);
         else h = (int)((long)width * ph / pw);
     }
-    glViewport(slot * width + (width - w) / 2, (height - h) / 2, w, h);
+    glViewport(slot * width + (width - w) / 2, v->band + (height - h) / 2, w, h);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, v->textures[panel]);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+/* A panel's label: whose picture, and for depths and distances the range it is stretched from. */
+static void _sl_label(_sl_case_view *v, int panel, int x, int y) {
+    static const char *const names[_SL_PANELS] = {"yours", "reference", "difference"};
+    static const float colours[_SL_PANELS][3] = {{1, 1, 1}, {1, 1, 1}, {1, 0.85f, 0.35f}};
+    static const float red[3] = {1, 0.35f, 0.3f}, blue[3] = {0.45f, 0.65f, 1}, grey[3] = {0.75f, 0.75f, 0.75f};
+    int line = (SL_OVERLAY_CELL_H * 16 / 10) * v->text_scale; /* a label's backing is a little taller than a cell */
+    if (panel == _SL_DIFF) {
+        const char *r, *b;
+        _sl_diff_legend(v->check->kind, &r, &b);
+        sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
+        sl_overlay_label(v->overlay, x, y + line, red, "%s", r);
+        sl_overlay_label(v->overlay, x, y + 2 * line, blue, "%s", b);
+    } else if (v->stretched[panel]) {
+        sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
+        if (v->range[panel][1] > v->range[panel][0])
+            sl_overlay_label(v->overlay, x, y + line, grey, "%.4f - %.4f%s", (double)v->range[panel][0],
+                             (double)v->range[panel][1], v->check->kind == SL_CHECK_DEPTH_MAP && v->range[panel][1] < 1
+                                                             ? " (1: cleared)" : "");
+        else
+            sl_overlay_label(v->overlay, x, y + line, grey, "all %.4f", (double)v->range[panel][0]);
+    } else {
+        sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
+    }
+}
+
+/* Text in lines of at most `width` characters, broken at spaces, into the current panel; at most `lines`. */
+static int _sl_band_text(sl_overlay *ov, const float *rgb, const char *text, int width, int lines) {
+    int used = 0;
+    while (*text && used < lines) {
+        int len = (int)strlen(text), cut = len;
+        if (len > width) {
+            cut = width;
+            while (cut > width / 2 && text[cut] != ' ') cut--;
+            if (text[cut] != ' ') cut = width;
+        }
+        sl_overlay_line(ov, rgb, "%.*s", cut, text);
+        used++;
+        text += cut;
+        while (*text == ' ') text++;
+    }
+    return used;
+}
+
 static void _sl_draw(_sl_case_view *v, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
     glClearColor(0.1f, 0.1f, 0.1f, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     glUseProgram(v->panel_program.id);
     glUniform1i(sl_program_uniform(&v->panel_program, "u_texture"), 0);
     glBindVertexArray(v->vao);
+    int panels_h = height - v->band > 0 ? height - v->band : height;
+    if (v->overlay) sl_overlay_clear(v->overlay);
+    int s = v->overlay ? sl_overlay_scale_for(v->overlay, width, height) : 1;
     if (v->side_by_side) {
-        for (int panel = 0; panel < _SL_PANELS; panel++) _sl_draw_panel(v, panel, panel, width / 3, height);
+        for (int panel = 0; panel < _SL_PANELS; panel++) {
+            _sl_draw_panel(v, panel, panel, width / 3, panels_h);
+            if (v->overlay) _sl_label(v, panel, panel * (width / 3) + 4 * s, 4 * s);
+        }
     } else {
         int panel = v->show_diff ? _SL_DIFF : v->show_reference ? _SL_REFERENCE : _SL_STUDENT;
-        _sl_draw_panel(v, panel, 0, width, height);
+        _sl_draw_panel(v, panel, 0, width, panels_h);
+        if (v->overlay) _sl_label(v, panel, 4 * s, 4 * s);
     }
     glBindVertexArray(0);
     glUseProgram(0);
+    if (!v->overlay) return;
+    /* the summary and the criterion under the panels */
+    sl_overlay_panel(v->overlay, SL_OVERLAY_BOTTOM_LEFT, NULL);
+    int chars = (width - 16 * s) / (SL_OVERLAY_CELL_W * s);
+    if (chars > 118) chars = 118; /* the overlay's longest line */
+    int used = _sl_band_text(v->overlay, NULL, v->summary, chars, 2);
+    _sl_band_text(v->overlay, (const float[3]){0.6f, 0.8f, 1.0f}, v->criterion, chars, _SL_BAND_LINES - used);
+    mat4 identity;
+    glm_mat4_identity(identity);
+    sl_overlay_draw(v->overlay, identity, 0, width, height);
 }
 
 static void _sl_title(_sl_case_view *v) {
@@ -298,30 +531,51 @@ static bool _sl_show_check(_sl_case_view *v, int index) {
     return true;
 }
 
-/* Keys, read by polling: Tab layout, Space yours/reference, D difference, C next check, Esc quit. */
+/* The keys, one table: what --help says and what the polling below reads. */
+static const struct {
+    int key;
+    sl_case_view_key about;
+} _sl_case_keys[] = {
+    {GLFW_KEY_TAB, {"Tab", "yours | reference | difference side by side, or one at a time"}},
+    {GLFW_KEY_SPACE, {"Space", "one at a time: yours or the reference"}},
+    {GLFW_KEY_D, {"D", "one at a time: the difference"}},
+    {GLFW_KEY_C, {"C", "the case's next check with a picture"}},
+    {GLFW_KEY_ESCAPE, {"Esc", "quit"}},
+};
+#define _SL_CASE_KEY_COUNT (int)(sizeof _sl_case_keys / sizeof _sl_case_keys[0])
+
+const sl_case_view_key *sl_case_view_keys(void) {
+    static sl_case_view_key keys[_SL_CASE_KEY_COUNT + 1];
+    for (int i = 0; i < _SL_CASE_KEY_COUNT; i++) keys[i] = _sl_case_keys[i].about;
+    return keys;
+}
+
+/* Keys, read by polling. */
 static bool _sl_keys(_sl_case_view *v) {
     GLFWwindow *w = sl_context_window(v->ctx);
     static int previous[GLFW_KEY_LAST + 1];
-    static const int keys[] = {GLFW_KEY_TAB, GLFW_KEY_SPACE, GLFW_KEY_D, GLFW_KEY_A, GLFW_KEY_C};
     bool changed = false;
-    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
-        int now = glfwGetKey(w, keys[i]);
-        if (now == GLFW_PRESS && previous[keys[i]] != GLFW_PRESS) {
-            changed = true;
-            if (keys[i] == GLFW_KEY_C) {
-                _sl_show_check(v, (v->shown_index + 1) % v->shown_count);
-                continue;
-            }
-            if (keys[i] == GLFW_KEY_TAB) v->side_by_side = !v->side_by_side;
-            else if (keys[i] == GLFW_KEY_SPACE || keys[i] == GLFW_KEY_A) {
-                v->show_reference = !v->show_reference;
-                v->show_diff = false;
-            } else if (keys[i] == GLFW_KEY_D) v->show_diff = !v->show_diff;
-            if (keys[i] != GLFW_KEY_TAB) v->side_by_side = false;
+    for (int i = 0; i < _SL_CASE_KEY_COUNT; i++) {
+        int key = _sl_case_keys[i].key, now = glfwGetKey(w, key);
+        bool pressed = now == GLFW_PRESS && previous[key] != GLFW_PRESS;
+        previous[key] = now;
+        if (!pressed) continue;
+        changed = true;
+        switch (key) {
+        case GLFW_KEY_C: _sl_show_check(v, (v->shown_index + 1) % v->shown_count); break;
+        case GLFW_KEY_TAB: v->side_by_side = !v->side_by_side; break;
+        case GLFW_KEY_SPACE:
+            v->show_reference = !v->show_reference;
+            v->show_diff = false;
+            v->side_by_side = false;
+            break;
+        case GLFW_KEY_D:
+            v->show_diff = !v->show_diff;
+            v->side_by_side = false;
+            break;
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
         }
-        previous[keys[i]] = now;
     }
-    if (glfwGetKey(w, GLFW_KEY_ESCAPE) == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
     return changed;
 }
 
@@ -365,14 +619,25 @@ static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, s
     int panel_w = v->c.width, panel_h = v->c.height;
     if (maps_only) panel_w = panel_h = 384; /* maps alone: square panels, shown scaled */
     v->scale = panel_w * 3 * 2 <= 1800 ? 2 : 1;
+    /* under the panels, a band for the summary and the criterion: the font's cell at scale 2 from 800 wide */
+    int text_scale = panel_w * v->scale * 3 >= 800 ? 2 : 1;
+    v->band = (_SL_BAND_LINES * SL_OVERLAY_CELL_H + 10) * text_scale;
     sl_context_desc cd = {
         .backend = d->headless ? (sl_backend)d->backend : SL_BACKEND_GLFW,
         .width = panel_w * v->scale * 3,
-        .height = panel_h * v->scale,
+        .height = panel_h * v->scale + v->band,
         .title = "shadowlab",
     };
     v->ctx = sl_context_create(&cd, err, n);
     if (!v->ctx) return false;
+    char overlay_err[1024];
+    v->overlay = sl_overlay_create(sl_framework_dir(), overlay_err, sizeof overlay_err);
+    v->text_scale = text_scale;
+    if (v->overlay) {
+        sl_overlay_set_scale(v->overlay, text_scale);
+        sl_overlay_set_lecture(v->overlay, true); /* white on black: readable on a white picture too */
+    }
+    else fprintf(stderr, "shadowlab: --case: no labels: %s\n", overlay_err);
     sl_renderer_desc rd = {.labs_dir = d->labs_dir};
     if (!sl_renderer_init(&v->renderer, &rd, err, n) || !sl_renderer_set_scene(&v->renderer, &v->c.scene, err, n))
         return false;
@@ -411,12 +676,17 @@ int sl_case_view_main(const sl_case_view_desc *d) {
     } else {
         printf("shadowlab: case %s (%s), lab %d: %s\n", v.c.name, v.c.title, v.c.lab, sl_context_renderer_name());
         GLFWwindow *window = sl_context_window(v.ctx);
-        if (window) printf("shadowlab: keys: Tab yours | reference | difference, or one at a time; Space yours or the "
-                           "reference; D the difference;%s Esc quit\n", v.shown_count > 1 ? " C the next check;" : "");
+        if (window) {
+            printf("shadowlab: keys:");
+            for (int i = 0; i < _SL_CASE_KEY_COUNT; i++)
+                if (_sl_case_keys[i].key != GLFW_KEY_C || v.shown_count > 1)
+                    printf("%s %s %s", i ? ";" : "", _sl_case_keys[i].about.names, _sl_case_keys[i].about.help);
+            printf("\n");
+        }
         int rendered = 0;
         double last_reload = 0;
         const char *reported_error = NULL;
-        char last_summary[256] = "";
+        char last_summary[sizeof v.summary] = "";
         while (!sl_context_should_close(v.ctx)) {
             if (window && glfwGetTime() - last_reload > 0.25) {
                 last_reload = glfwGetTime();
@@ -433,6 +703,12 @@ int sl_case_view_main(const sl_case_view_desc *d) {
             if (strcmp(last_summary, v.summary) != 0) {
                 snprintf(last_summary, sizeof last_summary, "%s", v.summary);
                 printf("shadowlab: %s\n", v.summary);
+                printf("shadowlab: %s\n", v.criterion);
+                if (v.stretched[_SL_STUDENT] || v.stretched[_SL_REFERENCE])
+                    printf("shadowlab: each picture stretched black to white over its own range: yours %.4f - %.4f, "
+                           "the reference %.4f - %.4f\n", (double)v.range[_SL_STUDENT][0],
+                           (double)v.range[_SL_STUDENT][1], (double)v.range[_SL_REFERENCE][0],
+                           (double)v.range[_SL_REFERENCE][1]);
             }
             if (window && _sl_keys(&v)) {}
             _sl_title(&v);
@@ -458,6 +734,7 @@ int sl_case_view_main(const sl_case_view_desc *d) {
         }
     }
     if (v.ctx) {
+        sl_overlay_destroy(v.overlay);
         sl_program_destroy(&v.panel_program);
         sl_renderer_destroy(&v.renderer);
         sl_context_destroy(v.ctx);

@@ -26,4 +26,11 @@ typedef struct sl_case_view_desc {
 /* A process exit status: 0, 1 on failure (said on stderr), 2 on a usage error. */
 int sl_case_view_main(const sl_case_view_desc *desc);
 
+/* The keys of the case view, for the viewer's --help: the keys as written and
+ * what they do; the list ends with a NULL `names`. */
+typedef struct sl_case_view_key {
+    const char *names, *help;
+} sl_case_view_key;
+const sl_case_view_key *sl_case_view_keys(void);
+
 #endif

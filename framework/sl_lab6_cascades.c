@@ -11,6 +11,9 @@
 #define _SL_LAB6_CALL(r, N, fn, ...)                                                                              \
     (sl_renderer_lab_enter(#fn), sl_renderer_lab_result((r), #fn, (r)->fns[N]->fn(__VA_ARGS__)))
 
+const float sl_cascade_colours[SL_MAX_CASCADES][3] = {
+    {1.0f, 0.35f, 0.3f}, {0.35f, 1.0f, 0.35f}, {0.35f, 0.5f, 1.0f}, {1.0f, 0.9f, 0.3f}};
+
 typedef struct _sl_lab6_program {
     sl_program program;
     bool attempted;
@@ -309,6 +312,7 @@ static void _sl_lab6_camera_pass(sl_renderer *r, const sl_scene *scene, const sl
                            (const float *)info->cascade_shadow_matrix);
         glUniformMatrix4fv(glGetUniformLocation(id, "u_fit_view"), 1, GL_FALSE, (const float *)info->cascade_fit_view);
         glUniform1i(glGetUniformLocation(id, "u_show_cascades"), p->cascades.show_cascades ? 1 : 0);
+        glUniform3fv(glGetUniformLocation(id, "u_cascade_colours"), SL_MAX_CASCADES, &sl_cascade_colours[0][0]);
         glUniform1i(glGetUniformLocation(id, "u_cascades"), 0);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D_ARRAY, s->texture);
@@ -355,7 +359,7 @@ static void _sl_lab6_frustum_lines(sl_renderer *r, const sl_scene *scene, const 
     sl_camera_projection(frozen, aspect, proj);
     glm_mat4_mul(proj, view, vp);
     glm_mat4_inv(vp, inv);
-    static const float colours[SL_MAX_CASCADES][3] = {{1, 0.3f, 0.25f}, {0.2f, 0.9f, 0.3f}, {0.3f, 0.45f, 1}, {1, 0.85f, 0.2f}};
+    const float (*colours)[3] = sl_cascade_colours;
     float vertices[SL_MAX_CASCADES][2][24 * 3];
     int counts[SL_MAX_CASCADES][2];
     for (int i = 0; i < info->cascade_count; i++) {
@@ -412,9 +416,18 @@ void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params 
     if (ok) ok = _sl_lab6_depth_passes(r, scene, params);
     info->cascades_ready = ok;
     _sl_lab6_camera_pass(r, scene, params, ok, target, width, height);
+    /* what stopped the cascades: lab 6's functions or shaders, lab 2's shadow matrix, lab 1's depth shaders */
+    if (info->lab_in_use != 6 && !sl_renderer_note_stop(r, 6) && !sl_renderer_note_stop(r, 2))
+        sl_renderer_note_stop(r, 1);
     if (ok && params->cascades.use_camera && params->cascades.show_frustum)
         _sl_lab6_frustum_lines(r, scene, params, aspect);
     if (ok && params->show_shadow_map) sl_lab6_debug_view(r, width, height);
+}
+
+void sl_lab6_layer_rect(int width, int height, int count, int layer, int *x, int *y, int *side) {
+    *side = (width < height ? width : height) / 4;
+    *x = width - (count - layer) * (*side + 6) - 2;
+    *y = height - 8 - *side;
 }
 
 void sl_lab6_debug_view(sl_renderer *r, int width, int height) {
@@ -424,7 +437,6 @@ void sl_lab6_debug_view(sl_renderer *r, int width, int height) {
                                         "debug_layer.frag", NULL, 0);
     if (!prog) return;
     int count = r->info.cascade_count;
-    int side = (width < height ? width : height) / 4;
     glDisable(GL_DEPTH_TEST);
     glUseProgram(prog->id);
     glActiveTexture(GL_TEXTURE0);
@@ -432,7 +444,9 @@ void sl_lab6_debug_view(sl_renderer *r, int width, int height) {
     glUniform1i(glGetUniformLocation(prog->id, "u_layers"), 0);
     glBindVertexArray(r->empty_vao);
     for (int i = 0; i < count; i++) {
-        glViewport(width - (count - i) * (side + 6) - 2, 8, side, side);
+        int x, y, side;
+        sl_lab6_layer_rect(width, height, count, i, &x, &y, &side);
+        glViewport(x, height - y - side, side, side);
         glUniform1i(glGetUniformLocation(prog->id, "u_layer"), i);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }

@@ -17,10 +17,17 @@
 
 #include "sl_renderer.h"
 
+/* Each cascade's colour (K's tint, the frozen view's boxes; red, green, blue, yellow): the viewer's legend
+ * and the --case view's cascade-index panels use the same. */
+extern const float sl_cascade_colours[SL_MAX_CASCADES][3];
+
 void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target, int width,
                   int height);
 /* The cascades' layers side by side along the bottom of the picture (viewer overlay). */
 void sl_lab6_debug_view(sl_renderer *r, int width, int height);
+/* Where the debug view puts layer `layer` of `count`: its top-left corner from the frame's top-left, and its
+ * side, in pixels (the viewer's labels). */
+void sl_lab6_layer_rect(int width, int height, int count, int layer, int *x, int *y, int *side);
 void sl_lab6_release(sl_renderer *r);
 /* Adds lab 6's program builds (and their time) and the programs it holds to out. */
 void sl_lab6_program_stats(const sl_renderer *r, sl_program_stats *out);

@@ -269,12 +269,25 @@ static void _sl_camera_pass(sl_renderer *r, const sl_scene *scene, const sl_rend
     sl_renderer_timer_mark(r, "camera");
 }
 
+/* The cross's cells: a side of half what fits 4 x 3 cells in the frame, 8 pixels off the lower right corner. */
+static int _sl_cross_cell(int width, int height) { return (width / 4 < height / 3 ? width / 4 : height / 3) / 2; }
+
+void sl_lab7_cross_face_rect(int width, int height, int face, int *x, int *y, int *side) {
+    /* cube_cross.frag's net, cells counted from the cross's lower left: -X -Z +X +Z across the middle row,
+     * +Y above -Z, -Y below it */
+    static const int cells[6][2] = {{2, 1}, {0, 1}, {1, 2}, {1, 0}, {3, 1}, {1, 1}};
+    int cell = _sl_cross_cell(width, height), f = face >= 0 && face < 6 ? face : 0;
+    *side = cell;
+    *x = width - 4 * cell - 8 + cells[f][0] * cell;
+    *y = height - 8 - (cells[f][1] + 1) * cell;
+}
+
 /* The six faces as a cross in the lower right corner. */
 static void _sl_cross_view(sl_renderer *r, int width, int height) {
     if (!r->info.cube_map_ready) return;
     _sl_cube_program *prog = _sl_program(r, _SL_CROSS);
     if (!prog) return;
-    int cell = (width / 4 < height / 3 ? width / 4 : height / 3) / 2;
+    int cell = _sl_cross_cell(width, height);
     glViewport(width - 4 * cell - 8, 8, 4 * cell, 3 * cell);
     glDisable(GL_DEPTH_TEST);
     glUseProgram(prog->program.id);
@@ -306,6 +319,7 @@ void sl_lab7_cube_draw(sl_renderer *r, const sl_scene *scene, const sl_render_pa
     else if (map) _SL_CALL(r, lab7_begin_cube_pass, &s->map, 0);
     sl_renderer_reset_state(target, width, height);
     _sl_camera_pass(r, scene, p, width, height);
+    if (info->lab_in_use != 7) sl_renderer_note_stop(r, 7);
     if (p->show_shadow_map) _sl_cross_view(r, width, height);
 }
 

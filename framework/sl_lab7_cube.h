@@ -37,6 +37,10 @@ void sl_lab7_cube_destroy(struct sl_renderer *r);
 /* Lab 7's programs: how many were built (first builds only) and how many are held now. */
 void sl_lab7_cube_program_counts(const struct sl_renderer *r, int *built, int *held);
 
+/* Where the cross (params.show_shadow_map) puts face `face` (0..5: +x -x +y -y +z -z) in a width x
+ * height frame: its top-left corner from the frame's top-left, and its side, in pixels (face labels). */
+void sl_lab7_cross_face_rect(int width, int height, int face, int *x, int *y, int *side);
+
 /* One face of a depth cube map as a top-down image (1 channel, face size
  * squared); false with err set if the texture is no depth cube map. */
 bool sl_capture_cube_face(GLuint cube, int face, sl_image *out, char *err, size_t err_size);

@@ -121,6 +121,7 @@ static const char *const _sl_font[_SL_GLYPHS][_SL_GLYPH_H] = {
 #define _SL_MAX_LINES 96
 #define _SL_MAX_LABELS 32
 #define _SL_MAX_BOXES 16
+#define _SL_MAX_MARKERS 4
 #define _SL_LINE_CHARS 121
 
 typedef struct _sl_text_line {
@@ -134,23 +135,35 @@ typedef struct _sl_panel {
     sl_overlay_corner corner;
 } _sl_panel;
 
+typedef struct _sl_marker {
+    vec3 position;
+    float rgb[3];
+    char text[32];
+} _sl_marker;
+
 struct sl_overlay {
     sl_program text_program, line_program;
     GLuint font_texture, text_vao, text_vbo, line_vao, line_vbo;
     int scale;
+    bool lecture;
     _sl_panel panels[_SL_MAX_PANELS];
     int panel_count;
-    _sl_text_line lines[_SL_MAX_LINES + _SL_MAX_LABELS];
+    _sl_text_line lines[_SL_MAX_LINES + _SL_MAX_LABELS + _SL_MAX_MARKERS];
     int line_count, label_count;
     mat4 boxes[_SL_MAX_BOXES];
     float box_rgb[_SL_MAX_BOXES][3];
+    bool box_on_top[_SL_MAX_BOXES];
     int box_count;
+    _sl_marker markers[_SL_MAX_MARKERS];
+    int marker_count;
     float *vertices; /* text quads: x, y, u, v, r, g, b, a */
     size_t vertex_capacity;
+    float *line_vertices; /* line quads: clip x, y, z, w, r, g, b, a */
+    size_t line_capacity;
 };
 
-static const float _sl_default_rgb[3] = {0.85f, 0.85f, 0.85f};
-static const float _sl_title_rgb[3] = {1.0f, 0.85f, 0.35f};
+static const float _sl_default_rgb[3] = {0.85f, 0.85f, 0.85f}, _sl_lecture_rgb[3] = {1, 1, 1};
+static const float _sl_title_rgb[3] = {1.0f, 0.85f, 0.35f}, _sl_lecture_title_rgb[3] = {1.0f, 0.92f, 0.2f};
 
 sl_overlay *sl_overlay_create(const char *framework_dir, char *err, size_t err_size) {
     sl_overlay *ov = calloc(1, sizeof *ov);
@@ -211,7 +224,9 @@ sl_overlay *sl_overlay_create(const char *framework_dir, char *err, size_t err_s
     glBindVertexArray(ov->line_vao);
     glBindBuffer(GL_ARRAY_BUFFER, ov->line_vbo);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (void *)0);
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, (void *)0);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, (void *)(4 * sizeof(float)));
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     return ov;
@@ -227,6 +242,7 @@ void sl_overlay_destroy(sl_overlay *ov) {
     glDeleteVertexArrays(1, &ov->text_vao);
     glDeleteVertexArrays(1, &ov->line_vao);
     free(ov->vertices);
+    free(ov->line_vertices);
     free(ov);
 }
 
@@ -235,20 +251,28 @@ void sl_overlay_clear(sl_overlay *ov) {
     ov->line_count = 0;
     ov->label_count = 0;
     ov->box_count = 0;
+    ov->marker_count = 0;
 }
 
 void sl_overlay_set_scale(sl_overlay *ov, int scale) { ov->scale = scale < 0 ? 0 : scale; }
 
+void sl_overlay_set_lecture(sl_overlay *ov, bool on) { ov->lecture = on; }
+
 int sl_overlay_scale_for(const sl_overlay *ov, int width, int height) {
     if (ov->scale > 0) return ov->scale;
     /* Big enough to read across a lecture hall, small enough to leave the scene visible. */
-    return 1 + (width >= 800 && height >= 480) + (width >= 1600 && height >= 1000);
+    return 1 + (width >= 800 && height >= 480) + (width >= 1600 && height >= 1000) + (ov->lecture ? 1 : 0);
+}
+
+int sl_overlay_line_width_for(const sl_overlay *ov, int width, int height) {
+    int s = sl_overlay_scale_for(ov, width, height);
+    return ov->lecture ? 2 * s : s;
 }
 
 bool sl_overlay_panel(sl_overlay *ov, sl_overlay_corner corner, const char *title) {
     if (ov->panel_count >= _SL_MAX_PANELS || corner < 0 || corner >= SL_OVERLAY_CORNER_COUNT) return false;
     ov->panels[ov->panel_count++] = (_sl_panel){.corner = corner};
-    if (title) sl_overlay_line(ov, _sl_title_rgb, "%s", title);
+    if (title) sl_overlay_line(ov, ov->lecture ? _sl_lecture_title_rgb : _sl_title_rgb, "%s", title);
     return true;
 }
 
@@ -256,7 +280,7 @@ static _sl_text_line *_sl_new_line(sl_overlay *ov, const float *rgb, int panel, 
     if (ov->line_count + ov->label_count >= _SL_MAX_LINES + _SL_MAX_LABELS) return NULL;
     _sl_text_line *l = &ov->lines[ov->line_count + ov->label_count];
     vsnprintf(l->text, sizeof l->text, fmt, ap);
-    memcpy(l->rgb, rgb ? rgb : _sl_default_rgb, sizeof l->rgb);
+    memcpy(l->rgb, rgb ? rgb : ov->lecture ? _sl_lecture_rgb : _sl_default_rgb, sizeof l->rgb);
     l->panel = panel;
     return l;
 }
@@ -283,14 +307,32 @@ void sl_overlay_label(sl_overlay *ov, int x, int y, const float *rgb, const char
     ov->label_count++;
 }
 
-bool sl_overlay_box(sl_overlay *ov, mat4 to_world, const float *rgb) {
+static bool _sl_add_box(sl_overlay *ov, mat4 to_world, const float *rgb, bool on_top) {
     if (ov->box_count >= _SL_MAX_BOXES) return false;
     for (int c = 0; c < 4; c++)
         for (int r = 0; r < 4; r++)
             if (!isfinite(to_world[c][r])) return false;
     glm_mat4_copy(to_world, ov->boxes[ov->box_count]);
     memcpy(ov->box_rgb[ov->box_count], rgb ? rgb : _sl_title_rgb, sizeof ov->box_rgb[0]);
+    ov->box_on_top[ov->box_count] = on_top;
     ov->box_count++;
+    return true;
+}
+
+bool sl_overlay_box(sl_overlay *ov, mat4 to_world, const float *rgb) { return _sl_add_box(ov, to_world, rgb, false); }
+
+bool sl_overlay_box_on_top(sl_overlay *ov, mat4 to_world, const float *rgb) {
+    return _sl_add_box(ov, to_world, rgb, true);
+}
+
+bool sl_overlay_marker(sl_overlay *ov, const float position[3], const float *rgb, const char *text) {
+    if (ov->marker_count >= _SL_MAX_MARKERS) return false;
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(position[k])) return false;
+    _sl_marker *m = &ov->markers[ov->marker_count++];
+    glm_vec3_copy((float *)position, m->position);
+    memcpy(m->rgb, rgb ? rgb : _sl_title_rgb, sizeof m->rgb);
+    snprintf(m->text, sizeof m->text, "%s", text ? text : "");
     return true;
 }
 
@@ -327,56 +369,184 @@ static size_t _sl_text(float *out, const char *text, float x, float y, int s, co
     size_t n = 0;
     for (const unsigned char *c = (const unsigned char *)text; *c; c++, x += SL_OVERLAY_CELL_W * s) {
         if (*c == ' ') continue;
+        if (*c == (unsigned char)SL_OVERLAY_SWATCH[0]) { /* a whole cell: a legend's colour sample */
+            n += _sl_quad(out + n, x, y, x + SL_OVERLAY_CELL_W * s, y + _SL_GLYPH_H * s, _SL_SOLID, rgb, 1);
+            continue;
+        }
         int g = *c >= 32 && *c <= 126 ? *c - 32 : '?' - 32;
         n += _sl_quad(out + n, x, y, x + _SL_GLYPH_W * s, y + _SL_GLYPH_H * s, g, rgb, 1);
     }
     return n;
 }
 
-static const float _sl_backing_rgb[3] = {0.05f, 0.05f, 0.07f};
+static const float _sl_backing_rgb[3] = {0.05f, 0.05f, 0.07f}, _sl_lecture_backing_rgb[3] = {0, 0, 0};
 #define _SL_BACKING_ALPHA 0.7f
+#define _SL_LECTURE_BACKING_ALPHA 0.9f
 
-static void _sl_draw_boxes(sl_overlay *ov, mat4 camera_view_projection) {
-    if (ov->box_count == 0) return;
+/* ---- Lines: quads in clip space, so they are as wide as asked (core GL
+ * draws no lines wider than 1 pixel) and keep their depth. */
+#define _SL_LINE_FLOATS (6 * 8)
+
+static bool _sl_reserve_lines(sl_overlay *ov, size_t floats) {
+    if (floats <= ov->line_capacity) return true;
+    size_t cap = ov->line_capacity ? ov->line_capacity : 4096;
+    while (cap < floats) cap *= 2;
+    float *v = realloc(ov->line_vertices, cap * sizeof *v);
+    if (!v) return false;
+    ov->line_vertices = v;
+    ov->line_capacity = cap;
+    return true;
+}
+
+/* The segment a-b (clip space) as a quad `px` pixels wide, cut at the near
+ * plane; its ends reach half a width further so corners close. 0 floats if
+ * it is wholly behind the camera. */
+static size_t _sl_segment(float *out, vec4 a, vec4 b, float px, int width, int height, const float rgba[4]) {
+    vec4 p, q;
+    glm_vec4_copy(a, p);
+    glm_vec4_copy(b, q);
+    float dp = p[2] + p[3], dq = q[2] + q[3]; /* >= 0 in front of the near plane */
+    if (dp < 0 && dq < 0) return 0;
+    if (dp < 0) glm_vec4_lerp(p, q, dp / (dp - dq), p);
+    else if (dq < 0) glm_vec4_lerp(q, p, dq / (dq - dp), q);
+    if (p[3] <= 1e-6f || q[3] <= 1e-6f) return 0;
+    float hw = (float)width * 0.5f, hh = (float)height * 0.5f;
+    float sx = (q[0] / q[3] - p[0] / p[3]) * hw, sy = (q[1] / q[3] - p[1] / p[3]) * hh;
+    float len = sqrtf(sx * sx + sy * sy);
+    float dx = len > 1e-6f ? sx / len : 1, dy = len > 1e-6f ? sy / len : 0;
+    /* half a width across (n) and along (t), in NDC units */
+    float h = px * 0.5f;
+    float nx = -dy * h / hw, ny = dx * h / hh, tx = dx * h / hw, ty = dy * h / hh;
+    const float sides[4][2] = {{-1, -1}, {-1, 1}, {1, 1}, {1, -1}}; /* (end: -1 p, 1 q; side) */
+    float corner[4][4];
+    for (int i = 0; i < 4; i++) {
+        const float *c = sides[i][0] < 0 ? p : q;
+        float along = sides[i][0], across = sides[i][1];
+        corner[i][0] = c[0] + (along * tx + across * nx) * c[3];
+        corner[i][1] = c[1] + (along * ty + across * ny) * c[3];
+        corner[i][2] = c[2];
+        corner[i][3] = c[3];
+    }
+    static const int order[6] = {0, 1, 2, 0, 2, 3};
+    for (int i = 0; i < 6; i++) {
+        memcpy(out + i * 8, corner[order[i]], 4 * sizeof(float));
+        memcpy(out + i * 8 + 4, rgba, 4 * sizeof(float));
+    }
+    return _SL_LINE_FLOATS;
+}
+
+/* A box's 12 edges, each as a quad. */
+static size_t _sl_box_quads(float *out, mat4 to_world, mat4 camera_view_projection, float px, int width, int height,
+                            const float rgba[4]) {
     /* The cube's 12 edges as pairs of corners (bit 0: x, bit 1: y, bit 2: z). */
     static const int edges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                                      {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-    float points[_SL_MAX_BOXES][24][3];
-    for (int b = 0; b < ov->box_count; b++) {
-        vec3 corner[8];
-        for (int i = 0; i < 8; i++) {
-            vec4 ndc = {i & 1 ? 1.f : -1.f, i & 2 ? 1.f : -1.f, i & 4 ? 1.f : -1.f, 1}, w;
-            glm_mat4_mulv(ov->boxes[b], ndc, w);
-            float inv = fabsf(w[3]) > 1e-12f ? 1.0f / w[3] : 0.0f;
-            glm_vec3_scale(w, inv, corner[i]);
-        }
-        for (int e = 0; e < 12; e++)
-            for (int k = 0; k < 2; k++) memcpy(points[b][2 * e + k], corner[edges[e][k]], sizeof(vec3));
+    vec4 clip[8];
+    for (int i = 0; i < 8; i++) {
+        vec4 ndc = {i & 1 ? 1.f : -1.f, i & 2 ? 1.f : -1.f, i & 4 ? 1.f : -1.f, 1}, w;
+        glm_mat4_mulv(to_world, ndc, w);
+        float inv = fabsf(w[3]) > 1e-12f ? 1.0f / w[3] : 0.0f;
+        glm_vec4_scale(w, inv, w);
+        w[3] = 1;
+        glm_mat4_mulv(camera_view_projection, w, clip[i]);
     }
+    size_t n = 0;
+    for (int e = 0; e < 12; e++) n += _sl_segment(out + n, clip[edges[e][0]], clip[edges[e][1]], px, width, height, rgba);
+    return n;
+}
+
+/* A segment between two pixel positions (from the top-left), over everything. */
+static size_t _sl_pixel_segment(float *out, float x0, float y0, float x1, float y1, float px, int width, int height,
+                                const float rgba[4]) {
+    vec4 a = {2 * x0 / (float)width - 1, 1 - 2 * y0 / (float)height, 0, 1};
+    vec4 b = {2 * x1 / (float)width - 1, 1 - 2 * y1 / (float)height, 0, 1};
+    return _sl_segment(out, a, b, px, width, height, rgba);
+}
+
+/* Where a world point falls in the frame (pixels from the top-left); false behind the camera. */
+static bool _sl_project(mat4 camera_view_projection, const vec3 world, int width, int height, float *x, float *y) {
+    vec4 w = {world[0], world[1], world[2], 1}, c;
+    glm_mat4_mulv(camera_view_projection, w, c);
+    if (c[3] <= 1e-6f) return false;
+    *x = (c[0] / c[3] * 0.5f + 0.5f) * (float)width;
+    *y = (0.5f - c[1] / c[3] * 0.5f) * (float)height;
+    return true;
+}
+
+/* A marker: a ring of 8 sides with 4 rays, dark under bright so it shows on any background. */
+static size_t _sl_marker_quads(float *out, float x, float y, float radius, float px, int width, int height,
+                               const float rgb[3]) {
+    size_t n = 0;
+    const float dark[4] = {0, 0, 0, 1}, bright[4] = {rgb[0], rgb[1], rgb[2], 1};
+    for (int pass = 0; pass < 2; pass++) {
+        const float *c = pass ? bright : dark;
+        float w = pass ? px : px + 2 * fmaxf(1, px * 0.5f);
+        for (int i = 0; i < 8; i++) {
+            float a0 = (float)i * (float)GLM_PI / 4, a1 = (float)(i + 1) * (float)GLM_PI / 4;
+            n += _sl_pixel_segment(out + n, x + radius * cosf(a0), y + radius * sinf(a0), x + radius * cosf(a1),
+                                   y + radius * sinf(a1), w, width, height, c);
+        }
+        for (int i = 0; i < 4; i++) {
+            float a = (float)i * (float)GLM_PI / 2 + (float)GLM_PI / 4, cs = cosf(a), sn = sinf(a);
+            n += _sl_pixel_segment(out + n, x + 1.4f * radius * cs, y + 1.4f * radius * sn, x + 2.2f * radius * cs,
+                                   y + 2.2f * radius * sn, w, width, height, c);
+        }
+    }
+    return n;
+}
+
+/* The boxes (faint through the scene, bright where nothing hides them; on-top
+ * boxes bright everywhere) and the markers. The markers' positions on screen
+ * go to `marker_xy` (NaN: not in view) for their texts. */
+static void _sl_draw_lines(sl_overlay *ov, mat4 camera_view_projection, int width, int height,
+                           float marker_xy[][2]) {
+    for (int m = 0; m < ov->marker_count; m++) marker_xy[m][0] = marker_xy[m][1] = NAN;
+    if (ov->box_count == 0 && ov->marker_count == 0) return;
+    float px = (float)sl_overlay_line_width_for(ov, width, height);
+    int s = sl_overlay_scale_for(ov, width, height);
+    /* per box 2 passes of 12 edges; per marker 2 passes of 12 segments */
+    if (!_sl_reserve_lines(ov, ((size_t)ov->box_count * 24 + (size_t)ov->marker_count * 24) * _SL_LINE_FLOATS)) return;
+    float *v = ov->line_vertices;
+    size_t n = 0, faint_end, bright_end;
+    float faint_alpha = ov->lecture ? 0.6f : 0.35f;
+    for (int b = 0; b < ov->box_count; b++) {
+        const float *c = ov->box_rgb[b];
+        const float rgba[4] = {c[0], c[1], c[2], ov->box_on_top[b] ? 1.0f : faint_alpha};
+        n += _sl_box_quads(v + n, ov->boxes[b], camera_view_projection, px, width, height, rgba);
+    }
+    faint_end = n;
+    for (int b = 0; b < ov->box_count; b++) {
+        if (ov->box_on_top[b]) continue;
+        const float *c = ov->box_rgb[b];
+        const float rgba[4] = {c[0], c[1], c[2], 1.0f};
+        n += _sl_box_quads(v + n, ov->boxes[b], camera_view_projection, px, width, height, rgba);
+    }
+    bright_end = n;
+    for (int m = 0; m < ov->marker_count; m++) {
+        float x, y;
+        if (!_sl_project(camera_view_projection, ov->markers[m].position, width, height, &x, &y)) continue;
+        marker_xy[m][0] = x;
+        marker_xy[m][1] = y;
+        n += _sl_marker_quads(v + n, x, y, 5.0f * (float)s, px, width, height, ov->markers[m].rgb);
+    }
+    if (n == 0) return;
     glUseProgram(ov->line_program.id);
-    glUniformMatrix4fv(sl_program_uniform(&ov->line_program, "u_view_projection"), 1, GL_FALSE,
-                       (const float *)camera_view_projection);
-    GLint color = sl_program_uniform(&ov->line_program, "u_color");
     glBindVertexArray(ov->line_vao);
     glBindBuffer(GL_ARRAY_BUFFER, ov->line_vbo);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(ov->box_count * sizeof points[0]), points, GL_STREAM_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * sizeof(float)), v, GL_STREAM_DRAW);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
-    /* Twice: faint through everything (so a frustum behind the scene is still
-     * seen), then full strength where nothing in the scene is in front. */
-    for (int pass = 0; pass < 2; pass++) {
-        if (pass == 0) glDisable(GL_DEPTH_TEST);
-        else {
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LEQUAL);
-        }
-        for (int b = 0; b < ov->box_count; b++) {
-            const float *c = ov->box_rgb[b];
-            glUniform4f(color, c[0], c[1], c[2], pass == 0 ? 0.35f : 1.0f);
-            glDrawArrays(GL_LINES, b * 24, 24);
-        }
-    }
+    glDisable(GL_CULL_FACE);
+    /* faint through everything (so a frustum behind the scene is still seen), then full strength where
+     * nothing in the scene is in front, then the markers over all */
+    glDisable(GL_DEPTH_TEST);
+    glDrawArrays(GL_TRIANGLES, 0, (GLsizei)(faint_end / 8));
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDrawArrays(GL_TRIANGLES, (GLint)(faint_end / 8), (GLsizei)((bright_end - faint_end) / 8));
+    glDisable(GL_DEPTH_TEST);
+    glDrawArrays(GL_TRIANGLES, (GLint)(bright_end / 8), (GLsizei)((n - bright_end) / 8));
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
 }
@@ -384,16 +554,34 @@ static void _sl_draw_boxes(sl_overlay *ov, mat4 camera_view_projection) {
 void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, width, height);
-    _sl_draw_boxes(ov, camera_view_projection);
+    float marker_xy[_SL_MAX_MARKERS][2];
+    _sl_draw_lines(ov, camera_view_projection, width, height, marker_xy);
 
     int s = sl_overlay_scale_for(ov, width, height);
+    /* the markers' texts: labels beside them, for this draw only */
+    int labels_before = ov->label_count;
+    for (int m = 0; m < ov->marker_count; m++)
+        if (!isnan(marker_xy[m][0]) && ov->markers[m].text[0] &&
+            ov->line_count + ov->label_count < _SL_MAX_LINES + _SL_MAX_LABELS + _SL_MAX_MARKERS) {
+            _sl_text_line *l = &ov->lines[ov->line_count + ov->label_count++];
+            snprintf(l->text, sizeof l->text, "%s", ov->markers[m].text);
+            memcpy(l->rgb, ov->markers[m].rgb, sizeof l->rgb);
+            l->panel = -1;
+            l->x = (int)(marker_xy[m][0] + 12.0f * (float)s);
+            l->y = (int)(marker_xy[m][1] + 4.0f * (float)s);
+        }
     const float cw = (float)(SL_OVERLAY_CELL_W * s), ch = (float)(SL_OVERLAY_CELL_H * s);
     const float margin = (float)(4 * s), pad = (float)(3 * s);
+    const float *backing = ov->lecture ? _sl_lecture_backing_rgb : _sl_backing_rgb;
+    const float backing_alpha = ov->lecture ? _SL_LECTURE_BACKING_ALPHA : _SL_BACKING_ALPHA;
     int total = ov->line_count + ov->label_count;
     /* Per glyph a quad, per panel and label a backing: 48 floats each. */
     size_t chars = 0;
     for (int i = 0; i < total; i++) chars += strlen(ov->lines[i].text) + 1;
-    if (!_sl_reserve(ov, (chars + (size_t)ov->panel_count + 1) * 48)) return;
+    if (!_sl_reserve(ov, (chars + (size_t)ov->panel_count + 1) * 48)) {
+        ov->label_count = labels_before;
+        return;
+    }
     /* Backings first (they are drawn under the text), then the glyphs. */
     float *v = ov->vertices;
     size_t n = 0;
@@ -440,15 +628,15 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
         next_y[corner] += h + margin;
         panel_x[p] = x + pad;
         panel_y[p] = y + pad;
-        n += _sl_quad(v + n, x, y, x + w, y + h, _SL_SOLID, _sl_backing_rgb, _SL_BACKING_ALPHA);
+        n += _sl_quad(v + n, x, y, x + w, y + h, _SL_SOLID, backing, backing_alpha);
       }
     }
     for (int i = 0; i < total; i++) {
         const _sl_text_line *l = &ov->lines[i];
         if (l->panel >= 0) continue;
         float w = (float)strlen(l->text) * cw - (float)s + 2 * pad, h = ch - 2.0f * (float)s + 2 * pad;
-        n += _sl_quad(v + n, (float)l->x, (float)l->y, (float)l->x + w, (float)l->y + h, _SL_SOLID, _sl_backing_rgb,
-                      _SL_BACKING_ALPHA);
+        n += _sl_quad(v + n, (float)l->x, (float)l->y, (float)l->x + w, (float)l->y + h, _SL_SOLID, backing,
+                      backing_alpha);
     }
     int row[_SL_MAX_PANELS] = {0};
     for (int i = 0; i < total; i++) {
@@ -460,6 +648,7 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
             n += _sl_text(v + n, l->text, (float)l->x + pad, (float)l->y + pad, s, l->rgb);
         }
     }
+    ov->label_count = labels_before; /* the markers' texts were for this draw */
     if (n == 0) return;
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -488,8 +677,18 @@ size_t sl_overlay_text(const sl_overlay *ov, char *out, size_t out_size) {
     for (int i = 0; i < ov->line_count + ov->label_count; i++) {
         const _sl_text_line *l = &ov->lines[i];
         const char *where = l->panel >= 0 ? names[ov->panels[l->panel].corner] : "label";
-        int k = used < out_size ? snprintf(out + used, out_size - used, "[%s] %s\n", where, l->text)
-                                : snprintf(NULL, 0, "[%s] %s\n", where, l->text);
+        char text[_SL_LINE_CHARS]; /* a colour sample reads as '#' */
+        snprintf(text, sizeof text, "%s", l->text);
+        for (char *c = text; *c; c++)
+            if (*c == SL_OVERLAY_SWATCH[0]) *c = '#';
+        int k = used < out_size ? snprintf(out + used, out_size - used, "[%s] %s\n", where, text)
+                                : snprintf(NULL, 0, "[%s] %s\n", where, text);
+        if (k > 0) used += (size_t)k;
+    }
+    for (int m = 0; m < ov->marker_count; m++) {
+        const char *t = ov->markers[m].text;
+        int k = used < out_size ? snprintf(out + used, out_size - used, "[marker] %s\n", t)
+                                : snprintf(NULL, 0, "[marker] %s\n", t);
         if (k > 0) used += (size_t)k;
     }
     return used;

@@ -1,7 +1,7 @@
 /* sl_overlay: what the viewer draws over a rendered frame, for lectures and
  * screenshots: panels of text in the window's corners (a small bitmap font
  * built in, so nothing beyond GL 3.3 is needed), labels at pixel positions,
- * and wire boxes in the scene (the light's frustum).
+ * wire boxes in the scene (the light's frustum) and markers (the light).
  *
  * It is a list rebuilt every frame: clear, add panels and lines, draw. Any
  * part of the framework can add what its lab has to say, e.g. a panel per
@@ -50,9 +50,20 @@ void sl_overlay_destroy(sl_overlay *ov);
 /* Forgets every panel, label and box (call at the start of each frame). */
 void sl_overlay_clear(sl_overlay *ov);
 /* Font pixel size on screen: 1, 2, 3 ...; 0 (the default) picks one from the
- * framebuffer's size: 1, 2 from 800x480 up, 3 from 1600x1000 up. */
+ * framebuffer's size: 1, 2 from 800x480 up, 3 from 1600x1000 up (one more
+ * for a lecture). */
 void sl_overlay_set_scale(sl_overlay *ov, int scale);
 int sl_overlay_scale_for(const sl_overlay *ov, int width, int height);
+/* For a lecture hall: larger text, white on opaque black, lines twice as
+ * wide, and boxes brighter where the scene hides them. */
+void sl_overlay_set_lecture(sl_overlay *ov, bool on);
+/* The width in pixels boxes and markers are drawn with: the font scale, twice
+ * that for a lecture. */
+int sl_overlay_line_width_for(const sl_overlay *ov, int width, int height);
+
+/* In a line's text, a whole cell of solid colour: a legend's colour sample
+ * ("\x7f cascade 0" in the cascade's colour). */
+#define SL_OVERLAY_SWATCH "\x7f"
 
 /* Starts a panel in a corner; the lines added next go into it. Panels in the
  * same corner stack away from it (down from the top, up from the bottom).
@@ -70,14 +81,20 @@ void sl_overlay_label(sl_overlay *ov, int x, int y, const float *rgb, const char
  * is in front of the scene and dim where the scene hides it. A matrix that
  * cannot be inverted upstream (NaNs) is skipped. False when full. */
 bool sl_overlay_box(sl_overlay *ov, mat4 to_world, const float *rgb);
+/* The same, at full strength through the scene (boxes that reach under the ground). */
+bool sl_overlay_box_on_top(sl_overlay *ov, mat4 to_world, const float *rgb);
+/* A marker at a world position (a light): a ring with four rays over
+ * everything, `text` beside it (may be NULL). Not drawn when it is behind
+ * the camera. False when full. */
+bool sl_overlay_marker(sl_overlay *ov, const float position[3], const float *rgb, const char *text);
 
 /* Draws everything into framebuffer `target`: boxes with the camera's
  * projection x view (depth-tested against the depth the frame left), then
  * panels and labels on top. */
 void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target, int width, int height);
 
-/* The text of every panel as plain lines ("[corner] text"), for tests and
- * logs: what a screenshot shows, in words. */
+/* The text of every panel as plain lines ("[corner] text", "[label] text",
+ * "[marker] text"), for tests and logs: what a screenshot shows, in words. */
 size_t sl_overlay_text(const sl_overlay *ov, char *out, size_t out_size);
 
 #endif

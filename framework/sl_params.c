@@ -83,6 +83,15 @@ const char *sl_lab_title(int lab) {
     return lab >= 1 && lab <= SL_LAB_MAX ? titles[lab] : "?";
 }
 
+const char *sl_cascade_colour(int cascade, float rgb[3]) {
+    static const float colours[SL_MAX_CASCADES + 1][3] = {
+        {1, 0.3f, 0.25f}, {0.2f, 0.9f, 0.3f}, {0.3f, 0.45f, 1}, {1, 0.85f, 0.2f}, {0.3f, 0.3f, 0.3f}};
+    static const char *const names[SL_MAX_CASCADES + 1] = {"red", "green", "blue", "yellow", "grey"};
+    int i = cascade >= 0 && cascade < SL_MAX_CASCADES ? cascade : SL_MAX_CASCADES;
+    for (int c = 0; c < 3; c++) rgb[c] = colours[i][c];
+    return names[i];
+}
+
 static const char *const _sl_cube_pass_names[SL_CUBE_PASS_COUNT] = {"auto", "six", "layered"};
 
 const char *sl_cube_pass_name(sl_cube_pass pass) {

@@ -104,4 +104,9 @@ const char *sl_lab_title(int lab);
 bool sl_lab_builds_on(int lab, int earlier);
 bool sl_lab_shows(int lab, int earlier);
 
+/* The colour a cascade is shown in (the viewer's K key and frusta, --case,
+ * the grader's report): 0 red, 1 green, 2 blue, 3 yellow; grey for none (-1)
+ * or a number out of range. Its name ("red", ..., "grey") for legends. */
+const char *sl_cascade_colour(int cascade, float rgb[3]);
+
 #endif

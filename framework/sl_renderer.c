@@ -45,6 +45,33 @@ static bool _sl_lab_result(sl_renderer *r, const char *function, sl_status statu
 
 void sl_renderer_lab_enter(const char *function) { _sl_enter(function); }
 
+static bool _sl_note(sl_frame_info *info, int lab, const char *function, sl_stop_reason reason) {
+    for (int i = 0; i < info->stop_count; i++)
+        if (info->stops[i].lab == lab) return true; /* one reason per lab: its first */
+    if (info->stop_count >= SL_MAX_FRAME_STOPS) return true;
+    info->stops[info->stop_count++] = (sl_frame_stop){.lab = lab, .function = function, .reason = reason};
+    return true;
+}
+
+/* Lab functions are named labN_...: whose they are. */
+static bool _sl_is_labs(const char *function, int lab) {
+    char prefix[16];
+    snprintf(prefix, sizeof prefix, "lab%d_", lab);
+    return function && strncmp(function, prefix, strlen(prefix)) == 0;
+}
+
+bool sl_renderer_note_stop(sl_renderer *r, int lab) {
+    sl_frame_info *info = &r->info;
+    for (int i = 0; i < info->not_implemented_count; i++)
+        if (_sl_is_labs(info->not_implemented[i], lab))
+            return _sl_note(info, lab, info->not_implemented[i], SL_STOP_NOT_IMPLEMENTED);
+    if (_sl_is_labs(info->failed, lab)) return _sl_note(info, lab, info->failed, SL_STOP_FAILED);
+    if (info->shader_error && info->shader_error_lab == lab) return _sl_note(info, lab, NULL, SL_STOP_SHADERS);
+    return false;
+}
+
+void sl_renderer_note_off(sl_renderer *r, int lab, sl_stop_reason reason) { _sl_note(&r->info, lab, NULL, reason); }
+
 bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status) {
     return _sl_lab_result(r, function, status);
 }
@@ -583,6 +610,7 @@ static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const
         }
         r->info.shader_error = r->shader_errors[failed];
         r->info.shader_error_lab = failed;
+        sl_renderer_note_stop(r, failed);
     }
     return NULL;
 }
@@ -603,14 +631,27 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     if (info->shadow_map_ready && info->lab2_ready) {
         /* labs 6 and 7 draw in their own modules; asked for otherwise (a light they do not cast from), labs 1-4 draw */
         lab = _sl_planar_lab(p->lab > 5 ? 4 : p->lab);
-        if (depth_lab < 3 && lab > 2) lab = 2;
+        if (depth_lab < 3 && lab > 2) {
+            lab = 2;
+            sl_renderer_note_stop(r, 3);
+        }
         /* lab 5: its moments, or lab 4's filters when they are not there (or VSM is switched off) */
-        if (lab == 5 && (!info->moments_ready || p->vsm_off)) lab = 4;
+        if (lab == 5 && (!info->moments_ready || p->vsm_off)) {
+            lab = 4;
+            if (p->vsm_off) sl_renderer_note_off(r, 5, SL_STOP_SWITCHED_OFF);
+            else sl_renderer_note_stop(r, 5);
+        }
+    } else if (p->lab >= 1) { /* no map to look up: lab 1's or lab 2's step stopped */
+        if (!info->shadow_map_ready) sl_renderer_note_stop(r, 1);
+        if (p->lab >= 2 && !info->lab2_ready) sl_renderer_note_stop(r, 2);
     }
     if (lab == 4) {
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
-        if (!_SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, r->shadow_map.depth_texture, p->filter.mode)) lab = 3;
+        if (!_SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, r->shadow_map.depth_texture, p->filter.mode)) {
+            lab = 3;
+            sl_renderer_note_stop(r, 4);
+        }
     } else if (p->lab >= 4 && !(info->shadow_map_ready && info->lab2_ready)) {
         /* asked anyway, on no texture, to learn whether it is still a stub (see _sl_depth_pass) */
         glBindTexture(GL_TEXTURE_2D, 0);
@@ -729,6 +770,8 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->shadow_map_ready = false;
     info->second_map_ready = false;
     info->lab_in_use = 0;
+    info->lab_asked = params->lab;
+    info->stop_count = 0;
     info->cube_frame = info->cube_matrices_ready = info->cube_map_ready = info->cube_layered = false;
     r->programs->frame++;
     _sl_timer_mark(r, NULL);
@@ -745,6 +788,7 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
         glUseProgram(0);
         return;
     }
+    if (params->lab == 7) sl_renderer_note_off(r, 7, SL_STOP_NO_POINT_LIGHT); /* labs 1-4 draw instead */
     _sl_light_matrices(r, scene, params);
     sl_renderer_reset_state(0, width, height);
     int depth_lab = _sl_depth_pass(r, scene, params);

@@ -30,6 +30,26 @@
 
 #define SL_MAX_NOT_IMPLEMENTED 16
 
+/* Why a frame drew less than its lab asks for: each step of the asked
+ * technique that did not run, noted where the renderer stepped down, so
+ * the viewer can say what is really drawing ("lab 5 VSM is off: lab 3's
+ * depth_pass_state is not implemented; drawing lab 2's hard shadows"). */
+typedef enum sl_stop_reason {
+    SL_STOP_NOT_IMPLEMENTED, /* `function` returned SL_NOT_IMPLEMENTED */
+    SL_STOP_FAILED,          /* `function` returned SL_FAILED */
+    SL_STOP_SHADERS,         /* lab `lab`'s shaders do not compile */
+    SL_STOP_SWITCHED_OFF,    /* a setting switched the technique off (lab 5's vsm_off) */
+    SL_STOP_NO_POINT_LIGHT,  /* lab 7 casts from a point light only: the scene has none */
+} sl_stop_reason;
+
+typedef struct sl_frame_stop {
+    int lab;              /* the lab whose step stopped */
+    const char *function; /* its function (not implemented, failed), else NULL */
+    sl_stop_reason reason;
+} sl_frame_stop;
+
+#define SL_MAX_FRAME_STOPS 4
+
 /* What the labs did in the last frame. */
 typedef struct sl_frame_info {
     const char *not_implemented[SL_MAX_NOT_IMPLEMENTED]; /* names of stubs that returned SL_NOT_IMPLEMENTED */
@@ -41,6 +61,9 @@ typedef struct sl_frame_info {
     bool second_map_ready;       /* lab 3's extension: the second surface's map too */
     bool lab2_ready;             /* lab 2's matrices are in use */
     int lab_in_use;              /* the highest lab whose code this frame used (0: no shadows) */
+    int lab_asked;               /* the lab the frame was drawn for (params.lab) */
+    sl_frame_stop stops[SL_MAX_FRAME_STOPS]; /* why lab_asked's technique did not draw, in the order met */
+    int stop_count;
     mat4 light_view, light_projection, shadow_matrix; /* the matrices used */
     sl_shadow_map shadow_map;    /* lab 1's map, for inspection */
     bool moments_ready;          /* lab 5: moments drawn, blurred and filtered this frame */
@@ -166,6 +189,13 @@ bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
 void sl_renderer_lab_enter(const char *function);
 bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status status);
 void sl_renderer_timer_mark(sl_renderer *r, const char *finished_pass);
+/* Where a pass module steps down: lab `lab`'s step stopped this frame. The
+ * reason is what the frame recorded: the lab's first function that was not
+ * implemented or failed, else its shaders' error. False (nothing noted)
+ * when the frame recorded nothing of that lab. */
+bool sl_renderer_note_stop(sl_renderer *r, int lab);
+/* A technique switched off by a setting or the scene, not by lab code. */
+void sl_renderer_note_off(sl_renderer *r, int lab, sl_stop_reason reason);
 /* Draws every object of the scene with the bound program (u_model, and with
  * colours also u_normal_matrix and u_albedo, at these locations; -1: not set). */
 void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model, GLint normal_matrix, GLint albedo);

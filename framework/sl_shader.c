@@ -9,6 +9,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "sl_text.h"
+
 #define _SL_INCLUDE_DEPTH_MAX 16
 /* Every file's lines are numbered from (its source number * this): some
  * drivers report a wrong source number for some errors (Mesa, for
@@ -49,7 +51,8 @@ static void _sl_appendf(_sl_strbuf *b, const char *fmt, ...) {
     if (n > 0) _sl_append(b, tmp, (size_t)n < sizeof tmp ? (size_t)n : sizeof tmp - 1);
 }
 
-static char *_sl_read_file(const char *path) {
+/* The file's bytes, NUL-terminated, and their count (a file may hold NULs). */
+static char *_sl_read_file(const char *path, size_t *length) {
     FILE *f = fopen(path, "rb");
     if (!f) return NULL;
     _sl_strbuf b = {0};
@@ -62,6 +65,7 @@ static char *_sl_read_file(const char *path) {
         free(b.data);
         return NULL;
     }
+    *length = b.len;
     return b.data;
 }
 
@@ -159,11 +163,23 @@ static bool _sl_expand(_sl_pp *pp, _sl_strbuf *out, const char *path, int depth)
         snprintf(pp->err, pp->err_size, "%s: too many included files (at most %d)", path, SL_SHADER_MAX_FILES);
         return false;
     }
-    char *text = given ? strdup(pp->main_text) : _sl_read_file(path);
+    size_t length = 0;
+    char *text = given ? strdup(pp->main_text) : _sl_read_file(path, &length);
     if (!text) {
         snprintf(pp->err, pp->err_size, "%s: cannot read shader file", path);
         return false;
     }
+    if (given) length = strlen(text);
+    /* Bytes that are not text are named with their offset (the compiler would
+     * only say "syntax error"); a BOM and CRLF or CR line ends (Windows and old
+     * Mac editors) are made plain. */
+    sl_text_problems problems;
+    if (!sl_text_check(text, length, &problems)) {
+        sl_text_problems_describe(&problems, path, pp->err, pp->err_size);
+        free(text);
+        return false;
+    }
+    text[sl_text_normalize(text, length, NULL)] = '\0';
     int line_no = 1;
     bool need_marker = id != 0; /* the main file starts at line 1 by itself */
     const char *line = text;

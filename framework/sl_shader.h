@@ -4,6 +4,9 @@
  *   the search folders given in the desc; each file is included once per stage.
  * - Compile and link errors name the original file and line:
  *     labs/lab2_projective/shaders/shadow_lookup.glsl:14:5: error: ...
+ * - Each file is read as editors write it (sl_text.h): a UTF-8 byte-order mark
+ *   is dropped and CRLF or CR line ends become LF; a NUL byte, bytes that are
+ *   not UTF-8 or a UTF-16 file fail with the file and the byte's offset.
  * - sl_program_reload_if_changed() rebuilds when any source file changed on disk,
  *   keeping the old program when the new one fails (the viewer's hot reload). */
 #ifndef SL_SHADER_H

@@ -12,6 +12,8 @@
 #include "sl_context.h"
 #include "sl_log.h"
 #include "sl_overlay.h"
+#include "sl_lab6_cascades.h"
+#include "sl_lab7_cube.h"
 #include "sl_renderer.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -45,12 +47,15 @@ typedef struct _sl_viewer {
     sl_image first_frame;
     unsigned char *changed;
     const char *keys;      /* --keys: keys pressed before the first frame */
+    char status[512];      /* what is drawing instead of the asked lab, as last said ("" when it draws) */
+    bool lecture;          /* --lecture: large text, a high-contrast overlay, thick lines, the labels */
+    bool labels;           /* --labels: the cascade legend, cube-face labels, the light's marker */
     int text_scale;        /* --text-scale: the overlay's font size; 0: from the frame's size */
     int screenshot_count;
     double pass_ms[SL_MAX_PASSES], frame_ms; /* smoothed, for reading */
     const char *pass_names[SL_MAX_PASSES];
     int pass_count;
-    /* Student vs solutions (A key): the second renderer draws with the second lab code. */
+    /* Student vs solutions (U key): the second renderer draws with the second lab code. */
     sl_renderer second;
     bool second_ready, show_second;
 } _sl_viewer;
@@ -78,6 +83,8 @@ static const char *_sl_backend_choices(void) {
     bool osmesa = sl_backend_available(SL_BACKEND_OSMESA), egl = sl_backend_available(SL_BACKEND_EGL);
     return osmesa && egl ? "osmesa or egl" : (osmesa ? "osmesa" : "egl");
 }
+
+static void _sl_print_keys(FILE *f);
 
 static void _sl_usage(FILE *f) {
     fprintf(f,
@@ -139,28 +146,23 @@ static void _sl_usage(FILE *f) {
             "                      frame's size: 1, 2 from 800x480 up, 3 from 1600x1000 up\n"
             "  --frame-dir DIR     save every frame as DIR/001.png, 002.png ... (with --frames: an animation)\n"
             "  --keys KEYS         press these keys before the first frame, e.g. --keys 'OG' (overlay,\n"
-            "                      frustum) or --keys 'BB]' (letters, digits, [ ] - =; not Esc)\n"
+            "                      frustum) or --keys 'BB]' (letters, digits, [ ] - = , .; not Esc)\n"
             "  --frustum           draw the light's frustum in the scene\n"
             "  --animate           turn the light around the scene (with --frames: a fixed step per frame)\n"
-            "  --solutions         start with the solutions' code (builds that have solutions/: key A)\n"
+            "  --solutions         start with the solutions' code (builds that have solutions/: key U)\n"
+            "  --lecture           for a lecture hall: large text, a high-contrast overlay, thick lines, and\n"
+            "                      the labels of --labels\n"
+            "  --labels            label what is drawn, with or without the overlay: a legend for the\n"
+            "                      cascade colours (lab 6), the cube faces in the cross (lab 7), a marker at\n"
+            "                      a spot or point light\n"
+            "  --list-keys         print every key as LAB<tab>KEYS<tab>WHAT (LAB: all, 5-7, or case) and exit\n"
             "  --case NAME         render what the grader renders for case NAME (grader/cases/NAME.json),\n"
             "                      beside the reference and their difference (red: a shadow missing,\n"
-            "                      blue: one too many); Tab, Space and D switch the view, C the check\n"
-            "                      (labs 5-7: moments, cascade index, cube faces)\n"
-            "  --check NAME        with --case: the check to show first (as the case file names it)\n"
-            "lab 7 keys: 7 lab 7, M the six faces as a cross, S soft/hard, L six passes/layered/auto,\n"
-            "      [ ] cube bias, arrows move the point light (x, z), PgUp PgDn (y)\n"
-            "keys: 1-7 lab, V visibility, M shadow map, C compare mode (labs 2-3), [ ] bias,\n"
-            "      B bias mode (lab 3), F filter (lab 4), - = kernel size or light size (lab 4),\n"
-            "      lab 5: R T blur radius, K L bleeding reduction, N J min variance, P VSM / lab 4 filter,\n"
-            "      arrows move the light, mouse drag orbit, wheel zoom, Esc quit;\n"
-            "      lab 6: 6 lab 6, K cascade colours, N cascade count, , . lambda, J blend band, Z freeze the\n"
-            "      frustum (view from above), T texel snapping, P camera path (slide, turn, off),\n"
-            "      W A S D Q E fly (Shift: faster), M the cascades' layers;\n"
-            "      O overlay on/off, G light frustum, H light animation, X screenshot (shadowlab-NNN.png),\n"
-            "      U student / solutions code (where the build has both);\n"
-            "      shaders reload when their files change\n",
+            "                      blue: one too many), each labelled, with the check's criterion; depth\n"
+            "                      and distance images stretched to their own range (printed)\n"
+            "  --check NAME        with --case: the check to show first (as the case file names it)\n",
             (double)_SL_PATH_SLIDE_METRES, (double)_SL_PATH_TURN_DEGREES, _SL_PATH_SECONDS, sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
+    _sl_print_keys(f);
     sl_bench_usage(f);
 }
 
@@ -168,7 +170,7 @@ static void _sl_update_title(_sl_viewer *v) {
     GLFWwindow *w = sl_context_window(v->ctx);
     if (!w) return;
     const sl_frame_info *info = sl_renderer_info(v->show_second ? &v->second : &v->renderer);
-    char title[512], settings[160];
+    char title[512], settings[512];
     const sl_render_params *p = &v->params;
     if (p->lab == 7 && v->scene.light.type == SL_LIGHT_POINT)
         snprintf(settings, sizeof settings, "cube map %d, bias %.4f, %s, %s", p->cube.map_size, p->cube.bias,
@@ -196,6 +198,7 @@ static void _sl_update_title(_sl_viewer *v) {
         snprintf(settings, sizeof settings, "%d cascades, lambda %.2f%s%s%s", p->cascades.count, p->cascades.lambda,
                  p->cascades.blend_band > 0 ? ", blend band" : "", p->cascades.show_cascades ? ", coloured" : "",
                  v->frozen ? ", frustum frozen (Z)" : "");
+    if (v->status[0]) snprintf(settings, sizeof settings, "%s", v->status); /* the asked lab's settings do not draw */
     int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s%s%s", p->lab, v->scene.name, settings,
                      p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "", v->show_second ? " — " : "",
                      v->show_second ? _sl_second_kind : "");
@@ -273,101 +276,129 @@ static void _sl_fly(_sl_viewer *v, GLFWwindow *w, double now) {
     glm_vec3_add(cam->target, move, cam->target);
 }
 
-/* Keys of one lab, tried before the common ones: the labs' own settings may
- * share letters. True if the key was taken. */
-static bool _sl_lab_key(_sl_viewer *v, int key) {
-    if (v->params.lab == 5) { /* P swaps VSM and lab 4's filter on the same scene; R/T blur, K/L bleeding, N/J min variance */
-        switch (key) {
-        case GLFW_KEY_P: v->params.vsm_off = !v->params.vsm_off; return true;
-        case GLFW_KEY_R: v->params.vsm.blur_radius = v->params.vsm.blur_radius > 0 ? v->params.vsm.blur_radius - 1 : 0; return true;
-        case GLFW_KEY_T: v->params.vsm.blur_radius = v->params.vsm.blur_radius < 32 ? v->params.vsm.blur_radius + 1 : 32; return true;
-        case GLFW_KEY_K: v->params.vsm.bleeding = glm_clamp(v->params.vsm.bleeding - 0.05f, 0, 0.95f); return true;
-        case GLFW_KEY_L: v->params.vsm.bleeding = glm_clamp(v->params.vsm.bleeding + 0.05f, 0, 0.95f); return true;
-        case GLFW_KEY_N: v->params.vsm.min_variance = glm_clamp(v->params.vsm.min_variance * 0.5f, 1e-7f, 0.01f); return true;
-        case GLFW_KEY_J: v->params.vsm.min_variance = glm_clamp(v->params.vsm.min_variance * 2.0f, 1e-7f, 0.01f); return true;
-        default: return false;
-        }
-    }
-    if (v->params.lab == 6) { /* K colours, N count, , . lambda, Z freeze, J blend band, T snapping, P camera path;
-                                 W A S D Q E fly */
-        switch (key) {
-        case GLFW_KEY_K: v->params.cascades.show_cascades = !v->params.cascades.show_cascades; return true;
-        case GLFW_KEY_N: v->params.cascades.count = v->params.cascades.count % SL_MAX_CASCADES + 1; return true;
-        case GLFW_KEY_COMMA: v->params.cascades.lambda = glm_clamp(v->params.cascades.lambda - 0.1f, 0, 1); return true;
-        case GLFW_KEY_PERIOD: v->params.cascades.lambda = glm_clamp(v->params.cascades.lambda + 0.1f, 0, 1); return true;
-        case GLFW_KEY_Z: _sl_freeze(v, !v->frozen); return true;
-        case GLFW_KEY_J: v->params.cascades.blend_band = v->params.cascades.blend_band > 0 ? 0 : 0.2f; return true;
-        case GLFW_KEY_T: v->params.cascades.unsnapped = !v->params.cascades.unsnapped; return true;
-        case GLFW_KEY_P: v->camera_path = (v->camera_path + 1) % 3; return true;
-        case GLFW_KEY_W: case GLFW_KEY_A: case GLFW_KEY_S: case GLFW_KEY_D: case GLFW_KEY_Q: case GLFW_KEY_E:
-            return true; /* flying: polled every frame (_sl_fly) */
-        default: return false;
-        }
-    }
-    if (v->params.lab == 7) { /* S soft/hard, L six passes/layered/auto, PgUp PgDn move the point light up and down */
-        switch (key) {
-        case GLFW_KEY_S:
-            /* soft or hard, each with the bias it needs unless the bias was changed by hand */
-            v->params.cube.soft = !v->params.cube.soft;
-            if (v->params.cube.soft && v->params.cube.bias == SL_CUBE_HARD_BIAS) v->params.cube.bias = SL_CUBE_SOFT_BIAS;
-            else if (!v->params.cube.soft && v->params.cube.bias == SL_CUBE_SOFT_BIAS) v->params.cube.bias = SL_CUBE_HARD_BIAS;
-            return true;
-        case GLFW_KEY_L: v->params.cube.pass = (sl_cube_pass)((v->params.cube.pass + 1) % SL_CUBE_PASS_COUNT); return true;
-        case GLFW_KEY_PAGE_UP:
-        case GLFW_KEY_PAGE_DOWN:
-            if (v->scene.light.type == SL_LIGHT_POINT) v->scene.light.position[1] += key == GLFW_KEY_PAGE_UP ? 0.2f : -0.2f;
-            return true;
-        default: return false;
-        }
-    }
-    return false;
-}
-/* The viewer --keys presses keys for, with no window (w NULL) or before the first frame. */
-static _sl_viewer *_sl_keys_viewer;
+/* ---- Keys ---------------------------------------------------------------
+ * Every key the viewer handles, in one table: what it does (--help,
+ * --list-keys), its short label and the setting it changes now (the
+ * overlay's key panel). A lab's own keys are tried before the common ones,
+ * so a letter can mean one thing in lab 5 and another in lab 6. */
+typedef enum _sl_action {
+    _SL_KEY_LAB, _SL_KEY_VISIBILITY, _SL_KEY_MAP, _SL_KEY_COMPARE, _SL_KEY_BIAS, _SL_KEY_BIAS_MODE, _SL_KEY_FILTER,
+    _SL_KEY_KERNEL, _SL_KEY_LIGHT, _SL_KEY_OVERLAY, _SL_KEY_FRUSTUM, _SL_KEY_ANIMATE, _SL_KEY_SCREENSHOT,
+    _SL_KEY_CODE, _SL_KEY_QUIT,
+    /* lab 5 */
+    _SL_KEY_VSM, _SL_KEY_BLUR, _SL_KEY_BLEEDING, _SL_KEY_MIN_VARIANCE,
+    /* lab 6 */
+    _SL_KEY_CASCADE_COLOURS, _SL_KEY_CASCADE_COUNT, _SL_KEY_LAMBDA, _SL_KEY_BLEND_BAND, _SL_KEY_FREEZE,
+    _SL_KEY_SNAPPING, _SL_KEY_CAMERA_PATH, _SL_KEY_FLY,
+    /* lab 7 */
+    _SL_KEY_SOFT, _SL_KEY_CUBE_PASS, _SL_KEY_CUBE_BIAS, _SL_KEY_LIGHT_HEIGHT,
+} _sl_action;
 
-static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
-    (void)scancode;
-    (void)mods;
-    if (action == GLFW_RELEASE) return;
-    _sl_viewer *v = w ? glfwGetWindowUserPointer(w) : _sl_keys_viewer;
-    if (_sl_lab_key(v, key)) {
-        v->dirty_title = true;
-        return;
-    }
-    switch (key) {
-    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
-    case GLFW_KEY_1: v->params.lab = 1; break;
-    case GLFW_KEY_2: v->params.lab = 2; break;
-    case GLFW_KEY_3: v->params.lab = 3; break;
-    case GLFW_KEY_4: v->params.lab = 4; break;
-    case GLFW_KEY_5: v->params.lab = 5; break;
-    case GLFW_KEY_6: v->params.lab = 6; break;
-    case GLFW_KEY_7: v->params.lab = 7; break;
-    case GLFW_KEY_B: v->params.bias.mode = (sl_bias_mode)((v->params.bias.mode + 1) % SL_BIAS_MODE_COUNT); break;
-    case GLFW_KEY_F: v->params.filter.mode = (sl_filter_mode)((v->params.filter.mode + 1) % SL_FILTER_MODE_COUNT); break;
-    case GLFW_KEY_EQUAL:
-    case GLFW_KEY_MINUS: {
-        int step = key == GLFW_KEY_EQUAL ? 1 : -1;
-        sl_filter_settings *f = &v->params.filter;
-        if (f->mode == SL_FILTER_GRID) f->grid_radius = f->grid_radius + step < 0 ? 0 : f->grid_radius + step;
-        else if (f->mode == SL_FILTER_POISSON) f->poisson_radius = glm_clamp(f->poisson_radius * (step > 0 ? 1.25f : 0.8f), 0.5f, 64);
-        else if (f->mode == SL_FILTER_PCSS) v->scene.light.size = glm_clamp(v->scene.light.size * (step > 0 ? 1.25f : 0.8f), 0.01f, 10);
-        break;
-    }
-    case GLFW_KEY_V: v->params.output = v->params.output == SL_OUTPUT_SHADED ? SL_OUTPUT_VISIBILITY : SL_OUTPUT_SHADED; break;
-    case GLFW_KEY_M: v->params.show_shadow_map = !v->params.show_shadow_map; break;
-    case GLFW_KEY_C: v->params.compare = v->params.compare == SL_COMPARE_MANUAL ? SL_COMPARE_HARDWARE : SL_COMPARE_MANUAL; break;
-    case GLFW_KEY_LEFT_BRACKET:
-    case GLFW_KEY_RIGHT_BRACKET: {
-        bool up = key == GLFW_KEY_RIGHT_BRACKET;
-        float *bias = v->params.lab == 7 ? &v->params.cube.bias : &v->params.bias.constant;
+#define _SL_MAX_BOUND 7
+typedef struct _sl_key_binding {
+    int lab;                  /* 0: every lab; N: lab N's own, tried first */
+    unsigned panel_labs;      /* a common key listed with these labs' own keys in the panel (bit N: lab N);
+                                 0: on the panel's line of general keys */
+    int keys[_SL_MAX_BOUND];  /* GLFW key codes (letters, digits and [ ] - = , . are their ASCII codes); 0 ends */
+    const char *names;        /* the keys as written: "R T", "PgUp PgDn" */
+    const char *label;        /* a word or two, for the panel */
+    const char *help;         /* a line, for --help */
+    _sl_action action;
+} _sl_key_binding;
+
+#define _SL_LABS(first, last) (((1u << ((last) + 1)) - 1) & ~((1u << (first)) - 1))
+
+static const _sl_key_binding _sl_key_table[] = {
+    {5, 0, {GLFW_KEY_P}, "P", "VSM", "VSM or lab 4's filter on the same scene", _SL_KEY_VSM},
+    {5, 0, {GLFW_KEY_R, GLFW_KEY_T}, "R T", "blur radius", "blur radius of the moments down, up", _SL_KEY_BLUR},
+    {5, 0, {GLFW_KEY_K, GLFW_KEY_L}, "K L", "bleeding reduction", "light-bleeding reduction down, up", _SL_KEY_BLEEDING},
+    {5, 0, {GLFW_KEY_N, GLFW_KEY_J}, "N J", "min variance", "minimum variance halve, double", _SL_KEY_MIN_VARIANCE},
+    {6, 0, {GLFW_KEY_K}, "K", "cascade colours", "tint each pixel by its cascade (a legend names them)",
+     _SL_KEY_CASCADE_COLOURS},
+    {6, 0, {GLFW_KEY_N}, "N", "cascades", "cascade count, 1 to 4", _SL_KEY_CASCADE_COUNT},
+    {6, 0, {GLFW_KEY_COMMA, GLFW_KEY_PERIOD}, ", .", "lambda", "the split scheme's lambda down, up (0 uniform .. 1 "
+     "logarithmic)", _SL_KEY_LAMBDA},
+    {6, 0, {GLFW_KEY_J}, "J", "blend band", "blend band between cascades (bonus)", _SL_KEY_BLEND_BAND},
+    {6, 0, {GLFW_KEY_Z}, "Z", "frozen frustum", "freeze the camera's frustum, seen from above with its slices and "
+     "light boxes", _SL_KEY_FREEZE},
+    {6, 0, {GLFW_KEY_T}, "T", "texel snapping", "texel snapping on, off (off: the shimmer it removes)", _SL_KEY_SNAPPING},
+    {6, 0, {GLFW_KEY_P}, "P", "camera path", "the camera moves by itself: slide, turn, off", _SL_KEY_CAMERA_PATH},
+    {6, 0, {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E}, "W A S D Q E", "fly",
+     "fly: forward, left, back, right, down, up (Shift: faster)", _SL_KEY_FLY},
+    {7, 0, {GLFW_KEY_S}, "S", "lookup", "soft (20 directions) or hard lookup", _SL_KEY_SOFT},
+    {7, 0, {GLFW_KEY_L}, "L", "faces", "faces drawn in: auto, six passes, one layered pass", _SL_KEY_CUBE_PASS},
+    {7, 0, {GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET}, "[ ]", "cube bias", "the cube lookup's bias halve, double",
+     _SL_KEY_CUBE_BIAS},
+    {7, 0, {GLFW_KEY_PAGE_UP, GLFW_KEY_PAGE_DOWN}, "PgUp PgDn", "light height", "the point light up, down",
+     _SL_KEY_LIGHT_HEIGHT},
+    {0, 0, {GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3, GLFW_KEY_4, GLFW_KEY_5, GLFW_KEY_6, GLFW_KEY_7}, "1-7", "lab",
+     "the lab in use", _SL_KEY_LAB},
+    {0, 0, {GLFW_KEY_V}, "V", "view", "the visibility term (what the grader compares) or the shaded picture",
+     _SL_KEY_VISIBILITY},
+    {0, 0, {GLFW_KEY_M}, "M", "map", "the shadow map in a corner (5: the moments, 6: the layers, 7: the faces)",
+     _SL_KEY_MAP},
+    {0, _SL_LABS(2, 3), {GLFW_KEY_C}, "C", "compare", "compare by hand (sampler2D) or in hardware (sampler2DShadow)",
+     _SL_KEY_COMPARE},
+    {0, _SL_LABS(2, 4), {GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET}, "[ ]", "bias", "the constant depth bias "
+     "halve, double", _SL_KEY_BIAS},
+    {0, _SL_LABS(3, 4), {GLFW_KEY_B}, "B", "bias mode", "bias mode: none, constant, slope, polygon offset, "
+     "culling, normal offset, midpoint", _SL_KEY_BIAS_MODE},
+    {0, _SL_LABS(4, 5), {GLFW_KEY_F}, "F", "filter", "filter: none, hardware 2x2, grid, Poisson, PCSS (lab 5: with "
+     "VSM off)", _SL_KEY_FILTER},
+    {0, _SL_LABS(4, 5), {GLFW_KEY_MINUS, GLFW_KEY_EQUAL}, "- =", "kernel", "the filter's kernel radius, Poisson "
+     "radius or PCSS light size down, up", _SL_KEY_KERNEL},
+    {0, 0, {GLFW_KEY_LEFT, GLFW_KEY_RIGHT, GLFW_KEY_UP, GLFW_KEY_DOWN}, "arrows", "light",
+     "move the light (a point light: along x and z)", _SL_KEY_LIGHT},
+    {0, 0, {GLFW_KEY_O}, "O", "overlay", "the overlay (this text) on, off", _SL_KEY_OVERLAY},
+    {0, 0, {GLFW_KEY_G}, "G", "frustum", "the light's frustum and a marker at the light", _SL_KEY_FRUSTUM},
+    {0, 0, {GLFW_KEY_H}, "H", "turn light", "the light turns about the scene", _SL_KEY_ANIMATE},
+    {0, 0, {GLFW_KEY_X}, "X", "screenshot", "screenshot of the window, overlay included (shadowlab-NNN.png)",
+     _SL_KEY_SCREENSHOT},
+    {0, 0, {GLFW_KEY_U}, "U", "code", "student or solutions code (builds that carry both)", _SL_KEY_CODE},
+    {0, 0, {GLFW_KEY_ESCAPE}, "Esc", "quit", "quit", _SL_KEY_QUIT},
+};
+#define _SL_KEY_COUNT (int)(sizeof _sl_key_table / sizeof _sl_key_table[0])
+
+/* The binding of `key` in lab `lab`: the lab's own first, then the common ones. */
+static const _sl_key_binding *_sl_binding(int lab, int key) {
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < _SL_KEY_COUNT; i++) {
+            const _sl_key_binding *b = &_sl_key_table[i];
+            if (b->lab != (pass == 0 ? lab : 0)) continue;
+            for (int k = 0; k < _SL_MAX_BOUND && b->keys[k]; k++)
+                if (b->keys[k] == key) return b;
+        }
+    return NULL;
+}
+
+static const char *_sl_on(bool on) { return on ? "on" : "off"; }
+
+/* What `key` of binding `b` does. */
+static void _sl_act(_sl_viewer *v, GLFWwindow *w, const _sl_key_binding *b, int key) {
+    sl_render_params *p = &v->params;
+    bool up = key == b->keys[1]; /* of a pair, the second key raises */
+    switch (b->action) {
+    case _SL_KEY_LAB: p->lab = key - GLFW_KEY_0; break;
+    case _SL_KEY_VISIBILITY: p->output = p->output == SL_OUTPUT_SHADED ? SL_OUTPUT_VISIBILITY : SL_OUTPUT_SHADED; break;
+    case _SL_KEY_MAP: p->show_shadow_map = !p->show_shadow_map; break;
+    case _SL_KEY_COMPARE: p->compare = p->compare == SL_COMPARE_MANUAL ? SL_COMPARE_HARDWARE : SL_COMPARE_MANUAL; break;
+    case _SL_KEY_BIAS:
+    case _SL_KEY_CUBE_BIAS: {
+        float *bias = b->action == _SL_KEY_CUBE_BIAS ? &p->cube.bias : &p->bias.constant;
         *bias = up ? (*bias > 0 ? *bias * 2 : 0.0005f) : *bias * 0.5f;
         break;
     }
-    case GLFW_KEY_LEFT:
-    case GLFW_KEY_RIGHT:
-    case GLFW_KEY_UP:
-    case GLFW_KEY_DOWN:
+    case _SL_KEY_BIAS_MODE: p->bias.mode = (sl_bias_mode)((p->bias.mode + 1) % SL_BIAS_MODE_COUNT); break;
+    case _SL_KEY_FILTER: p->filter.mode = (sl_filter_mode)((p->filter.mode + 1) % SL_FILTER_MODE_COUNT); break;
+    case _SL_KEY_KERNEL: {
+        int step = up ? 1 : -1;
+        sl_filter_settings *f = &p->filter;
+        if (f->mode == SL_FILTER_GRID) f->grid_radius = f->grid_radius + step < 0 ? 0 : f->grid_radius + step;
+        else if (f->mode == SL_FILTER_POISSON) f->poisson_radius = glm_clamp(f->poisson_radius * (up ? 1.25f : 0.8f), 0.5f, 64);
+        else if (f->mode == SL_FILTER_PCSS) v->scene.light.size = glm_clamp(v->scene.light.size * (up ? 1.25f : 0.8f), 0.01f, 10);
+        break;
+    }
+    case _SL_KEY_LIGHT:
         if (v->scene.light.type == SL_LIGHT_POINT) {
             /* a point light moves in the room (x, z); PgUp/PgDn move it up and down */
             v->scene.light.position[0] += key == GLFW_KEY_LEFT ? -0.2f : key == GLFW_KEY_RIGHT ? 0.2f : 0;
@@ -377,18 +408,135 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
                            key == GLFW_KEY_UP ? 0.05f : key == GLFW_KEY_DOWN ? -0.05f : 0);
         }
         break;
-    case GLFW_KEY_O: v->show_overlay = !v->show_overlay; break;
-    /* lecture keys: letters no lab uses for its own settings */
-    case GLFW_KEY_G: v->show_frustum = !v->show_frustum; break;
-    case GLFW_KEY_H: v->animate_light = !v->animate_light; break;
-    case GLFW_KEY_X: v->screenshot_requested = true; break;
-    case GLFW_KEY_U:
+    case _SL_KEY_OVERLAY: v->show_overlay = !v->show_overlay; break;
+    case _SL_KEY_FRUSTUM: v->show_frustum = !v->show_frustum; break;
+    case _SL_KEY_ANIMATE: v->animate_light = !v->animate_light; break;
+    case _SL_KEY_SCREENSHOT: v->screenshot_requested = true; break;
+    case _SL_KEY_CODE:
         if (!_sl_second_functions) printf("shadowlab: this build has no second lab code to switch to (U)\n");
         else v->show_second = !v->show_second;
         break;
-    default: return;
+    case _SL_KEY_QUIT:
+        if (w) glfwSetWindowShouldClose(w, GLFW_TRUE);
+        break;
+    /* lab 5 */
+    case _SL_KEY_VSM: p->vsm_off = !p->vsm_off; break;
+    case _SL_KEY_BLUR: p->vsm.blur_radius = up ? (p->vsm.blur_radius < 32 ? p->vsm.blur_radius + 1 : 32)
+                                               : (p->vsm.blur_radius > 0 ? p->vsm.blur_radius - 1 : 0); break;
+    case _SL_KEY_BLEEDING: p->vsm.bleeding = glm_clamp(p->vsm.bleeding + (up ? 0.05f : -0.05f), 0, 0.95f); break;
+    case _SL_KEY_MIN_VARIANCE: p->vsm.min_variance = glm_clamp(p->vsm.min_variance * (up ? 2.0f : 0.5f), 1e-7f, 0.01f); break;
+    /* lab 6 */
+    case _SL_KEY_CASCADE_COLOURS: p->cascades.show_cascades = !p->cascades.show_cascades; break;
+    case _SL_KEY_CASCADE_COUNT: p->cascades.count = p->cascades.count % SL_MAX_CASCADES + 1; break;
+    case _SL_KEY_LAMBDA: p->cascades.lambda = glm_clamp(p->cascades.lambda + (up ? 0.1f : -0.1f), 0, 1); break;
+    case _SL_KEY_BLEND_BAND: p->cascades.blend_band = p->cascades.blend_band > 0 ? 0 : 0.2f; break;
+    case _SL_KEY_FREEZE: _sl_freeze(v, !v->frozen); break;
+    case _SL_KEY_SNAPPING: p->cascades.unsnapped = !p->cascades.unsnapped; break;
+    case _SL_KEY_CAMERA_PATH: v->camera_path = (v->camera_path + 1) % 3; break;
+    case _SL_KEY_FLY: break; /* polled every frame (_sl_fly) */
+    /* lab 7 */
+    case _SL_KEY_SOFT:
+        /* soft or hard, each with the bias it needs unless the bias was changed by hand */
+        p->cube.soft = !p->cube.soft;
+        if (p->cube.soft && p->cube.bias == SL_CUBE_HARD_BIAS) p->cube.bias = SL_CUBE_SOFT_BIAS;
+        else if (!p->cube.soft && p->cube.bias == SL_CUBE_SOFT_BIAS) p->cube.bias = SL_CUBE_HARD_BIAS;
+        break;
+    case _SL_KEY_CUBE_PASS: p->cube.pass = (sl_cube_pass)((p->cube.pass + 1) % SL_CUBE_PASS_COUNT); break;
+    case _SL_KEY_LIGHT_HEIGHT:
+        if (v->scene.light.type == SL_LIGHT_POINT) v->scene.light.position[1] += key == GLFW_KEY_PAGE_UP ? 0.2f : -0.2f;
+        break;
     }
+}
+
+/* The setting binding `b` changes, as it is now ("" when it has none to show). */
+static void _sl_key_state(const _sl_viewer *v, const sl_frame_info *info, const _sl_key_binding *b, char *out,
+                          size_t n) {
+    const sl_render_params *p = &v->params;
+    out[0] = '\0';
+    switch (b->action) {
+    case _SL_KEY_VISIBILITY: snprintf(out, n, "%s", p->output == SL_OUTPUT_VISIBILITY ? "visibility" : "shaded"); break;
+    case _SL_KEY_MAP: snprintf(out, n, "%s", _sl_on(p->show_shadow_map)); break;
+    case _SL_KEY_COMPARE: snprintf(out, n, "%s", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual"); break;
+    case _SL_KEY_BIAS: snprintf(out, n, "%.5f", p->bias.constant); break;
+    case _SL_KEY_CUBE_BIAS: snprintf(out, n, "%.4f", p->cube.bias); break;
+    case _SL_KEY_BIAS_MODE: snprintf(out, n, "%s", sl_bias_mode_name(p->bias.mode)); break;
+    case _SL_KEY_FILTER: snprintf(out, n, "%s", sl_filter_mode_name(p->filter.mode)); break;
+    case _SL_KEY_KERNEL:
+        if (p->filter.mode == SL_FILTER_GRID)
+            snprintf(out, n, "%dx%d", 2 * p->filter.grid_radius + 1, 2 * p->filter.grid_radius + 1);
+        else if (p->filter.mode == SL_FILTER_POISSON) snprintf(out, n, "radius %.1f", p->filter.poisson_radius);
+        else if (p->filter.mode == SL_FILTER_PCSS) snprintf(out, n, "light %.2f", v->scene.light.size);
+        else snprintf(out, n, "-");
+        break;
+    case _SL_KEY_FRUSTUM: snprintf(out, n, "%s", _sl_on(v->show_frustum)); break;
+    case _SL_KEY_ANIMATE: snprintf(out, n, "%s", _sl_on(v->animate_light)); break;
+    case _SL_KEY_CODE: snprintf(out, n, "%s", v->show_second ? _sl_second_kind : sl_build_labs_kind); break;
+    case _SL_KEY_VSM: snprintf(out, n, "%s", p->vsm_off ? "off, lab 4's filter" : "on"); break;
+    case _SL_KEY_BLUR: snprintf(out, n, "%d", p->vsm.blur_radius); break;
+    case _SL_KEY_BLEEDING: snprintf(out, n, "%.2f", p->vsm.bleeding); break;
+    case _SL_KEY_MIN_VARIANCE: snprintf(out, n, "%.1e", p->vsm.min_variance); break;
+    case _SL_KEY_CASCADE_COLOURS: snprintf(out, n, "%s", _sl_on(p->cascades.show_cascades)); break;
+    case _SL_KEY_CASCADE_COUNT: snprintf(out, n, "%d", p->cascades.count); break;
+    case _SL_KEY_LAMBDA: snprintf(out, n, "%.2f", p->cascades.lambda); break;
+    case _SL_KEY_BLEND_BAND: snprintf(out, n, "%s", _sl_on(p->cascades.blend_band > 0)); break;
+    case _SL_KEY_FREEZE: snprintf(out, n, "%s", _sl_on(v->frozen)); break;
+    case _SL_KEY_SNAPPING: snprintf(out, n, "%s", _sl_on(!p->cascades.unsnapped)); break;
+    case _SL_KEY_CAMERA_PATH: snprintf(out, n, "%s", v->camera_path ? _sl_path_names[v->camera_path] : "off"); break;
+    case _SL_KEY_SOFT: snprintf(out, n, "%s", p->cube.soft ? "soft" : "hard"); break;
+    case _SL_KEY_CUBE_PASS:
+        /* auto says which it took */
+        snprintf(out, n, "%s%s", sl_cube_pass_name(p->cube.pass),
+                 p->cube.pass != SL_CUBE_PASS_AUTO || !info || !info->cube_frame ? ""
+                 : info->cube_layered ? " (layered)" : " (six)");
+        break;
+    case _SL_KEY_LIGHT_HEIGHT: snprintf(out, n, "y %.1f", (double)v->scene.light.position[1]); break;
+    default: break;
+    }
+}
+
+/* The viewer --keys presses keys for, with no window (w NULL) or before the first frame. */
+static _sl_viewer *_sl_keys_viewer;
+
+static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
+    (void)scancode;
+    (void)mods;
+    if (action == GLFW_RELEASE) return;
+    _sl_viewer *v = w ? glfwGetWindowUserPointer(w) : _sl_keys_viewer;
+    const _sl_key_binding *b = _sl_binding(v->params.lab, key);
+    if (!b) return;
+    _sl_act(v, w, b, key);
     v->dirty_title = true;
+}
+
+/* --help's keys, from the table: every lab's, then each lab's own, then --case's. */
+static void _sl_print_keys(FILE *f) {
+    fprintf(f, "keys (a lab's own keys come first: a letter can mean one thing in lab 5, another in lab 6):\n");
+    for (int lab = 0; lab <= SL_LAB_COUNT; lab++) {
+        bool any = false;
+        for (int i = 0; i < _SL_KEY_COUNT; i++) {
+            const _sl_key_binding *b = &_sl_key_table[i];
+            if (b->lab != lab) continue;
+            if (!any) {
+                if (lab == 0) fprintf(f, "  every lab:\n");
+                else fprintf(f, "  lab %d (%s):\n", lab, sl_lab_title(lab));
+                any = true;
+            }
+            fprintf(f, "    %-12s %s\n", b->names, b->help);
+        }
+    }
+    fprintf(f, "  mouse: drag orbits the camera, the wheel zooms; shaders reload when their files change\n"
+               "  with --case:\n");
+    for (const sl_case_view_key *k = sl_case_view_keys(); k->names; k++) fprintf(f, "    %-12s %s\n", k->names, k->help);
+}
+
+/* --list-keys: the same, one key binding a line, for scripts (the slides' key test). */
+static void _sl_list_keys(FILE *f) {
+    for (int i = 0; i < _SL_KEY_COUNT; i++) {
+        const _sl_key_binding *b = &_sl_key_table[i];
+        if (b->lab == 0) fprintf(f, "all\t%s\t%s\n", b->names, b->help);
+        else fprintf(f, "%d\t%s\t%s\n", b->lab, b->names, b->help);
+    }
+    for (const sl_case_view_key *k = sl_case_view_keys(); k->names; k++) fprintf(f, "case\t%s\t%s\n", k->names, k->help);
 }
 
 static void _sl_mouse_button(GLFWwindow *w, int button, int action, int mods) {
@@ -448,26 +596,207 @@ static void _sl_update_timing(_sl_viewer *v, sl_renderer *r, double frame_second
                                                          : frame_seconds * 1e3;
 }
 
+/* ---- What is drawing ------------------------------------------------------ */
+
+/* Each lab's technique, as the status line names it ("lab 5 VSM is off"). */
+static const char *const _sl_technique[SL_LAB_COUNT + 1] = {"",        "depth map", "shadow lookup", "bias",
+                                                            "filtering", "VSM",      "cascades",      "cube maps"};
+
+/* What lab `lab`'s code draws with these settings: "lab 2's hard shadows". */
+static void _sl_drawing(const _sl_viewer *v, int lab, char *out, size_t n) {
+    const sl_render_params *p = &v->params;
+    const sl_filter_settings *f = &p->filter;
+    switch (lab) {
+    case 0: snprintf(out, n, "no shadows"); break;
+    case 1: snprintf(out, n, "no shadows (only lab 1's depth map)"); break;
+    case 2: snprintf(out, n, "lab 2's hard shadows"); break;
+    case 3: snprintf(out, n, "lab 3's hard shadows, %s bias", sl_bias_mode_name(p->bias.mode)); break;
+    case 4:
+        if (f->mode == SL_FILTER_GRID)
+            snprintf(out, n, "lab 4's PCF grid %dx%d", 2 * f->grid_radius + 1, 2 * f->grid_radius + 1);
+        else if (f->mode == SL_FILTER_NONE) snprintf(out, n, "lab 4's unfiltered shadows");
+        else snprintf(out, n, "lab 4's %s filter", sl_filter_mode_name(f->mode));
+        break;
+    default: snprintf(out, n, "lab %d's %s", lab, lab <= SL_LAB_COUNT ? _sl_technique[lab] : "?"); break;
+    }
+}
+
+/* One reason the renderer noted: "lab 3's depth_pass_state is not implemented". */
+static void _sl_stop_text(const _sl_viewer *v, const sl_frame_stop *s, char *out, size_t n) {
+    char prefix[16];
+    snprintf(prefix, sizeof prefix, "lab%d_", s->lab);
+    const char *fn = s->function ? s->function : "?";
+    if (strncmp(fn, prefix, strlen(prefix)) == 0) fn += strlen(prefix);
+    switch (s->reason) {
+    case SL_STOP_NOT_IMPLEMENTED: snprintf(out, n, "lab %d's %s is not implemented", s->lab, fn); break;
+    case SL_STOP_FAILED: snprintf(out, n, "lab %d's %s failed", s->lab, fn); break;
+    case SL_STOP_SHADERS: snprintf(out, n, "lab %d's shaders do not compile", s->lab); break;
+    case SL_STOP_SWITCHED_OFF: snprintf(out, n, s->lab == 5 ? "switched off with P" : "switched off"); break;
+    case SL_STOP_NO_POINT_LIGHT: snprintf(out, n, "%s has no point light (closed_room has one)", v->scene.name); break;
+    }
+}
+
+/* Why the asked lab's technique is not what draws, from what the renderer noted this frame, and what
+ * draws instead: "lab 5 VSM is off: lab 3's depth_pass_state is not implemented; drawing lab 2's hard
+ * shadows". Empty when it draws. */
+static void _sl_status(const _sl_viewer *v, const sl_frame_info *info, char *out, size_t n) {
+    out[0] = '\0';
+    if (info->stop_count == 0) return;
+    int lab = info->lab_asked;
+    size_t used = (size_t)snprintf(out, n, "lab %d %s is off: ", lab,
+                                   lab >= 1 && lab <= SL_LAB_COUNT ? _sl_technique[lab] : "?");
+    for (int i = 0; i < info->stop_count && used < n; i++) {
+        char why[160];
+        _sl_stop_text(v, &info->stops[i], why, sizeof why);
+        used += (size_t)snprintf(out + used, n - used, "%s%s", i == 0 ? "" : ", and ", why);
+    }
+    char drawing[96];
+    _sl_drawing(v, info->lab_in_use, drawing, sizeof drawing);
+    if (used < n) snprintf(out + used, n - used, "; drawing %s", drawing);
+}
+
+/* Text in lines of at most `width` characters, broken after "; " or ", " or at spaces. */
+static void _sl_wrapped(sl_overlay *ov, const float *rgb, const char *text, int width) {
+    const char *rest = text;
+    while (*rest) {
+        int len = (int)strlen(rest);
+        if (len <= width) {
+            sl_overlay_line(ov, rgb, "%s", rest);
+            return;
+        }
+        int cut = -1;
+        for (int i = width; i > width / 3 && cut < 0; i--)
+            if (rest[i] == ' ' && (rest[i - 1] == ';' || rest[i - 1] == ',')) cut = i;
+        for (int i = width; i > 0 && cut < 0; i--)
+            if (rest[i] == ' ') cut = i;
+        if (cut < 0) cut = width;
+        sl_overlay_line(ov, rgb, "%.*s", cut, rest);
+        rest += cut;
+        while (*rest == ' ') rest++;
+    }
+}
+
+/* ---- The overlay -------------------------------------------------------- */
+
 static const float _sl_red[3] = {1.0f, 0.45f, 0.4f}, _sl_green[3] = {0.55f, 0.95f, 0.55f},
-                   _sl_blue[3] = {0.55f, 0.75f, 1.0f}, _sl_frustum_rgb[3] = {1.0f, 0.85f, 0.2f};
+                   _sl_blue[3] = {0.55f, 0.75f, 1.0f}, _sl_frustum_rgb[3] = {1.0f, 0.85f, 0.2f},
+                   _sl_orange[3] = {1.0f, 0.7f, 0.3f}, _sl_white[3] = {1, 1, 1};
 
 /* The light's frustum: the clip-space cube taken back to the world by the
  * inverse of the matrices the frame used (lab 2's, or the framework's for lab 1). */
 static void _sl_add_frustum(sl_overlay *ov, const sl_frame_info *info) {
+    if (info->cube_frame) return; /* a point light has no one frustum: its marker shows where it is */
     mat4 vp, inv;
     glm_mat4_mul((vec4 *)info->light_projection, (vec4 *)info->light_view, vp);
     glm_mat4_inv(vp, inv);
     sl_overlay_box(ov, inv, _sl_frustum_rgb);
 }
 
-/* What the overlay says: the lab and technique with its parameters (top
- * left), the pass times (top right), the keys (bottom left). Labs 5-7 add
- * their parameters in the block marked with their number. */
+/* The key panel (bottom left): the lab's own keys and the common keys that
+ * matter in it, one a line with what they set now; then the general keys. */
+static void _sl_key_panel(_sl_viewer *v, const sl_frame_info *info) {
+    sl_overlay *ov = v->overlay;
+    int lab = v->params.lab;
+    char title[32];
+    snprintf(title, sizeof title, "keys, lab %d", lab);
+    sl_overlay_panel(ov, SL_OVERLAY_BOTTOM_LEFT, title);
+    int pad = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < _SL_KEY_COUNT; i++) {
+            const _sl_key_binding *b = &_sl_key_table[i];
+            bool listed = b->lab == lab || (b->lab == 0 && ((b->panel_labs >> lab) & 1u));
+            /* a common key the lab's own keys take over is not this lab's */
+            if (!listed || _sl_binding(lab, b->keys[0]) != b) continue;
+            if (pass == 0) { /* names aligned, but a long one ("W A S D Q E") does not push the others */
+                int len = (int)strlen(b->names);
+                if (len > pad && len <= 5) pad = len;
+                continue;
+            }
+            char state[64];
+            _sl_key_state(v, info, b, state, sizeof state);
+            sl_overlay_line(ov, NULL, "%-*s %s%s%s", pad, b->names, b->label, state[0] ? ": " : "", state);
+        }
+    /* the general keys, as many to a line as fit in 60 characters (40 in a lecture's larger text, so the
+     * panel leaves room beside it for the right-hand ones) */
+    size_t width = v->lecture ? 40 : 60;
+    char line[128] = "";
+    for (int i = 0; i < _SL_KEY_COUNT; i++) {
+        const _sl_key_binding *b = &_sl_key_table[i];
+        if (b->lab != 0 || b->panel_labs != 0 || _sl_binding(lab, b->keys[0]) != b) continue;
+        if (b->action == _SL_KEY_CODE && !_sl_second_functions) continue;
+        char state[64], item[128];
+        _sl_key_state(v, info, b, state, sizeof state);
+        snprintf(item, sizeof item, "%s %s%s%s", b->names, b->label, state[0] ? ": " : "", state);
+        if (line[0] && strlen(line) + 2 + strlen(item) > width) {
+            sl_overlay_line(ov, _sl_blue, "%s", line);
+            line[0] = '\0';
+        }
+        snprintf(line + strlen(line), sizeof line - strlen(line), "%s%s", line[0] ? "  " : "", item);
+    }
+    if (line[0]) sl_overlay_line(ov, _sl_blue, "%s", line);
+}
+
+/* The labels of what is drawn (with the overlay or --labels): the cascade
+ * colours' legend, the cube faces' names in the cross, the light's marker;
+ * the frozen cascades' slices and light boxes as lines the overlay's width. */
+static void _sl_labels(_sl_viewer *v, const sl_frame_info *info, int width, int height, bool labels) {
+    sl_overlay *ov = v->overlay;
+    const sl_render_params *p = &v->params;
+    if (labels && p->lab == 6 && info->cascades_ready && p->cascades.show_cascades) {
+        sl_overlay_panel(ov, SL_OVERLAY_TOP_RIGHT, "cascades (K), view depth");
+        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++)
+            sl_overlay_line(ov, sl_cascade_colours[i], SL_OVERLAY_SWATCH SL_OVERLAY_SWATCH " %d: %.1f - %.1f", i,
+                            (double)info->cascade_splits[i], (double)info->cascade_splits[i + 1]);
+    }
+    if (labels && p->lab == 6 && info->cascades_ready && p->show_shadow_map) {
+        int s = sl_overlay_scale_for(ov, width, height);
+        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++) {
+            int x, y, side;
+            sl_lab6_layer_rect(width, height, info->cascade_count, i, &x, &y, &side);
+            sl_overlay_label(ov, x + s, y + s, sl_cascade_colours[i], "%d", i);
+        }
+    }
+    if (labels && info->cube_frame && info->cube_map_ready && p->show_shadow_map) {
+        static const char *const faces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+        int s = sl_overlay_scale_for(ov, width, height);
+        for (int f = 0; f < 6; f++) {
+            int x, y, side;
+            sl_lab7_cross_face_rect(width, height, f, &x, &y, &side);
+            sl_overlay_label(ov, x + 2 * s, y + 2 * s, _sl_white, "%s", faces[f]);
+        }
+    }
+    if (p->lab == 6 && v->frozen && info->cascades_ready) {
+        /* each slice is the frozen camera's frustum between two splits */
+        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++) {
+            sl_camera slice = p->cascades.camera;
+            slice.near = info->cascade_splits[i];
+            slice.far = info->cascade_splits[i + 1];
+            mat4 view, proj, vp, inv;
+            sl_camera_view(&slice, view);
+            sl_camera_projection(&slice, height > 0 ? (float)width / (float)height : 1, proj);
+            glm_mat4_mul(proj, view, vp);
+            glm_mat4_inv(vp, inv);
+            sl_overlay_box_on_top(ov, inv, sl_cascade_colours[i]);
+            glm_mat4_mul((vec4 *)info->cascade_projection[i], (vec4 *)info->cascade_view[i], vp);
+            glm_mat4_inv(vp, inv);
+            vec3 dim;
+            glm_vec3_scale((float *)sl_cascade_colours[i], 0.55f, dim);
+            sl_overlay_box_on_top(ov, inv, dim);
+        }
+    }
+    const sl_light *l = &v->scene.light;
+    if ((labels || v->show_frustum) && l->type != SL_LIGHT_DIRECTIONAL)
+        sl_overlay_marker(ov, l->position, _sl_frustum_rgb, l->type == SL_LIGHT_POINT ? "point light" : "spot light");
+}
+
+/* What the overlay says: the lab and what really draws with its parameters
+ * (top left), the pass times (top right), the keys (bottom left, in a window). */
 static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int height, bool windowed) {
     sl_overlay *ov = v->overlay;
     const sl_render_params *p = &v->params;
     const sl_light *l = &v->scene.light;
     const sl_frame_info *info = sl_renderer_info(r);
+    int drawn = info->lab_in_use;
     char title[96];
     snprintf(title, sizeof title, "lab %d: %s", p->lab, sl_lab_title(p->lab));
     sl_overlay_panel(ov, SL_OVERLAY_TOP_LEFT, title);
@@ -478,9 +807,18 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
                         v->show_second ? sl_build_labs_kind : _sl_second_kind);
     else
         sl_overlay_line(ov, NULL, "code: %s", sl_build_labs_kind);
+    char status[512];
+    _sl_status(v, info, status, sizeof status);
+    char *drawing = strstr(status, "; drawing ");
+    if (drawing) { /* the reason, then what draws, each on lines of their own */
+        *drawing = '\0';
+        _sl_wrapped(ov, _sl_orange, status, 72);
+        _sl_wrapped(ov, _sl_orange, drawing + 2, 72);
+    }
     static const char *const light_types[] = {"directional", "spot", "point"};
     sl_overlay_line(ov, NULL, "light: %s, size %.2f%s", light_types[l->type % 3], l->size,
                     v->animate_light ? ", turning" : "");
+    /* the settings of what draws (a lab that is off is said above) */
     if (info->cube_frame)
         sl_overlay_line(ov, NULL, "cube map: 6 faces of %dx%d", p->cube.map_size, p->cube.map_size);
     else if (p->lab == 6)
@@ -488,8 +826,8 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
                         p->shadow_map_size);
     else
         sl_overlay_line(ov, NULL, "shadow map: %dx%d", p->shadow_map_size, p->shadow_map_size);
-    if (p->lab >= 2 && p->lab <= 4) {
-        if (p->lab == 2 || p->bias.mode == SL_BIAS_CONSTANT)
+    if (drawn >= 2 && drawn <= 4 && !info->cube_frame && p->lab != 6) {
+        if (drawn == 2 || p->bias.mode == SL_BIAS_CONSTANT)
             sl_overlay_line(ov, NULL, "bias: constant %.5f", p->bias.constant);
         else if (p->bias.mode == SL_BIAS_SLOPE_SCALED)
             sl_overlay_line(ov, NULL, "bias: slope %.4f + %.4f tan, max %.3f", p->bias.constant, p->bias.slope,
@@ -501,9 +839,9 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
             sl_overlay_line(ov, NULL, "bias: normal offset %.2f texels + %.5f", p->bias.normal_offset, p->bias.constant);
         else
             sl_overlay_line(ov, NULL, "bias: %s", sl_bias_mode_name(p->bias.mode));
-        if (p->lab <= 3) sl_overlay_line(ov, NULL, "compare: %s", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual");
+        if (drawn <= 3) sl_overlay_line(ov, NULL, "compare: %s", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual");
     }
-    if (p->lab == 4 || (p->lab > 4 && info->lab_in_use == 4)) { /* lab 5 with VSM off, lab 7 without a point light */
+    if (drawn == 4) {
         const sl_filter_settings *f = &p->filter;
         if (f->mode == SL_FILTER_GRID)
             sl_overlay_line(ov, NULL, "filter: PCF grid %dx%d (kernel radius %d)", 2 * f->grid_radius + 1,
@@ -515,32 +853,25 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
         else
             sl_overlay_line(ov, NULL, "filter: %s", sl_filter_mode_name(f->mode));
     }
-    if (p->lab == 5 && p->vsm_off) {
-        sl_overlay_line(ov, _sl_blue, "VSM off: lab 4's filter (P: VSM)");
-    } else if (p->lab == 5) {
+    if (drawn == 5) {
         int moments = p->vsm.map_size > 0 ? p->vsm.map_size : p->shadow_map_size;
         sl_overlay_line(ov, NULL, "VSM: moments %dx%d, blur radius %d", moments, moments, p->vsm.blur_radius);
         sl_overlay_line(ov, NULL, "bleeding reduction %.2f, min variance %.1e", p->vsm.bleeding, p->vsm.min_variance);
     }
-    if (p->lab == 6) {
+    if (drawn == 6) {
         const sl_cascade_params *c = &p->cascades;
         sl_overlay_line(ov, NULL, "cascades: %d, lambda %.2f%s", c->count, c->lambda,
                         c->blend_band > 0 ? ", blend band" : "");
-        if (info->cascades_ready) {
-            char splits[160] = "";
-            for (int i = 0; i <= info->cascade_count && i <= SL_MAX_CASCADES; i++)
-                snprintf(splits + strlen(splits), sizeof splits - strlen(splits), "%s%.1f", i ? " " : "",
-                         info->cascade_splits[i]);
-            sl_overlay_line(ov, NULL, "splits (view depth): %s", splits);
-        }
+        char splits[160] = "";
+        for (int i = 0; i <= info->cascade_count && i <= SL_MAX_CASCADES; i++)
+            snprintf(splits + strlen(splits), sizeof splits - strlen(splits), "%s%.1f", i ? " " : "",
+                     info->cascade_splits[i]);
+        sl_overlay_line(ov, NULL, "splits (view depth): %s", splits);
         sl_overlay_line(ov, c->unsnapped ? _sl_red : NULL, "texel snapping: %s (T)%s%s", c->unsnapped ? "off" : "on",
                         v->camera_path ? ", camera path: " : "", v->camera_path ? _sl_path_names[v->camera_path] : "");
-        if (v->frozen) sl_overlay_line(ov, _sl_blue, "frustum frozen, seen from above (Z)");
     }
-    if (p->lab == 7 && !info->cube_frame && info->lab_in_use > 0)
-        sl_overlay_line(ov, _sl_blue, "lab 7 needs a point light: lab %d's shadows here (closed_room has one)",
-                        info->lab_in_use);
-    if (info->cube_frame) {
+    if (p->lab == 6 && v->frozen) sl_overlay_line(ov, _sl_blue, "frustum frozen, seen from above (Z)");
+    if (drawn == 7) {
         const sl_cube_settings *c = &p->cube;
         sl_overlay_line(ov, NULL, "lookup: %s, bias %.4f (distance / far)",
                         c->soft ? "soft, 20 directions" : "hard", c->bias);
@@ -566,11 +897,7 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
          * threads reach it: the times are CPU time, not a GPU's. */
         if (software) sl_overlay_line(ov, _sl_blue, "llvmpipe: rasteriser CPU time");
     }
-    if (windowed) {
-        sl_overlay_panel(ov, SL_OVERLAY_BOTTOM_LEFT, NULL);
-        sl_overlay_line(ov, NULL, "O overlay  G frustum  H animate  X screenshot%s", _sl_second_functions ? "  U solutions" : "");
-    }
-    if (v->show_frustum) _sl_add_frustum(ov, info);
+    if (windowed) _sl_key_panel(v, info);
 }
 
 static void _sl_camera_turn(sl_camera *cam, float yaw) {
@@ -669,8 +996,33 @@ static bool _sl_mark_changes(_sl_viewer *v, GLuint target, int width, int height
     return same_size;
 }
 
-/* The first frame with the pixels that changed painted red, into `path`. */
-static bool _sl_save_changes(_sl_viewer *v, const char *path, int frames) {
+/* Puts an image (top-down RGB floats, the frame's size) into framebuffer `target`. */
+static void _sl_show_image(const sl_image *img, GLuint target) {
+    sl_image flipped = sl_image_alloc(img->width, img->height, 3);
+    if (!flipped.data) return;
+    memcpy(flipped.data, img->data, sizeof(float) * 3 * (size_t)img->width * (size_t)img->height);
+    sl_image_flip_rows(&flipped);
+    GLuint texture, fbo;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, img->width, img->height, 0, GL_RGB, GL_FLOAT, flipped.data);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+    glBlitFramebuffer(0, 0, img->width, img->height, 0, 0, img->width, img->height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    sl_image_free(&flipped);
+}
+
+/* The first frame with the pixels that changed painted red, into `path`; with
+ * the overlay, the last frame's overlay drawn over it (the marks are the
+ * scene's, never the overlay's changing text). */
+static bool _sl_save_changes(_sl_viewer *v, const char *path, int frames, bool overlay, mat4 camera, GLuint target) {
     char err[1024] = "";
     sl_image *img = &v->first_frame;
     size_t count = 0, n = (size_t)img->width * (size_t)img->height;
@@ -679,6 +1031,16 @@ static bool _sl_save_changes(_sl_viewer *v, const char *path, int frames) {
             img->data[i * 3] = 1, img->data[i * 3 + 1] = 0.05f, img->data[i * 3 + 2] = 0.05f;
             count++;
         }
+    if (overlay && v->overlay) {
+        _sl_show_image(img, target);
+        sl_overlay_draw(v->overlay, camera, target, img->width, img->height);
+        sl_image shot;
+        glFinish();
+        if (sl_capture_framebuffer(target, img->width, img->height, 3, &shot)) {
+            sl_image_free(img);
+            *img = shot;
+        }
+    }
     bool ok = sl_image_write(path, img, err, sizeof err);
     if (ok) printf("shadowlab: saved %s: %zu pixels (%.3f%%) changed over %d frames, in red\n", path, count,
                    n ? 100.0 * (double)count / (double)n : 0.0, frames);
@@ -748,6 +1110,13 @@ int sl_viewer_main(int argc, char **argv) {
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             _sl_usage(stdout);
             return 0;
+        } else if (strcmp(a, "--list-keys") == 0) {
+            _sl_list_keys(stdout);
+            return 0;
+        } else if (strcmp(a, "--lecture") == 0) {
+            v.lecture = v.labels = true;
+        } else if (strcmp(a, "--labels") == 0) {
+            v.labels = true;
         } else if (strcmp(a, "--lab") == 0) {
             v.params.lab = atoi(next);
             lab_given = true;
@@ -884,8 +1253,8 @@ int sl_viewer_main(int argc, char **argv) {
             }
         } else if (strcmp(a, "--keys") == 0) {
             for (const char *k = next; *k; k++)
-                if (!strchr("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789[]-=", *k)) {
-                    fprintf(stderr, "shadowlab: --keys takes letters, digits and [ ] - =, not '%c'\n", *k);
+                if (!strchr("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789[]-=,.", *k)) {
+                    fprintf(stderr, "shadowlab: --keys takes letters, digits and [ ] - = , ., not '%c'\n", *k);
                     return 2;
                 }
             v.keys = next;
@@ -1001,7 +1370,10 @@ int sl_viewer_main(int argc, char **argv) {
     v.show_overlay = overlay_option >= 0 ? overlay_option == 1 : (!headless && frames <= 0);
     v.overlay = sl_overlay_create(sl_framework_dir(), err, sizeof err);
     if (!v.overlay) fprintf(stderr, "shadowlab: no overlay: %s\n", err);
-    else sl_overlay_set_scale(v.overlay, v.text_scale);
+    else {
+        sl_overlay_set_scale(v.overlay, v.text_scale);
+        sl_overlay_set_lecture(v.overlay, v.lecture);
+    }
     /* GLFW's key codes for letters, digits and [ ] - = are their ASCII codes (upper case). */
     _sl_keys_viewer = &v;
     for (const char *k = v.keys; k && *k; k++)
@@ -1068,17 +1440,27 @@ int sl_viewer_main(int argc, char **argv) {
         if (v.camera_path) _sl_camera_path(&v, frames > 0 ? (double)rendered / frames : now / _SL_PATH_SECONDS);
         sl_renderer_draw(active, &v.scene, &v.params, target, fw, fh);
         const sl_frame_info *info = sl_renderer_info(active);
-        if (v.overlay && (v.show_overlay || v.show_frustum || v.caption)) {
+        /* --mark-changes compares the frames as drawn, before the overlay: its text (the pass times) changes
+         * from frame to frame, the scene it is about may not */
+        if (v.mark_changes && frames > 0 && !_sl_mark_changes(&v, target, fw, fh)) {
+            fprintf(stderr, "shadowlab: --mark-changes: cannot read frame %d (or its size changed)\n", rendered + 1);
+            status = 1;
+            break;
+        }
+        bool labels = v.show_overlay || v.labels;
+        bool overlay_drawn = v.overlay && (labels || v.show_frustum || v.caption || (v.params.lab == 6 && v.frozen));
+        mat4 camera;
+        _sl_camera_view_projection(&v.scene, fw, fh, camera);
+        if (overlay_drawn) {
             if (timing) _sl_update_timing(&v, active, frame_seconds, window != NULL);
             sl_overlay_clear(v.overlay);
             if (v.show_overlay) _sl_overlay_fill(&v, active, fw, fh, window != NULL);
-            else if (v.show_frustum) _sl_add_frustum(v.overlay, info);
+            if (v.show_frustum) _sl_add_frustum(v.overlay, info);
+            _sl_labels(&v, info, fw, fh, labels);
             if (v.caption) {
                 sl_overlay_panel(v.overlay, SL_OVERLAY_BOTTOM_LEFT, NULL);
                 sl_overlay_line(v.overlay, (const float[3]){1, 1, 1}, "%s", v.caption);
             }
-            mat4 camera;
-            _sl_camera_view_projection(&v.scene, fw, fh, camera);
             sl_overlay_draw(v.overlay, camera, target, fw, fh);
         }
         if (v.screenshot_requested) {
@@ -1090,6 +1472,14 @@ int sl_viewer_main(int argc, char **argv) {
             if (info->shader_error)
                 fprintf(stderr, "shadowlab: lab %d's shaders do not compile, so it is switched off until you fix "
                                 "them (they reload when saved):\n%s\n", info->shader_error_lab, info->shader_error);
+        }
+        /* Say what is really drawing whenever that changes (a stub in the way, a setting, the scene). */
+        char drawing_status[512];
+        _sl_status(&v, info, drawing_status, sizeof drawing_status);
+        if (strcmp(drawing_status, v.status) != 0) {
+            snprintf(v.status, sizeof v.status, "%s", drawing_status);
+            if (drawing_status[0]) printf("shadowlab: %s\n", drawing_status);
+            v.dirty_title = true;
         }
         /* Say which stubs are in the way whenever that list changes (another lab, a mode). */
         char missing[512] = "";
@@ -1106,11 +1496,6 @@ int sl_viewer_main(int argc, char **argv) {
             v.dirty_title = false;
         }
         rendered++;
-        if (v.mark_changes && frames > 0 && !_sl_mark_changes(&v, target, fw, fh)) {
-            fprintf(stderr, "shadowlab: --mark-changes: cannot read frame %d (or its size changed)\n", rendered);
-            status = 1;
-            break;
-        }
         if (gif && frames > 0 && !_sl_add_frame(&v, target, fw, fh, screenshot)) {
             status = 1;
             break;
@@ -1125,12 +1510,12 @@ int sl_viewer_main(int argc, char **argv) {
         }
         if (frames > 0 && rendered >= frames) {
             if (screenshot && !gif && v.mark_changes) {
-                if (!_sl_save_changes(&v, screenshot, rendered)) status = 1;
+                if (!_sl_save_changes(&v, screenshot, rendered, overlay_drawn, camera, target)) status = 1;
             } else if (screenshot && !gif && !_sl_save(target, fw, fh, screenshot)) {
                 status = 1;
             }
             /* The last frame's overlay in words, for logs and tests. */
-            if (v.overlay && v.show_overlay) {
+            if (v.overlay && overlay_drawn && (v.show_overlay || v.labels)) {
                 char text[8192];
                 sl_overlay_text(v.overlay, text, sizeof text);
                 printf("shadowlab: overlay:\n%s", text);

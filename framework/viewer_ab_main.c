@@ -1,5 +1,5 @@
 /* shadowlab, the viewer of a student build that also carries the solutions'
- * lab code (key A, --solutions): that code is compiled a second time with
+ * lab code (key U, --solutions): that code is compiled a second time with
  * every lab function renamed (see "Viewer: student vs solutions" in the top
  * CMakeLists.txt), so both sets live in this one program. */
 #include "sl_viewer.h"

@@ -7,10 +7,10 @@ static bool _sl_close_to_neighbourhood(const sl_image *a, const sl_image *b, int
     const float *pa = sl_image_pixel(a, x, y);
     for (int c = 0; c < a->channels; c++)
         if (isnan(pa[c])) return false;
-    for (int dy = -1; dy <= 1; dy++) {
+    for (int dy = -SL_COMPARE_RADIUS; dy <= SL_COMPARE_RADIUS; dy++) {
         int yy = y + dy;
         if (yy < 0 || yy >= b->height) continue;
-        for (int dx = -1; dx <= 1; dx++) {
+        for (int dx = -SL_COMPARE_RADIUS; dx <= SL_COMPARE_RADIUS; dx++) {
             int xx = x + dx;
             if (xx < 0 || xx >= b->width) continue;
             const float *pb = sl_image_pixel(b, xx, yy);

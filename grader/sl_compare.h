@@ -12,6 +12,17 @@
 
 #include "sl_image.h"
 
+/* How far a pixel may look for its match: the (2 * SL_COMPARE_RADIUS + 1)^2
+ * neighbourhood, 3x3. */
+#define SL_COMPARE_RADIUS 1
+
+/* A visibility check also fails, whatever its pixel count, when more than
+ * SL_VISIBILITY_MAX_SHADOW_LOST of the reference's shadow is lost
+ * (sl_visibility_shadow_lost) and that shadow has at least
+ * SL_VISIBILITY_MIN_SHADOW_PIXELS pixels. */
+#define SL_VISIBILITY_MIN_SHADOW_PIXELS 25
+#define SL_VISIBILITY_MAX_SHADOW_LOST 0.5
+
 typedef struct sl_compare_stats {
     bool size_mismatch;
     long pixels, failing, nan_pixels;

@@ -36,6 +36,14 @@ typedef struct sl_check_result {
     bool stub;              /* probe checks: the function still returns what its stub returns */
     char cause[1024];       /* while a check is diagnosed: the likely cause of the symptom in message */
     bool settled;           /* the message needs no lead: a stub, a run that failed, a capture missing */
+    /* A failed check's diagnosis, the same for every student it fits: the
+     * mistake in a few words (the summary; a probe's with its function; for a
+     * check led by an earlier failure, that lead) with its numbers taken out
+     * ("shadow acne on …% of lit surfaces"), and an id made from that text
+     * ("shadow-acne-on-of-lit-surfaces-3fa2c1"; "follows-..." for a lead).
+     * The class report counts students per id. */
+    char diagnosis[72];
+    char diagnosis_text[320];
 } sl_check_result;
 
 /* A function probe that failed: image checks of its lab that call the

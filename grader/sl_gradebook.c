@@ -16,6 +16,9 @@
 
 typedef struct _sl_row {
     char name[128];
+    char student[160], student_id[64]; /* from a bulk download's names (student.json), else "" */
+    bool late;                         /* the download marked the submission late (Canvas) */
+    char seed[32], options[640];       /* what the grade was made with (results.json) */
     char status[32];
     bool have_lab[SL_LAB_MAX + 1];
     double lab[SL_LAB_MAX + 1];
@@ -50,8 +53,25 @@ static void _sl_first_line(const char *path, char *out, size_t n) {
     fclose(f);
 }
 
+/* Who handed the submission in, when grade-batch took it from a bulk
+ * download: DIR/<submission>/student.json {"name", "id", "late"}. */
+static void _sl_read_student(const char *dir, _sl_row *row) {
+    char path[1400], err[1200];
+    snprintf(path, sizeof path, "%s/%s/student.json", dir, row->name);
+    if (!_sl_exists(path)) return;
+    cJSON *json = sl_json_load_file(path, "student", err, sizeof err);
+    if (!json) return;
+    const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "name"));
+    const char *id = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "id"));
+    snprintf(row->student, sizeof row->student, "%s", name ? name : "");
+    snprintf(row->student_id, sizeof row->student_id, "%s", id ? id : "");
+    row->late = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "late"));
+    cJSON_Delete(json);
+}
+
 static void _sl_read_row(const char *dir, _sl_row *row) {
     char path[1400], status_text[32];
+    _sl_read_student(dir, row);
     snprintf(path, sizeof path, "%s/%s/status", dir, row->name);
     if (!_sl_exists(path)) {
         snprintf(row->status, sizeof row->status, "not finished");
@@ -68,6 +88,10 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
                  status_text[0] ? status_text : "?", row->name);
         return;
     }
+    const char *options = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "options"));
+    const char *seed = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "seed"));
+    snprintf(row->options, sizeof row->options, "%s", options ? options : "");
+    snprintf(row->seed, sizeof row->seed, "%s", seed ? seed : "");
     const cJSON *labs = cJSON_GetObjectItemCaseSensitive(json, "lab_scores"), *lab;
     cJSON_ArrayForEach(lab, labs) {
         const cJSON *number = cJSON_GetObjectItemCaseSensitive(lab, "lab");
@@ -98,6 +122,12 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
         snprintf(row->status, sizeof row->status, "grading problem");
         const char *first = cJSON_GetStringValue(cJSON_GetArrayItem(problems, 0));
         snprintf(row->note, sizeof row->note, "%s", first ? first : "");
+    } else if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "no_lab_file")) || strcmp(status_text, "3") == 0) {
+        /* an empty upload, a text entry, only links: graded as the stubs, and said so */
+        const char *first = cJSON_GetStringValue(
+            cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(json, "submission_notes"), 0));
+        snprintf(row->status, sizeof row->status, "no lab file");
+        snprintf(row->note, sizeof row->note, "%s", first ? first : "no lab file in the submission: see its report");
     } else if (strcmp(status_text, "0") != 0 && strcmp(status_text, "1") != 0) {
         snprintf(row->status, sizeof row->status, "grading problem");
         snprintf(row->note, sizeof row->note, "grade exit status %s: see %s/grade.log", status_text, row->name);
@@ -172,6 +202,9 @@ bool sl_gradebook_write(const char *dir, const char *csv_path, char *err, size_t
     }
     FILE *f = file.f;
     _sl_field(f, "submission", true);
+    _sl_field(f, "student", false);
+    _sl_field(f, "student_id", false);
+    _sl_field(f, "late", false);
     _sl_field(f, "status", false);
     for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
         char column[16];
@@ -181,17 +214,24 @@ bool sl_gradebook_write(const char *dir, const char *csv_path, char *err, size_t
     _sl_field(f, "bonus", false);
     _sl_field(f, "total", false);
     _sl_field(f, "max", false);
+    _sl_field(f, "seed", false);
+    _sl_field(f, "options", false);
     _sl_field(f, "note", false);
     fputc('\n', f);
     for (int i = 0; i < count; i++) {
         const _sl_row *r = &rows[i];
         _sl_field(f, r->name, true);
+        _sl_field(f, r->student, false);
+        _sl_field(f, r->student_id, false);
+        _sl_field(f, r->late ? "late" : "", false);
         _sl_field(f, r->status, false);
         for (int lab = 1; lab <= SL_LAB_MAX; lab++)
             if (labs[lab]) _sl_number(f, r->have_lab[lab], r->lab[lab]);
         _sl_number(f, r->have_totals, r->bonus);
         _sl_number(f, r->have_totals, r->total);
         _sl_number(f, r->have_totals, r->max);
+        _sl_field(f, r->seed, false);
+        _sl_field(f, r->options, false);
         _sl_field(f, r->note, false);
         fputc('\n', f);
     }

@@ -15,6 +15,7 @@
 
 #include "sl_build_failure.h"
 #include "sl_case.h"
+#include "sl_class_report.h"
 #include "sl_backend.h"
 #include "sl_files.h"
 #include "sl_grade.h"
@@ -35,7 +36,9 @@ extern const char sl_config_solutions_dir[];  /* "" in a student handout */
 extern const char sl_config_solutions_runner[]; /* the solutions' runner, "" in a handout */
 extern const char sl_config_stubs_dir[];      /* the handout's stubs as committed (per-lab runners), "" in a handout */
 
-enum { SL_EXIT_FULL = 0, SL_EXIT_FAILED = 1, SL_EXIT_ERROR = 2 };
+/* 3: graded, but the submission held no lab file (--submission-summary says so): a status of its own
+ * for a gradebook, not a staff-side problem. */
+enum { SL_EXIT_FULL = 0, SL_EXIT_FAILED = 1, SL_EXIT_ERROR = 2, SL_EXIT_NO_LAB_FILE = 3 };
 #define _SL_MAX_PATTERNS 32
 #define _SL_MAX_CASES 512
 
@@ -44,7 +47,8 @@ static void _sl_usage(FILE *f) {
             "usage: shadowlab-grade [options]\n"
             "Grades a build's labs headless against the reference renders. The lab code runs in a\n"
             "separate process per case (shadowlab-runner), in a sandbox; this program runs none of it.\n"
-            "  --lab N              grade lab N only\n"
+            "  --lab LABS           grade these labs only: a number, a range or a list (--lab 2,\n"
+            "                       --lab 1-3, --lab 1,3-4); give it several times for more\n"
             "  --case PATTERN       cases whose name matches PATTERN (shell glob, or a substring);\n"
             "                       give it several times for several patterns\n"
             "  --exclude PATTERN    leave out the cases whose name matches PATTERN (several times too)\n"
@@ -83,10 +87,16 @@ static void _sl_usage(FILE *f) {
             "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
             "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
             "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
+            "  --submission-summary FILE  what staging the submission found (shadowlab-stage --summary): its\n"
+            "                       notes lead every report (no lab file found, refused links, normalised\n"
+            "                       line ends, bytes that are not text), and a submission without a lab file\n"
+            "                       exits 3 (scripts/grade-submission)\n"
             "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
+            "                       and the class report: DIR/class-report.html and .csv\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
-            "(a staff-side problem: missing or changed references, bad case files, unwritable reports).\n");
+            "(a staff-side problem: missing or changed references, bad case files, unwritable reports),\n"
+            "3 graded, but the --submission-summary says the submission held no lab file.\n");
 }
 
 static volatile int _sl_stop;
@@ -272,15 +282,51 @@ typedef struct _sl_options {
     const char *patterns[_SL_MAX_PATTERNS], *excludes[_SL_MAX_PATTERNS];
     int pattern_count, exclude_count;
     const char *report_dir, *gradescope, *prairielearn, *junit;
-    int only_lab;
+    uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
     bool update, list, isolate, strict, hidden, progress;
-    const char *seed, *not_built, *gradebook, *build_logs;
+    const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
     int jobs;
     sl_backend backend;
 } _sl_options;
 
+
+/* --lab's value: lab numbers, ranges and lists ("2", "1-3", "1,3-4") into a
+ * mask of 1 << N; false with the reason on anything else. */
+static bool _sl_parse_labs(const char *text, uint32_t *mask, char *err, size_t n) {
+    const char *p = text;
+    uint32_t found = 0;
+    for (;;) {
+        char *end;
+        while (*p == ' ') p++;
+        long first = strtol(p, &end, 10), last = first;
+        bool number = end != p && *p >= '0' && *p <= '9';
+        p = end;
+        while (*p == ' ') p++;
+        if (number && *p == '-') {
+            p++;
+            while (*p == ' ') p++;
+            number = *p >= '0' && *p <= '9';
+            last = strtol(p, &end, 10);
+            p = end;
+            while (*p == ' ') p++;
+        }
+        if (!number || (*p && *p != ',')) {
+            snprintf(err, n, "--lab '%s': give lab numbers, ranges or lists (--lab 2, --lab 1-3, --lab 1,3-4)", text);
+            return false;
+        }
+        if (first < 1 || last > SL_LAB_MAX || first > last) {
+            snprintf(err, n, "--lab '%s': labs are numbered 1 to %d, a range goes up (1-3)", text, SL_LAB_MAX);
+            return false;
+        }
+        for (long lab = first; lab <= last; lab++) found |= 1u << lab;
+        if (!*p) break;
+        p++; /* the comma */
+    }
+    *mask |= found;
+    return true;
+}
 
 /* 0: go on; otherwise the exit status. */
 static int _sl_parse(int argc, char **argv, _sl_options *o) {
@@ -290,7 +336,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
                                                  "--sandbox", "--memory", "--seed", "--not-built", "--gradebook",
-                                                 "--build-logs"};
+                                                 "--build-logs", "--submission-summary"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -301,9 +347,9 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
             _sl_usage(stdout);
             return -1;
         } else if (strcmp(a, "--lab") == 0) {
-            o->only_lab = atoi(v);
-            if (o->only_lab < 1 || o->only_lab > SL_LAB_MAX) {
-                fprintf(stderr, "shadowlab-grade: --lab takes 1..%d\n", SL_LAB_MAX);
+            char lab_err[200];
+            if (!_sl_parse_labs(v, &o->only_labs, lab_err, sizeof lab_err)) {
+                fprintf(stderr, "shadowlab-grade: %s\n", lab_err);
                 return SL_EXIT_ERROR;
             }
         } else if (strcmp(a, "--case") == 0 || strcmp(a, "--exclude") == 0) {
@@ -352,6 +398,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--not-built") == 0) o->not_built = v;
         else if (strcmp(a, "--gradebook") == 0) o->gradebook = v;
         else if (strcmp(a, "--build-logs") == 0) o->build_logs = v;
+        else if (strcmp(a, "--submission-summary") == 0) o->submission_summary = v;
         else if (strcmp(a, "--list") == 0) o->list = true;
         else {
             fprintf(stderr, "shadowlab-grade: unknown option %s\n", a);
@@ -363,6 +410,46 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
     if (o->jobs < 1) o->jobs = 1;
     if (o->timeout < 0) o->timeout = 0;
     return 0;
+}
+
+/* The options that decide a grade, as one line for the report and the
+ * gradebook ("--lab 1-2 --case lab1_* --hidden --seed 4711"): a second pass
+ * with other options says so instead of passing for the first. Where the
+ * files come from is named only when it is not this build's own. */
+static void _sl_describe_options(const _sl_options *o, const char *default_cases, const char *default_refs, char *out,
+                                 size_t n) {
+    size_t used = 0;
+    out[0] = '\0';
+#define _SL_ADD(...)                                                                          \
+    do {                                                                                      \
+        int added = snprintf(out + used, n - used, "%s", used ? " " : "");                   \
+        if (added > 0 && (size_t)added < n - used) used += (size_t)added;                     \
+        added = snprintf(out + used, n - used, __VA_ARGS__);                                  \
+        if (added > 0) used = (size_t)added < n - used ? used + (size_t)added : n - 1;        \
+    } while (0)
+    if (o->only_labs) {
+        char labs[64] = "";
+        size_t l = 0;
+        for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+            if (!((o->only_labs >> lab) & 1u)) continue;
+            int last = lab;
+            while (last < SL_LAB_MAX && ((o->only_labs >> (last + 1)) & 1u)) last++;
+            int added = last > lab ? snprintf(labs + l, sizeof labs - l, "%s%d-%d", l ? "," : "", lab, last)
+                                   : snprintf(labs + l, sizeof labs - l, "%s%d", l ? "," : "", lab);
+            if (added > 0 && (size_t)added < sizeof labs - l) l += (size_t)added;
+            lab = last;
+        }
+        _SL_ADD("--lab %s", labs);
+    }
+    for (int i = 0; i < o->pattern_count; i++) _SL_ADD("--case %s", o->patterns[i]);
+    for (int i = 0; i < o->exclude_count; i++) _SL_ADD("--exclude %s", o->excludes[i]);
+    if (o->isolate) _SL_ADD("--isolate");
+    if (o->hidden) _SL_ADD("--hidden --seed %s", o->seed ? o->seed : "?");
+    if (o->timeout > 0) _SL_ADD("--timeout %g", o->timeout);
+    if (o->memory_mb > 0) _SL_ADD("--memory %g", o->memory_mb);
+    if (o->cases_dir && strcmp(o->cases_dir, default_cases) != 0) _SL_ADD("--cases %s", o->cases_dir);
+    if (o->refs_dir && strcmp(o->refs_dir, default_refs) != 0) _SL_ADD("--references %s", o->refs_dir);
+#undef _SL_ADD
 }
 
 /* Reads the case files (in name order), keeps those the options select. */
@@ -394,7 +481,7 @@ static int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report 
             if (rep->problem_count < 32) snprintf(rep->problems[rep->problem_count++], sizeof rep->problems[0], "%s", err);
             continue;
         }
-        if (o->only_lab && c->lab != o->only_lab) continue;
+        if (o->only_labs && !((o->only_labs >> c->lab) & 1u)) continue;
         if (o->pattern_count && !_sl_matches_any(c->name, o->patterns, o->pattern_count)) continue;
         if (_sl_matches_any(c->name, o->excludes, o->exclude_count)) continue;
         count++;
@@ -529,7 +616,7 @@ static int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int c
     fflush(stdout);
     bool reports_ok = _sl_write_reports(o, rep);
     sl_report_print(rep, stdout, isatty(1));
-    return reports_ok && !rep->problem_count ? SL_EXIT_FAILED : SL_EXIT_ERROR;
+    return reports_ok && !rep->problem_count ? (rep->no_lab_file ? SL_EXIT_NO_LAB_FILE : SL_EXIT_FAILED) : SL_EXIT_ERROR;
 }
 
 static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_root[64], sl_hidden *hidden) {
@@ -543,11 +630,12 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     if (o.gradebook) {
         char csv[1200], gradebook_err[1500];
         snprintf(csv, sizeof csv, "%s/gradebook.csv", o.gradebook);
-        if (!sl_gradebook_write(o.gradebook, csv, gradebook_err, sizeof gradebook_err)) {
+        if (!sl_gradebook_write(o.gradebook, csv, gradebook_err, sizeof gradebook_err) ||
+            !sl_class_report_write(o.gradebook, gradebook_err, sizeof gradebook_err)) {
             fprintf(stderr, "shadowlab-grade: %s\n", gradebook_err);
             return SL_EXIT_ERROR;
         }
-        printf("shadowlab-grade: wrote %s\n", csv);
+        printf("shadowlab-grade: wrote %s, and the class report %s/class-report.html (and .csv)\n", csv, o.gradebook);
         return SL_EXIT_FULL;
     }
     static char default_cases[1100], default_refs[1100];
@@ -639,7 +727,12 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             if (sl_lab_folder(lab)) run.setups[0].lab_dirs[lab] = graded_tree;
     }
 
-    sl_grade_report rep = {.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree};
+    static sl_grade_report rep;
+    rep = (sl_grade_report){.jobs = o.jobs, .labs_kind = o.update ? "solutions" : labs_kind, .labs_dir = graded_tree};
+    if (o.submission_summary && !sl_report_load_submission(&rep, o.submission_summary, err, sizeof err)) {
+        fprintf(stderr, "shadowlab-grade: --submission-summary: %s\n", err);
+        return SL_EXIT_ERROR;
+    }
     static sl_case cases[_SL_MAX_CASES];
     int count = _sl_load_cases(&o, cases, &rep);
     if (count < 0) {
@@ -658,6 +751,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         fprintf(stderr, "shadowlab-grade: no case matches in %s\n", o.cases_dir);
         return SL_EXIT_ERROR;
     }
+    /* what decides this grade, for its reports and the gradebook */
+    rep.seed = o.hidden ? o.seed : NULL;
+    _sl_describe_options(&o, default_cases, default_refs, rep.options, sizeof rep.options);
     if (o.not_built) return _sl_grade_not_built(&o, cases, count, &rep);
     /* --build-logs: a lab whose runner is missing did not build; the others are graded */
     static char lab_errors[SL_LAB_MAX + 1][SL_BUILD_ERROR_MAX + 8];
@@ -895,7 +991,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         bool reports_ok = _sl_write_reports(&o, &rep);
         sl_report_print(&rep, stdout, isatty(1));
         if (reference_problem || rep.problem_count || !reports_ok || rep.interrupted) status = SL_EXIT_ERROR;
-        else if (!sl_report_full_marks(&rep)) status = SL_EXIT_FAILED;
+        else if (!sl_report_full_marks(&rep)) status = rep.no_lab_file ? SL_EXIT_NO_LAB_FILE : SL_EXIT_FAILED;
         for (int i = 0; i < count; i++)
             for (int k = 0; k < cases[i].check_count; k++) sl_image_free(&graded[i].checks[k].diff);
     }

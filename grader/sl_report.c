@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_report.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -9,7 +10,35 @@
 #include "sl_build_failure.h"
 #include "sl_data_url.h"
 #include "sl_files.h"
+#include "sl_json.h"
 #include "sl_params.h"
+
+bool sl_report_load_submission(sl_grade_report *rep, const char *path, char *err, size_t err_size) {
+    cJSON *root = sl_json_load_file(path, "submission summary", err, err_size);
+    if (!root) return false;
+    const cJSON *found = cJSON_GetObjectItemCaseSensitive(root, "lab_files_found");
+    const cJSON *notes = cJSON_GetObjectItemCaseSensitive(root, "notes"), *note;
+    if (!cJSON_IsBool(found) || !cJSON_IsArray(notes)) {
+        snprintf(err, err_size, "%s: not a submission summary (no lab_files_found, no notes)", path);
+        cJSON_Delete(root);
+        return false;
+    }
+    rep->no_lab_file = cJSON_IsFalse(found);
+    rep->submission_note_count = 0;
+    cJSON_ArrayForEach(note, notes) {
+        if (!cJSON_IsString(note) || rep->submission_note_count >= SL_SUBMISSION_NOTES_MAX) continue;
+        snprintf(rep->submission_notes[rep->submission_note_count++], sizeof rep->submission_notes[0], "%s",
+                 note->valuestring);
+    }
+    cJSON_Delete(rep->submission_summary);
+    rep->submission_summary = root;
+    return true;
+}
+
+void sl_report_free_submission(sl_grade_report *rep) {
+    cJSON_Delete(rep->submission_summary);
+    rep->submission_summary = NULL;
+}
 
 void sl_report_totals(const sl_grade_report *rep, double *score, double *max_score, double *bonus) {
     *score = *max_score = *bonus = 0;
@@ -58,6 +87,8 @@ static void _sl_print_message(FILE *out, const char *message) {
 void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
     const char *red = color ? "\033[31m" : "", *green = color ? "\033[32m" : "", *bold = color ? "\033[1m" : "",
                *reset = color ? "\033[0m" : "";
+    for (int i = 0; i < rep->submission_note_count; i++)
+        fprintf(out, "%sSubmission:%s %s\n", i == 0 && rep->no_lab_file ? red : bold, reset, rep->submission_notes[i]);
     for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
         double score = 0, max = 0, bonus = 0;
         bool any = false;
@@ -120,6 +151,51 @@ static void _sl_html_text(FILE *f, const char *text) {
     }
 }
 
+/* A check's picture as people look at it: cascade numbers in the viewer's
+ * cascade colours (a grey image would show cascade 0 as black as the
+ * background), two channels (lab 5's moments) as red = depth and green =
+ * depth² (a PNG would make them grey and alpha). Anything else as it is.
+ * Returns an image to free, or one with no data when the picture is fine as it is. */
+static sl_image _sl_for_people(sl_check_kind kind, const sl_image *img) {
+    sl_image none = {0};
+    bool cascades = kind == SL_CHECK_CASCADE_INDEX && img->channels == 1;
+    if (!img->data || (!cascades && img->channels != 2)) return none;
+    sl_image out = sl_image_alloc(img->width, img->height, 3);
+    if (!out.data) return none;
+    for (int y = 0; y < img->height; y++)
+        for (int x = 0; x < img->width; x++) {
+            const float *p = sl_image_pixel(img, x, y);
+            float *q = sl_image_pixel(&out, x, y);
+            if (cascades) {
+                sl_cascade_colour(p[0] >= -0.5f && p[0] < SL_MAX_CASCADES ? (int)floorf(p[0] + 0.5f) : -1, q);
+            } else {
+                q[0] = p[0], q[1] = p[1], q[2] = 0;
+            }
+        }
+    return out;
+}
+
+/* The legend under a check's pictures, for the kinds drawn in false colour. */
+static void _sl_html_legend(FILE *f, const char *kind) {
+    if (strcmp(kind, "cascade_index") == 0) {
+        fputs("<p class=\"legend\">", f);
+        for (int i = 0; i <= SL_MAX_CASCADES; i++) {
+            float rgb[3];
+            sl_cascade_colour(i < SL_MAX_CASCADES ? i : -1, rgb);
+            fprintf(f, "<span class=\"swatch\" style=\"background:rgb(%d,%d,%d)\"></span>", (int)(rgb[0] * 255 + 0.5f),
+                    (int)(rgb[1] * 255 + 0.5f), (int)(rgb[2] * 255 + 0.5f));
+            if (i < SL_MAX_CASCADES) fprintf(f, "cascade %d &nbsp; ", i);
+            else fputs("no cascade", f);
+        }
+        fputs("</p>", f);
+    } else if (strcmp(kind, "moments") == 0 || strcmp(kind, "moments_blurred") == 0) {
+        fputs("<p class=\"legend\"><span class=\"swatch\" style=\"background:#f00\"></span>red: depth &nbsp; "
+              "<span class=\"swatch\" style=\"background:#0f0\"></span>green: depth&sup2; &nbsp; "
+              "<span class=\"swatch\" style=\"background:#ff0\"></span>both high (far) &nbsp; "
+              "<span class=\"swatch\" style=\"background:#000\"></span>both 0 (near)</p>", f);
+    }
+}
+
 /* A page a TA can open: the score per lab, every check, and the images of the failed ones. */
 static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const char *path, char *err, size_t err_size) {
     sl_atomic_file file;
@@ -132,7 +208,9 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
     fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>shadowlab grade: %g/%g</title>\n"
                "<style>body{font-family:sans-serif;margin:2em}td,th{padding:.2em .6em;text-align:left;vertical-align:top}"
                ".pass{color:#070}.fail{color:#b00}img{width:256px;image-rendering:pixelated;border:1px solid #ccc}"
-               "figure{display:inline-block;margin:.3em}</style></head><body>\n",
+               "figure{display:inline-block;margin:.3em}.legend{margin:.2em .3em;font-size:90%%;color:#333}"
+               ".swatch{display:inline-block;width:1em;height:1em;border:1px solid #888;vertical-align:middle;"
+               "margin-right:.3em}</style></head><body>\n",
             score, max);
     fputs("<h1>", f);
     _sl_html_text(f, line);
@@ -145,10 +223,19 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
         fputs("; cases: ", f);
         _sl_html_text(f, rep->case_set);
     }
+    if (rep->options[0]) {
+        fputs("; options: ", f);
+        _sl_html_text(f, rep->options);
+    }
     fputs("</p>\n", f);
     if (rep->not_built) {
         fputs("<p class=\"fail\">The submission did not build: ", f);
         _sl_html_text(f, rep->not_built);
+        fputs("</p>\n", f);
+    }
+    for (int i = 0; i < rep->submission_note_count; i++) {
+        fprintf(f, "<p%s>Submission: ", i == 0 && rep->no_lab_file ? " class=\"fail\"" : "");
+        _sl_html_text(f, rep->submission_notes[i]);
         fputs("</p>\n", f);
     }
     for (int i = 0; i < rep->problem_count; i++) {
@@ -178,6 +265,7 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
                 _sl_html_text(f, img->valuestring);
                 fprintf(f, "\"><figcaption>%s</figcaption></figure>", img->string);
             }
+            if (imgs) _sl_html_legend(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "kind")));
             fputs("</td></tr>\n", f);
         }
     }
@@ -253,6 +341,7 @@ static void _sl_platform_text(const sl_grade_report *rep, char *text, size_t n) 
     size_t used = 0;
     text[0] = '\0';
 #define _SL_SAY(...) (used += used < n ? (size_t)snprintf(text + used, n - used, __VA_ARGS__) : 0)
+    for (int i = 0; i < rep->submission_note_count; i++) _SL_SAY("%s\n", rep->submission_notes[i]);
     if (rep->not_built) _SL_SAY("The submission did not build: %s\n", rep->not_built);
     for (int lab = 1; lab <= SL_LAB_MAX && !rep->not_built; lab++)
         if (rep->lab_not_built[lab])
@@ -292,9 +381,19 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     cJSON_AddStringToObject(root, "renderer", rep->renderer);
     cJSON_AddStringToObject(root, "sandbox", rep->sandbox);
     if (rep->case_set[0]) cJSON_AddStringToObject(root, "case_set", rep->case_set);
+    /* what made this grade: a gradebook row says it, and a pass with other options is told apart */
+    cJSON_AddStringToObject(root, "options", rep->options);
+    if (rep->seed) cJSON_AddStringToObject(root, "seed", rep->seed);
     cJSON_AddBoolToObject(root, "built", rep->not_built == NULL);
     if (rep->not_built) cJSON_AddStringToObject(root, "build_error", rep->not_built);
     _sl_add_labs_not_built(rep, root);
+    if (rep->submission_summary) {
+        cJSON_AddBoolToObject(root, "no_lab_file", rep->no_lab_file);
+        cJSON *notes = cJSON_AddArrayToObject(root, "submission_notes");
+        for (int i = 0; i < rep->submission_note_count; i++)
+            cJSON_AddItemToArray(notes, cJSON_CreateString(rep->submission_notes[i]));
+        cJSON_AddItemToObject(root, "submission", cJSON_Duplicate(rep->submission_summary, true));
+    }
     cJSON *labs = cJSON_AddArrayToObject(root, "lab_scores");
     for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
         double s = 0, m = 0, b = 0;
@@ -344,6 +443,10 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
             cJSON_AddBoolToObject(j, "passed", cr->passed);
             cJSON_AddBoolToObject(j, "bonus", cr->bonus);
             cJSON_AddStringToObject(j, "message", cr->message);
+            if (!cr->passed && cr->diagnosis[0]) {
+                cJSON_AddStringToObject(j, "diagnosis", cr->diagnosis);
+                cJSON_AddStringToObject(j, "diagnosis_text", cr->diagnosis_text);
+            }
             const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(g->c, ck));
             if (!cr->passed && cap && cap->is_image) {
                 const sl_image *shown[3] = {&cap->image, &g->references[k].image, &cr->diff};
@@ -354,8 +457,11 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
                     if (!shown[m]->data) continue;
                     snprintf(name, sizeof name, "images/%s.%s.%s.png", g->c->name, ck->name, roles[m]);
                     snprintf(path, sizeof path, "%s/%s", dir, name);
-                    if (sl_atomic_write_image(path, shown[m], err, err_size)) cJSON_AddStringToObject(imgs, roles[m], name);
+                    sl_image coloured = m < 2 ? _sl_for_people(ck->kind, shown[m]) : (sl_image){0};
+                    if (sl_atomic_write_image(path, coloured.data ? &coloured : shown[m], err, err_size))
+                        cJSON_AddStringToObject(imgs, roles[m], name);
                     else ok = false;
+                    sl_image_free(&coloured);
                 }
             }
             cJSON_AddItemToArray(checks, j);
@@ -416,7 +522,7 @@ bool sl_report_write_gradescope(const sl_grade_report *rep, const char *path, ch
     /* the bonus fills what was lost, up to the maximum; the output says it in words */
     cJSON_AddNumberToObject(root, "score", score + bonus > max ? max : score + bonus);
     cJSON_AddNumberToObject(root, "execution_time", rep->seconds);
-    char text[4096];
+    char text[4096 + SL_SUBMISSION_NOTES_MAX * 1600];
     _sl_platform_text(rep, text, sizeof text);
     if (text[0]) cJSON_AddStringToObject(root, "output", text);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), false);
@@ -430,16 +536,21 @@ bool sl_report_write_prairielearn(const sl_grade_report *rep, const char *path, 
     sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
     /* A submission that does not build is "not gradable": it costs the student no attempt. */
-    cJSON_AddBoolToObject(root, "gradable", rep->problem_count == 0 && !rep->interrupted && !rep->not_built);
+    /* So is one with no lab file: the upload was not what the assignment asks for. */
+    cJSON_AddBoolToObject(root, "gradable",
+                          rep->problem_count == 0 && !rep->interrupted && !rep->not_built && !rep->no_lab_file);
+    cJSON *format_errors = rep->not_built || rep->no_lab_file ? cJSON_AddArrayToObject(root, "format_errors") : NULL;
+    if (rep->no_lab_file && rep->submission_note_count)
+        cJSON_AddItemToArray(format_errors, cJSON_CreateString(rep->submission_notes[0]));
     if (rep->not_built) {
         char text[512];
         snprintf(text, sizeof text, "The submission did not build: %s", rep->not_built);
-        cJSON_AddItemToArray(cJSON_AddArrayToObject(root, "format_errors"), cJSON_CreateString(text));
+        cJSON_AddItemToArray(format_errors, cJSON_CreateString(text));
     }
     /* PrairieLearn takes a fraction in [0, 1]: the bonus fills what was lost, and is said in words */
     double fraction = max > 0 ? (score + bonus) / max : 0;
     cJSON_AddNumberToObject(root, "score", fraction > 1 ? 1 : fraction < 0 ? 0 : fraction);
-    char text[4096];
+    char text[4096 + SL_SUBMISSION_NOTES_MAX * 1600];
     _sl_platform_text(rep, text, sizeof text);
     if (text[0]) cJSON_AddStringToObject(root, "message", text);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), true);

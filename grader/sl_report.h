@@ -11,6 +11,10 @@
 #include "sl_grade.h"
 #include "sl_run.h"
 
+#define SL_SUBMISSION_NOTES_MAX 16
+
+struct cJSON;
+
 typedef struct sl_graded_case {
     const sl_case *c;
     const sl_case_result *result;
@@ -25,6 +29,8 @@ typedef struct sl_grade_report {
     int problem_count;
     double seconds;
     int jobs;
+    char options[640];       /* the options that decide the grade ("--lab 1-2 --hidden --seed 4711"; "": none) */
+    const char *seed;        /* --hidden's seed, or NULL */
     const char *labs_kind, *labs_dir;
     char sandbox[320];       /* the sandbox level the runners got, in words */
     char backend[32], renderer[160]; /* what the runners rendered with (as the first runner said) */
@@ -34,7 +40,18 @@ typedef struct sl_grade_report {
     bool hidden;             /* hidden variants (--hidden): Gradescope shows their tests after the due date */
     const char *not_built;   /* the compiler's first error, when the submission did not build */
     const char *lab_not_built[SL_LAB_MAX + 1]; /* graded per lab: each lab's first error, when that lab did not build */
+    /* How the submission was staged (shadowlab-grade --submission-summary, written by
+     * shadowlab-stage): notes said first in every report, and the summary for results.json. */
+    char submission_notes[SL_SUBMISSION_NOTES_MAX][1600];
+    int submission_note_count;
+    bool no_lab_file;        /* the submission held no lab file: every lab is the handout's stub */
+    struct cJSON *submission_summary;
 } sl_grade_report;
+
+/* Reads a submission summary (shadowlab-stage --summary FILE) into the report: its notes and
+ * whether a lab file was found. False with "FILE: ..." in err when it cannot be read. */
+bool sl_report_load_submission(sl_grade_report *report, const char *path, char *err, size_t err_size);
+void sl_report_free_submission(sl_grade_report *report);
 
 /* score and max_score leave bonus checks out; bonus is what they earned. */
 void sl_report_totals(const sl_grade_report *report, double *score, double *max_score, double *bonus);

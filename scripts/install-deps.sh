@@ -19,6 +19,7 @@ packages=(
   libosmesa6-dev?       # headless GL through OSMesa, the references' backend; gone from Mesa 25.1 on
   libopenimageio-dev    # PNG / OpenEXR capture and references
   libcjson-dev          # case files, reports
+  libarchive-dev        # submissions uploaded as .zip / .tar.gz (shadowlab-stage)
   xvfb xauth            # the viewer's tests run in a virtual X display
   libglx-mesa0          # llvmpipe behind GLX: the viewer under Xvfb
 )

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
-# The lecture decks' tools (pandoc, WeasyPrint, pdftoppm), so the slides' tests
+# The lecture decks' tools (pandoc, WeasyPrint, KaTeX and node, pdftoppm, Chromium), so the slides' tests
 # run here and in CI; SL_SLIDES=0 leaves them out (those tests are then skipped).
 [ "${SL_SLIDES:-1}" = 0 ] || ./scripts/install-slides-deps.sh
 cmake -S . -B build -DSL_LABS="${SL_LABS:-student}"

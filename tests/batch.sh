@@ -75,22 +75,29 @@ grep -q "layout: a labs/ folder" "$out/lab4_pcss_inverted/grade.log" || problem 
 # ---- 3. the gradebook ----
 gradebook="$out/gradebook.csv"
 cat "$gradebook"
-[ "$(head -n 1 "$gradebook")" = "submission,status,lab1,lab2,lab3,lab4,bonus,total,max,note" ] ||
-  problem "the gradebook's columns: $(head -n 1 "$gradebook")"
-# every column before the note is a name, a status or a number: no comma inside
+header=$(head -n 1 "$gradebook")
+[ "$header" = "submission,student,student_id,late,status,lab1,lab2,lab3,lab4,bonus,total,max,seed,options,note" ] ||
+  problem "the gradebook's columns: $header"
+# every column before the note is a name, a status, a number or options without a comma
+column() { tr ',' '\n' <<<"$header" | grep -nx "$1" | cut -d: -f1; }
 field() { cut -d, -f"$2" <<<"$1"; }
+status_at=$(column status) total_at=$(column total) max_at=$(column max) note_at=$(column note)
+lab_at=$(column lab1)
 solutions_row=$(grep '^solutions,' "$gradebook")
-[ "$(field "$solutions_row" 8)" = "$(field "$solutions_row" 9)" ] || problem "the solutions' total is not the maximum"
+[ "$(field "$solutions_row" "$total_at")" = "$(field "$solutions_row" "$max_at")" ] || problem "the solutions' total is not the maximum"
+grep -q -- "--case lab1_depth_boxes --case lab2_directional_manual" <<<"$solutions_row" ||
+  problem "the solutions' row does not say its options"
 rows=0
 while IFS= read -r line; do
   [[ "$line" == \#* ]] && continue
   rows=$((rows + 1))
   IFS=, read -r name status l1 l2 l3 l4 note_re <<<"$line"
   row=$(grep "^$name," "$gradebook") || { problem "no row for $name"; continue; }
-  [ "$(field "$row" 2)" = "$status" ] || problem "$name: status '$(field "$row" 2)', expected '$status'"
+  [ "$(field "$row" "$status_at")" = "$status" ] || problem "$name: status '$(field "$row" "$status_at")', expected '$status'"
   want=("$l1" "$l2" "$l3" "$l4")
   for lab in 1 2 3 4; do
-    got=$(field "$row" $((lab + 2))) full=$(field "$solutions_row" $((lab + 2))) w=${want[$((lab - 1))]}
+    at=$((lab_at + lab - 1))
+    got=$(field "$row" $at) full=$(field "$solutions_row" $at) w=${want[$((lab - 1))]}
     case "$w" in
       any) ;;
       full) [ "$got" = "$full" ] || problem "$name: lab $lab scored $got, expected full marks ($full)" ;;
@@ -98,9 +105,10 @@ while IFS= read -r line; do
       *) [ "$got" = "$w" ] || problem "$name: lab $lab scored $got, expected $w" ;;
     esac
   done
-  note=$(cut -d, -f10- <<<"$row")
+  note=$(cut -d, -f"$note_at"- <<<"$row")
   grep -Eq -- "$note_re" <<<"$note" || problem "$name: note '$note' does not match $note_re"
-  [ "$(field "$row" 9)" = "$(field "$solutions_row" 9)" ] || problem "$name: another maximum than the solutions'"
+  [ "$(field "$row" "$max_at")" = "$(field "$solutions_row" "$max_at")" ] || problem "$name: another maximum than the solutions'"
 done <"$expected"
 [ "$(($(wc -l <"$gradebook") - 1))" = "$rows" ] || problem "the gradebook has other rows than the expected ones"
+[ -s "$out/class-report.html" ] && [ -s "$out/class-report.csv" ] || problem "no class report beside the gradebook"
 exit $fail

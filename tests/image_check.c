@@ -6,7 +6,15 @@
  *     (the backing) and 2-40% are bright (the glyphs).
  *   image_check not-blank IMAGE.png
  *     at least 1% of the pixels differ from the top-left one (a page that is
- *     not empty). */
+ *     not empty).
+ *   image_check label IMAGE.png X Y W H
+ *     the rectangle holds text on a dark backing, whatever is under it: at
+ *     least 25% of its pixels are dark and 2-40% bright.
+ *   image_check differ A.png B.png
+ *     prints the percentage of pixels that differ (by more than 0.1 in a
+ *     channel); exit 0 if any do.
+ *   image_check mean IMAGE.png X Y W H
+ *     prints the rectangle's mean luminance (0..1); exit 0. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -44,6 +52,51 @@ int main(int argc, char **argv) {
                im.height, pct);
         return pct >= 1.0 ? 0 : 1;
     }
+    if ((argc == 7 && (strcmp(argv[1], "label") == 0 || strcmp(argv[1], "mean") == 0))) {
+        sl_image im;
+        if (!sl_image_read(argv[2], &im, err, sizeof err)) {
+            fprintf(stderr, "image_check: %s\n", err);
+            return 2;
+        }
+        int x0 = atoi(argv[3]), y0 = atoi(argv[4]), w = atoi(argv[5]), h = atoi(argv[6]);
+        if (x0 < 0 || y0 < 0 || w <= 0 || h <= 0 || x0 + w > im.width || y0 + h > im.height) {
+            fprintf(stderr, "image_check: the rectangle %d,%d %dx%d is not inside %s (%dx%d)\n", x0, y0, w, h, argv[2],
+                    im.width, im.height);
+            return 2;
+        }
+        long dark = 0, bright = 0;
+        double sum = 0;
+        for (int y = y0; y < y0 + h; y++)
+            for (int x = x0; x < x0 + w; x++) {
+                float l = _luma(&im, x, y);
+                sum += l;
+                dark += l < 0.3f;
+                bright += l > 0.6f;
+            }
+        double n = (double)w * h, k = 100 * dark / n, b = 100 * bright / n;
+        if (strcmp(argv[1], "mean") == 0) {
+            printf("%.4f\n", sum / n);
+            return 0;
+        }
+        printf("image_check: %s, rectangle %d,%d %dx%d: %.1f%% dark, %.1f%% bright\n", argv[2], x0, y0, w, h, k, b);
+        return k >= 25 && b >= 2 && b <= 40 ? 0 : 1;
+    }
+    if (argc == 4 && strcmp(argv[1], "differ") == 0) {
+        sl_image a, b;
+        if (!sl_image_read(argv[2], &a, err, sizeof err) || !sl_image_read(argv[3], &b, err, sizeof err)) {
+            fprintf(stderr, "image_check: %s\n", err);
+            return 2;
+        }
+        if (a.width != b.width || a.height != b.height) {
+            fprintf(stderr, "image_check: %s is %dx%d, %s %dx%d\n", argv[2], a.width, a.height, argv[3], b.width, b.height);
+            return 2;
+        }
+        long differ = 0;
+        for (int y = 0; y < a.height; y++)
+            for (int x = 0; x < a.width; x++) differ += _differs(&a, &b, x, y, x, y);
+        printf("%.3f\n", 100.0 * (double)differ / ((double)a.width * a.height));
+        return differ > 0 ? 0 : 1;
+    }
     if (argc == 8 && strcmp(argv[1], "text") == 0) {
         sl_image with, without;
         if (!sl_image_read(argv[2], &with, err, sizeof err) || !sl_image_read(argv[3], &without, err, sizeof err)) {
@@ -70,6 +123,7 @@ int main(int argc, char **argv) {
                argv[2], x0, y0, w, h, d, argv[3], k, b);
         return d >= 20 && k >= 25 && b >= 2 && b <= 40 ? 0 : 1;
     }
-    fprintf(stderr, "usage: image_check text WITH.png WITHOUT.png X Y W H | image_check not-blank IMAGE.png\n");
+    fprintf(stderr, "usage: image_check text WITH.png WITHOUT.png X Y W H | not-blank IMAGE.png |\n"
+                    "       label IMAGE.png X Y W H | differ A.png B.png | mean IMAGE.png X Y W H\n");
     return 2;
 }

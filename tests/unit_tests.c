@@ -21,6 +21,7 @@
 #include "sl_run.h"
 #include "sl_sha256.h"
 #include "sl_shader.h"
+#include "sl_text.h"
 
 static int failures;
 #define CHECK(cond)                                                                \
@@ -171,6 +172,56 @@ static void test_shader_include_stays_inside(void) {
     src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
     CHECK(src == NULL && strstr(err, "reaches outside"));
     free(src);
+}
+
+static void write_bytes(const char *name, const char *bytes, size_t n) {
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
+    FILE *f = fopen(path, "wb");
+    fwrite(bytes, 1, n, f);
+    fclose(f);
+}
+
+/* Shader files as Windows and old Mac editors save them: a UTF-8 byte-order
+ * mark and CRLF or lone CR line ends are made plain before compiling; a NUL
+ * byte, Latin-1 or UTF-16 is named with the file and the byte's offset. */
+static void test_shader_text_as_editors_write_it(void) {
+    static const char crlf[] = "\xef\xbb\xbf#version 330 core\r\n#include \"cr.glsl\"\r\nvoid main() {\r\n}\r\n";
+    static const char cr[] = "// old Mac\rfloat g() { return 2.0; }\r";
+    write_bytes("crlf.frag", crlf, sizeof crlf - 1);
+    write_bytes("cr.glsl", cr, sizeof cr - 1);
+    char path[512], files[SL_SHADER_MAX_FILES][SL_PATH_MAX], err[1024] = "";
+    int count = 0;
+    const char *dirs[] = {NULL};
+    snprintf(path, sizeof path, "%s/crlf.frag", tmp_dir);
+    char *src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+    CHECK(src != NULL);
+    if (src) {
+        CHECK(strncmp(src, "#version 330 core\n", 18) == 0);
+        CHECK(strchr(src, '\r') == NULL);
+        CHECK(strstr(src, "#line 100001 1\n// old Mac\nfloat g()") != NULL); /* lines counted at each CR */
+        CHECK(strstr(src, "void main() {\n}\n") != NULL);
+    }
+    free(src);
+    /* not text: named with the file and the byte's offset and line */
+    static const char nul[] = "#version 330 core\nvoid main() {\n  x\0;\n}\n";
+    static const char latin1[] = "#version 330 core\n// caf\xe9\n";
+    static const char utf16[] = "\xff\xfe#\0v\0";
+    static const struct { const char *name, *bytes; size_t n; const char *expect; } bad[] = {
+        {"nul.frag", nul, sizeof nul - 1, "nul.frag: a NUL byte at byte offset 35 (line 3)"},
+        {"latin1.frag", latin1, sizeof latin1 - 1, "latin1.frag: invalid UTF-8 at byte offset 24 (line 2)"},
+        {"utf16.frag", utf16, sizeof utf16 - 1, "utf16.frag: saved as UTF-16"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        write_bytes(bad[i].name, bad[i].bytes, bad[i].n);
+        snprintf(path, sizeof path, "%s/%s", tmp_dir, bad[i].name);
+        err[0] = '\0';
+        src = sl_shader_preprocess(path, dirs, NULL, files, &count, err, sizeof err);
+        CHECK(src == NULL);
+        CHECK(strstr(err, bad[i].expect) != NULL);
+        if (!strstr(err, bad[i].expect)) fprintf(stderr, "  got: %s\n", err);
+        free(src);
+    }
 }
 
 static void test_case_files(void) {
@@ -496,6 +547,52 @@ static void test_grade_probe_verdicts(void) {
     CHECK(out.passed);
 }
 
+/* A failed check's diagnosis is the same for every student it fits, whatever
+ * the numbers in their message, and differs between mistakes (the class
+ * report counts students per diagnosis). */
+static void test_grade_diagnosis_ids(void) {
+    sl_case c = grade_case(3, SL_CHECK_VISIBILITY);
+    c.params.bias.mode = SL_BIAS_SLOPE_SCALED;
+    char ids[2][80], texts[2][320];
+    for (int student = 0; student < 2; student++) {
+        sl_case_result r = {.finished = true};
+        sl_image acne = square(64, 64, 0, 1, 20, 20, 40, 40);
+        for (int i = 0; i < 64 * 64; i += 3 + 2 * student) acne.data[i] = 0; /* more or less acne */
+        add_capture(&r, "visibility", acne);
+        add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
+        sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
+        sl_check_result out;
+        sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
+        CHECK(!out.passed && out.diagnosis[0]);
+        snprintf(ids[student], sizeof ids[student], "%s", out.diagnosis);
+        snprintf(texts[student], sizeof texts[student], "%s", out.diagnosis_text);
+        sl_image_free(&out.diff);
+        sl_case_result_free(&r);
+        sl_reference_free(&ref);
+    }
+    CHECK(strcmp(ids[0], ids[1]) == 0);
+    CHECK(strcmp(texts[0], texts[1]) == 0);
+    CHECK(strncmp(ids[0], "bias-too-small-or-missing-", 26) == 0);
+    if (strncmp(ids[0], "bias-too-small-or-missing-", 26) != 0) fprintf(stderr, "  id: %s (%s)\n", ids[0], texts[0]);
+    /* a probe's verdict, named with its function; another verdict, another id */
+    static const float rows[][SL_PROBE_MAX_INPUTS] = {{1.0f, 0.0005f, 0.0015f, 0.01f}, {0.5f, 0.0005f, 0.0015f, 0.01f}};
+    double expected[2], with_sin[2], constant[2] = {0.004, 0.004};
+    for (int i = 0; i < 2; i++) {
+        double cos_t = rows[i][0], sin_t = sqrt(1 - cos_t * cos_t);
+        expected[i] = fmin(rows[i][1] + rows[i][2] * sin_t / cos_t, rows[i][3]);
+        with_sin[i] = fmin(rows[i][1] + rows[i][2] * sin_t, rows[i][3]);
+    }
+    sl_check_result out;
+    grade_probe("slope_scaled_bias", 2, rows, with_sin, expected, &out);
+    CHECK(strncmp(out.diagnosis_text, "slope_scaled_bias(): sin(theta) where tan(theta) belongs", 56) == 0);
+    char sin_id[80];
+    snprintf(sin_id, sizeof sin_id, "%s", out.diagnosis);
+    grade_probe("slope_scaled_bias", 2, rows, constant, expected, &out);
+    CHECK(strcmp(out.diagnosis, sin_id) != 0 && strncmp(out.diagnosis, "slope-scaled-bias-", 18) == 0);
+    grade_probe("slope_scaled_bias", 2, rows, expected, expected, &out);
+    CHECK(out.passed && !out.diagnosis[0]);
+}
+
 /* A vertical shadow edge whose soft ramp is `near` px wide in the top half and `far` px in the bottom. */
 static sl_image ramp(int near, int far) {
     sl_image img = sl_image_alloc(64, 64, 1);
@@ -722,16 +819,53 @@ static void test_grade_small_shadow_missing(void) {
     sl_image_free(&reference);
 }
 
+/* Text as editors write it: a byte-order mark, CRLF and lone CR go; bytes
+ * that are not UTF-8 text are found at their offset (RFC 3629's cases). */
+static void test_text_normalise_and_check(void) {
+    char text[] = "\xef\xbb\xbf#version 330\r\nvoid f();\rint x;\r\n";
+    sl_text_fix fix;
+    size_t n = sl_text_normalize(text, sizeof text - 1, &fix);
+    CHECK(n == strlen("#version 330\nvoid f();\nint x;\n") && memcmp(text, "#version 330\nvoid f();\nint x;\n", n) == 0);
+    CHECK(fix.bom_removed && fix.crlf == 2 && fix.lone_cr == 1);
+    char plain[] = "int x;\n";
+    CHECK(sl_text_normalize(plain, 7, &fix) == 7 && !sl_text_fix_any(&fix));
+    sl_text_problems p;
+    CHECK(sl_text_check("caf\xc3\xa9 \xe6\x97\xa5 \xf0\x9f\x98\x80\n", 15, &p)); /* 2-, 3- and 4-byte forms */
+    static const struct {
+        const char *text;
+        size_t len;
+        long long offset;
+    } invalid[] = {
+        {"ab\xc0\x80", 4, 2},     /* overlong NUL */
+        {"a\xed\xa0\x80", 4, 1}, /* a surrogate */
+        {"\xf4\x90\x80\x80", 4, 0}, /* past U+10FFFF */
+        {"ok\n\xe2\x82", 5, 3},   /* cut short at the end */
+        {"x\x80", 2, 1},           /* a lone continuation byte */
+        {"\xff", 1, 0},
+    };
+    for (size_t i = 0; i < sizeof invalid / sizeof invalid[0]; i++) {
+        CHECK(!sl_text_check(invalid[i].text, invalid[i].len, &p) && p.invalid_offset == invalid[i].offset);
+    }
+    CHECK(!sl_text_check("a\nb\nc\0d", 7, &p) && p.nul_offset == 5 && p.nul_line == 3 && p.invalid_offset < 0);
+    CHECK(!sl_text_check("\xff\xfe#\0", 4, &p) && p.utf16);
+    char said[400];
+    sl_text_check("a\nb\xff", 4, &p);
+    sl_text_problems_describe(&p, "pcf.glsl", said, sizeof said);
+    CHECK(strstr(said, "pcf.glsl: invalid UTF-8 at byte offset 3 (line 2)") != NULL);
+}
+
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
         {"compare_depth_patterns", test_compare_depth_patterns},
         {"shader_includes_and_lines", test_shader_includes_and_lines},
         {"shader_missing_include", test_shader_missing_include},
+        {"shader_text_as_editors_write_it", test_shader_text_as_editors_write_it},
         {"case_files", test_case_files},
         {"scenes", test_scenes},
         {"meshes", test_meshes},
         {"grade_names_acne", test_grade_names_acne},
+        {"grade_diagnosis_ids", test_grade_diagnosis_ids},
         {"grade_names_peter_panning", test_grade_names_peter_panning},
         {"grade_names_vsm_mistakes", test_grade_names_vsm_mistakes},
         {"grade_penumbra_inverted", test_grade_penumbra_inverted},
@@ -742,6 +876,7 @@ int main(int argc, char **argv) {
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},
         {"sha256_known_answers", test_sha256_known_answers},
+        {"text_normalise_and_check", test_text_normalise_and_check},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;

@@ -34,6 +34,15 @@ for path in turn slide; do
     fi
   done
 done
+# With the overlay, the marks are the scene's: its pass times change every frame, and count for nothing.
+if "$solutions" "${shimmer[@]}" --camera-path turn --overlay --mark-changes --screenshot "$work/turn-overlay.png" \
+     >"$work/turn-overlay.log" 2>&1; then
+  [ "$(changed "$work/turn-overlay.log")" = "$(changed "$work/turn-snapped.log")" ] ||
+    problem "with the overlay --mark-changes counts $(changed "$work/turn-overlay.log")%, without it $(changed "$work/turn-snapped.log")%"
+  "$check" label "$work/turn-overlay.png" 8 8 150 40 || problem "--mark-changes with --overlay saved no overlay"
+else
+  cat "$work/turn-overlay.log"; problem "--mark-changes with --overlay failed"
+fi
 # The red marks are in the picture: it differs from a still frame where the edges are.
 "$solutions" --headless --lab 6 --scene cascade_field --map-size 256 --frames 1 --size 480x300 \
   --screenshot "$work/still.png" >/dev/null 2>&1 || problem "a still frame failed"

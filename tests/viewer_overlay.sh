@@ -5,7 +5,11 @@
 # --frames it is off, so screenshots and figures keep their pictures; the
 # light's frustum draws lines into the scene; and where the viewer carries the
 # solutions, --solutions draws exactly what the solutions' own viewer draws;
-# the keys O, G and U do what their options do.
+# the keys O, G and U do what their options do. The overlay says what really
+# draws when the asked lab is off (as the renderer noted it); --labels names the
+# cascade colours, the cube faces and the light; --lecture draws thicker lines
+# and larger text; in a window the key panel lists the lab's own keys with their
+# state; --help's keys are the key table's.
 set -u
 viewer=$1 solutions=$2 check=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
@@ -63,6 +67,92 @@ if "$viewer" --help | grep -q -- "--solutions"; then
     echo "viewer_overlay: this build has no second lab code (a solutions build or a handout): A/B not checked"
   else
     cat "$work/log"; problem "--solutions failed"
+  fi
+fi
+
+# What really draws, as the renderer noted it: a setting (lab 5's P), the scene (lab 7 needs a point
+# light), a lab's shaders (a copy of the solutions with lab 5's GLSL broken).
+status() { grep -E "^shadowlab: lab [0-9] .* is off: " "$work/log"; }
+run "$solutions" --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay --pcf
+status | grep -qF "lab 5 VSM is off: switched off with P; drawing lab 4's PCF grid 3x3" ||
+  problem "lab 5 with VSM switched off does not say it draws lab 4's filter"
+grep -q "\[top left\] VSM: moments" "$work/log" && problem "lab 5's overlay gives VSM's settings while lab 4's filter draws"
+grep -q "\[top left\] filter: PCF grid 3x3" "$work/log" || problem "lab 5 with VSM off does not give lab 4's filter settings"
+run "$solutions" --headless --lab 7 --scene boxes_on_floor --size 320x200 --frames 1 --overlay
+status | grep -qF "lab 7 cube maps is off: boxes_on_floor has no point light (closed_room has one); drawing lab 4's PCF grid 3x3" ||
+  problem "lab 7 without a point light does not say what draws"
+labs=$(sed -nE 's/^shadowlab: .* labs from (.*)$/\1/p' "$work/log" | head -n 1)
+if [ -d "$labs/lab5_vsm/shaders" ]; then
+  cp -r "$labs" "$work/broken-labs" && echo "this is not GLSL;" >>"$work/broken-labs/lab5_vsm/shaders/vsm.glsl"
+  "$solutions" --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay \
+    --labs-dir "$work/broken-labs" >"$work/log" 2>&1
+  status | grep -qF "lab 5 VSM is off: lab 5's shaders do not compile; drawing lab 4's PCF grid 3x3" ||
+    { cat "$work/log"; problem "lab 5 with broken shaders does not say lab 4's filter draws"; }
+  grep -qE "\[top left\] lab 5 VSM is off: lab 5's shaders do not compile" "$work/log" ||
+    problem "the overlay does not say lab 5's shaders stop VSM"
+else
+  problem "cannot find the solutions' labs folder in the viewer's first line"
+fi
+# This build's own labs, stubs or not: every function the status line blames is one the same frame reports
+# as not implemented, and a lab that is not off shows its own settings.
+run "$viewer" --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay
+while read -r n fn; do
+  grep -qF "not implemented yet: lab${n}_${fn}()" "$work/log" || problem "the status blames lab${n}_${fn}, which is not reported as not implemented"
+done < <(status | grep -oE "lab [0-9]'s [a-z0-9_]+ is not implemented" | sed -E "s/lab ([0-9])'s ([a-z0-9_]+) .*/\1 \2/")
+status >/dev/null || grep -q "\[top left\] VSM: moments" "$work/log" || problem "lab 5 draws but its overlay does not say VSM"
+
+# --labels: the cascade colours' legend (split depths from the frame), the cube faces named in the cross, the
+# light's marker; in the picture, text on a dark backing where they are.
+run "$solutions" --headless --lab 6 --scene cascade_field --size 640x400 --frames 1 --show-cascades --labels \
+  --screenshot "$work/l6-labels.png"
+for line in "\[top right\] cascades \(K\), view depth" "\[top right\] ## 0: [0-9.]+ - [0-9.]+" "\[top right\] ## 3: [0-9.]+ - [0-9.]+"; do
+  grep -qE "$line" "$work/log" || problem "the cascade legend does not say: $line"
+done
+"$check" label "$work/l6-labels.png" 490 6 140 50 || problem "no cascade legend in the top right corner"
+run "$solutions" --headless --lab 7 --scene closed_room --size 640x400 --frames 1 --show-map --labels \
+  --screenshot "$work/l7-labels.png"
+for face in +X -X +Y -Y +Z -Z; do grep -qF "[label] $face" "$work/log" || problem "the cube face $face is not labelled"; done
+grep -qF "[marker] point light" "$work/log" || problem "no marker at the point light"
+# The cross's cells are 66 px (half what fits 4 x 3 in 640x400), 8 px off the lower right: +Y's top left is
+# at 434,194, +X's at 500,260; the labels sit just inside.
+"$check" label "$work/l7-labels.png" 436 196 16 13 || problem "no +Y label on the cross"
+"$check" label "$work/l7-labels.png" 502 262 16 13 || problem "no +X label on the cross"
+
+# --lecture: the frustum's lines are thicker (more pixels change) and the text larger (the panel reaches
+# farther); the same scene otherwise.
+run "$solutions" "${common[@]}" --frustum --lecture --screenshot "$work/lecture-frustum.png"
+normal=$("$check" differ "$work/plain.png" "$work/frustum.png") lecture=$("$check" differ "$work/plain.png" "$work/lecture-frustum.png")
+echo "viewer_overlay: the frustum changes $normal% of the pixels, $lecture% with --lecture"
+awk -v a="$normal" -v b="$lecture" 'BEGIN { exit !(b >= 2 * a && a > 0) }' || problem "--lecture's frustum lines are not thicker"
+run "$solutions" "${common[@]}" --overlay --lecture --screenshot "$work/lecture-overlay.png"
+"$check" text "$work/lecture-overlay.png" "$work/plain.png" 8 100 280 60 || problem "--lecture's panel is not larger"
+"$check" text "$work/overlay.png" "$work/plain.png" 8 100 280 60 >/dev/null && problem "the plain overlay reaches as far as --lecture's"
+
+# --help lists the key table (--list-keys, for scripts) and nothing says the solutions key is A.
+"$viewer" --help >"$work/help" 2>&1 || problem "--help failed"
+"$viewer" --list-keys >"$work/keys" 2>&1 || problem "--list-keys failed"
+[ "$(wc -l <"$work/keys")" -ge 30 ] || problem "--list-keys lists $(wc -l <"$work/keys") keys"
+while IFS=$'\t' read -r lab keys what; do
+  grep -qF -- "$keys" "$work/help" && grep -qF -- "$what" "$work/help" || problem "--help does not list $keys ($what), lab $lab"
+done <"$work/keys"
+grep -qE "^all	U	student or solutions code" "$work/keys" || problem "U is not the solutions key"
+grep -qE "key A\b|^ +A +[a-z]" "$work/help" && problem "--help still names A for the solutions"
+
+# In a window the key panel lists the lab's own keys and what they set now: K colours the cascades, U
+# switches to the solutions' code (where the build has them), and the panel says so.
+if command -v xvfb-run >/dev/null; then
+  xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --lab 6 --scene cascade_field --size 640x400 --frames 2 --overlay \
+    --keys KU --screenshot "$work/keys-window.png" >"$work/log" 2>&1 || { cat "$work/log"; problem "the viewer failed in a window"; }
+  for line in "\[bottom left\] keys, lab 6" "\[bottom left\] K +cascade colours: on" "\[bottom left\] , \. +lambda: 0\.80" \
+              "\[bottom left\] W A S D Q E fly" "\[bottom left\] .*G frustum: off"; do
+    grep -qE "$line" "$work/log" || problem "the key panel does not say: $line"
+  done
+  grep -qE "\[bottom left\] (B|F|C) " "$work/log" && problem "lab 6's key panel lists keys of labs 2-4"
+  "$check" label "$work/keys-window.png" 8 330 120 60 || problem "no key panel in the lower left corner"
+  if grep -q "drawing with the solutions code" "$work/log"; then
+    grep -qF "U code: solutions" "$work/log" || problem "after U the key panel does not say the solutions' code draws"
+  else
+    grep -qF "U code" "$work/log" && problem "the key panel offers U in a build without the solutions' code"
   fi
 fi
 exit $fail

@@ -21,9 +21,9 @@ uniform int u_show_cascades;
 
 out vec4 frag_color;
 
-// One colour per cascade for the debug tint: red, green, blue, yellow.
-const vec3 sl_cascade_colours[4] = vec3[4](vec3(1.0, 0.35, 0.3), vec3(0.35, 1.0, 0.35), vec3(0.35, 0.5, 1.0),
-                                           vec3(1.0, 0.9, 0.3));
+// One colour per cascade for the debug tint (sl_cascade_colours in sl_lab6_cascades.c, which the viewer's
+// legend and the --case view show too).
+uniform vec3 u_cascade_colours[4];
 
 // The shadow test in cascade m (its matrix and texel size) at layer `layer`, as your cascade_compare() does it.
 float sl_cascade_lookup(int layer, int m, vec3 n, float n_dot_l) {
@@ -60,5 +60,5 @@ void main() {
     }
     frag_color = sl_shade(v_world_position, v_world_normal, visibility);
     if (u_show_cascades != 0 && u_output == 0 && layer >= 0)
-        frag_color.rgb = mix(frag_color.rgb, sl_cascade_colours[clamp(layer, 0, 3)], 0.35);
+        frag_color.rgb = mix(frag_color.rgb, u_cascade_colours[clamp(layer, 0, 3)], 0.35);
 }

@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""prepare_deck.py: a deck as the lecturer or a student gets it.
+
+  prepare_deck.py --audience lecturer|student --out-dir OUT DECK.md > DECK.for-pandoc.md
+
+- `<!-- solution: PATH NAME -->` becomes, for the lecturer, a code block with
+  the function NAME as the solutions' file PATH has it (the slide and the code
+  cannot disagree, and the deck's Markdown holds no solution code: the
+  students' handout ships the Markdown). For students it becomes a note
+  naming the TODO where they write it.
+- `::: lecturer` ... `:::` blocks are the lecturer's only.
+- An image whose figure was left out (OUT/figures/manifest.json: no solutions
+  to draw it with and none pre-rendered) becomes a note saying so: never a
+  shadowless picture under a shadow caption.
+"""
+import argparse
+import json
+import os
+import re
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+SOLUTION = re.compile(r"^<!-- solution: *(\S+) +(\S+)(?: +(TODO\([^)]*\)))? *-->$")
+IMAGE = re.compile(r"!\[([^\]]*)\]\((figures/[^)\s]+)\)(\{[^}]*\})?")
+
+
+def function_text(path, name):
+    """The function NAME in a C or GLSL file: from its signature's line to its closing brace."""
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().split("\n")
+    sig = re.compile(r"^\S.*\b" + re.escape(name) + r"\s*\(")
+    for i, line in enumerate(lines):
+        if sig.match(line) and not line.rstrip().endswith(";"):
+            depth, out = 0, []
+            for line2 in lines[i:]:
+                out.append(line2)
+                depth += line2.count("{") - line2.count("}")
+                if "{" in "".join(out) and depth == 0:
+                    return "\n".join(out)
+    raise SystemExit(f"prepare-deck: no function {name} in {path}")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--audience", choices=["lecturer", "student"], required=True)
+    ap.add_argument("--out-dir", required=True)
+    ap.add_argument("deck")
+    a = ap.parse_args()
+    manifest = {}
+    mpath = os.path.join(a.out_dir, "figures", "manifest.json")
+    if os.path.isfile(mpath):
+        with open(mpath) as f:
+            manifest = json.load(f)
+    out = []
+    skipping = False
+    with open(a.deck, encoding="utf-8") as f:
+        lines = f.read().split("\n")
+    for line in lines:
+        s = line.strip()
+        if s in ("::: lecturer", "::: {.lecturer}"):
+            if a.audience == "student":
+                skipping = True
+                continue
+            out.append("::: {.lecturer}")
+            continue
+        if skipping:
+            if s == ":::":
+                skipping = False
+            continue
+        m = SOLUTION.match(s)
+        if m:
+            path, name, todo = m.group(1), m.group(2), m.group(3)
+            lang = "glsl" if path.endswith((".glsl", ".vert", ".frag", ".geom")) else "c"
+            if a.audience == "lecturer":
+                full = os.path.join(ROOT, path)
+                if not os.path.isfile(full):
+                    sys.exit(f"prepare-deck: {a.deck}: {path} is not here (a lecturer's deck needs solutions/)")
+                out += ["```" + lang, function_text(full, name), "```"]
+            else:
+                where = f" ({todo})" if todo else ""
+                out.append(f"[The lecturer's deck shows the solution's `{name}` here; "
+                           f"it is yours to write{where}.]{{.left-out}}")
+            continue
+
+        def swap(mm):
+            target = mm.group(2)
+            if manifest.get(target, {}).get("status") == "missing":
+                cap = mm.group(1).strip()
+                what = f" ({cap})" if cap else ""
+                return (f"[Figure left out{what}: it is drawn with the solutions' code, which this copy does "
+                        f"not have; the course's pre-rendered figures fill it in.]{{.left-out}}")
+            return mm.group(0)
+        out.append(IMAGE.sub(swap, line))
+    sys.stdout.write("\n".join(out))
+
+
+if __name__ == "__main__":
+    main()

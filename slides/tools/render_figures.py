@@ -1,0 +1,187 @@
+#!/usr/bin/env python3
+"""render_figures.py: makes every figure the decks name, from the command written in the deck.
+
+  render_figures.py --viewer SHADOWLAB --out OUT_DIR [--from solutions|none]
+                    [--prerendered DIR] [--jobs N] DECK.md...
+
+A deck names each figure in a comment just above where it shows it; the
+command runs from OUT_DIR, so figures/... lands in OUT_DIR/figures:
+
+  <!-- figure: shadowlab ARGS --screenshot figures/x.png -->          the viewer, one
+        frame, headless (--headless --frames 1 in front; ARGS may ask for more frames)
+  <!-- animation: shadowlab ARGS --frames N --screenshot figures/x.gif -->
+  <!-- diagram: NAME.py ARGS --out figures/x.svg -->     slides/diagrams/NAME.py
+  <!-- derive: crop|inset figures/src.png X,Y WxH [--scale S] --out figures/x.png -->
+        slides/tools/figtool.py on a figure made before it
+
+The viewer's figures show the solutions' code. With --from none (a copy
+without solutions/, e.g. the students' handout) they are copied from
+--prerendered (staff render them once and ship them), or left out: the
+manifest (OUT_DIR/figures/manifest.json) says which, and the deck builder
+puts a note where a left-out figure was. A figure whose command, viewer
+binary, shaders and scenes are unchanged since it was made is not made again
+(OUT_DIR/figures/.stamps), so the tests and a second build share renders.
+"""
+import argparse
+import concurrent.futures
+import hashlib
+import json
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+import time
+
+LINE = re.compile(r"^<!-- (figure|animation|diagram|derive): *(.*?) *-->$")
+HERE = os.path.dirname(os.path.abspath(__file__))
+SLIDES = os.path.dirname(HERE)
+ROOT = os.path.dirname(SLIDES)
+
+
+def directives(deck):
+    out = []
+    with open(deck, encoding="utf-8") as f:
+        for no, line in enumerate(f, 1):
+            m = LINE.match(line.strip())
+            if m:
+                out.append((m.group(1), shlex.split(m.group(2)), no))
+    return out
+
+
+def target_of(kind, args):
+    flag = "--screenshot" if kind in ("figure", "animation") else "--out"
+    for i, a in enumerate(args):
+        if a == flag and i + 1 < len(args):
+            return args[i + 1]
+    return None
+
+
+def tree_hash(paths):
+    """A digest of the files a render depends on besides its command."""
+    h = hashlib.sha256()
+    for base in paths:
+        if os.path.isfile(base):
+            with open(base, "rb") as f:
+                h.update(f.read())
+            continue
+        for d, dirs, files in sorted(os.walk(base)):
+            dirs.sort()
+            for name in sorted(files):
+                p = os.path.join(d, name)
+                h.update(p.encode())
+                with open(p, "rb") as f:
+                    h.update(f.read())
+    return h.hexdigest()
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--viewer")
+    ap.add_argument("--viewer-args", default="", help="options put in front of every viewer command")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--from", dest="source", choices=["solutions", "none"], default="solutions")
+    ap.add_argument("--prerendered")
+    ap.add_argument("--jobs", type=int, default=int(os.environ.get("SL_FIGURE_JOBS", "2")))
+    ap.add_argument("--python", default=sys.executable)
+    ap.add_argument("decks", nargs="+")
+    a = ap.parse_args()
+    out = os.path.abspath(a.out)
+    if a.viewer:
+        a.viewer = os.path.abspath(a.viewer)
+    figures = os.path.join(out, "figures")
+    stamps = os.path.join(figures, ".stamps")
+    os.makedirs(stamps, exist_ok=True)
+    viewer_args = shlex.split(a.viewer_args)
+    dep_paths = [p for p in [a.viewer] if p] + [
+        os.path.join(ROOT, d) for d in ("framework/shaders", "framework/scenes", "labs", "solutions") if
+        os.path.isdir(os.path.join(ROOT, d))]
+    deps = tree_hash(dep_paths) if a.source == "solutions" and a.viewer else "none"
+
+    jobs = []  # (deck, line, kind, args, target)
+    for deck in a.decks:
+        for kind, args, no in directives(deck):
+            t = target_of(kind, args)
+            if not t:
+                sys.exit(f"render-figures: {deck}:{no}: a {kind} line without its output (--screenshot/--out)")
+            jobs.append((os.path.basename(deck), no, kind, args, t))
+    manifest = {}
+    failures = []
+    counts = {"rendered": 0, "cached": 0, "copied": 0, "missing": 0}
+
+    # What else a figure depends on: the viewer and its inputs; a diagram's scripts; figtool.
+    tool_hash = {"diagram": tree_hash([os.path.join(SLIDES, "diagrams")]),
+                 "derive": tree_hash([os.path.join(HERE, "figtool.py")])}
+
+    def stamp_of(kind, args):
+        extra = tool_hash.get(kind, deps)
+        if kind == "derive":   # a crop is as new as the picture it is cut from
+            src = os.path.join(out, args[1])
+            extra += tree_hash([src]) if os.path.isfile(src) else "none"
+        return hashlib.sha256(json.dumps([kind, args, viewer_args, extra]).encode()).hexdigest()
+
+    def run(job):
+        deck, no, kind, args, target = job
+        path = os.path.join(out, target)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        stamp_file = os.path.join(stamps, target.replace("/", "_") + ".key")
+        if kind in ("figure", "animation") and a.source == "none":
+            pre = os.path.join(a.prerendered, os.path.basename(target)) if a.prerendered else None
+            if pre and os.path.isfile(pre):
+                shutil.copyfile(pre, path)
+                return target, "copied", None
+            if os.path.exists(path):
+                os.remove(path)
+            return target, "missing", None
+        if kind == "derive" and manifest_status.get(args[1]) == "missing":
+            if os.path.exists(path):
+                os.remove(path)
+            return target, "missing", None
+        key = stamp_of(kind, args)
+        if os.path.isfile(path) and os.path.isfile(stamp_file) and open(stamp_file).read() == key:
+            return target, "cached", None
+        if kind in ("figure", "animation"):
+            if args[0] != "shadowlab":
+                return target, "failed", f"{deck}:{no}: a {kind} command starts with shadowlab"
+            first = ["--headless"] + (["--frames", "1"] if kind == "figure" else [])
+            cmd = [a.viewer] + viewer_args + first + args[1:]
+        elif kind == "diagram":
+            cmd = [a.python, os.path.join(SLIDES, "diagrams", args[0])] + args[1:]
+        else:
+            cmd = [a.python, os.path.join(HERE, "figtool.py")] + args
+        t0 = time.time()
+        r = subprocess.run(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        if r.returncode != 0 or not os.path.isfile(path):
+            err = "\n".join(r.stderr.strip().splitlines()[-3:])
+            return target, "failed", f"{deck}:{no}: {' '.join(shlex.quote(x) for x in args)}\n  {err}"
+        with open(stamp_file, "w") as f:
+            f.write(key)
+        print(f"render-figures: {target} ({time.time() - t0:.1f} s)", flush=True)
+        return target, "rendered", None
+
+    # Viewer figures and diagrams first (in parallel), then what is derived from them.
+    manifest_status = {}
+    first = [j for j in jobs if j[2] != "derive"]
+    later = [j for j in jobs if j[2] == "derive"]
+    for batch in (first, later):
+        with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
+            for job, (target, status, err) in zip(batch, pool.map(run, batch)):
+                manifest_status[target] = status
+                manifest[target] = {"deck": job[0], "line": job[1], "kind": job[2], "status": status}
+                if err:
+                    failures.append(err)
+                else:
+                    counts[status] += 1
+    with open(os.path.join(figures, "manifest.json"), "w") as f:
+        json.dump(manifest, f, indent=1, sort_keys=True)
+    print("render-figures: %d made, %d unchanged since the last build, %d copied from pre-rendered figures, "
+          "%d left out (no solutions and none pre-rendered), %d failed, in %s" %
+          (counts["rendered"], counts["cached"], counts["copied"], counts["missing"], len(failures), figures))
+    for e in failures:
+        print("render-figures: FAILED " + e, file=sys.stderr)
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
