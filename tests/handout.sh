@@ -9,7 +9,7 @@ src=$1 work=$2
 rm -rf "$work"; mkdir -p "$work"
 fail=0
 problem() { echo "handout: $*" >&2; fail=1; }
-"$src/scripts/make-handout.sh" "$work/dist" || exit 1
+"$src/scripts/make-handout.sh" --committed "$work/dist" || exit 1
 tar -xzf "$work"/dist/shadowlab-*.tar.gz -C "$work" || exit 1
 root=$(find "$work" -maxdepth 1 -type d -name 'shadowlab-*' | head -n 1)
 [ ! -e "$root/solutions" ] || problem "solutions/ is in the handout"
@@ -63,6 +63,8 @@ grep -q "no solutions/" <<<"$out" || problem "--update-references is not refused
 # A student who finished every lab: the handout's own tests pass, full marks.
 for lab in "$src"/solutions/lab*; do cp -R "$lab"/. "$root/labs/$(basename "$lab")/"; done
 cmake --build "$root/build" -j "$(nproc)" >>"$work/build.log" 2>&1 || { tail -n 30 "$work/build.log"; exit 1; }
+cmake --build "$root/build" -j "$(nproc)" --target test-programs >>"$work/build.log" 2>&1 ||
+  { tail -n 30 "$work/build.log"; exit 1; }
 ctest --test-dir "$root/build" --output-on-failure >"$work/ctest.log" 2>&1 || { cat "$work/ctest.log"; problem "the handout's own tests fail on finished labs"; }
 grep -E "tests passed" "$work/ctest.log"
 out=$("$root/build/bin/shadowlab-grade" 2>&1)

@@ -13,7 +13,7 @@ mkdir -p "$work"
 chmod 755 "$work"
 fail=0
 problem() { echo "stage.$case_name: $*" >&2; fail=1; }
-solutions="$source/solutions" stubs="$source/labs"
+solutions="$source/solutions" stubs="${SHADOWLAB_STUBS:-$source/labs}"
 
 # stage NAME SUBMISSION [OPTIONS...]: a fresh stage from the stubs, staged into;
 # $status, $out (what it said), $stage and $summary are set.
