@@ -12,7 +12,9 @@ cd "$(dirname "$0")/.."
 # The lecture decks' tools (pandoc, WeasyPrint, KaTeX and node, pdftoppm, Chromium), so the slides' tests
 # run here and in CI; SL_SLIDES=0 leaves them out (those tests are then skipped).
 [ "${SL_SLIDES:-1}" = 0 ] || ./scripts/install-slides-deps.sh
-cmake -S . -B build -DSL_LABS="${SL_LABS:-student}"
+generator=() # as bootstrap.sh: Ninja for a new build folder
+[ -f build/CMakeCache.txt ] || ! command -v ninja >/dev/null || generator=(-G Ninja)
+cmake -S . -B build "${generator[@]+"${generator[@]}"}" -DSL_LABS="${SL_LABS:-student}"
 cmake --build build -j "$(nproc)"
 cmake --build build -j "$(nproc)" --target test-programs
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900
