@@ -3,7 +3,9 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <fnmatch.h>
+#include <ftw.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -185,8 +187,50 @@ static const char *_sl_isolated_source(int lab, int other, const char *graded) {
     return sl_lab_builds_on(lab, other) ? sl_config_solutions_dir : sl_config_stubs_dir;
 }
 
-/* --isolate below the namespaces sandbox: ROOT/labN/ holds, for every lab, a
- * link to its folder where lab N's runner takes it from (_sl_isolated_source).
+/* Copies the regular files and folders of `from` into `to` (made), readable to
+ * all: the runners of the uid and basic sandboxes read the stand-ins' shaders
+ * as a user who may not read the solutions or the build (the Gradescope image
+ * closes them to uid 65534). Links are not followed. */
+static bool _sl_copy_readable(const char *from, const char *to, int depth) {
+    if (depth > 4 || mkdir(to, 0755) != 0) return false;
+    chmod(to, 0755);
+    DIR *dir = opendir(from);
+    if (!dir) return false;
+    bool ok = true;
+    struct dirent *e;
+    while (ok && (e = readdir(dir))) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+        char src[2048], dst[2048];
+        struct stat st;
+        snprintf(src, sizeof src, "%s/%s", from, e->d_name);
+        snprintf(dst, sizeof dst, "%s/%s", to, e->d_name);
+        if (lstat(src, &st) != 0) continue;
+        if (S_ISDIR(st.st_mode)) {
+            ok = _sl_copy_readable(src, dst, depth + 1);
+        } else if (S_ISREG(st.st_mode)) {
+            int in = open(src, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+            int out = in >= 0 ? open(dst, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644) : -1;
+            char buf[16384];
+            ssize_t n = 0;
+            while (out >= 0 && (n = read(in, buf, sizeof buf)) > 0)
+                if (write(out, buf, (size_t)n) != n) n = -1, ok = false;
+            if (in < 0 || out < 0 || n < 0) ok = false;
+            if (out >= 0) fchmod(out, 0644), close(out);
+            if (in >= 0) close(in);
+        }
+    }
+    closedir(dir);
+    return ok;
+}
+
+static int _sl_remove_entry(const char *path, const struct stat *st, int type, struct FTW *ftw) {
+    (void)st, (void)ftw;
+    return type == FTW_DP ? rmdir(path) : unlink(path);
+}
+
+/* --isolate below the namespaces sandbox: ROOT/labN/ holds, for every lab, its
+ * folder where lab N's runner takes it from (_sl_isolated_source): a link to
+ * the graded tree's own lab, a readable copy of a stand-in (solutions, stubs).
  * (In namespaces, the sandbox copies each lab's shaders itself.) */
 static bool _sl_make_isolation_trees(char root[64], const char *graded, char trees[][96]) {
     snprintf(root, 64, "/tmp/shadowlab-isolate-XXXXXX");
@@ -205,8 +249,9 @@ static bool _sl_make_isolation_trees(char root[64], const char *graded, char tre
             char target[2048], link_path[256];
             snprintf(target, sizeof target, "%s/%s", _sl_isolated_source(lab, other, graded), sl_lab_folder(other));
             snprintf(link_path, sizeof link_path, "%s/%s", trees[lab], sl_lab_folder(other));
-            if (symlink(target, link_path) != 0) {
-                fprintf(stderr, "shadowlab-grade: cannot link %s for --isolate\n", target);
+            bool own = other == lab;
+            if (own ? symlink(target, link_path) != 0 : !_sl_copy_readable(target, link_path, 0)) {
+                fprintf(stderr, "shadowlab-grade: cannot %s %s for --isolate\n", own ? "link" : "copy", target);
                 return false;
             }
         }
@@ -216,18 +261,7 @@ static bool _sl_make_isolation_trees(char root[64], const char *graded, char tre
 
 static void _sl_remove_isolation_trees(const char *root) {
     if (!root[0]) return;
-    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
-        if (!sl_lab_folder(lab)) continue;
-        char path[256];
-        for (int other = 1; other <= SL_LAB_COUNT; other++) {
-            if (!sl_lab_folder(other)) continue;
-            snprintf(path, sizeof path, "%s/lab%d/%s", root, lab, sl_lab_folder(other));
-            unlink(path);
-        }
-        snprintf(path, sizeof path, "%s/lab%d", root, lab);
-        rmdir(path);
-    }
-    rmdir(root);
+    nftw(root, _sl_remove_entry, 16, FTW_DEPTH | FTW_PHYS);
 }
 
 /* What the compiler of a runners folder's lab code could read, as that build
