@@ -228,9 +228,10 @@ static int _sl_remove_entry(const char *path, const struct stat *st, int type, s
     return type == FTW_DP ? rmdir(path) : unlink(path);
 }
 
-/* --isolate below the namespaces sandbox: ROOT/labN/ holds, for every lab, its
- * folder where lab N's runner takes it from (_sl_isolated_source): a link to
- * the graded tree's own lab, a readable copy of a stand-in (solutions, stubs).
+/* --isolate below the namespaces sandbox: ROOT/labN/ holds, for every lab, a
+ * readable copy of its folder where lab N's runner takes it from
+ * (_sl_isolated_source): copies, not links, since a shader's #include must
+ * resolve inside the labs folder, and a stand-in may be closed to the runner.
  * (In namespaces, the sandbox copies each lab's shaders itself.) */
 static bool _sl_make_isolation_trees(char root[64], const char *graded, char trees[][96]) {
     snprintf(root, 64, "/tmp/shadowlab-isolate-XXXXXX");
@@ -249,9 +250,8 @@ static bool _sl_make_isolation_trees(char root[64], const char *graded, char tre
             char target[2048], link_path[256];
             snprintf(target, sizeof target, "%s/%s", _sl_isolated_source(lab, other, graded), sl_lab_folder(other));
             snprintf(link_path, sizeof link_path, "%s/%s", trees[lab], sl_lab_folder(other));
-            bool own = other == lab;
-            if (own ? symlink(target, link_path) != 0 : !_sl_copy_readable(target, link_path, 0)) {
-                fprintf(stderr, "shadowlab-grade: cannot %s %s for --isolate\n", own ? "link" : "copy", target);
+            if (!_sl_copy_readable(target, link_path, 0)) {
+                fprintf(stderr, "shadowlab-grade: cannot copy %s for --isolate\n", target);
                 return false;
             }
         }
