@@ -9,7 +9,6 @@
 
 #include "sl_backend.h"
 #include "sl_platform.h"
-#include "sl_bench_baseline.h"
 #include "sl_context.h"
 #include "sl_renderer.h"
 #define GLFW_INCLUDE_NONE
@@ -29,7 +28,7 @@ typedef struct _sl_technique {
     bool set_filter;
     sl_filter_mode filter;
     int grid_radius;
-    bool baseline;      /* sl_bench_baseline's plain program, not the labs' (grid_radius: its kernel) */
+    bool baseline;      /* the plain-GL program (sl_bench_plain_gl), not the labs' (grid_radius: its kernel) */
     bool set_vsm;       /* lab 5 */
     int blur_radius;
     int cascades;       /* lab 6: the cascade count (0: the default's) */
@@ -63,7 +62,7 @@ static const _sl_technique _sl_techniques[] = {
      .filter = SL_FILTER_PCSS},
     /* The same scene and settings drawn by a plain tutorial-style program:
      * what lab 4's 3x3 grid costs against it, measured in the same run. */
-    {_SL_ROW("plain-gl-3x3", "plain GL program, 3x3 PCF (no lab code; sl_bench_baseline.c)", "boxes_on_floor", 4,
+    {_SL_ROW("plain-gl-3x3", "plain GL program, 3x3 PCF (no lab code; staff builds only)", "boxes_on_floor", 4,
              false), .baseline = true, .grid_radius = 1},
     /* lab 5: VSM, and against lab 4's grid at the same kernel footprint, (2r+1) texels: a separable
      * blur of radius r costs 2 (2r+1) taps per texel of the map, the grid (2r+1)^2 per pixel */
@@ -272,12 +271,16 @@ static void _sl_describe_problem(const sl_frame_info *info, const _sl_technique 
     if (out[0] == ';') memmove(out, out + 2, strlen(out + 2) + 1);
 }
 
+static const sl_bench_plain_gl *_sl_plain_gl;
+
+void sl_bench_set_plain_gl(const sl_bench_plain_gl *program) { _sl_plain_gl = program; }
+
 /* The baseline's frames, timed like the labs'. */
 static bool _sl_run_baseline(sl_context *ctx, const _sl_bench_options *o, const _sl_technique *t, const sl_scene *scene,
                              _sl_result *res, double *frames, double *passes, char *err, size_t err_size) {
     double start = _sl_now_ms();
-    sl_bench_baseline b;
-    if (!sl_bench_baseline_init(&b, scene, o->map_size, t->grid_radius, err, err_size)) return false;
+    void *b = _sl_plain_gl->create(scene, o->map_size, t->grid_radius, err, err_size);
+    if (!b) return false;
     res->programs = 2;
     res->pass_count = 2;
     res->pass_names[0] = "depth";
@@ -288,7 +291,7 @@ static bool _sl_run_baseline(sl_context *ctx, const _sl_bench_options *o, const 
         sl_context_framebuffer_size(ctx, &width, &height);
         if (f > 0) start = _sl_now_ms();
         double pass_ms[2];
-        sl_bench_baseline_draw(&b, scene, width, height, pass_ms);
+        _sl_plain_gl->draw(b, scene, width, height, pass_ms);
         if (o->window) sl_context_end_frame(ctx);
         glFinish();
         double ms = _sl_now_ms() - start;
@@ -303,11 +306,11 @@ static bool _sl_run_baseline(sl_context *ctx, const _sl_bench_options *o, const 
     }
     double last[2];
     glFinish();
-    sl_bench_baseline_draw(&b, scene, 16, 16, last); /* collects the last timed frame's pass times */
+    _sl_plain_gl->draw(b, scene, 16, 16, last); /* collects the last timed frame's pass times */
     glFinish();
     passes[0 * o->frames + o->frames - 1] = last[0];
     passes[1 * o->frames + o->frames - 1] = last[1];
-    sl_bench_baseline_destroy(&b);
+    _sl_plain_gl->destroy(b);
     return true;
 }
 
@@ -483,7 +486,9 @@ int sl_bench_main(int argc, char **argv) {
     const _sl_technique *chosen[_SL_TECHNIQUE_COUNT];
     int count = 0;
     for (int i = 0; i < _SL_TECHNIQUE_COUNT; i++)
-        if (!o.only || sl_platform_match(o.only, _sl_techniques[i].name)) chosen[count++] = &_sl_techniques[i];
+        if ((!_sl_techniques[i].baseline || _sl_plain_gl) &&
+            (!o.only || sl_platform_match(o.only, _sl_techniques[i].name)))
+            chosen[count++] = &_sl_techniques[i];
     if (o.list) {
         for (int i = 0; i < count; i++)
             printf("%-20s lab %d, %s: %s%s\n", chosen[i]->name, chosen[i]->lab, chosen[i]->scene, chosen[i]->what,

@@ -1,5 +1,7 @@
 #include "sl_params.h"
 
+#include "sl_lab_dependencies.h" /* generated from lab_dependencies.cmake */
+
 #include <string.h>
 
 void sl_render_params_defaults(sl_render_params *p) {
@@ -112,4 +114,16 @@ const char *sl_cube_face_name(int face) { return face >= 0 && face < 6 ? _sl_cub
 int sl_cube_face_parse(const char *name) {
     int i;
     return _sl_find_name(_sl_cube_face_names, 6, name, &i) ? i : -1;
+}
+
+bool sl_lab_builds_on(int lab, int earlier) {
+    static const unsigned masks[] = SL_LAB_BUILDS_ON_MASKS;
+    if (lab < 1 || lab >= (int)(sizeof masks / sizeof masks[0]) || earlier < 1 || earlier >= lab) return false;
+    return (masks[lab] >> earlier) & 1u;
+}
+
+bool sl_lab_shows(int lab, int earlier) {
+    static const unsigned masks[] = SL_LAB_SHOWS_MASKS;
+    if (lab < 1 || lab >= (int)(sizeof masks / sizeof masks[0]) || earlier < 1 || earlier >= lab) return false;
+    return (masks[lab] >> earlier) & 1u;
 }

@@ -96,6 +96,13 @@ int sl_cube_face_parse(const char *name); /* -1 when no face's */
 const char *sl_lab_folder(int lab);
 /* "depth FBO", ..., N = 1..SL_LAB_MAX; "?" otherwise. */
 const char *sl_lab_title(int lab);
+/* Which labs a lab builds on (framework/lab_dependencies.cmake, the one place
+ * it is said): the earlier labs whose code the framework calls when it draws
+ * lab `lab`'s cases (its per-lab runner takes them from the solutions, every
+ * other lab from the stubs); and those of them whose results show in its
+ * pictures (a mistake there is named in it: "needs lab K first"). */
+bool sl_lab_builds_on(int lab, int earlier);
+bool sl_lab_shows(int lab, int earlier);
 
 /* The colour a cascade is shown in (the viewer's K key and frusta, --case,
  * the grader's report): 0 red, 1 green, 2 blue, 3 yellow; grey for none (-1)

@@ -343,23 +343,31 @@ static void _sl_neutral_depth_state(void) {
     glCullFace(GL_BACK);
 }
 
-/* lab1_begin_depth_pass on a map of `size` made here, from a state that is
- * wrong in every way the function must fix: another framebuffer bound, a
- * small viewport, the depth test off with GL_ALWAYS, depth writes off, and
- * the map's depths at 0.5, so a clear shows as 1.0. */
+/* lab1_begin_depth_pass on a framebuffer of `size` made here, from a state
+ * that is wrong in every way the function must fix: another framebuffer
+ * bound, a small viewport, the depth test off with GL_ALWAYS, depth writes
+ * off, and the depths at 0.5, so a clear shows as 1.0. The framebuffer holds
+ * renderbuffers (colour and depth), not lab 1's map: what the map is made of
+ * is lab1_create_shadow_map's to get right, and this file ships to students.
+ * map.depth_texture names a depth texture of that size too, for a function
+ * that attaches it again; the depth read back is whichever is attached. */
 static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int size, double *out) {
     sl_shadow_map map = {.size = size};
+    GLuint renderbuffers[2];
+    glGenRenderbuffers(2, renderbuffers);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size, size);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
     glGenTextures(1, &map.depth_texture);
     glBindTexture(GL_TEXTURE_2D, map.depth_texture);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
     glGenFramebuffers(1, &map.framebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map.depth_texture, 0);
-    glDrawBuffer(GL_NONE);
-    glReadBuffer(GL_NONE);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers[0]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers[1]);
     glDepthMask(GL_TRUE);
     glClearDepth(0.5);
     glClear(GL_DEPTH_BUFFER_BIT);
@@ -388,6 +396,7 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     out[6] = depth;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &map.framebuffer);
+    glDeleteRenderbuffers(2, renderbuffers);
     glDeleteTextures(1, &map.depth_texture);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);

@@ -1,4 +1,12 @@
 /* shadowlab: the viewer. All of it lives in the framework (sl_viewer.c). */
 #include "sl_viewer.h"
+#ifdef SL_BENCH_PLAIN_GL
+#include "sl_bench_baseline.h" /* staff builds: the benchmark's plain-GL row (solutions/bench/) */
+#endif
 
-int main(int argc, char **argv) { return sl_viewer_main(argc, argv); }
+int main(int argc, char **argv) {
+#ifdef SL_BENCH_PLAIN_GL
+    sl_bench_set_plain_gl(&sl_bench_baseline_program);
+#endif
+    return sl_viewer_main(argc, argv);
+}

@@ -91,3 +91,10 @@ void sl_build_failure_grade(const sl_check *k, const char *first_error, sl_check
     out->bonus = k->bonus;
     snprintf(out->message, sizeof out->message, "the submission did not build: %s", first_error);
 }
+
+void sl_build_failure_grade_lab(const sl_check *k, int lab, const char *first_error, sl_check_result *out) {
+    memset(out, 0, sizeof *out);
+    out->max_points = k->points;
+    out->bonus = k->bonus;
+    snprintf(out->message, sizeof out->message, "lab %d did not build: %s", lab, first_error);
+}

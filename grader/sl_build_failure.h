@@ -23,5 +23,8 @@ bool sl_build_failure_first_error(const char *log_path, const char *labs_dir, ch
 
 /* A check of a submission that did not build: no points, and why. */
 void sl_build_failure_grade(const sl_check *k, const char *first_error, sl_check_result *out);
+/* A check of a lab that did not build, where each lab is built on its own
+ * (scripts/grade-submission): the other labs are graded. */
+void sl_build_failure_grade_lab(const sl_check *k, int lab, const char *first_error, sl_check_result *out);
 
 #endif

@@ -165,8 +165,7 @@ void sl_diagnose_cascade_index(const sl_case *c, const sl_check *k, const sl_cas
 void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                          sl_check_result *out);
 /* ---- lab 7 (grader/diagnose/lab7.c) ---- */
-/* Whether lab `lab`'s cases draw with lab `earlier`'s code (lab 7 makes its own map: none). */
-bool sl_lab_builds_on(int lab, int earlier);
+/* sl_lab_builds_on and sl_lab_shows (which labs a lab builds on): sl_params.h */
 /* Whether the runner drew lab 7's cube map in one layered pass (its "path" capture). */
 bool sl_lab7_drawn_layered(const sl_case_result *r);
 /* Whether a lab 7 case calls the function `name` that failed its probe. */

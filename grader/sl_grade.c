@@ -530,7 +530,7 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
                            char *lead, size_t n) {
     if (!context || k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_FBO || k->kind == SL_CHECK_MATRICES) return false;
     for (int lab = 1; lab < c->lab && !context->isolated; lab++) {
-        if (!sl_lab_builds_on(c->lab, lab)) continue;
+        if (!sl_lab_shows(c->lab, lab)) continue;
         const sl_probe_failure *f = _sl_explaining_failure(c, k, context, lab, symptoms);
         if (f) {
             snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,

@@ -137,6 +137,8 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
         snprintf(row->note, sizeof row->note, "grade exit status %s: see %s/grade.log", status_text, row->name);
     } else {
         snprintf(row->status, sizeof row->status, "graded");
+        /* graded per lab: a lab that did not build is named, the others have their grades */
+        if (build_error) snprintf(row->note, sizeof row->note, "%s", build_error);
     }
     if (strcmp(row->status, _SL_STAFF_FAULT) == 0) {
         memset(row->have_lab, 0, sizeof row->have_lab);

@@ -3,7 +3,9 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <fnmatch.h>
+#include <ftw.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -33,6 +35,7 @@ extern const char sl_config_labs_kind[];      /* "student" or "solutions" */
 extern const char sl_config_runners_dir[];    /* shadowlab-runner and its --isolate runners */
 extern const char sl_config_solutions_dir[];  /* "" in a student handout */
 extern const char sl_config_solutions_runner[]; /* the solutions' runner, "" in a handout */
+extern const char sl_config_stubs_dir[];      /* the handout's stubs as committed (per-lab runners), "" in a handout */
 
 /* 3: graded, but the submission held no lab file (--submission-summary says so): a status of its own
  * for a gradebook, not a staff-side problem. */
@@ -71,11 +74,16 @@ static void _sl_usage(FILE *f) {
             "                       (default namespaces; the report says which one was used)\n"
             "  --progress           a line on stderr as each case ends ([k/N] case, seconds); on a\n"
             "                       terminal, one line that updates\n"
-            "  --strict             refuse to grade unless the runners get the namespaces sandbox\n"
-            "                       (for grading servers: a weaker one lets lab code read the files\n"
-            "                       the grader's user can read)\n"
-            "  --isolate            grade each lab with the solutions standing in for the others, so one\n"
-            "                       lab's mistake costs that lab only (needs a copy with solutions/)\n"
+            "  --strict             refuse to grade unless the runners get the namespaces sandbox and\n"
+            "                       their lab code was compiled behind a fence (for grading servers: a\n"
+            "                       weaker sandbox lets lab code read the files the grader's user can\n"
+            "                       read, an unfenced compiler the files the builder could)\n"
+            "  --isolate            grade each lab on its own runner: the solutions stand in for the labs\n"
+            "                       it builds on, the handout's stubs for the others, so one lab's mistake\n"
+            "                       costs that lab only (needs a copy with solutions/)\n"
+            "  --build-logs DIR     with --isolate: a lab whose runner is missing did not build; its checks\n"
+            "                       fail with the compiler's first error in DIR/labN.log\n"
+            "                       (scripts/grade-submission)\n"
             "  --hidden --seed S    grade on hidden variants of the cases, drawn from the seed S (light,\n"
             "                       camera, objects, map size), with references rendered from the\n"
             "                       solutions for this run (needs a copy with solutions/)\n"
@@ -189,9 +197,61 @@ static const char *const *_sl_runner_environment(bool window) {
     return (const char *const *)env;
 }
 
+/* Where lab `other`'s files come from in lab `lab`'s per-lab runner (--isolate):
+ * lab N's own from the graded tree, the labs it builds on from the solutions
+ * (framework/lab_dependencies.cmake), every other lab from the handout's
+ * stubs as committed: never lab N's own solution, never a later lab's. */
+static const char *_sl_isolated_source(int lab, int other, const char *graded) {
+    if (other == lab) return graded;
+    return sl_lab_builds_on(lab, other) ? sl_config_solutions_dir : sl_config_stubs_dir;
+}
+
+/* Copies the regular files and folders of `from` into `to` (made), readable to
+ * all: the runners of the uid and basic sandboxes read the stand-ins' shaders
+ * as a user who may not read the solutions or the build (the Gradescope image
+ * closes them to uid 65534). Links are not followed. */
+static bool _sl_copy_readable(const char *from, const char *to, int depth) {
+    if (depth > 4 || mkdir(to, 0755) != 0) return false;
+    chmod(to, 0755);
+    DIR *dir = opendir(from);
+    if (!dir) return false;
+    bool ok = true;
+    struct dirent *e;
+    while (ok && (e = readdir(dir))) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+        char src[2048], dst[2048];
+        struct stat st;
+        snprintf(src, sizeof src, "%s/%s", from, e->d_name);
+        snprintf(dst, sizeof dst, "%s/%s", to, e->d_name);
+        if (lstat(src, &st) != 0) continue;
+        if (S_ISDIR(st.st_mode)) {
+            ok = _sl_copy_readable(src, dst, depth + 1);
+        } else if (S_ISREG(st.st_mode)) {
+            int in = open(src, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+            int out = in >= 0 ? open(dst, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644) : -1;
+            char buf[16384];
+            ssize_t n = 0;
+            while (out >= 0 && (n = read(in, buf, sizeof buf)) > 0)
+                if (write(out, buf, (size_t)n) != n) n = -1, ok = false;
+            if (in < 0 || out < 0 || n < 0) ok = false;
+            if (out >= 0) fchmod(out, 0644), close(out);
+            if (in >= 0) close(in);
+        }
+    }
+    closedir(dir);
+    return ok;
+}
+
+static int _sl_remove_entry(const char *path, const struct stat *st, int type, struct FTW *ftw) {
+    (void)st, (void)ftw;
+    return type == FTW_DP ? rmdir(path) : unlink(path);
+}
+
 /* --isolate below the namespaces sandbox: ROOT/labN/ holds, for every lab, a
- * link to its folder: lab N's from the graded tree, the others' from the
- * solutions. (In namespaces, the sandbox copies each lab's shaders itself.) */
+ * readable copy of its folder where lab N's runner takes it from
+ * (_sl_isolated_source): copies, not links, since a shader's #include must
+ * resolve inside the labs folder, and a stand-in may be closed to the runner.
+ * (In namespaces, the sandbox copies each lab's shaders itself.) */
 static bool _sl_make_isolation_trees(char root[64], const char *graded, char trees[][96]) {
     snprintf(root, 64, "/tmp/shadowlab-isolate-XXXXXX");
     if (!mkdtemp(root)) {
@@ -207,10 +267,10 @@ static bool _sl_make_isolation_trees(char root[64], const char *graded, char tre
         for (int other = 1; other <= SL_LAB_COUNT; other++) {
             if (!sl_lab_folder(other)) continue;
             char target[2048], link_path[256];
-            snprintf(target, sizeof target, "%s/%s", other == lab ? graded : sl_config_solutions_dir, sl_lab_folder(other));
+            snprintf(target, sizeof target, "%s/%s", _sl_isolated_source(lab, other, graded), sl_lab_folder(other));
             snprintf(link_path, sizeof link_path, "%s/%s", trees[lab], sl_lab_folder(other));
-            if (symlink(target, link_path) != 0) {
-                fprintf(stderr, "shadowlab-grade: cannot link %s for --isolate\n", target);
+            if (!_sl_copy_readable(target, link_path, 0)) {
+                fprintf(stderr, "shadowlab-grade: cannot copy %s for --isolate\n", target);
                 return false;
             }
         }
@@ -220,18 +280,39 @@ static bool _sl_make_isolation_trees(char root[64], const char *graded, char tre
 
 static void _sl_remove_isolation_trees(const char *root) {
     if (!root[0]) return;
-    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
-        if (!sl_lab_folder(lab)) continue;
-        char path[256];
-        for (int other = 1; other <= SL_LAB_COUNT; other++) {
-            if (!sl_lab_folder(other)) continue;
-            snprintf(path, sizeof path, "%s/lab%d/%s", root, lab, sl_lab_folder(other));
-            unlink(path);
-        }
-        snprintf(path, sizeof path, "%s/lab%d", root, lab);
-        rmdir(path);
+    nftw(root, _sl_remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+}
+
+/* What the compiler of a runners folder's lab code could read, as that build
+ * recorded it (RUNNERS/compile-fence.txt, written by CMake): "namespaces" or
+ * "uid" (a fence: framework headers, the system and the lab's own files only),
+ * "trusted: ..." (no untrusted code: the solutions, a handout), or
+ * "none: WHY". The runners cannot change it: they never see the folder
+ * (namespaces) or cannot write it (uid). True when the build was fenced or
+ * trusted; `out` says it in words. */
+static bool _sl_compile_fence(const char *runners_dir, char *out, size_t n) {
+    char path[1300], line[400] = "";
+    snprintf(path, sizeof path, "%s/compile-fence.txt", runners_dir);
+    FILE *f = fopen(path, "r");
+    if (!f || !fgets(line, sizeof line, f)) {
+        if (f) fclose(f);
+        snprintf(out, n, "not fenced (the runners' build says nothing of a fence: %s is missing; rebuild them)", path);
+        return false;
     }
-    rmdir(root);
+    fclose(f);
+    line[strcspn(line, "\r\n")] = '\0';
+    for (char *c = line; *c; c++)
+        if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = ' ';
+    if (strcmp(line, "namespaces") == 0 || strcmp(line, "uid") == 0) {
+        snprintf(out, n, "fenced (%s): it saw the framework's headers, the system and the lab's own files only", line);
+        return true;
+    }
+    if (strncmp(line, "trusted:", 8) == 0) {
+        snprintf(out, n, "no fence needed:%s", line + 8);
+        return true;
+    }
+    snprintf(out, n, "NOT fenced (%s): lab code could read at build time what the builder could", line);
+    return false;
 }
 
 /* --progress: a line per ended case; on a terminal by default, one line
@@ -256,7 +337,7 @@ typedef struct _sl_options {
     const char *report_dir, *gradescope, *prairielearn, *junit;
     uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
     bool update, list, isolate, strict, hidden, progress;
-    const char *seed, *not_built, *gradebook, *submission_summary;
+    const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
     int jobs;
@@ -308,7 +389,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
                                                  "--sandbox", "--memory", "--seed", "--not-built", "--gradebook",
-                                                 "--submission-summary"};
+                                                 "--build-logs", "--submission-summary"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -368,6 +449,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--seed") == 0) o->seed = v;
         else if (strcmp(a, "--not-built") == 0) o->not_built = v;
         else if (strcmp(a, "--gradebook") == 0) o->gradebook = v;
+        else if (strcmp(a, "--build-logs") == 0) o->build_logs = v;
         else if (strcmp(a, "--submission-summary") == 0) o->submission_summary = v;
         else if (strcmp(a, "--list") == 0) o->list = true;
         else {
@@ -556,7 +638,11 @@ static bool _sl_write_reports(const _sl_options *o, const sl_grade_report *rep) 
 static int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, sl_grade_report *rep) {
     static char first_error[SL_BUILD_ERROR_MAX + 8];
     char err[1500];
-    if (!sl_build_failure_first_error(o->not_built, o->labs_dir, first_error, sizeof first_error, err, sizeof err)) {
+    if (!o->not_built) { /* per-lab builds, none of which built: the first lab's error stands for the whole */
+        for (int lab = 1; lab <= SL_LAB_MAX && !first_error[0]; lab++)
+            if (rep->lab_not_built[lab]) snprintf(first_error, sizeof first_error, "%s", rep->lab_not_built[lab]);
+    } else if (!sl_build_failure_first_error(o->not_built, o->labs_dir, first_error, sizeof first_error, err,
+                                             sizeof err)) {
         fprintf(stderr, "shadowlab-grade: %s\n", err);
         return SL_EXIT_ERROR;
     }
@@ -571,8 +657,12 @@ static int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int c
         graded[i].c = &cases[i];
         graded[i].result = &nothing_ran;
         graded[i].references = no_references;
-        for (int k = 0; k < cases[i].check_count; k++)
-            sl_build_failure_grade(&cases[i].checks[k], first_error, &graded[i].checks[k]);
+        const char *lab_error = rep->lab_not_built[cases[i].lab];
+        for (int k = 0; k < cases[i].check_count; k++) {
+            if (lab_error)
+                sl_build_failure_grade_lab(&cases[i].checks[k], cases[i].lab, lab_error, &graded[i].checks[k]);
+            else sl_build_failure_grade(&cases[i].checks[k], first_error, &graded[i].checks[k]);
+        }
     }
     printf("shadowlab-grade: %s labs (%s), %d cases\n", rep->labs_kind, rep->labs_dir, count);
     printf("shadowlab-grade: the submission did not build: %s\n", first_error);
@@ -637,7 +727,14 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     if ((o.isolate || o.update) && !have_solutions) {
         fprintf(stderr, "shadowlab-grade: %s renders references from the solutions, and this copy has no solutions/ "
                         "(a student handout): the references come with the handout.\n",
-                o.update ? "--update-references" : "--isolate (the solutions stand in for the other labs)");
+                o.update ? "--update-references"
+                         : "--isolate (the solutions stand in for the labs each lab builds on)");
+        return SL_EXIT_ERROR;
+    }
+    if (o.isolate && !_sl_is_dir(sl_config_stubs_dir)) {
+        fprintf(stderr, "shadowlab-grade: --isolate: the handout's stubs (%s) are missing: the per-lab runners "
+                        "take the labs a lab does not build on from there (build the project: cmake --build build)\n",
+                sl_config_stubs_dir[0] ? sl_config_stubs_dir : "none in this build");
         return SL_EXIT_ERROR;
     }
     if (o.update && custom) {
@@ -673,7 +770,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             s->runner = runner_paths[lab];
             s->labs_tree = trees[lab];
             for (int other = 1; other <= SL_LAB_COUNT; other++)
-                if (sl_lab_folder(other)) s->lab_dirs[other] = other == lab ? o.labs_dir : sl_config_solutions_dir;
+                if (sl_lab_folder(other)) s->lab_dirs[other] = _sl_isolated_source(lab, other, o.labs_dir);
         }
     } else {
         if (o.update) snprintf(runner_paths[0], sizeof runner_paths[0], "%s", sl_config_solutions_runner);
@@ -712,18 +809,35 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     rep.seed = o.hidden ? o.seed : NULL;
     _sl_describe_options(&o, default_cases, default_refs, rep.options, sizeof rep.options);
     if (o.not_built) return _sl_grade_not_built(&o, cases, count, &rep);
+    /* --build-logs: a lab whose runner is missing did not build; the others are graded */
+    static char lab_errors[SL_LAB_MAX + 1][SL_BUILD_ERROR_MAX + 8];
+    int runnable = 0;
     for (int i = 0; i < count; i++) {
-        const sl_runner_setup *s = run.setups[cases[i].lab].runner ? &run.setups[cases[i].lab] : &run.setups[0];
-        if (cases[i].lab > SL_LAB_COUNT || !sl_lab_folder(cases[i].lab)) {
-            fprintf(stderr, "shadowlab-grade: %s grades lab %d, which this build does not have\n", cases[i].path,
-                    cases[i].lab);
+        int lab = cases[i].lab;
+        const sl_runner_setup *s = run.setups[lab].runner ? &run.setups[lab] : &run.setups[0];
+        if (lab > SL_LAB_COUNT || !sl_lab_folder(lab)) {
+            fprintf(stderr, "shadowlab-grade: %s grades lab %d, which this build does not have\n", cases[i].path, lab);
             return SL_EXIT_ERROR;
         }
-        if (!_sl_is_executable(s->runner)) {
+        if (_sl_is_executable(s->runner)) {
+            runnable++;
+        } else if (o.isolate && o.build_logs) {
+            if (!rep.lab_not_built[lab]) {
+                char log[1300];
+                snprintf(log, sizeof log, "%s/lab%d.log", o.build_logs, lab);
+                if (!sl_build_failure_first_error(log, o.labs_dir, lab_errors[lab], sizeof lab_errors[lab], err,
+                                                  sizeof err))
+                    snprintf(lab_errors[lab], sizeof lab_errors[lab], "its runner was not built, and %s", err);
+                rep.lab_not_built[lab] = lab_errors[lab];
+            }
+        } else {
             fprintf(stderr, "shadowlab-grade: the runner %s is missing (build it: cmake --build build)\n", s->runner);
             return SL_EXIT_ERROR;
         }
     }
+    for (int lab = 1; lab <= SL_LAB_MAX; lab++)
+        if (rep.lab_not_built[lab]) printf("shadowlab-grade: lab %d did not build: %s\n", lab, rep.lab_not_built[lab]);
+    if (runnable == 0) return _sl_grade_not_built(&o, cases, count, &rep);
     if (o.hidden && !_sl_is_executable(sl_config_solutions_runner)) {
         fprintf(stderr, "shadowlab-grade: the solutions' runner %s is missing (build it: cmake --build build)\n",
                 sl_config_solutions_runner);
@@ -731,7 +845,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     }
 
     /* The sandbox, before any lab code runs. */
-    const char *probe_runner = run.setups[0].runner ? run.setups[0].runner : run.setups[cases[0].lab].runner;
+    const char *probe_runner = run.setups[0].runner;
+    for (int i = 0; i < count && !probe_runner; i++)
+        if (!rep.lab_not_built[cases[i].lab]) probe_runner = run.setups[cases[i].lab].runner;
     if (!sl_sandbox_open(sandbox, o.sandbox_level, probe_runner, err, sizeof err)) {
         fprintf(stderr, "shadowlab-grade: %s\n", err);
         return SL_EXIT_ERROR;
@@ -772,6 +888,18 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                 sl_sandbox_level_name(sandbox->level), sandbox->why_not_stronger);
         return SL_EXIT_ERROR;
     }
+    /* The compiler is the other way in: what did it let lab code read? */
+    char compiler[600];
+    bool fenced = o.update || _sl_compile_fence(o.runners_dir, compiler, sizeof compiler);
+    if (o.strict && !fenced) {
+        fprintf(stderr, "shadowlab-grade: --strict: the runners' lab code was compiled without a fence: %s. Build "
+                        "them where a mount namespace is allowed (root, or unprivileged user namespaces), or as root "
+                        "with the answers unreadable to uid 65534 (scripts/grade-submission says which).\n",
+                compiler);
+        return SL_EXIT_ERROR;
+    }
+    if (!fenced)
+        snprintf(rep.sandbox + strlen(rep.sandbox), sizeof rep.sandbox - strlen(rep.sandbox), "; compiler not fenced");
 
     if (o.hidden) {
         sl_run_options solutions_run = run;
@@ -816,7 +944,20 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     }
     double start = _sl_now();
     static sl_case_result results[_SL_MAX_CASES];
-    bool complete = sl_run_cases(cases, count, &run, results, &_sl_stop);
+    /* the cases of labs that built, in runs of consecutive cases (the report keeps the cases' order) */
+    bool complete = true;
+    for (int first = 0; first < count && complete;) {
+        int end = first;
+        if (rep.lab_not_built[cases[first].lab]) {
+            first++;
+            continue;
+        }
+        while (end < count && !rep.lab_not_built[cases[end].lab]) end++;
+        complete = sl_run_cases(cases + first, end - first, &run, results + first, &_sl_stop);
+        first = end;
+        /* stopped: the cases not started are interrupted too */
+        for (int i = end; !complete && i < count; i++) results[i].interrupted = !rep.lab_not_built[cases[i].lab];
+    }
     if (progress.terminal) fputs("\r\033[K", stderr); /* the report follows on stdout */
     /* A case the machine could not run grades nothing: the staff hear why (exit 2). */
     int staff_faults = 0;
@@ -846,6 +987,10 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             for (int k = 0; k < cases[i].check_count; k++) {
                 if (cases[i].checks[k].kind != SL_CHECK_PROBE) continue;
                 sl_check_result *cr = &graded[i].checks[k];
+                if (rep.lab_not_built[cases[i].lab]) {
+                    sl_build_failure_grade_lab(&cases[i].checks[k], cases[i].lab, rep.lab_not_built[cases[i].lab], cr);
+                    continue;
+                }
                 sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k], NULL, cr);
                 int function = cases[i].checks[k].function;
                 uint64_t bit = function >= 0 && function < 64 ? 1ull << function : 0;
@@ -875,7 +1020,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                 if (cases[i].lab != lab) continue;
                 for (int k = 0; k < cases[i].check_count; k++) {
                     sl_check_result *cr = &graded[i].checks[k];
-                    if (cases[i].checks[k].kind != SL_CHECK_PROBE) {
+                    if (rep.lab_not_built[lab]) {
+                        sl_build_failure_grade_lab(&cases[i].checks[k], lab, rep.lab_not_built[lab], cr);
+                    } else if (cases[i].checks[k].kind != SL_CHECK_PROBE) {
                         sl_grade_context context = {.earlier = graded[i].checks, .earlier_count = k,
                                                     .probe_failures = probe_failures,
                                                     .probe_failure_count = probe_failure_count,
@@ -906,11 +1053,14 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         }
         rep.seconds = _sl_now() - start;
         printf("shadowlab-grade: %s labs (%s), %d cases%s\n", rep.labs_kind, rep.labs_dir, count,
-               o.isolate ? ", each lab isolated (the solutions stand in for the other labs)" : "");
+               o.isolate ? ", each lab isolated (the solutions stand in for the labs it builds on, the handout's "
+                              "stubs for the others)" : "");
         printf("shadowlab-grade: sandbox: %s\n", rep.sandbox);
         if (rep.self_check) printf("shadowlab-grade: %s\n", rep.self_check);
+        if (!o.update) printf("shadowlab-grade: compiler: %s\n", compiler);
         if (o.hidden)
             snprintf(rep.case_set, sizeof rep.case_set, "hidden variants of the public cases, seed %s", o.seed);
+        rep.hidden = o.hidden;
         if (o.hidden)
             printf("shadowlab-grade: hidden cases: variants of the public ones drawn from seed %s; references rendered "
                    "from the solutions for this run\n", o.seed);

@@ -7,6 +7,8 @@
 
 #include <cjson/cJSON.h>
 
+#include "sl_build_failure.h"
+#include "sl_data_url.h"
 #include "sl_files.h"
 #include "sl_json.h"
 #include "sl_params.h"
@@ -316,6 +318,55 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
     return sl_atomic_commit(&file, err, err_size);
 }
 
+/* Labs graded on their own that did not build (the others were graded):
+ * "labs_not_built" [{lab, error}], and the first as "build_error". */
+static void _sl_add_labs_not_built(const sl_grade_report *rep, cJSON *root) {
+    cJSON *list = NULL;
+    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+        if (!rep->lab_not_built[lab]) continue;
+        if (!list) {
+            list = cJSON_AddArrayToObject(root, "labs_not_built");
+            if (!rep->not_built) {
+                char text[SL_BUILD_ERROR_MAX + 64];
+                snprintf(text, sizeof text, "lab %d did not build: %s", lab, rep->lab_not_built[lab]);
+                cJSON_AddStringToObject(root, "build_error", text);
+            }
+        }
+        cJSON *l = cJSON_CreateObject();
+        cJSON_AddNumberToObject(l, "lab", lab);
+        cJSON_AddStringToObject(l, "error", rep->lab_not_built[lab]);
+        cJSON_AddItemToArray(list, l);
+    }
+}
+
+/* What the course platforms show above the tests: what did not build, what
+ * stopped, and the bonus in words (their scores stop at the maximum). */
+static void _sl_platform_text(const sl_grade_report *rep, char *text, size_t n) {
+    double score, max, bonus;
+    sl_report_totals(rep, &score, &max, &bonus);
+    size_t used = 0;
+    text[0] = '\0';
+#define _SL_SAY(...) (used += used < n ? (size_t)snprintf(text + used, n - used, __VA_ARGS__) : 0)
+    for (int i = 0; i < rep->submission_note_count; i++) _SL_SAY("%s\n", rep->submission_notes[i]);
+    if (rep->not_built) _SL_SAY("The submission did not build: %s\n", rep->not_built);
+    for (int lab = 1; lab <= SL_LAB_MAX && !rep->not_built; lab++)
+        if (rep->lab_not_built[lab])
+            _SL_SAY("Lab %d did not build: %s (the other labs were graded on their own)\n", lab,
+                    rep->lab_not_built[lab]);
+    if (rep->interrupted) _SL_SAY("The grader was stopped before it finished: incomplete.\n");
+    for (int i = 0; i < rep->problem_count; i++) _SL_SAY("%s\n", rep->problems[i]);
+    if (bonus > 0) {
+        double counted = score + bonus > max ? max - score : bonus;
+        if (counted < bonus)
+            _SL_SAY("Bonus: %g points earned on extension checks; %g of them counted, since the score stops at its "
+                    "maximum (%g).\n", bonus, counted, max);
+        else
+            _SL_SAY("Bonus: %g points earned on extension checks, counted in the score (which stops at its maximum, "
+                    "%g).\n", bonus, max);
+    }
+#undef _SL_SAY
+}
+
 bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err, size_t err_size) {
     char images[1100];
     snprintf(images, sizeof images, "%s/images", dir);
@@ -342,6 +393,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     if (rep->seed) cJSON_AddStringToObject(root, "seed", rep->seed);
     cJSON_AddBoolToObject(root, "built", rep->not_built == NULL);
     if (rep->not_built) cJSON_AddStringToObject(root, "build_error", rep->not_built);
+    _sl_add_labs_not_built(rep, root);
     if (rep->submission_summary) {
         cJSON_AddBoolToObject(root, "no_lab_file", rep->no_lab_file);
         cJSON *notes = cJSON_AddArrayToObject(root, "submission_notes");
@@ -434,22 +486,37 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     return ok;
 }
 
-/* One test per check, as Gradescope and PrairieLearn list them. */
+/* One test per check, as Gradescope and PrairieLearn list them. A bonus
+ * check is a test of its own points, named so; Gradescope shows the tests
+ * of hidden cases after the due date; PrairieLearn gets the diff image of a
+ * failed picture (its results stay under 1 MB: the images share 600 kB). */
 static void _sl_add_tests(const sl_grade_report *rep, cJSON *tests, bool prairielearn) {
+    size_t image_budget = 600 * 1024;
     for (int i = 0; i < rep->case_count; i++) {
         const sl_graded_case *g = &rep->cases[i];
         for (int k = 0; k < g->c->check_count; k++) {
             const sl_check_result *cr = &g->checks[k];
             char name[300];
-            snprintf(name, sizeof name, "Lab %d (%s): %s / %s", g->c->lab, sl_lab_title(g->c->lab), g->c->name,
-                     g->c->checks[k].name);
+            snprintf(name, sizeof name, "Lab %d (%s): %s / %s%s", g->c->lab, sl_lab_title(g->c->lab), g->c->name,
+                     g->c->checks[k].name, cr->bonus ? " (bonus)" : "");
             cJSON *t = cJSON_CreateObject();
             cJSON_AddStringToObject(t, "name", name);
             cJSON_AddNumberToObject(t, prairielearn ? "points" : "score", cr->points);
-            /* extra credit: a test worth nothing that can still earn points */
-            cJSON_AddNumberToObject(t, prairielearn ? "max_points" : "max_score", cr->bonus ? 0 : cr->max_points);
+            cJSON_AddNumberToObject(t, prairielearn ? "max_points" : "max_score", cr->max_points);
             cJSON_AddStringToObject(t, "output", cr->passed ? "passed" : cr->message);
             if (!prairielearn) cJSON_AddStringToObject(t, "status", cr->passed ? "passed" : "failed");
+            if (!prairielearn && rep->hidden) cJSON_AddStringToObject(t, "visibility", "after_due_date");
+            if (prairielearn && !cr->passed && cr->diff.data && image_budget > 0) {
+                char *url = sl_image_data_url(&cr->diff, image_budget < 200 * 1024 ? image_budget : 200 * 1024);
+                if (url) {
+                    cJSON *image = cJSON_CreateObject();
+                    cJSON_AddStringToObject(image, "label", "difference from the reference");
+                    cJSON_AddStringToObject(image, "url", url);
+                    cJSON_AddItemToArray(cJSON_AddArrayToObject(t, "images"), image);
+                    image_budget -= strlen(url) < image_budget ? strlen(url) : image_budget;
+                    free(url);
+                }
+            }
             cJSON_AddItemToArray(tests, t);
         }
     }
@@ -459,22 +526,12 @@ bool sl_report_write_gradescope(const sl_grade_report *rep, const char *path, ch
     double score, max, bonus;
     sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
-    cJSON_AddNumberToObject(root, "score", score + bonus); /* extra credit counts on top */
+    /* the bonus fills what was lost, up to the maximum; the output says it in words */
+    cJSON_AddNumberToObject(root, "score", score + bonus > max ? max : score + bonus);
     cJSON_AddNumberToObject(root, "execution_time", rep->seconds);
-    if (rep->problem_count || rep->interrupted || rep->not_built || rep->submission_note_count) {
-        char text[4096 + SL_SUBMISSION_NOTES_MAX * 1600] = "";
-        for (int i = 0; i < rep->submission_note_count; i++)
-            snprintf(text + strlen(text), sizeof text - strlen(text), "%s\n", rep->submission_notes[i]);
-        if (rep->not_built)
-            snprintf(text + strlen(text), sizeof text - strlen(text), "The submission did not build: %s\n",
-                     rep->not_built);
-        if (rep->interrupted)
-            snprintf(text + strlen(text), sizeof text - strlen(text),
-                     "The grader was stopped before it finished: incomplete.\n");
-        for (int i = 0; i < rep->problem_count; i++)
-            snprintf(text + strlen(text), sizeof text - strlen(text), "%s\n", rep->problems[i]);
-        cJSON_AddStringToObject(root, "output", text);
-    }
+    char text[4096 + SL_SUBMISSION_NOTES_MAX * 1600];
+    _sl_platform_text(rep, text, sizeof text);
+    if (text[0]) cJSON_AddStringToObject(root, "output", text);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), false);
     bool ok = _sl_write_json(root, path, err, err_size);
     cJSON_Delete(root);
@@ -497,13 +554,12 @@ bool sl_report_write_prairielearn(const sl_grade_report *rep, const char *path, 
         snprintf(text, sizeof text, "The submission did not build: %s", rep->not_built);
         cJSON_AddItemToArray(format_errors, cJSON_CreateString(text));
     }
-    if (rep->submission_note_count) {
-        char text[SL_SUBMISSION_NOTES_MAX * 1600] = "";
-        for (int i = 0; i < rep->submission_note_count; i++)
-            snprintf(text + strlen(text), sizeof text - strlen(text), "%s%s", i ? "\n" : "", rep->submission_notes[i]);
-        cJSON_AddStringToObject(root, "message", text);
-    }
-    cJSON_AddNumberToObject(root, "score", max > 0 ? (score + bonus) / max : 0);
+    /* PrairieLearn takes a fraction in [0, 1]: the bonus fills what was lost, and is said in words */
+    double fraction = max > 0 ? (score + bonus) / max : 0;
+    cJSON_AddNumberToObject(root, "score", fraction > 1 ? 1 : fraction < 0 ? 0 : fraction);
+    char text[4096 + SL_SUBMISSION_NOTES_MAX * 1600];
+    _sl_platform_text(rep, text, sizeof text);
+    if (text[0]) cJSON_AddStringToObject(root, "message", text);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), true);
     bool ok = _sl_write_json(root, path, err, err_size);
     cJSON_Delete(root);

@@ -38,7 +38,9 @@ typedef struct sl_grade_report {
     bool interrupted;        /* stopped early: the score is incomplete */
     int cases_finished;      /* cases that ran to their end */
     char case_set[160];      /* which cases, when not the public ones ("hidden variants, seed 42") */
+    bool hidden;             /* hidden variants (--hidden): Gradescope shows their tests after the due date */
     const char *not_built;   /* the compiler's first error, when the submission did not build */
+    const char *lab_not_built[SL_LAB_MAX + 1]; /* graded per lab: each lab's first error, when that lab did not build */
     /* How the submission was staged (shadowlab-grade --submission-summary, written by
      * shadowlab-stage): notes said first in every report, and the summary for results.json. */
     char submission_notes[SL_SUBMISSION_NOTES_MAX][1600];

@@ -9,6 +9,7 @@ set -euo pipefail
 # it and skipped where it does not.
 packages=(
   build-essential cmake pkg-config
+  ninja-build           # the build tool: a lab edit rebuilds in seconds (make's checks took most of them)
   libglfw3-dev          # viewer window
   libcglm-dev           # math (GLM for C)
   libgl-dev             # GL headers: GL/glcorearb.h, KHR/khrplatform.h

@@ -2,9 +2,9 @@
 # attack.sh NAME MODE GRADER SOURCE_DIR WORK_DIR [GRADER ARGS...] [--beside HONEST GRADER ARGS...]
 # Grades one attack's labs tree and checks that the attack got nothing and
 # left nothing: the score is the stubs' 0 (exit 1, one Score line, reports
-# agree), no file of the project, the build or the reports changed after the
-# grader finished, no process the attack started is alive, and no marker file
-# it tried to leave exists.
+# agree), no line of a solution shows in the output or the reports, no file of
+# the project, the build or the reports changed after the grader finished, no
+# process the attack started is alive, and no marker file it tried to leave exists.
 #   MODE plain, isolate   in the namespaces sandbox (skipped where there is none), plainly or with --isolate
 #   MODE beside-LEVEL     with --sandbox LEVEL (namespaces, uid or basic), and, while the attack's runners
 #                         run, a grade of an honest submission (the arguments after --beside) at the same
@@ -119,6 +119,11 @@ if ! grep -q "sandbox: $level" "$out"; then
   echo "the attack suite needs the namespaces sandbox (root, or unprivileged user namespaces)" >&2
   exit 77
 fi
+if grep -q "^shadowlab-grade: compiler: NOT fenced" "$out"; then
+  echo "attack $name ($mode): this machine gives the compiler no fence: the attack's lab code was built where it could" >&2
+  echo "read the answers (the build said why when it was configured)" >&2
+  exit 77
+fi
 [ "$status" = 1 ] || problem "exit status $status, expected 1 (checks failed)"
 [ "$(grep -c '^Score:' "$out")" = 1 ] || problem "more than one line starts with 'Score:' (forged output reached the report)"
 tail -n 1 "$out" | grep -qE '^Score: 0/[0-9.]+$' || problem "the score is not 0: $(tail -n 1 "$out")"
@@ -139,6 +144,8 @@ if [ -n "$honest_status" ]; then
     honest_problem "not full marks: $last"
   ! grep -q '^  FAIL' "$honest_out" || honest_problem "checks failed: $(grep -c '^  FAIL' "$honest_out")"
 fi
+leaks=$(bash "$src/tests/solution_leaks.sh" "$src" "$out" "$work/report/results.json" "$work/gradescope.json")
+[ $? = 0 ] || problem "$leaks"
 reports=$(sha256sum "$work/report/results.json" "$work/gradescope.json")
 # Give anything the attack left running the time to act, then look.
 sleep 2

@@ -17,7 +17,7 @@ problem() { echo "batch: $*" >&2; fail=1; }
 # ---- the submissions ----
 mkdir "$subs/solutions"                                      # 1. a labs/ folder
 cp -R "$source/solutions" "$subs/solutions/labs"
-cp -R "$source/labs" "$subs/stubs"                           # 2. the lab folders
+cp -R "${SHADOWLAB_STUBS:-$source/labs}" "$subs/stubs"                           # 2. the lab folders
 mkdir "$subs/lab2_inverted_compare"                          # 3. loose files
 find "$lab2_tree" -type f \( -name 'lab[0-9].c' -o -path '*/shaders/*' \) -exec cp {} "$subs/lab2_inverted_compare/" \;
 echo "my notes" >"$subs/lab2_inverted_compare/notes.txt"

@@ -19,7 +19,7 @@ for item in "$@"; do
   name=${item%%=*} what=${item#*=}
   case "$what" in
     solutions) tree="$source/solutions" ;;
-    stubs) tree="$source/labs" ;;
+    stubs) tree="${SHADOWLAB_STUBS:-$source/labs}" ;;
     *) spec="$source/tests/variants/$what.variant"
        [ -f "$spec" ] || { echo "make_submissions: no variant $what" >&2; exit 1; }
        [ -d "$work/$what" ] || bash "$source/tests/make_variant.sh" "$spec" "$source/solutions" "$work/$what" >/dev/null

@@ -13,7 +13,7 @@ mkdir -p "$work"
 chmod 755 "$work"
 fail=0
 problem() { echo "stage.$case_name: $*" >&2; fail=1; }
-solutions="$source/solutions" stubs="$source/labs"
+solutions="$source/solutions" stubs="${SHADOWLAB_STUBS:-$source/labs}"
 
 # stage NAME SUBMISSION [OPTIONS...]: a fresh stage from the stubs, staged into;
 # $status, $out (what it said), $stage and $summary are set.
@@ -277,7 +277,9 @@ corrupt)
   expect_status 3 "an archive cut at its start"
   said "small-cut.tgz: not an archive this grader reads (.zip, .tar, .tar.gz, ...), or a corrupt one" "an archive cut at its start"
   all_stubs "an archive cut at its start"
-  "$fixtures" archive "$work/good.zip" zip tree:labs="$solutions"
+  # the lab folders only (solutions/ also holds bench/, which would be the zip's first entry)
+  mkdir -p "$work/labs-only" && cp -R "$solutions"/lab[0-9]* "$work/labs-only/"
+  "$fixtures" archive "$work/good.zip" zip tree:labs="$work/labs-only"
   { head -c 200 "$work/good.zip"; head -c 4000 /dev/zero; } >"$work/broken.zip"
   stage broken "$work/broken.zip"
   expect_status 3 "a broken zip"

@@ -22,14 +22,6 @@ bool sl_lab7_drawn_layered(const sl_case_result *r) {
     return path && path->number_count >= SL_PATH_NUMBERS && path->numbers[1] != 0;
 }
 
-bool sl_lab_builds_on(int lab, int earlier) {
-    if (earlier >= lab) return false;
-    if (lab == 7) return false;        /* its own cube map, matrices and lookup: no earlier lab's code draws its cases */
-    if (lab == 6) return earlier <= 2; /* lab 1's depth pass and lab 2's shadow matrix, per cascade */
-    if (lab == 5) return earlier == 2; /* lab 2's light matrices; its own moments instead of lab 1's map and lab 3's bias */
-    return true;
-}
-
 bool sl_lab7_case_calls(const sl_case *c, const sl_check *k, const char *name) {
     if (strncmp(name, "lab7_", 5) == 0) return true; /* every frame of lab 7 makes and fills the cube map */
     if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE) return false;

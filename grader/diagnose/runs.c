@@ -187,7 +187,7 @@ bool sl_probe_failure_explains(const sl_case *c, const sl_check *k, const sl_pro
     if (!f || f->lab > c->lab) return false;
     if (f->bonus && !k->bonus) return false;       /* an extension never answers for a regular check */
     if (isolated && f->lab != c->lab) return false; /* the solutions stand in for the other labs */
-    if (f->lab < c->lab && !sl_lab_builds_on(c->lab, f->lab)) return false;
+    if (f->lab < c->lab && !sl_lab_shows(c->lab, f->lab)) return false;
     if (!sl_case_runs(c, k, f->name)) return false;
     return sl_prediction_meets(sl_probe_failure_predicts(c, failure), symptoms);
 }

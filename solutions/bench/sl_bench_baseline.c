@@ -1,6 +1,7 @@
 #include "sl_bench_baseline.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The shaders a tutorial would write: no includes, no defines but the kernel
@@ -212,3 +213,25 @@ void sl_bench_baseline_destroy(sl_bench_baseline *b) {
     if (b->camera_program) glDeleteProgram(b->camera_program);
     memset(b, 0, sizeof *b);
 }
+
+static void *_sl_create(const sl_scene *scene, int map_size, int pcf_radius, char *err, size_t err_size) {
+    sl_bench_baseline *b = calloc(1, sizeof *b);
+    if (!b) {
+        snprintf(err, err_size, "out of memory");
+        return NULL;
+    }
+    if (sl_bench_baseline_init(b, scene, map_size, pcf_radius, err, err_size)) return b;
+    free(b);
+    return NULL;
+}
+
+static void _sl_draw(void *b, const sl_scene *scene, int width, int height, double pass_ms[2]) {
+    sl_bench_baseline_draw(b, scene, width, height, pass_ms);
+}
+
+static void _sl_destroy(void *b) {
+    sl_bench_baseline_destroy(b);
+    free(b);
+}
+
+const sl_bench_plain_gl sl_bench_baseline_program = {_sl_create, _sl_draw, _sl_destroy};
