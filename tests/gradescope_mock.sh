@@ -126,9 +126,10 @@ SHADOWLAB_AUTOGRADER="$ag" SHADOWLAB_GRADE="$work/grade" "$ag/source/run_prairie
 grep -Eq '"score":[[:space:]]*1[,}[:space:]]' "$pl_results" ||
   problem "PrairieLearn's score is not 1: $(grep -o '"score":[^,]*' "$pl_results" | head -n 1)"
 grep -q '"message":[[:space:]]*"Bonus: ' "$pl_results" || problem "PrairieLearn's message does not say the bonus in words"
-# a mistake in a picture (lab 3's slope with sin where tan belongs): the test carries its diff image
+# a mistake in a picture (lab 3's slope-scaled bias without its slope term: acne in the pictures, more
+# points than the bonus gives back): the test carries its diff image
 rm -rf "$work/grade/student" "$work/grade/results"
-bash "$source/tests/make_variant.sh" "$source/tests/variants/lab3_slope_sin.variant" "$source/solutions" \
+bash "$source/tests/make_variant.sh" "$source/tests/variants/lab3_no_slope_term.variant" "$source/solutions" \
   "$work/variant" >/dev/null
 mkdir -p "$work/grade/student"
 cp -R "$work/variant/lab3_bias" "$work/grade/student/"
