@@ -140,8 +140,18 @@ static bool _sl_become_nobody(void) {
 
 /* In the child, in its new mount namespace: the root, then the command. */
 static void _sl_enter(const char *newroot, const _sl_fence *f, char **command) {
-    if (mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0)
-        _sl_die("cannot make the mounts private: %s", strerror(errno));
+    if (mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0) {
+        /* Under a chroot "/" is no mount point, and the mount that holds the
+         * fresh folder cannot be made private: mount over a mount point the
+         * chroot does show, made private first, as the runners' sandbox does. */
+        if (errno != EINVAL) _sl_die("cannot make the mounts private: %s", strerror(errno));
+        static const char *const visible[] = {"/sys", "/dev/pts", "/dev/shm", "/run", "/proc"};
+        const char *root = NULL;
+        for (size_t i = 0; i < sizeof visible / sizeof visible[0] && !root; i++)
+            if (mount(NULL, visible[i], NULL, MS_REC | MS_PRIVATE, NULL) == 0) root = visible[i];
+        if (!root) _sl_die("cannot make the mounts private: \"/\" is no mount point (a chroot?) and no other mount is");
+        newroot = root;
+    }
     if (mount("compile-fence", newroot, "tmpfs", MS_NOSUID | MS_NODEV, "size=256m,mode=0755") != 0)
         _sl_die("cannot mount a tmpfs on %s: %s", newroot, strerror(errno));
     char path[PATH_MAX * 2];
@@ -332,6 +342,30 @@ static int _sl_probe(const _sl_fence *hidden) {
         if (WEXITSTATUS(s) == 1) {
             printf("none: no mount namespace here, and uid 65534 can read %s (make it unreadable to other users: "
                    "chmod -R go-rwx)\n", hidden->hidden[i]);
+            return 0;
+        }
+    }
+    /* The compiler, as 65534, must still reach the system and the project's
+     * folder (the one holding the first hidden path): a tree closed to other
+     * users (a clone under /root) leaves no fence of this kind. */
+    char project[PATH_MAX] = "/";
+    if (hidden->hidden_count > 0) {
+        snprintf(project, sizeof project, "%s", hidden->hidden[0]);
+        char *slash = strrchr(project, '/');
+        if (slash && slash != project) *slash = '\0';
+    }
+    const char *reach[] = {"/", "/usr/bin", project};
+    for (size_t i = 0; i < sizeof reach / sizeof reach[0]; i++) {
+        pid_t pid = fork();
+        if (pid == 0) {
+            if (!_sl_become_nobody()) _exit(2);
+            _exit(access(reach[i], X_OK) == 0 ? 0 : 1);
+        }
+        int s = 0;
+        while (pid > 0 && waitpid(pid, &s, 0) < 0 && errno == EINTR) {}
+        if (pid < 0 || !WIFEXITED(s) || WEXITSTATUS(s) != 0) {
+            printf("none: no mount namespace here, and uid 65534 cannot reach %s, where the compiler must read\n",
+                   reach[i]);
             return 0;
         }
     }
