@@ -57,7 +57,7 @@ readme_regex() {
     s/ ?[:;,—]? ?…$//;
     s/WxH/\x01NUMx\x01NUM/g;
     s/(?<![A-Za-z_0-9.])[0-9]+(?:\.[0-9]+)?(?![A-Za-z_0-9])/\x01NUM/g;
-    s/(?<![A-Za-z_+\-])(?:N|M|X|K|LINE|COL)(?![A-Za-z_(])/\x01NUM/g;
+    s/(?<![A-Za-z_+\-])(?:N|M|X|K|LINE|COL)(?![A-Za-z_(]|\.[A-Za-z])/\x01NUM/g;
     s/([\\.^\$*+?()\[\]{}|])/\\$1/g;
     s/ ?… ?/\x01ANY/g;
     s/\x01NUM/[-+0-9.e]+/g;
