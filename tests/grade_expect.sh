@@ -8,8 +8,10 @@
 #   --expect-readme SPEC  each "readme:" line of the variant SPEC, a message as a lab README's
 #                  table writes it, must be in the output ("…" and the spaces around it stand for any text, a trailing one for nothing, a number
 #                  or N, M, X, K, LINE, COL for any number)
+#   --expect-readme-rows FILE  each "N: MESSAGE" line of FILE, a row of lab N's README table, must
+#                  be in lab N's section of the output (matched as for --expect-readme)
 set -u
-exe="" want_exit="" loses=() full=() expect=() reject=() readme_specs=()
+exe="" want_exit="" loses=() full=() expect=() reject=() readme_specs=() readme_rows=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --exe) exe=$2; shift 2 ;;
@@ -20,6 +22,7 @@ while [ $# -gt 0 ]; do
     --expect) expect+=("$2"); shift 2 ;;
     --reject) reject+=("$2"); shift 2 ;;
     --expect-readme) readme_specs+=("$2"); shift 2 ;;
+    --expect-readme-rows) readme_rows+=("$2"); shift 2 ;;
     --) shift; break ;;
     *) echo "grade_expect: unknown argument $1" >&2; exit 2 ;;
   esac
@@ -54,7 +57,7 @@ readme_regex() {
     s/ ?[:;,—]? ?…$//;
     s/WxH/\x01NUMx\x01NUM/g;
     s/(?<![A-Za-z_0-9.])[0-9]+(?:\.[0-9]+)?(?![A-Za-z_0-9])/\x01NUM/g;
-    s/(?<![A-Za-z_])(?:N|M|X|K|LINE|COL)(?![A-Za-z_(])/\x01NUM/g;
+    s/(?<![A-Za-z_+\-])(?:N|M|X|K|LINE|COL)(?![A-Za-z_(]|\.[A-Za-z])/\x01NUM/g;
     s/([\\.^\$*+?()\[\]{}|])/\\$1/g;
     s/ ?… ?/\x01ANY/g;
     s/\x01NUM/[-+0-9.e]+/g;
@@ -68,5 +71,15 @@ for spec in "${readme_specs[@]+"${readme_specs[@]}"}"; do
         grep -qE -- "$(readme_regex "$text")" "$out" || problem "the README's message does not fire: $text" ;;
     esac
   done <"$spec"
+done
+# The output of lab N's section alone.
+lab_section() { awk -v lab="$1" '/^Lab [0-9]+:/ {in_lab = ($2 == lab ":")} /^Score:/ {in_lab = 0} in_lab' "$out"; }
+for rows in "${readme_rows[@]+"${readme_rows[@]}"}"; do
+  while IFS= read -r line || [ -n "$line" ]; do
+    case "$line" in "" | "#"*) continue ;; esac
+    lab=${line%%: *} text=${line#*: }
+    lab_section "$lab" | grep -qE -- "$(readme_regex "$text")" ||
+      problem "the README's message does not fire in lab $lab's section: $text"
+  done <"$rows"
 done
 exit $fail
