@@ -57,6 +57,10 @@ if [ "${mode%%-*}" = beside ]; then
   else
     if [ "$level" = basic ]; then
       as_user=(setpriv --reuid=61100 --regid=61100 --clear-groups --)
+      # a user of its own must reach the system and the grader: not where a folder on the way is
+      # closed to other users (a clone under /root, a root folder of mode 0700)
+      "${as_user[@]}" /bin/sh -c "test -x '$grader'" 2>/dev/null ||
+        { echo "attack $name ($mode): a user of its own cannot run $grader here (a folder on its path is closed to others)" >&2; exit 77; }
       chown 61100:61100 "$work"
     fi
     # this process's pids cgroup (v1's pids hierarchy, or v2 where it has the controller)
@@ -151,9 +155,16 @@ reports=$(sha256sum "$work/report/results.json" "$work/gradescope.json")
 sleep 2
 [ "$(sha256sum "$work/report/results.json" "$work/gradescope.json")" = "$reports" ] || problem "a report changed after the grader exited"
 survivors=$(tagged)
+# A process still on its way out (the kernel kills what is left in a runner's PID namespace when
+# the runner ends, and on a loaded machine that takes a moment) is not one the attack left
+# running: give the tagged ones up to 10 s more before blaming them.
+for ((wait_left = 20; wait_left > 0 && ${#survivors} > 0; wait_left--)); do sleep 0.5; survivors=$(tagged); done
 [ -z "$survivors" ] || {
   problem "processes outlived the grade: $survivors"
-  for p in $survivors; do ps -o pid=,ppid=,uid=,stat=,etimes=,args= -p "$p" >&2; kill -9 "$p" 2>/dev/null; done
+  for p in $survivors; do
+    echo "  $p: $(tr '\0' ' ' <"/proc/$p/cmdline" 2>/dev/null) ($(grep -E '^(State|PPid|Uid):' "/proc/$p/status" 2>/dev/null | tr -s '\t\n' '  '))" >&2
+    kill -9 "$p" 2>/dev/null
+  done
 }
 [ "$(snapshot)" = "$before" ] || problem "files of the project, the build or the grader changed"
 left=$(markers)
