@@ -221,6 +221,14 @@ static void _sl_limits(void) {
     setrlimit(RLIMIT_FSIZE, &file);
 }
 
+/* The child's exit status, as a shell gives it (128 + the signal that ended it). */
+static int _sl_wait_for(pid_t pid) {
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+    return WEXITSTATUS(status);
+}
+
 /* Runs `command` in a new mount namespace rooted at a fresh tmpfs; its exit status. */
 static int _sl_run_in_namespace(const _sl_fence *f, char **command) {
     char newroot[] = "/tmp/shadowlab-fence-XXXXXX";
@@ -248,11 +256,9 @@ static int _sl_run_in_namespace(const _sl_fence *f, char **command) {
         fprintf(stderr, "shadowlab-fence: cannot run %s: %s\n", command[0], strerror(errno));
         _exit(127);
     }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    int status = _sl_wait_for(pid);
     rmdir(newroot);
-    if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-    return WEXITSTATUS(status);
+    return status;
 }
 
 /* uid: runs `command` as 65534 without a namespace (the probe checked that it cannot read the answers). */
@@ -268,10 +274,7 @@ static int _sl_run_as_nobody(const _sl_fence *f, char **command) {
         fprintf(stderr, "shadowlab-fence: cannot run %s: %s\n", command[0], strerror(errno));
         _exit(127);
     }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-    if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-    return WEXITSTATUS(status);
+    return _sl_wait_for(pid);
 }
 
 static bool _sl_copy_file(const char *from, const char *to) {
