@@ -20,4 +20,6 @@ generator=() # as bootstrap.sh: Ninja for a new build folder
 cmake -S . -B build "${generator[@]+"${generator[@]}"}" -DSL_LABS="${SL_LABS:-student}"
 cmake --build build -j "$(nproc)"
 cmake --build build -j "$(nproc)" --target test-programs
-ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 900
+# Two tests per core: many of them spend much of their time waiting (a virtual display or a
+# browser starting, a time limit running out, a grade's pause before it looks for leftovers).
+ctest --test-dir build --output-on-failure -j "$((2 * $(nproc)))" --timeout 900

@@ -2,10 +2,15 @@
 # Hidden cases for one seed: the same seed derives the same cases and another
 # seed other ones; the solutions keep full marks on them; every known mistake
 # given still loses points in its lab.
-#   hidden_seeds.sh GRADER GRADE_EXPECT SEED SOLUTIONS GRADER ARGS... [-- LAB MISTAKE GRADER ARGS...]...
+#   hidden_seeds.sh GRADER GRADE_EXPECT SEED [--solutions-case PATTERN]... SOLUTIONS GRADER ARGS...
+#                   [-- LAB MISTAKE GRADER ARGS...]...
+# With --solutions-case the solutions are graded on those cases only (every case on one
+# seed is enough to show all of them fair; other seeds check a few more draws of each lab).
 set -euo pipefail
 grader=$1 expect=$2 seed=$3
 shift 3
+solutions_cases=()
+while [ "${1:-}" = --solutions-case ]; do solutions_cases+=(--case "$2"); shift 2; done
 groups=() current=()
 for a in "$@"; do
   if [ "$a" = "--" ]; then groups+=("${current[*]}"); current=(); else current+=("$a"); fi
@@ -25,10 +30,11 @@ grep -q 'hidden: light turned' <<<"$first" || problem "no case of seed $seed tur
 grep -q 'probe lines carried' <<<"$first" || problem "the penumbra case of seed $seed kept its camera"
 grep -q 'function tables varied' <<<"$first" || problem "no probe's inputs varied with seed $seed"
 
-echo "== the solutions, seed $seed"
+echo "== the solutions, seed $seed${solutions_cases[*]:+ (${solutions_cases[*]})}"
 "$expect" --exe "$grader" --exit 0 --full 1 --full 2 --full 3 --full 4 --full 5 --full 6 --full 7 --reject FAIL \
   --expect "hidden cases: variants of the public ones drawn from seed $seed" \
-  -- "${solutions[@]}" --hidden --seed "$seed" "${limit[@]}" || problem "the solutions lost points on seed $seed"
+  -- "${solutions[@]}" --hidden --seed "$seed" "${limit[@]}" "${solutions_cases[@]+"${solutions_cases[@]}"}" ||
+  problem "the solutions lost points on seed $seed"
 
 for group in "${groups[@]:1}"; do
   read -r -a mistake <<<"$group"
