@@ -1,7 +1,7 @@
-# apt-common.sh: what install-deps.sh and install-slides-deps.sh share, sourced
-# by both after they set `packages` and define `say`: the check that this is a
-# Debian-like system, the release's name, whether a package is installed or
-# offered, sudo when not root, and one `apt-get update` at the most.
+# apt-common.sh: what the install-*-deps.sh scripts share, sourced by each after
+# it defines `say`: the check that this is a Debian-like system, the release's
+# name, whether a package is installed or offered, sudo when not root, one
+# `apt-get update` at the most, and the install of what is missing.
 # Usage: . apt-common.sh "what to do without apt-get" (a line said on stderr).
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
@@ -26,3 +26,23 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 updated=""
 update() { [ -n "$updated" ] || { $sudo apt-get update -q; updated=1; }; }
+
+# install_missing PACKAGE...: installs the packages named (those found missing), or says
+# that nothing is missing; on failure names the ones this release does not offer. Ends
+# the script either way.
+install_missing() {
+  if [ $# -eq 0 ]; then
+    say "all packages already installed ($release)"
+    exit 0
+  fi
+  say "installing on $release: $*"
+  update
+  if ! $sudo apt-get install -y -q --no-install-recommends "$@"; then
+    say "apt-get could not install: $*" >&2
+    local p
+    for p in "$@"; do offered "$p" || say "  $p: not offered by $release's package lists" >&2; done
+    exit 1
+  fi
+  say "done"
+  exit 0
+}

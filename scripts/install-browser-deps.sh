@@ -21,14 +21,4 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
 missing=()
 for p in "${packages[@]}"; do installed "$p" || missing+=("$p"); done
-if [ ${#missing[@]} -eq 0 ]; then
-  say "all packages already installed ($release)"
-  exit 0
-fi
-update
-say "installing on $release: ${missing[*]}"
-if ! $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"; then
-  say "apt-get could not install: ${missing[*]}" >&2
-  exit 1
-fi
-say "done"
+install_missing "${missing[@]+"${missing[@]}"}"

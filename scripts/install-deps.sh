@@ -54,16 +54,4 @@ if [ ${#not_offered[@]} -gt 0 ]; then
   esac
 fi
 
-if [ ${#missing[@]} -eq 0 ]; then
-  say "all packages already installed ($release)"
-  exit 0
-fi
-
-say "installing on $release: ${missing[*]}"
-update
-if ! $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"; then
-  say "apt-get could not install: ${missing[*]}" >&2
-  for p in "${missing[@]}"; do offered "$p" || say "  $p: not offered by $release's package lists" >&2; done
-  exit 1
-fi
-say "done"
+install_missing "${missing[@]+"${missing[@]}"}"
