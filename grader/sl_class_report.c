@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "sl_files.h"
+#include "sl_html.h"
 #include "sl_json.h"
 #include "sl_params.h"
 
@@ -253,18 +254,6 @@ static int _sl_by_students(const void *a, const void *b) {
     return strcmp(x->id, y->id);
 }
 
-static void _sl_html(FILE *f, const char *text) {
-    for (const char *p = text; *p; p++) {
-        switch (*p) {
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '&': fputs("&amp;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default: fputc(*p, f);
-        }
-    }
-}
-
 /* One CSV field (RFC 4180), defused for spreadsheets as the gradebook's are. */
 static void _sl_csv(FILE *f, const char *text, bool first) {
     if (!first) fputc(',', f);
@@ -292,7 +281,7 @@ static void _sl_histogram(FILE *f, const char *title, const int *bins, int stude
     for (int b = 0; b < _SL_BINS; b++) top = bins[b] > top ? bins[b] : top;
     const int bar = 34, height = 110, base = height + 18;
     fprintf(f, "<figure class=\"hist\"><figcaption>");
-    _sl_html(f, title);
+    sl_html_text(f, title);
     fprintf(f, " <span class=\"dim\">mean %.1f of %g</span></figcaption>\n", students ? mean / students : 0, max);
     fprintf(f, "<svg width=\"%d\" height=\"%d\" role=\"img\">", _SL_BINS * bar + 2, base + 16);
     for (int b = 0; b < _SL_BINS; b++) {
@@ -341,7 +330,7 @@ static bool _sl_write_html(const _sl_class *k, const _sl_diagnosis *sorted, cons
     if (k->option_sets > 1) fputs("<b>The reports were made with different grader options</b>: see the gradebook's options column. ", f);
     else if (k->options[0]) {
         fputs("Grader options: <code>", f);
-        _sl_html(f, k->options);
+        sl_html_text(f, k->options);
         fputs("</code>. ", f);
     }
     fputs("Each student counts once per diagnosis, however many checks it failed.</p>\n", f);
@@ -374,13 +363,13 @@ static bool _sl_write_html(const _sl_class *k, const _sl_diagnosis *sorted, cons
             fputs("<tr>", f);
             _sl_share_bar(f, d->students, k->students);
             fprintf(f, "<td>%d</td><td>", d->lab);
-            _sl_html(f, d->text);
+            sl_html_text(f, d->text);
             fputs(" <span class=\"id\">", f);
-            _sl_html(f, d->id);
+            sl_html_text(f, d->id);
             fputs("</span></td><td>", f);
             for (int w = 0; w < d->where_count; w++) {
                 fputs(w ? "<br>" : "", f);
-                _sl_html(f, d->where[w]);
+                sl_html_text(f, d->where[w]);
             }
             if (d->where_more) fprintf(f, "<br>and %d more", d->where_more);
             fputs("</td></tr>\n", f);
@@ -397,13 +386,13 @@ static bool _sl_write_html(const _sl_class *k, const _sl_diagnosis *sorted, cons
             fputs("<tr>", f);
             _sl_share_bar(f, c->failed, c->graded);
             fprintf(f, "<td>%d</td><td>", c->lab);
-            _sl_html(f, c->name);
+            sl_html_text(f, c->name);
             fprintf(f, "%s</td><td>", c->bonus ? " (bonus)" : "");
             int top = -1;
             for (int j = 0; j < c->diagnosis_count; j++)
                 if (top < 0 || c->diagnosis_students[j] > c->diagnosis_students[top]) top = j;
             if (top >= 0) {
-                _sl_html(f, k->diagnoses[c->diagnosis[top]].text);
+                sl_html_text(f, k->diagnoses[c->diagnosis[top]].text);
                 fprintf(f, " <span class=\"dim\">(%d)</span>", c->diagnosis_students[top]);
             }
             fputs("</td></tr>\n", f);

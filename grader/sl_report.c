@@ -10,6 +10,7 @@
 #include "sl_build_failure.h"
 #include "sl_data_url.h"
 #include "sl_files.h"
+#include "sl_html.h"
 #include "sl_json.h"
 #include "sl_params.h"
 
@@ -140,18 +141,6 @@ static bool _sl_write_json(cJSON *json, const char *path, char *err, size_t err_
     return ok;
 }
 
-static void _sl_html_text(FILE *f, const char *text) {
-    for (const char *p = text; *p; p++) {
-        switch (*p) {
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '&': fputs("&amp;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default: fputc(*p, f);
-        }
-    }
-}
-
 /* A check's picture as people look at it: cascade numbers in the viewer's
  * cascade colours (a grey image would show cascade 0 as black as the
  * background), two channels (lab 5's moments) as red = depth and green =
@@ -214,39 +203,39 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
                "margin-right:.3em}</style></head><body>\n",
             score, max);
     fputs("<h1>", f);
-    _sl_html_text(f, line);
+    sl_html_text(f, line);
     fprintf(f, "</h1>\n<p>%s labs, %d cases, %.2f s; rendered with %s (", rep->labs_kind, rep->case_count, rep->seconds,
             rep->backend[0] ? rep->backend : "?");
-    _sl_html_text(f, rep->renderer);
+    sl_html_text(f, rep->renderer);
     fputs("); sandbox: ", f);
-    _sl_html_text(f, rep->sandbox);
+    sl_html_text(f, rep->sandbox);
     if (rep->case_set[0]) {
         fputs("; cases: ", f);
-        _sl_html_text(f, rep->case_set);
+        sl_html_text(f, rep->case_set);
     }
     if (rep->options[0]) {
         fputs("; options: ", f);
-        _sl_html_text(f, rep->options);
+        sl_html_text(f, rep->options);
     }
     fputs("</p>\n", f);
     if (rep->self_check) {
         fputs("<p class=\"fail\"><strong>", f);
-        _sl_html_text(f, rep->self_check);
+        sl_html_text(f, rep->self_check);
         fputs("</strong></p>\n", f);
     }
     if (rep->not_built) {
         fputs("<p class=\"fail\">The submission did not build: ", f);
-        _sl_html_text(f, rep->not_built);
+        sl_html_text(f, rep->not_built);
         fputs("</p>\n", f);
     }
     for (int i = 0; i < rep->submission_note_count; i++) {
         fprintf(f, "<p%s>Submission: ", i == 0 && rep->no_lab_file ? " class=\"fail\"" : "");
-        _sl_html_text(f, rep->submission_notes[i]);
+        sl_html_text(f, rep->submission_notes[i]);
         fputs("</p>\n", f);
     }
     for (int i = 0; i < rep->problem_count; i++) {
         fputs("<p class=\"fail\">PROBLEM ", f);
-        _sl_html_text(f, rep->problems[i]);
+        sl_html_text(f, rep->problems[i]);
         fputs("</p>\n", f);
     }
     const cJSON *cases = cJSON_GetObjectItemCaseSensitive(root, "cases"), *jc;
@@ -256,19 +245,19 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
         cJSON_ArrayForEach(jk, cJSON_GetObjectItemCaseSensitive(jc, "checks")) {
             bool passed = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(jk, "passed"));
             fprintf(f, "<tr><td>%d</td><td>", cJSON_GetObjectItemCaseSensitive(jc, "lab")->valueint);
-            _sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jc, "name")));
+            sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jc, "name")));
             fputs(" / ", f);
-            _sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "name")));
+            sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "name")));
             fprintf(f, "%s</td><td>%g/%g</td><td class=\"%s\">%s", cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(jk, "bonus")) ? " (bonus)" : "",
                     cJSON_GetObjectItemCaseSensitive(jk, "points")->valuedouble,
                     cJSON_GetObjectItemCaseSensitive(jk, "max_points")->valuedouble, passed ? "pass" : "fail",
                     passed ? "PASS" : "FAIL ");
-            if (!passed) _sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "message")));
+            if (!passed) sl_html_text(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "message")));
             const cJSON *imgs = cJSON_GetObjectItemCaseSensitive(jk, "images"), *img;
             if (imgs) fputs("<br>", f);
             cJSON_ArrayForEach(img, imgs) {
                 fputs("<figure><img src=\"", f);
-                _sl_html_text(f, img->valuestring);
+                sl_html_text(f, img->valuestring);
                 fprintf(f, "\"><figcaption>%s</figcaption></figure>", img->string);
             }
             if (imgs) _sl_html_legend(f, cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "kind")));
@@ -300,13 +289,13 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
             for (int k = 0; k < g->c->check_count; k++) {
                 const sl_check_result *cr = &g->checks[k];
                 fputs("    <testcase classname=\"", f);
-                _sl_html_text(f, g->c->name);
+                sl_html_text(f, g->c->name);
                 fputs("\" name=\"", f);
-                _sl_html_text(f, g->c->checks[k].name);
+                sl_html_text(f, g->c->checks[k].name);
                 fprintf(f, "\" time=\"%.3f\">", g->result->seconds);
                 if (!cr->passed) {
                     fprintf(f, "<failure message=\"%g/%g points\">", cr->points, cr->max_points);
-                    _sl_html_text(f, cr->message);
+                    sl_html_text(f, cr->message);
                     fputs("</failure>", f);
                 }
                 fputs("</testcase>\n", f);
