@@ -253,6 +253,20 @@ void sl_vsm_describe_target(const sl_moments_target *t, double out[SL_MOMENTS_TA
         glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
                                               GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &depth_type);
         out[7] = depth_type;
+        /* the moments pass writes into what is attached here: the blur reads moments[0] */
+        GLint colour_type = 0, colour = 0;
+        glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                              GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &colour_type);
+        if (colour_type == GL_TEXTURE)
+            glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                                  GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &colour);
+        out[13] = colour_type == GL_TEXTURE && (GLuint)colour == t->moments[0];
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    /* the blur's first pass draws into framebuffer[1]: incomplete, it writes nothing */
+    if (t->framebuffer[1] && glIsFramebuffer(t->framebuffer[1])) {
+        glBindFramebuffer(GL_FRAMEBUFFER, t->framebuffer[1]);
+        out[12] = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
     if (t->moments[0] && glIsTexture(t->moments[0])) {

@@ -61,7 +61,7 @@ int sl_capture_parse(const char *name);
 
 #define SL_FBO_NUMBERS 10     /* see sl_runner.c: status, attachment type, ..., requested size */
 #define SL_MATRICES_NUMBERS 48
-#define SL_MOMENTS_TARGET_NUMBERS 12 /* see sl_vsm_describe_target */
+#define SL_MOMENTS_TARGET_NUMBERS 14 /* see sl_vsm_describe_target */
 #define SL_PATH_NUMBERS 2           /* the highest lab whose code drew the last frame; lab 7's cube map drawn layered (1) */
 
 typedef struct sl_job {

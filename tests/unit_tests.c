@@ -405,8 +405,9 @@ static sl_image moments_image(bool square_depth, bool blur_x, bool blur_y) {
 static void add_moments_target(sl_case_result *r, double format, double bits, bool is_float) {
     sl_capture *cap = &r->captures[r->capture_count++];
     snprintf(cap->name, sizeof cap->name, "moments_target");
+    /* both framebuffers complete, framebuffer[0] drawing into moments[0] */
     double v[SL_MOMENTS_TARGET_NUMBERS] = {0x8CD5 /* GL_FRAMEBUFFER_COMPLETE */, format, 64, 64, bits, bits, is_float,
-                                           0x8D41 /* GL_RENDERBUFFER */};
+                                           0x8D41 /* GL_RENDERBUFFER */, 0, 0, 0, 0, 0x8CD5, 1};
     memcpy(cap->numbers, v, sizeof v);
     cap->number_count = SL_MOMENTS_TARGET_NUMBERS;
 }

@@ -51,6 +51,14 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
                            "(TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
         return false;
     }
+    if (v[13] == 0) {
+        sl_diag_say(out, "moments[0] is not framebuffer[0]'s GL_COLOR_ATTACHMENT0: the moments pass draws into "
+                         "framebuffer[0], and nothing it draws reaches moments[0], which the blur reads");
+        sl_diag_cause_in(out, "lab5_create_moments_target", "attach moments[i] to framebuffer[i] at GL_COLOR_ATTACHMENT0, and "
+                           "the depth renderbuffer to framebuffer[0] at GL_DEPTH_ATTACHMENT (TODO(lab5.1) in "
+                           "labs/lab5_vsm/lab5.c)");
+        return false;
+    }
     if (red >= 32 && green >= 32 && is_float) return true;
     sl_diag_say(out, "the moments are stored as %s (%d-bit %s per channel): the variance E[x^2] - E[x]^2 is the "
                      "difference of two nearly equal numbers, and %d bits round it away, so shadows show bands and "
@@ -58,6 +66,43 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
                 sl_gl_enum_name(format), red, is_float ? "float" : "fixed point", red);
     sl_diag_cause_in(out, "lab5_create_moments_target", "create moments[0] and moments[1] as GL_RG32F (TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
     return false;
+}
+
+static bool _sl_mipmapped(double filter) {
+    return filter == GL_LINEAR_MIPMAP_LINEAR || filter == GL_LINEAR_MIPMAP_NEAREST || filter == GL_NEAREST_MIPMAP_LINEAR ||
+           filter == GL_NEAREST_MIPMAP_NEAREST;
+}
+
+/* The blur reads moments[0], then moments[1], and draws into framebuffer[1], then [0]. A texture whose min
+ * filter wants mipmaps it lacks is incomplete and reads as 0; an incomplete framebuffer[1] takes no pass.
+ * Either leaves (0, 0) in the blurred moments, which must not be taken for a clear to (0, 0). (moments[0]
+ * without mipmaps is said by _sl_mipmaps_ok.) */
+static bool _sl_blur_targets_ok(const sl_case_result *r, sl_check_result *out) {
+    const sl_capture *t = sl_result_capture(r, "moments_target");
+    if (!t || t->number_count < SL_MOMENTS_TARGET_NUMBERS) return true;
+    const double *v = t->numbers;
+    if (v[0] == GL_FRAMEBUFFER_COMPLETE && v[12] != GL_FRAMEBUFFER_COMPLETE) {
+        if (v[12] == 0)
+            sl_diag_say(out, "framebuffer[1] of the moments target, which the blur's first pass draws into, is not a "
+                             "framebuffer object: that pass writes nothing, and the second reads moments[1] unwritten");
+        else
+            sl_diag_say(out, "framebuffer[1] of the moments target, which the blur's first pass draws into, is not "
+                             "complete (%s): that pass writes nothing, and the second reads moments[1] unwritten",
+                        sl_gl_enum_name((GLenum)v[12]));
+        sl_diag_cause_in(out, "lab5_create_moments_target", "both framebuffers complete, moments[i] as framebuffer[i]'s "
+                           "GL_COLOR_ATTACHMENT0, and SL_FAILED when one is not (TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
+        return false;
+    }
+    if (v[10] <= 0 && _sl_mipmapped(v[11])) {
+        sl_diag_say(out, "moments[1], which the blur's second pass reads, is filtered with %s but has no mipmaps: an "
+                         "incomplete texture, which reads as 0, so the blurred moments are (0, 0)",
+                    sl_gl_enum_name((GLenum)v[11]));
+        sl_diag_cause_in(out, "lab5_create_moments_target", "give each moments texture the min filter GL_LINEAR when "
+                           "lab5_create_moments_target() makes it: GL's default, GL_NEAREST_MIPMAP_LINEAR, wants mipmaps (TODO(lab5.1) in "
+                           "labs/lab5_vsm/lab5.c)");
+        return false;
+    }
+    return true;
 }
 
 /* Where nothing is drawn the moments must say "nothing in front", (1, 1); cleared to (0, 0) they say "an
@@ -87,8 +132,7 @@ static bool _sl_mipmaps_ok(const sl_case_result *r, sl_check_result *out) {
     if (!t || t->number_count < SL_MOMENTS_TARGET_NUMBERS) return true;
     const double *v = t->numbers;
     double level1[2] = {v[8], v[10]}, filter0 = v[9];
-    bool mipmapped = filter0 == GL_LINEAR_MIPMAP_LINEAR || filter0 == GL_LINEAR_MIPMAP_NEAREST ||
-                     filter0 == GL_NEAREST_MIPMAP_LINEAR || filter0 == GL_NEAREST_MIPMAP_NEAREST;
+    bool mipmapped = _sl_mipmapped(filter0);
     if (level1[0] <= 0 && level1[1] > 0) {
         sl_diag_say(out, "moments[0], which the camera pass reads, has no mipmaps (min filter %s), while moments[1], the "
                          "blur's intermediate, has: distant receivers read unfiltered moments and alias",
@@ -115,7 +159,9 @@ static bool _sl_mipmaps_ok(const sl_case_result *r, sl_check_result *out) {
 }
 
 bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out) {
-    return !_sl_format_ok(r, out) || _sl_cleared_to_zero(r, out) || !_sl_mipmaps_ok(r, out);
+    /* an incomplete texture or framebuffer leaves (0, 0) too: said before the clear is blamed */
+    return !_sl_format_ok(r, out) || !_sl_blur_targets_ok(r, out) || !_sl_mipmaps_ok(r, out) ||
+           _sl_cleared_to_zero(r, out);
 }
 
 void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
@@ -164,6 +210,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
             unsquared += fabsf(m2 - m1) < 1e-4f && fabsf(m1 - m1 * m1) > 1e-3f;
         }
     }
+    if (blurred && (!_sl_blur_targets_ok(r, out) || !_sl_mipmaps_ok(r, out))) return;
     long empty = 0, zeroed = 0; /* the reference's texels with nothing drawn, (1, 1): here (0, 0)? */
     for (long i = 0; i < n; i++)
         if (t->data[2 * i] > 0.999f && t->data[2 * i + 1] > 0.999f) {

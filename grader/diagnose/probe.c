@@ -24,6 +24,13 @@ const char *sl_diag_enum_name(unsigned value) {
     case GL_CLAMP_TO_BORDER: return "GL_CLAMP_TO_BORDER";
     case GL_REPEAT: return "GL_REPEAT";
     case GL_MIRRORED_REPEAT: return "GL_MIRRORED_REPEAT";
+    /* and the cube map faces a pass attaches */
+    case GL_TEXTURE_CUBE_MAP_POSITIVE_X: return "GL_TEXTURE_CUBE_MAP_POSITIVE_X";
+    case GL_TEXTURE_CUBE_MAP_NEGATIVE_X: return "GL_TEXTURE_CUBE_MAP_NEGATIVE_X";
+    case GL_TEXTURE_CUBE_MAP_POSITIVE_Y: return "GL_TEXTURE_CUBE_MAP_POSITIVE_Y";
+    case GL_TEXTURE_CUBE_MAP_NEGATIVE_Y: return "GL_TEXTURE_CUBE_MAP_NEGATIVE_Y";
+    case GL_TEXTURE_CUBE_MAP_POSITIVE_Z: return "GL_TEXTURE_CUBE_MAP_POSITIVE_Z";
+    case GL_TEXTURE_CUBE_MAP_NEGATIVE_Z: return "GL_TEXTURE_CUBE_MAP_NEGATIVE_Z";
     default: return sl_gl_enum_name((GLenum)value);
     }
 }
@@ -41,7 +48,9 @@ static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
             return;
         }
     }
-    snprintf(out, n, "%.4g", v);
+    /* an enum without a name is still a whole number: never rounded to 4 digits */
+    if (gl_enum && fabs(v) < 1e9 && v == floor(v)) snprintf(out, n, "%.0f", v);
+    else snprintf(out, n, "%.4g", v);
 }
 
 static void _sl_value(double v, char *out, size_t n) { _sl_value_named(v, false, out, n); }
