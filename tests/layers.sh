@@ -6,9 +6,10 @@
 # declares (one header declaring what several files define, as the
 # diagnoses' does, hides those arrows from the #include lines alone).
 #
-# Fails on a circle between modules and on any arrow from framework/ into
-# grader/; prints the layers, lowest first: layer 0 uses nothing, layer N
-# uses only layers below N. A circle listed in ALLOWED below is printed as
+# Fails on a circle between modules, on any arrow from framework/ into
+# grader/, and on a module using a library that is not below its own
+# (LIBRARIES); prints the layers, lowest first: layer 0 uses nothing, layer N
+# uses only layers below N, then the libraries. A circle listed in ALLOWED below is printed as
 # such and does not fail, until the change it names removes it.
 #
 # usage: tests/layers.sh [source root]
@@ -24,10 +25,28 @@ ALLOWED=(
   "sl_grade.c calls each lab's diagnoses by name until a diagnosis table does|grader/sl_grade grader/sl_diagnose grader/diagnose/lab1 grader/diagnose/lab2 grader/diagnose/lab3 grader/diagnose/lab4 grader/diagnose/lab5 grader/diagnose/lab6 grader/diagnose/lab7 grader/diagnose/probe grader/diagnose/runs grader/diagnose/verdict grader/diagnose/visibility grader/diagnose/sl_verdict"
 )
 
+# The libraries below (CMake's, as framework/ and grader/ define them): a
+# module of the first may use modules of the others only. The grader's and
+# sl_framework stand side by side: neither uses the other.
+LIBRARIES=(
+  "sl_core|"
+  "sl_cases|sl_core"
+  "sl_framework|sl_core sl_cases"
+  "sl_grader|sl_core sl_cases sl_sandbox"
+  "sl_submission|sl_core sl_cases sl_sandbox sl_grader"
+)
+# which library each module is in, from the add_library() lists
+library_of=$(awk '
+  /^add_library\(sl_[a-z_]+ STATIC/ { lib = $1; sub(/^add_library\(/, "", lib); dir = FILENAME; sub(/\/CMakeLists.txt$/, "", dir) }
+  lib != "" { for (i = 1; i <= NF; i++) if ($i ~ /^[A-Za-z0-9_\/]+\.(c|cpp)\)?$/) { f = $i; sub(/\)$/, "", f); sub(/\.(c|cpp)$/, "", f); print dir "/" f, lib } }
+  lib != "" && /\)/ { lib = "" }
+' framework/CMakeLists.txt grader/CMakeLists.txt)
+
 files=$(find framework grader \( -name '*.c' -o -name '*.h' -o -name '*.cpp' \) -type f | LC_ALL=C sort)
 allowed=$(printf '%s\n' "${ALLOWED[@]}")
+libraries=$(printf '%s\n' "${LIBRARIES[@]}")
 
-LC_ALL=C awk -v allowed="$allowed" '
+LC_ALL=C awk -v allowed="$allowed" -v libraries="$libraries" -v library_of="$library_of" '
 function module_of(path) { sub(/\.(c|h|cpp)$/, "", path); return path }
 function base_of(path) { sub(/.*\//, "", path); return path }
 # The line without comments and string literals (comment state kept across lines).
@@ -137,6 +156,20 @@ END {
         if (p[1] ~ /^framework\// && p[2] ~ /^grader\//) { printf "FAIL: framework/ uses grader/: %s -> %s\n", p[1], p[2]; failed = 1 }
     }
 
+    # the libraries: a module uses modules of its own library or of those listed below it
+    k = split(library_of, lines, "\n")
+    for (j = 1; j <= k; j++) { split(lines[j], p, " "); lib[p[1]] = p[2] }
+    k = split(libraries, lines, "\n")
+    for (j = 1; j <= k; j++) { split(lines[j], p, "|"); may_use[p[1]] = " " p[1] " " p[2] " " }
+    for (key in edge) {
+        split(key, p, SUBSEP)
+        if (!(p[1] in lib) || !(p[2] in lib) || !(lib[p[1]] in may_use)) continue
+        if (index(may_use[lib[p[1]]], " " lib[p[2]] " ") == 0) {
+            printf "FAIL: %s (%s) uses %s (%s), a library not below its own\n", p[1], lib[p[1]], p[2], lib[p[2]]
+            failed = 1
+        }
+    }
+
     # layers of the components, lowest first
     for (c = 1; c <= components; c++) layer_of_component(c)
     top = 0
@@ -153,8 +186,15 @@ END {
         }
         printf "%2d:%s\n", L, line_out
     }
+    print "\nLibraries, each on those after its name (CMake):"
+    k = split(libraries, lines, "\n")
+    for (j = 1; j <= k; j++) {
+        split(lines[j], p, "|"); members = ""
+        for (i = 1; i <= n; i++) if (lib[order[i]] == p[1]) { m = order[i]; sub(/.*\//, "", m); members = members " " m }
+        printf "  %s (on: %s):%s\n", p[1], p[2] == "" ? "nothing" : p[2], members
+    }
     if (failed) { print "\nlayers: FAILED (see FAIL lines above)"; exit 1 }
-    print "\nlayers: no circles (beyond those allowed above), no arrow from framework/ into grader/"
+    print "\nlayers: no circles (beyond those allowed above), no arrow from framework/ into grader/, none up between libraries"
 }
 function strongconnect(v,    k, ws, j, w, members, size) {
     index_of[v] = counter; low[v] = counter; counter++
