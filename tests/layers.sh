@@ -22,7 +22,6 @@ cd "$root"
 ALLOWED=(
   "the image module's interface, a table of functions sl_image.c loads with dlopen(), speaks sl_image.h's types|framework/sl_image framework/sl_image_io"
   "the renderer calls labs 5-7 by name until a technique table drives it|framework/sl_renderer framework/sl_lab5_vsm framework/sl_lab6_cascades framework/sl_lab7_cube"
-  "sl_grade.c calls each lab's diagnoses by name until a diagnosis table does|grader/sl_grade grader/sl_diagnose grader/diagnose/lab1 grader/diagnose/lab2 grader/diagnose/lab3 grader/diagnose/lab4 grader/diagnose/lab5 grader/diagnose/lab6 grader/diagnose/lab7 grader/diagnose/probe grader/diagnose/runs grader/diagnose/verdict grader/diagnose/visibility grader/diagnose/sl_verdict"
 )
 
 # The libraries below (CMake's, as framework/ and grader/ define them): a
@@ -113,14 +112,17 @@ END {
     # arrows: includes, and the names a header declares and another module defines
     for (key in includes) {
         split(key, p, SUBSEP)
-        if ((p[2] in header_module) && header_module[p[2]] != p[1]) edge[p[1], header_module[p[2]]] = 1
+        if ((p[2] in header_module) && header_module[p[2]] != p[1]) {
+            edge[p[1], header_module[p[2]]] = 1; why[p[1], header_module[p[2]]] = "#include \"" p[2] "\""
+        }
     }
     for (key in names) {
         split(key, p, SUBSEP)
         # (a header does not use what it declares itself)
         if ((p[2] in declared) && (p[2] in defined_in) && !(p[2] in ambiguous) && defined_in[p[2]] != p[1] &&
             !((p[1], p[2]) in declares))
-            edge[p[1], defined_in[p[2]]] = 1
+            { edge[p[1], defined_in[p[2]]] = 1
+              if (!((p[1], defined_in[p[2]]) in why)) why[p[1], defined_in[p[2]]] = p[2] }
     }
     n = 0
     for (m in modules) { n++; order[n] = m }
@@ -149,7 +151,7 @@ END {
         # one arrow of each member into the circle, to show where it closes
         k = split(members, ms, " ")
         for (j = 1; j <= k; j++) for (l = 1; l <= k; l++)
-            if (((ms[j], ms[l]) in edge)) printf "    %s -> %s\n", ms[j], ms[l]
+            if (((ms[j], ms[l]) in edge)) printf "    %s -> %s (%s)\n", ms[j], ms[l], why[ms[j], ms[l]]
     }
     for (key in edge) {
         split(key, p, SUBSEP)
