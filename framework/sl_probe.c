@@ -200,6 +200,15 @@ int sl_probe_input_count(const sl_probe_function *f) {
     return n;
 }
 
+const float *sl_probe_row_param(const sl_probe_function *f, const float *row, const char *name) {
+    int offset = 0;
+    for (int i = 0; i < f->param_count; i++) {
+        if (strcmp(f->params[i].name, name) == 0) return row + offset;
+        offset += sl_probe_type_size(f->params[i].type);
+    }
+    return NULL;
+}
+
 static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit",      "occluded",      "step",
                                                               "ramp",     "cube_lit",      "cube_occluded",
                                                               "cube_room", "cube_positive", "step_floor", "cascades", "moments_flat", "moments_step_x", "moments_step_y"};

@@ -86,6 +86,8 @@ const sl_probe_function *sl_probe_at(int index);
 int sl_probe_index(const sl_probe_function *f);
 /* Floats one input row takes (a map counts one: its sl_probe_map). */
 int sl_probe_input_count(const sl_probe_function *f);
+/* The inputs of one parameter in an input row, or NULL if the function has none of that name. */
+const float *sl_probe_row_param(const sl_probe_function *f, const float *row, const char *name);
 int sl_probe_type_size(sl_probe_type type);
 const char *sl_probe_map_name(sl_probe_map map);
 /* -1 when the name is no map's. */

@@ -1,7 +1,8 @@
 /* sl_diagnose: what turns a failed check into a message that names the
- * mistake. sl_grade.c holds the shared core (saying things, stubs, the lookup
- * function of a case, what to fix first); each lab's knowledge sits in a file
- * of its own under grader/diagnose/, function probes in
+ * mistake. sl_diag.c holds what every diagnosis uses (saying things, stubs,
+ * the lookup function of a case), sl_grade.c what to fix first; each lab's
+ * knowledge sits in a file of its own under grader/diagnose/, registered in
+ * the diagnosis table (at the end of this header), function probes in
  * grader/diagnose/probe.c, and measures shared by the visibility checks of
  * several labs in grader/diagnose/visibility.c.
  *
@@ -17,33 +18,9 @@
 
 #include "sl_case.h"
 #include "sl_compare.h"
-#include "sl_grade.h"
+#include "sl_diag.h"
 #include "sl_image.h"
 #include "sl_run.h"
-
-/* ---- the core (grader/sl_grade.c) ---- */
-void sl_diag_say(sl_check_result *out, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-void sl_diag_append(sl_check_result *out, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-/* The likely cause of the symptom in out->message. */
-void sl_diag_cause(sl_check_result *out, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-/* A likely cause that names a lab function (a probe's, or "depth.vert"): the core
- * keeps it only on evidence (runs.c): the case runs that function, and its probe,
- * when it was graded, failed in a way that explains the symptoms; otherwise the
- * message says the function was ruled out and lists the candidates instead. */
-void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-/* Adds a case's hint after the message. */
-void sl_diag_hint(sl_check_result *out, const char *hint);
-/* "not implemented" for this lab's stubs first, then "needs lab K"; false if no stub is in the way. */
-bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check_result *out);
-/* The GLSL function that computes visibility for this case, and its TODO. */
-void sl_diag_lookup_function(const sl_case *c, const char **function, const char **todo);
-/* An image check's verdict from its comparison: few enough pixels off, none
- * NaN, and a mean difference within the check's mean tolerance. When only
- * the mean is off, says so (a small error everywhere) and returns false. */
-bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const char *what, sl_check_result *out);
-/* The TODO tag and file of a lab function ("TODO(lab3.2)", "labs/lab3_bias/shaders/bias.glsl"). */
-bool sl_diag_stub_location(const char *function, const char **todo, const char **file);
 
 /* ---- evidence: what a case runs, what a failed probe explains (grader/diagnose/runs.c) ----
  * The rules (grader/diagnose/README.md): a message names a function as the cause
@@ -79,8 +56,6 @@ bool sl_probe_failure_explains(const sl_case *c, const sl_check *k, const sl_pro
 bool sl_function_may_be_blamed(const sl_case *c, const sl_check *k, const char *function, bool isolated);
 /* The path the framework takes for case c, in a few words ("pcf_grid() with radius 1"); empty when there is nothing to say. */
 void sl_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
-/* The inputs of one parameter of a probe row, or NULL if the function has none of that name. */
-const float *sl_probe_row_param(const sl_probe_function *f, const float *row, const char *name);
 /* Per lab (grader/diagnose/labN.c): sl_case_runs for that lab's cases, and its path. */
 bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *function);
 bool sl_lab2_case_runs(const sl_case *c, const sl_check *k, const char *function);
@@ -191,10 +166,54 @@ bool sl_lab7_probe_contract(const sl_check *k, const double *student, uint32_t *
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                        sl_check_result *out);
-/* A GL enum's name ("GL_CLAMP_TO_EDGE"), "unknown GL enum" for others. */
-const char *sl_diag_enum_name(unsigned value);
 /* A probe reference: the outputs of the solution, and the inputs they were made from. */
 bool sl_probe_reference_read(const char *path, const sl_check *k, double *outputs, char *err, size_t err_size);
 bool sl_probe_reference_write(const char *path, const sl_check *k, const double *outputs, char *err, size_t err_size);
+
+/* ---- the diagnosis table (grader/diagnose/table.c) ----
+ * Each lab registers what it knows in one descriptor at the end of its file
+ * (diagnose/labN.c); the core, the evidence and the probes read the table and
+ * never name a lab. Zero (NULL) means the lab has nothing of that kind. */
+struct sl_verdict_rows;
+typedef void (*sl_check_diagnosis_fn)(const sl_case *c, const sl_check *k, const sl_case_result *r,
+                                      const sl_reference *ref, sl_check_result *out);
+/* A check kind the lab diagnoses itself (its pictures or numbers measured its own way). */
+typedef struct sl_check_diagnosis {
+    sl_check_kind kind;
+    sl_check_diagnosis_fn diagnose;
+} sl_check_diagnosis;
+#define SL_LAB_MAX_CHECK_KINDS 4
+typedef struct sl_lab_diagnoses {
+    int lab;
+    sl_check_diagnosis checks[SL_LAB_MAX_CHECK_KINDS]; /* up to the first without a diagnose */
+    /* A visibility check of the lab's cases, after the core's own measures: true when it named the mistake. */
+    bool (*visibility)(const sl_case *c, const sl_image *student, const sl_image *reference, const sl_image *lit_mask,
+                       sl_check_result *out);
+    /* Before a failed visibility check of the lab's cases is measured: a capture that already explains it
+     * (said in out), or false. */
+    bool (*capture_explains)(const sl_case_result *r, sl_check_result *out);
+    /* sl_case_runs and sl_case_path for the lab's cases (runs.c); a row's settings (sl_case_meets_row). */
+    bool (*case_runs)(const sl_case *c, const sl_check *k, const char *function);
+    void (*case_path)(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+    bool (*meets_row)(const sl_case *c, const sl_check *probe, int row);
+    /* Probes of the lab's functions: a contract of their own (probe.c), a verdict read from the check's numbers
+     * before the shared ones (probe.c), a verdict from the rows after them (verdict.c). */
+    bool (*probe_contract)(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t text_size,
+                           int *shown);
+    int (*probe_verdict)(const sl_check *k, const double *student, const double *expected, uint32_t failing_rows,
+                         char *text, size_t text_size);
+    int (*rows_verdict)(const struct sl_verdict_rows *rows, char *text, size_t text_size);
+} sl_lab_diagnoses;
+extern const sl_lab_diagnoses sl_lab1_diagnoses;
+extern const sl_lab_diagnoses sl_lab2_diagnoses;
+extern const sl_lab_diagnoses sl_lab3_diagnoses;
+extern const sl_lab_diagnoses sl_lab4_diagnoses;
+extern const sl_lab_diagnoses sl_lab5_diagnoses;
+extern const sl_lab_diagnoses sl_lab6_diagnoses;
+extern const sl_lab_diagnoses sl_lab7_diagnoses;
+/* Lab `lab`'s descriptor, or NULL. */
+const sl_lab_diagnoses *sl_lab_diagnoses_of(int lab);
+/* The diagnosis a lab registered for checks of that kind, or NULL. */
+sl_check_diagnosis_fn sl_check_diagnosis_of(sl_check_kind kind);
 
 #endif

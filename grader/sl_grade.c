@@ -25,126 +25,6 @@
 #define _SL_SLOW_FACTOR 50.0
 #define _SL_SLOW_MARGIN 0.1
 
-/* The TODO tags a stub's message points to. */
-static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
-    {"lab1_create_shadow_map", "TODO(lab1.1), TODO(lab1.2)", "labs/lab1_depth_fbo/lab1.c"},
-    {"lab1_begin_depth_pass", "TODO(lab1.3)", "labs/lab1_depth_fbo/lab1.c"},
-    {"lab2_light_view", "TODO(lab2.1)", "labs/lab2_projective/lab2.c"},
-    {"lab2_light_projection", "TODO(lab2.2)", "labs/lab2_projective/lab2.c"},
-    {"lab2_shadow_matrix", "TODO(lab2.3)", "labs/lab2_projective/lab2.c"},
-    {"lab3_depth_pass_state", "TODO(lab3.1)", "labs/lab3_bias/lab3.c"},
-    {"lab3_second_depth_state", "TODO(lab3.4), the optional extension,", "labs/lab3_bias/lab3.c"},
-    {"lab4_configure_shadow_texture", "TODO(lab4.1)", "labs/lab4_pcf/lab4.c"},
-    {"lab5_create_moments_target", "TODO(lab5.1)", "labs/lab5_vsm/lab5.c"},
-    {"lab5_begin_moments_pass", "TODO(lab5.2)", "labs/lab5_vsm/lab5.c"},
-    {"lab5_begin_blur_pass", "TODO(lab5.4)", "labs/lab5_vsm/lab5.c"},
-    {"lab5_filter_moments", "TODO(lab5.6)", "labs/lab5_vsm/lab5.c"},
-    {"lab7_create_cube_map", "TODO(lab7.1)", "labs/lab7_cube/lab7.c"},
-    {"lab7_begin_cube_pass", "TODO(lab7.2)", "labs/lab7_cube/lab7.c"},
-    {"lab7_face_view", "TODO(lab7.3)", "labs/lab7_cube/lab7.c"},
-    {"lab7_face_projection", "TODO(lab7.4)", "labs/lab7_cube/lab7.c"},
-};
-
-void sl_diag_say(sl_check_result *out, const char *fmt, ...) {
-    va_list args;
-    va_start(args, fmt);
-    vsnprintf(out->message, sizeof out->message, fmt, args);
-    va_end(args);
-}
-
-void sl_diag_append(sl_check_result *out, const char *fmt, ...) {
-    size_t used = strlen(out->message);
-    va_list args;
-    va_start(args, fmt);
-    vsnprintf(out->message + used, sizeof out->message - used, fmt, args);
-    va_end(args);
-}
-
-void sl_diag_cause(sl_check_result *out, const char *fmt, ...) {
-    va_list args;
-    va_start(args, fmt);
-    vsnprintf(out->cause, sizeof out->cause, fmt, args);
-    va_end(args);
-}
-
-void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fmt, ...) {
-    va_list args;
-    va_start(args, fmt);
-    vsnprintf(out->cause, sizeof out->cause, fmt, args);
-    va_end(args);
-    /* "pcf_grid()", "shadow_compare_manual() (lab 2)": the name alone */
-    snprintf(out->blamed, sizeof out->blamed, "%.*s", (int)strcspn(function, "( "), function);
-}
-
-/* Adds a case's hint after the message. */
-void sl_diag_hint(sl_check_result *out, const char *hint) {
-    if (!hint[0]) return;
-    size_t n = strlen(out->message);
-    bool ends_sentence = n > 0 && strchr(".?!", out->message[n - 1]) != NULL;
-    sl_diag_append(out, "%s Hint: %s", ends_sentence ? "" : ".", hint);
-}
-
-bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const char *what, sl_check_result *out) {
-    bool pixels_ok = st->failing_fraction <= k->fail_fraction && st->nan_pixels == 0;
-    bool mean_ok = k->mean_tolerance <= 0 || st->mean_difference <= k->mean_tolerance;
-    if (pixels_ok && !mean_ok)
-        sl_diag_say(out, "the %s is off by %.4f on average (allowed %.4f), though hardly a pixel is far off: a small "
-                         "error everywhere (%s %.4f on average, the reference %.4f)",
-                    what, st->mean_difference, k->mean_tolerance, what, st->mean_student, st->mean_reference);
-    return pixels_ok && mean_ok;
-}
-
-bool sl_diag_stub_location(const char *function, const char **todo, const char **file) {
-    static char todos[64][48], files[64][160];
-    for (size_t s = 0; s < sizeof _sl_stubs / sizeof _sl_stubs[0]; s++)
-        if (strcmp(_sl_stubs[s].function, function) == 0) {
-            *todo = _sl_stubs[s].todo;
-            *file = _sl_stubs[s].file;
-            return true;
-        }
-    const sl_probe_function *f = sl_probe_find(function);
-    if (!f) return false;
-    int i = sl_probe_index(f) % 64;
-    snprintf(todos[i], sizeof todos[i], "TODO(%s)", f->todo);
-    snprintf(files[i], sizeof files[i], "labs/%s", f->file);
-    *todo = todos[i];
-    *file = files[i];
-    return true;
-}
-
-static int _sl_function_lab(const char *function) {
-    return strncmp(function, "lab", 3) == 0 ? atoi(function + 3) : 0;
-}
-
-/* "not implemented" for this lab's stubs first, then "needs lab K". */
-bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check_result *out) {
-    for (int pass = 0; pass < 2; pass++) {
-        for (int i = 0; i < r->not_implemented_count; i++) {
-            const char *fn = r->not_implemented[i];
-            int lab = _sl_function_lab(fn);
-            if ((pass == 0) != (lab == c->lab)) continue;
-            const char *todo = "", *file = "";
-            sl_diag_stub_location(fn, &todo, &file);
-            if (lab == c->lab)
-                sl_diag_say(out, "not implemented: %s() still returns SL_NOT_IMPLEMENTED (%s in %s)", fn, todo, file);
-            else
-                sl_diag_say(out, "not implemented: needs lab %d first, and %s() still returns SL_NOT_IMPLEMENTED", lab, fn);
-            out->cause[0] = '\0';
-            out->settled = true;
-            return true;
-        }
-    }
-    if (r->failed[0]) {
-        sl_diag_say(out, "%s() returned SL_FAILED", r->failed);
-        if (strcmp(r->failed, "lab1_create_shadow_map") == 0)
-            sl_diag_append(out, " (is the framebuffer complete? glCheckFramebufferStatus tells why not)");
-        out->cause[0] = '\0';
-        out->settled = true;
-        return true;
-    }
-    return false;
-}
-
 static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *out) {
     int drawing_lab = 0; /* the runner stopped in a draw of the case's frames (sl_runner.c) */
     if (sscanf(r->crashed_in, "drawing_lab%d", &drawing_lab) != 1 || drawing_lab < 1 || drawing_lab > SL_LAB_MAX)
@@ -181,36 +61,6 @@ static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *ou
         const char *start = end;
         while (start > r->output_tail && start[-1] != '\n') start--;
         if (end > start) sl_diag_append(out, "; its output ended with: %.*s", (int)(end - start > 300 ? 300 : end - start), start);
-    }
-}
-
-/* The GLSL function that computes visibility for this case, and its TODO. */
-void sl_diag_lookup_function(const sl_case *c, const char **function, const char **todo) {
-    static const char *const filters[SL_FILTER_MODE_COUNT][2] = {
-        {"shadow_compare_manual() (lab 2)", "lab2.5"}, {"pcf_hardware()", "lab4.2"}, {"pcf_grid()", "lab4.3"},
-        {"pcf_poisson()", "lab4.4"}, {"pcss()", "lab4.5"},
-    };
-    if (c->lab == 5) {
-        *function = "chebyshev_upper_bound()";
-        *todo = "lab5.7";
-    } else if (c->lab == 6) { /* cascades: lab 6's own lookup */
-        *function = "cascade_compare()";
-        *todo = "lab6.5";
-    } else if (c->lab == 7) {
-        *function = c->params.cube.soft ? "point_shadow_soft()" : "point_shadow()";
-        *todo = c->params.cube.soft ? "lab7.7" : "lab7.6";
-    } else if (c->lab >= 4) {
-        *function = filters[c->params.filter.mode][0];
-        *todo = filters[c->params.filter.mode][1];
-    } else if (c->lab == 3 && c->params.bias.mode == SL_BIAS_MIDPOINT) {
-        *function = "midpoint_compare()";
-        *todo = "lab3.5";
-    } else if (c->params.compare == SL_COMPARE_HARDWARE) {
-        *function = "shadow_compare_hardware()";
-        *todo = "lab2.6";
-    } else {
-        *function = "shadow_compare_manual()";
-        *todo = "lab2.5";
     }
 }
 
@@ -385,11 +235,8 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
         }
         return;
     }
-    if (c->lab == 2 && sl_diagnose_lab2_visibility(c, s, t, mask, out)) return;
-    if (c->lab == 3 && mask && sl_diagnose_lab3_visibility(c, s, t, mask, out)) return;
-    if (c->lab == 4 && sl_diagnose_lab4_visibility(c, s, t, mask, out)) return;
-    if (c->lab == 5 && sl_diagnose_lab5_visibility(c, s, t, mask, out)) return;
-    if (c->lab == 7 && sl_diagnose_lab7_visibility(c, s, t, mask, out)) return;
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
+    if (lab && lab->visibility && lab->visibility(c, s, t, mask, out)) return;
     if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
         sl_diag_say(out, "lit and shadowed are swapped (%.0f%% of shadows lit, %.0f%% of lit pixels shadowed)",
@@ -479,7 +326,8 @@ static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case
     }
     if (sl_diag_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
     if (out->message[0]) return;                      /* only the mean is off: said */
-    if (k->kind == SL_CHECK_VISIBILITY && c->lab == 5 && sl_diagnose_lab5_format(r, out)) return;
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
+    if (k->kind == SL_CHECK_VISIBILITY && lab && lab->capture_explains && lab->capture_explains(r, out)) return;
     if (k->kind == SL_CHECK_VISIBILITY) {
         const sl_capture *mask = sl_result_capture(r, "lit_mask");
         _sl_check_visibility(c, k, s, t, mask ? &mask->image : NULL, &st, out);
@@ -832,25 +680,19 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
      * happens to match: the framework's stand-in must never earn the points.
      * (A probe calls one function alone: only its own stub matters there.) */
     for (int i = 0; k->kind != SL_CHECK_PROBE && i < r->not_implemented_count; i++)
-        if (_sl_function_lab(r->not_implemented[i]) <= c->lab && sl_diag_explain_missing(c, r, out)) {
+        if (sl_diag_function_lab(r->not_implemented[i]) <= c->lab && sl_diag_explain_missing(c, r, out)) {
             snprintf(out->summary, sizeof out->summary, "%s", out->message);
             return;
         }
+    sl_check_diagnosis_fn lab_diagnosis = sl_check_diagnosis_of(k->kind); /* a lab's own check kind */
     switch (k->kind) {
-    case SL_CHECK_FBO: sl_diagnose_fbo(c, r, out); break;
-    case SL_CHECK_DEPTH_MAP: sl_diagnose_depth(c, k, r, ref, out); break;
-    case SL_CHECK_MATRICES: sl_diagnose_matrices(c, k, r, ref, out); break;
     case SL_CHECK_VISIBILITY:
     case SL_CHECK_IMAGE: _sl_check_image(c, k, r, ref, out); break;
-    case SL_CHECK_PENUMBRA: sl_diagnose_penumbra(c, k, r, ref, out); break;
     case SL_CHECK_PROBE: sl_diagnose_probe(c, k, r, ref, out); break;
-    case SL_CHECK_MOMENTS:
-    case SL_CHECK_MOMENTS_BLURRED: sl_diagnose_moments(c, k, r, ref, out); break;
-    case SL_CHECK_BLEEDING: sl_diagnose_bleeding(c, k, r, ref, out); break;
-    case SL_CHECK_CASCADE_INDEX: sl_diagnose_cascade_index(c, k, r, ref, out); break;
-    case SL_CHECK_FLICKER: sl_diagnose_flicker(c, k, r, ref, out); break;
-    case SL_CHECK_CUBE_FACE: sl_diagnose_cube_face(c, k, r, ref, out); break;
-    default: sl_diag_say(out, "unknown check kind"); break;
+    default:
+        if (lab_diagnosis) lab_diagnosis(c, k, r, ref, out);
+        else sl_diag_say(out, "unknown check kind");
+        break;
     }
     if (out->passed) {
         out->points = k->points;

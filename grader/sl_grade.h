@@ -7,70 +7,15 @@
 #include <stdint.h>
 
 #include "sl_case.h"
+#include "sl_diag.h"
 #include "sl_image.h"
 #include "sl_manifest.h"
 #include "sl_probe.h"
 #include "sl_run.h"
 
-typedef struct sl_reference {
-    bool needed, loaded;
-    char path[1100];
-    char error[600];
-    sl_image image;
-    double numbers[SL_RUN_MAX_NUMBERS]; /* matrices (48), or a probe's rows x outputs */
-    int number_count;
-} sl_reference;
+/* The types a check's diagnosis reads and writes (sl_reference, sl_check_result,
+ * sl_probe_failure) are sl_diag.h's, below the diagnoses and this module. */
 
-typedef struct sl_check_result {
-    double points, max_points;
-    bool bonus;             /* max_points do not count towards the maximum score */
-    bool passed;
-    /* Not the submission's doing, staff must fix it: a missing or corrupt
-     * reference, or a case the machine could not run (r->staff_error). */
-    bool reference_problem;
-    char message[2048];
-    sl_image diff;          /* failed image checks */
-    /* What other checks may quote: the mistake in a few words ("the shadow
-     * matrix multiplies Lv * Lp"), for a later check of the case or an image
-     * check of the same lab to lead with. */
-    char summary[512];
-    uint32_t symptoms;      /* 1 << sl_symptom: what the capture shows (a hint is shown for its own only) */
-    uint32_t failing_rows;  /* probe checks: 1 << row for each row that differs */
-    bool stub;              /* probe checks: the function still returns what its stub returns */
-    /* probe checks: what each failing row's mistake can show in a picture (1 << sl_symptom), from
-     * the row's outputs, or the verdict's when it named the mistake (grader/diagnose/probe.c) */
-    uint32_t row_predicts[SL_PROBE_MAX_ROWS];
-    uint16_t row_outputs[SL_PROBE_MAX_ROWS]; /* probe checks: 1 << output for each output of a row that differs */
-    char cause[1024];       /* while a check is diagnosed: the likely cause of the symptom in message */
-    char blamed[64];        /* while a check is diagnosed: the lab function the cause names (sl_diag_cause_in) */
-    bool settled;           /* the message needs no lead: a stub, a run that failed, a capture missing */
-    /* A failed check's diagnosis, the same for every student it fits: the
-     * mistake in a few words (the summary; a probe's with its function; for a
-     * check led by an earlier failure, that lead) with its numbers taken out
-     * ("shadow acne on …% of lit surfaces"), and an id made from that text
-     * ("shadow-acne-on-of-lit-surfaces-3fa2c1"; "follows-..." for a lead).
-     * The class report counts students per id. */
-    char diagnosis[72];
-    char diagnosis_text[320];
-} sl_check_result;
-
-/* A function probe that failed. A check whose case runs the function leads
- * with it only on evidence (grader/diagnose/README.md): the case runs it on
- * inputs like a failing row's, and what those rows predict is what the
- * check's capture shows. */
-typedef struct sl_probe_failure {
-    int function;            /* sl_probe_at index */
-    char where[200];         /* "lab4_probes / pcf_grid" */
-    char summary[512];       /* what is wrong with it */
-    bool stub;               /* not implemented yet */
-    uint32_t failing_modes;  /* functions whose first input is a mode: 1 << mode of each failing row */
-    const sl_check *check;   /* the probe check: its rows' inputs */
-    uint32_t failing_rows;   /* 1 << row */
-    uint32_t row_predicts[SL_PROBE_MAX_ROWS]; /* what each failing row's mistake can show (1 << sl_symptom) */
-    uint16_t row_outputs[SL_PROBE_MAX_ROWS];  /* 1 << output for each output of a row that differs */
-} sl_probe_failure;
-
-/* A failed check of a lab (not a bonus one), for the later labs that build on it. */
 typedef struct sl_lab_failure {
     bool failed;
     int lab;

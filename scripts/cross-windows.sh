@@ -108,14 +108,15 @@ const char sl_build_labs_dir[] = "$(cd "$labs" && pwd)";
 const char sl_build_labs_kind[] = "$kind";
 EOF
 strict=(-std=c11 -O2 -Wall -Wextra -Wshadow -Wno-unused-parameter -Wno-format-truncation -Werror)
-common=(-I"$root/framework" -I"$root/grader" -I"$prefix/include")
-core=(sl_backend sl_gl sl_image sl_json sl_log sl_params sl_platform sl_probe sl_protocol sl_scene sl_text)
+common=(-I"$root/framework" -I"$prefix/include")
+core=(sl_backend sl_case sl_compare sl_gl sl_image sl_json sl_log sl_params sl_platform sl_probe sl_protocol sl_scene
+      sl_text)
 framework=(sl_bench sl_bench_baseline sl_case_view sl_context sl_lab5_vsm sl_labs sl_lab6_cascades sl_lab7_cube
            sl_mesh sl_overlay sl_probe_pass sl_renderer sl_runner sl_serve sl_shader sl_viewer)
 objects=()
 : >"$out/compile.log"
 # an object older than its source or than any of the project's headers is made again
-newest_header=$(ls -t "$root"/framework/*.h "$root"/grader/*.h | head -1)
+newest_header=$(ls -t "$root"/framework/*.h | head -1)
 compile() { # compile SOURCE OBJECT FLAGS...
   local s=$1 o=$2; shift 2
   if [ ! -f "$o" ] || [ "$s" -nt "$o" ] || [ "$newest_header" -nt "$o" ]; then
@@ -133,7 +134,6 @@ for f in "${framework[@]}"; do
   compile "$root/framework/$f.c" "$obj/$f.o" "${strict[@]}" -DSL_FRAMEWORK_DIR="\"$root/framework\"" \
     -DSL_GRADER_DIR="\"$root/grader\""
 done
-for f in sl_case sl_compare; do compile "$root/grader/$f.c" "$obj/$f.o" "${strict[@]}"; done
 for d in "$labs"/lab*_*/; do
   n=$(basename "$d" | sed 's/^lab\([0-9]*\)_.*/\1/')
   # student files: warnings, never errors

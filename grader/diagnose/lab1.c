@@ -127,3 +127,14 @@ bool sl_depth_pass_runs(const sl_case *c, const sl_check *k, const char *fn) {
 }
 
 bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *fn) { return sl_depth_pass_runs(c, k, fn); }
+
+/* ---- lab 1 in the diagnosis table (diagnose/table.c) ---- */
+static void _sl_diagnose_fbo_check(const sl_case *c, const sl_check *k, const sl_case_result *r,
+                                   const sl_reference *ref, sl_check_result *out) {
+    sl_diagnose_fbo(c, r, out);
+}
+const sl_lab_diagnoses sl_lab1_diagnoses = {
+    .lab = 1,
+    .checks = {{SL_CHECK_FBO, _sl_diagnose_fbo_check}, {SL_CHECK_DEPTH_MAP, sl_diagnose_depth}},
+    .case_runs = sl_lab1_case_runs,
+};

@@ -141,3 +141,12 @@ void sl_lab2_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
                                                       : "shadow_compare_manual() on a sampler2D",
              c->scene.light.type == SL_LIGHT_SPOT ? "a spot light's (perspective: w is not 1)" : "a sun's (orthographic)");
 }
+
+/* ---- lab 2 in the diagnosis table (diagnose/table.c) ---- */
+const sl_lab_diagnoses sl_lab2_diagnoses = {
+    .lab = 2,
+    .checks = {{SL_CHECK_MATRICES, sl_diagnose_matrices}},
+    .visibility = sl_diagnose_lab2_visibility,
+    .case_runs = sl_lab2_case_runs,
+    .case_path = sl_lab2_case_path,
+};

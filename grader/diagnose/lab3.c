@@ -173,3 +173,16 @@ void sl_lab3_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
         snprintf(out, n, "%s, compared by lab 2's %s()", modes[mode] ? modes[mode] : "?",
                  c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware" : "shadow_compare_manual");
 }
+
+/* ---- lab 3 in the diagnosis table (diagnose/table.c) ---- */
+/* Acne is measured on the surfaces facing the light: only with that mask. */
+static bool _sl_lab3_visibility_on_mask(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
+                                        sl_check_result *out) {
+    return mask && sl_diagnose_lab3_visibility(c, s, t, mask, out);
+}
+const sl_lab_diagnoses sl_lab3_diagnoses = {
+    .lab = 3,
+    .visibility = _sl_lab3_visibility_on_mask,
+    .case_runs = sl_lab3_case_runs,
+    .case_path = sl_lab3_case_path,
+};

@@ -246,3 +246,13 @@ void sl_lab4_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
         snprintf(out + used, n - used, ", on lab 3's %.*s", (int)strcspn(bias, ","), bias);
     }
 }
+
+/* ---- lab 4 in the diagnosis table (diagnose/table.c) ---- */
+const sl_lab_diagnoses sl_lab4_diagnoses = {
+    .lab = 4,
+    .checks = {{SL_CHECK_PENUMBRA, sl_diagnose_penumbra}},
+    .visibility = sl_diagnose_lab4_visibility,
+    .case_runs = sl_lab4_case_runs,
+    .case_path = sl_lab4_case_path,
+    .meets_row = sl_lab4_meets_row,
+};

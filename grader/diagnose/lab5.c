@@ -606,3 +606,16 @@ void sl_lab5_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
     (void)r;
     if (c->params.vsm_off) sl_lab4_case_path(c, r, out, n);
 }
+
+/* ---- lab 5 in the diagnosis table (diagnose/table.c) ---- */
+const sl_lab_diagnoses sl_lab5_diagnoses = {
+    .lab = 5,
+    .checks = {{SL_CHECK_MOMENTS, sl_diagnose_moments},
+               {SL_CHECK_MOMENTS_BLURRED, sl_diagnose_moments},
+               {SL_CHECK_BLEEDING, sl_diagnose_bleeding}},
+    .visibility = sl_diagnose_lab5_visibility,
+    .capture_explains = sl_diagnose_lab5_format,
+    .case_runs = sl_lab5_case_runs,
+    .case_path = sl_lab5_case_path,
+    .rows_verdict = sl_verdict_lab5,
+};

@@ -656,3 +656,13 @@ void sl_lab6_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
     snprintf(out, n, "%d cascades of %d texels, lambda %g%s", p->count, c->params.shadow_map_size, (double)p->lambda,
              p->blend_band > 0 ? ", blended across their borders" : ", no blend band");
 }
+
+/* ---- lab 6 in the diagnosis table (diagnose/table.c) ---- */
+const sl_lab_diagnoses sl_lab6_diagnoses = {
+    .lab = 6,
+    .checks = {{SL_CHECK_CASCADE_INDEX, sl_diagnose_cascade_index}, {SL_CHECK_FLICKER, sl_diagnose_flicker}},
+    .case_runs = sl_lab6_case_runs,
+    .case_path = sl_lab6_case_path,
+    .probe_contract = sl_lab6_probe_contract,
+    .rows_verdict = sl_verdict_lab6,
+};

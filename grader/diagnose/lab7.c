@@ -497,3 +497,14 @@ void sl_lab7_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
     snprintf(out, n, "the cube map drawn %s%s%s", pass, lookup ? ", looked up with " : "",
              lookup ? (c->params.cube.soft ? "point_shadow_soft() (20 directions)" : "point_shadow()") : "");
 }
+
+/* ---- lab 7 in the diagnosis table (diagnose/table.c) ---- */
+const sl_lab_diagnoses sl_lab7_diagnoses = {
+    .lab = 7,
+    .checks = {{SL_CHECK_CUBE_FACE, sl_diagnose_cube_face}},
+    .visibility = sl_diagnose_lab7_visibility,
+    .case_runs = sl_lab7_case_runs,
+    .case_path = sl_lab7_case_path,
+    .probe_contract = sl_lab7_probe_contract,
+    .probe_verdict = sl_lab7_probe_verdict,
+};

@@ -12,28 +12,9 @@
 #include <cjson/cJSON.h>
 
 #include "sl_files.h"
-#include "sl_gl.h"
 #include "sl_json.h"
 #include "sl_probe.h"
 #include "sl_verdict.h"
-
-const char *sl_diag_enum_name(unsigned value) {
-    /* the wrap modes a probe reads back, which the framework's table leaves out */
-    switch (value) {
-    case GL_CLAMP_TO_EDGE: return "GL_CLAMP_TO_EDGE";
-    case GL_CLAMP_TO_BORDER: return "GL_CLAMP_TO_BORDER";
-    case GL_REPEAT: return "GL_REPEAT";
-    case GL_MIRRORED_REPEAT: return "GL_MIRRORED_REPEAT";
-    /* and the cube map faces a pass attaches */
-    case GL_TEXTURE_CUBE_MAP_POSITIVE_X: return "GL_TEXTURE_CUBE_MAP_POSITIVE_X";
-    case GL_TEXTURE_CUBE_MAP_NEGATIVE_X: return "GL_TEXTURE_CUBE_MAP_NEGATIVE_X";
-    case GL_TEXTURE_CUBE_MAP_POSITIVE_Y: return "GL_TEXTURE_CUBE_MAP_POSITIVE_Y";
-    case GL_TEXTURE_CUBE_MAP_NEGATIVE_Y: return "GL_TEXTURE_CUBE_MAP_NEGATIVE_Y";
-    case GL_TEXTURE_CUBE_MAP_POSITIVE_Z: return "GL_TEXTURE_CUBE_MAP_POSITIVE_Z";
-    case GL_TEXTURE_CUBE_MAP_NEGATIVE_Z: return "GL_TEXTURE_CUBE_MAP_NEGATIVE_Z";
-    default: return sl_gl_enum_name((GLenum)value);
-    }
-}
 
 /* A number as a message shows it: a GL enum by its name where the output is one. */
 static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
@@ -178,10 +159,8 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
 
 static bool _sl_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t n,
                                int *shown) {
-    const sl_probe_function *f = sl_probe_at(k->function);
-    if (f->lab == 6) return sl_lab6_probe_contract(k, student, broken, text, n, shown);
-    if (f->lab == 7) return sl_lab7_probe_contract(k, student, broken, text, n, shown);
-    return false;
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(sl_probe_at(k->function)->lab);
+    return lab && lab->probe_contract && lab->probe_contract(k, student, broken, text, n, shown);
 }
 
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
@@ -277,9 +256,10 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         return;
     }
     /* What the rows say together, then the row that shows it (or the first that differs). */
-    shown = f->lab == 7 ? sl_lab7_probe_verdict(k, cap->numbers, ref->numbers, out->failing_rows, verdict,
-                                                    sizeof verdict)
-                            : -1;
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(f->lab);
+    shown = lab && lab->probe_verdict
+                ? lab->probe_verdict(k, cap->numbers, ref->numbers, out->failing_rows, verdict, sizeof verdict)
+                : -1;
     if (!verdict[0]) shown = sl_probe_verdict(&rows, verdict, sizeof verdict);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
     /* a verdict that named the mistake says what it shows, for every failing row */

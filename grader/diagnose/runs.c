@@ -60,42 +60,17 @@ bool sl_case_runs(const sl_case *c, const sl_check *k, const char *function) {
         const sl_probe_function *f = sl_probe_at(k->function);
         return f && strcmp(f->name, function) == 0;
     }
-    switch (c->lab) {
-    case 1: return sl_lab1_case_runs(c, k, function);
-    case 2: return sl_lab2_case_runs(c, k, function);
-    case 3: return sl_lab3_case_runs(c, k, function);
-    case 4: return sl_lab4_case_runs(c, k, function);
-    case 5: return sl_lab5_case_runs(c, k, function);
-    case 6: return sl_lab6_case_runs(c, k, function);
-    case 7: return sl_lab7_case_runs(c, k, function);
-    default: return false;
-    }
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
+    return lab && lab->case_runs && lab->case_runs(c, k, function);
 }
 
 void sl_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n) {
     out[0] = '\0';
-    switch (c->lab) {
-    case 2: sl_lab2_case_path(c, r, out, n); break;
-    case 3: sl_lab3_case_path(c, r, out, n); break;
-    case 4: sl_lab4_case_path(c, r, out, n); break;
-    case 5: sl_lab5_case_path(c, r, out, n); break;
-    case 6: sl_lab6_case_path(c, r, out, n); break;
-    case 7: sl_lab7_case_path(c, r, out, n); break;
-    default: break;
-    }
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
+    if (lab && lab->case_path) lab->case_path(c, r, out, n);
 }
 
 /* ---- whether a case meets a probe row ---- */
-
-/* The inputs of one parameter of a row, or NULL if the function has none of that name. */
-const float *sl_probe_row_param(const sl_probe_function *f, const float *row, const char *name) {
-    int offset = 0;
-    for (int i = 0; i < f->param_count; i++) {
-        if (strcmp(f->params[i].name, name) == 0) return row + offset;
-        offset += sl_probe_type_size(f->params[i].type);
-    }
-    return NULL;
-}
 
 static bool _sl_perspective(const sl_case *c) { return c->scene.light.type != SL_LIGHT_DIRECTIONAL; }
 
@@ -103,10 +78,8 @@ static bool _sl_perspective(const sl_case *c) { return c->scene.light.type != SL
  * case meets the row whatever its settings. */
 static bool _sl_meets_settings(const sl_case *c, const sl_check *probe, int r) {
     const sl_probe_function *f = sl_probe_at(probe->function);
-    switch (f->lab) {
-    case 4: return sl_lab4_meets_row(c, probe, r);
-    default: return true;
-    }
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(f->lab);
+    return !lab || !lab->meets_row || lab->meets_row(c, probe, r);
 }
 
 static bool _sl_meets_row(const sl_case *c, const sl_check *probe, int r, bool every_setting);

@@ -689,9 +689,8 @@ int sl_probe_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     if (strcmp(name, "slope_scaled_bias") == 0) return _sl_verdict_slope(v, text, n);
     if (strcmp(name, "normal_offset_position") == 0) return _sl_verdict_normal_offset(v, text, n);
     if (strcmp(name, "lab3_depth_pass_state") == 0) return _sl_verdict_depth_pass_state(v, text, n);
-    if (v->f->lab == 5) return sl_verdict_lab5(v, text, n);
-    if (v->f->lab == 6) return sl_verdict_lab6(v, text, n);
-    return -1;
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(v->f->lab);
+    return lab && lab->rows_verdict ? lab->rows_verdict(v, text, n) : -1;
 }
 
 /* ---- what a failing row predicts a picture shows ---- */

@@ -1,10 +1,12 @@
-// sl_image_io: image files through OpenImageIO, built as the module that
-// sl_image.c loads on first use (see sl_image_io.h).
+// sl_image_oiio: image files through OpenImageIO, built as the module that
+// sl_image.c loads on first use (its interface: sl_image_io.h).
 // C++ only for OIIO; every entry point catches everything, because an exception
 // must not unwind through the C callers.
 // Written against the ImageInput/ImageOutput calls that OpenImageIO 2.4 to 3.x
 // all have (3.0 removed only APIs deprecated long before).
 #include "sl_image_io.h"
+
+#include "sl_image.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
