@@ -1,16 +1,13 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_renderer.h"
 
-#include "sl_lab6_cascades.h"
-
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-#include "sl_lab5_vsm.h"
-#include "sl_lab7_cube.h"
+#include "sl_technique.h"
 
 #ifndef SL_FRAMEWORK_DIR
 #define SL_FRAMEWORK_DIR "framework"
@@ -299,11 +296,11 @@ void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out) {
     out->build_ms = ps->build_ms;
     out->cached = (ps->depth.program.id != 0) + (ps->debug.program.id != 0);
     for (int i = 0; i < ps->variant_count; i++) out->cached += ps->variants[i].slot.program.id != 0;
-    int built, held;
-    sl_lab7_cube_program_counts(r, &built, &held);
-    out->builds += built;
-    out->cached += held;
-    sl_lab6_program_stats(r, out); /* lab 6's programs, kept in sl_lab6_cascades.c */
+    /* the programs the techniques keep in their own modules */
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        const sl_technique *t = sl_technique_of(lab);
+        if (t && t->program_stats) t->program_stats(r, out);
+    }
 }
 
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
@@ -326,20 +323,12 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
         if (ok) snprintf(err, err_size, "%s", r->shader_errors[now[i].lab]);
         ok = false;
     }
-    /* lab 5's passes keep their programs in their own module */
-    char vsm_err[1024] = "";
-    if (!sl_vsm_reload_changed(r, reloaded, vsm_err, sizeof vsm_err)) {
-        if (ok) snprintf(err, err_size, "%s", vsm_err);
-        ok = false;
-    }
-    char lab6_err[sizeof r->shader_errors[0]]; /* lab 6's programs live in sl_lab6_cascades.c */
-    if (!sl_lab6_reload_changed(r, reloaded, lab6_err, sizeof lab6_err)) {
-        if (ok) snprintf(err, err_size, "%s", lab6_err);
-        ok = false;
-    }
-    char lab7_err[1024];
-    if (!sl_lab7_cube_reload_changed(r, reloaded, lab7_err, sizeof lab7_err)) {
-        if (ok) snprintf(err, err_size, "%s", lab7_err);
+    /* the programs the techniques keep in their own modules */
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        const sl_technique *t = sl_technique_of(lab);
+        char technique_err[sizeof r->shader_errors[0]] = "";
+        if (!t || !t->reload_changed || t->reload_changed(r, reloaded, technique_err, sizeof technique_err)) continue;
+        if (ok) snprintf(err, err_size, "%s", technique_err);
         ok = false;
     }
     return ok;
@@ -352,7 +341,10 @@ static void _sl_destroy_meshes(sl_renderer *r) {
 
 void sl_renderer_destroy(sl_renderer *r) {
     _sl_destroy_meshes(r);
-    sl_lab7_cube_destroy(r);
+    for (int lab = SL_LAB_COUNT; lab >= 1; lab--) {
+        const sl_technique *t = sl_technique_of(lab);
+        if (t && t->destroy) t->destroy(r);
+    }
     if (r->shadow_map_attempted && r->shadow_map_status == SL_OK) {
         _sl_enter("lab1_destroy_shadow_map");
         r->fns[1]->lab1_destroy_shadow_map(&r->shadow_map);
@@ -363,7 +355,6 @@ void sl_renderer_destroy(sl_renderer *r) {
         r->fns[1]->lab1_destroy_shadow_map(&r->second_map);
         if (sl_lab_call_hook) sl_lab_call_hook(NULL);
     }
-    sl_vsm_destroy(r);
     if (r->programs) {
         struct _sl_programs *ps = r->programs;
         sl_program_destroy(&ps->depth.program);
@@ -371,7 +362,6 @@ void sl_renderer_destroy(sl_renderer *r) {
         for (int i = 0; i < ps->variant_count; i++) sl_program_destroy(&ps->variants[i].slot.program);
         free(ps);
     }
-    sl_lab6_release(r);
     if (r->empty_vao) glDeleteVertexArrays(1, &r->empty_vao);
     if (r->timer_queries[0]) glDeleteQueries(SL_MAX_PASSES + 1, r->timer_queries);
     memset(r, 0, sizeof *r);
@@ -623,20 +613,23 @@ static int _sl_planar_lab(int lab) {
     return lab;
 }
 
-/* Lab 5's camera pass can draw VSM this frame: its moments, lab 2's matrices, and its shaders compile. */
-static bool _sl_vsm_draws(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
-    if (!r->info.moments_ready || !r->info.lab2_ready) return false;
-    _sl_variant_key key = _sl_variant_for(r, scene, p, 5);
+/* The camera pass of lab `lab`, whose technique's passes made what it reads (lab 5's moments), can draw
+ * this frame: lab 2's matrices are there and its shaders compile. */
+static bool _sl_technique_camera_draws(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int lab) {
+    if (!r->info.lab2_ready) return false;
+    _sl_variant_key key = _sl_variant_for(r, scene, p, lab);
     return _sl_variant_program(r, &key) != NULL;
 }
 
+/* depth_lab: the highest lab lab 1's depth pass used; technique_lab: the lab whose technique's own passes
+ * feed its camera pass this frame (0: none). */
 static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab,
-                           bool vsm_draws, int width, int height) {
+                           int technique_lab, int width, int height) {
     sl_frame_info *info = &r->info;
     /* The highest lab whose code can run this frame. */
     int lab = 0;
-    if (vsm_draws) {
-        lab = 5; /* VSM reads its moments and lab 2's matrices only: no lab 1 map, no lab 3 state */
+    if (technique_lab) {
+        lab = technique_lab; /* VSM reads its moments and lab 2's matrices only: no lab 1 map, no lab 3 state */
     } else if (info->shadow_map_ready && info->lab2_ready) {
         /* labs 6 and 7 draw in their own modules; asked for otherwise (a light they do not cast from), labs 1-4 draw */
         lab = _sl_planar_lab(p->lab > 5 ? 4 : p->lab);
@@ -733,7 +726,8 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     glUniform1f(u->min_variance, p->vsm.min_variance);
     glUniform1f(u->bleeding, p->vsm.bleeding);
     glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_2D, lab == 5 ? sl_vsm_moments_texture(r) : 0);
+    const sl_technique *technique = sl_technique_of(lab);
+    glBindTexture(GL_TEXTURE_2D, technique && technique->camera_texture ? technique->camera_texture(r) : 0);
     glActiveTexture(GL_TEXTURE0);
     if (lab >= 2) {
         glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
@@ -785,36 +779,33 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->cube_frame = info->cube_matrices_ready = info->cube_map_ready = info->cube_layered = false;
     r->programs->frame++;
     _sl_timer_mark(r, NULL);
-    if (params->lab == 6) { /* cascades: a frame of their own (sl_lab6_cascades.c) */
-        sl_lab6_draw(r, scene, params, target, width, height);
+    /* a technique that draws a frame of its own (lab 6's cascades; lab 7's cube map for a point light) */
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        const sl_technique *t = sl_technique_of(lab);
+        if (!t || !t->takes_frame || !t->takes_frame(r, scene, params)) continue;
+        t->draw_frame(r, scene, params, target, width, height);
         glBindVertexArray(0);
         glUseProgram(0);
         return;
     }
-    if (sl_lab7_cube_applies(scene, params)) {
-        /* a point light: lab 7's cube map instead of labs 1-4's shadow map */
-        sl_lab7_cube_draw(r, scene, params, target, width, height);
-        glBindVertexArray(0);
-        glUseProgram(0);
-        return;
-    }
-    if (params->lab == 7) sl_renderer_note_off(r, 7, SL_STOP_NO_POINT_LIGHT); /* labs 1-4 draw instead */
+    /* else labs 1-4's shadow map, with the passes of the asked lab's technique before its camera pass */
     _sl_light_matrices(r, scene, params);
     sl_renderer_reset_state(0, width, height);
     info->moments_ready = false;
-    bool vsm = params->lab == 5 && !params->vsm_off; /* off: lab 4's filter alone, as fast as in lab 4 */
-    if (vsm) sl_vsm_passes(r, scene, params);
+    const sl_technique *asked = sl_technique_of(params->lab);
+    bool passes = asked && asked->depth_passes && asked->depth_passes(r, scene, params);
     /* VSM needs neither lab 1's map nor lab 3's depth-pass state: the depth pass runs
      * only for labs 1-4, and for lab 5 when its moments are not there (lab 4 draws instead) */
-    bool vsm_draws = vsm && _sl_vsm_draws(r, scene, params);
+    int technique_lab = passes && _sl_technique_camera_draws(r, scene, params, params->lab) ? params->lab : 0;
     int depth_lab = 0;
-    if (!vsm_draws) {
+    if (!technique_lab) {
         sl_renderer_reset_state(0, width, height);
         depth_lab = _sl_depth_pass(r, scene, params);
     }
     sl_renderer_reset_state(target, width, height);
-    _sl_scene_pass(r, scene, params, depth_lab, vsm_draws, width, height);
-    if (params->show_shadow_map && info->lab_in_use == 5) sl_vsm_debug_view(r, width, height);
+    _sl_scene_pass(r, scene, params, depth_lab, technique_lab, width, height);
+    const sl_technique *drawn = sl_technique_of(info->lab_in_use);
+    if (params->show_shadow_map && drawn && drawn->debug_view) drawn->debug_view(r, width, height);
     else if (params->show_shadow_map) _sl_debug_view(r, &scene->light, width, height);
     glBindVertexArray(0);
     glUseProgram(0);

@@ -114,8 +114,6 @@ typedef struct sl_program_stats {
 } sl_program_stats;
 
 struct _sl_programs; /* the program cache (sl_renderer.c) */
-struct _sl_lab6;     /* lab 6's targets and programs (sl_lab6_cascades.c) */
-struct _sl_lab7;     /* lab 7's passes (sl_lab7_cube.c) */
 
 typedef struct sl_renderer {
     const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab (this build's) */
@@ -136,14 +134,14 @@ typedef struct sl_renderer {
     sl_status second_map_status;
     bool second_map_attempted;
     sl_frame_info info;
-    struct _sl_lab7 *lab7; /* lab 7's cube map and programs, made by its first frame */
     /* timing (sl_renderer_set_timing): one timestamp before the frame and one after each pass */
     bool timing;
     GLuint timer_queries[SL_MAX_PASSES + 1];
     const char *timer_names[SL_MAX_PASSES];
     int timer_count;
-    struct sl_vsm *vsm; /* lab 5's targets and programs (sl_lab5_vsm.c), made by its first frame */
-    struct _sl_lab6 *lab6; /* lab 6's frame (sl_lab6_cascades.c), made by its first frame */
+    /* Per lab, what its technique's module keeps between frames (its targets and programs), made by
+     * its first frame and freed by its destroy hook (sl_technique.h). */
+    void *technique_state[SL_LAB_COUNT + 1];
 } sl_renderer;
 
 /* Called before each call into lab code with the function's name, so a crash
@@ -183,7 +181,7 @@ void sl_renderer_set_timing(sl_renderer *r, bool enabled);
  * has finished that frame. False if no such frame was drawn. */
 bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
 
-/* For the labs' own pass modules (sl_lab5_vsm.c, sl_lab6_cascades.c, sl_lab7_cube.c): a call into lab
+/* For the techniques' modules (sl_technique.h): a call into lab
  * code is announced, then its result recorded, as the renderer does with its own (the result is true when
  * the step may go on); a pass's end is timed. */
 void sl_renderer_lab_enter(const char *function);
