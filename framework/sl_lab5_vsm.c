@@ -85,7 +85,8 @@ static void _sl_vsm_ask_stubs(sl_renderer *r, _sl_lab5 *v, int from) {
     glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
 }
 
-/* Labs 1-4's frame with lab 5 asked: the moments, unless VSM is switched off (lab 4's filter alone, as fast as in lab 4). */
+/* Labs 1-4's frame with lab 5 asked: the moments, unless VSM is switched off (lab 4's filter alone, as
+ * fast as in lab 4). */
 static bool _sl_lab5_depth_passes(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
     if (p->vsm_off) return false;
     _sl_lab5 *v = _sl_vsm_of(r);

@@ -1,5 +1,10 @@
 /* sl_renderer: one frame of the shadow pipeline, built from the labs' code.
  *
+ * Each lab's technique is one descriptor in the table of sl_technique.h, and
+ * the renderer names none of them: a frame is drawn by the technique that
+ * takes it (lab 6's cascades, lab 7's cube map for a point light), else by
+ * lab 1's shadow-map frame (sl_lab1_4_shadow_map.c), which labs 2-5 add to:
+ *
  *   1. lab 2 builds the light's view, projection and shadow matrix
  *      (lab 1 alone uses sl_light_default_matrices)
  *   2. lab 1 creates the shadow map (once per size) and begins the depth pass,
@@ -113,15 +118,12 @@ typedef struct sl_program_stats {
     int cached;      /* programs held now */
 } sl_program_stats;
 
-struct _sl_programs; /* the program cache (sl_renderer.c) */
 
 typedef struct sl_renderer {
     const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab (this build's) */
     char labs_dir[SL_PATH_MAX];
     char shaders_dir[SL_PATH_MAX];
-    /* Every program (lab 1's depth pass, the camera pass per lab and setting,
-     * the unshadowed and debug views), built when a frame first needs it. */
-    struct _sl_programs *programs;
+    unsigned long frame_count; /* frames drawn (a program not used by the last one is rebuilt when next used) */
     char shader_errors[SL_RENDERER_MAX_LAB + 1][8192]; /* per lab: why its shaders do not compile (0: framework) */
     GLint lab1_min_filter, lab1_mag_filter; /* lab 1's choice, restored when lab 4 is off */
     GLuint empty_vao;
