@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_lab6_cascades.h"
+#include "sl_overlay.h"
 #include "sl_technique.h"
 
 #include <math.h>
@@ -409,8 +410,8 @@ static void _sl_lab6_frustum_lines(sl_renderer *r, const sl_scene *scene, const 
 
 static void _sl_lab6_debug_view(sl_renderer *r, int width, int height);
 
-static void _sl_lab6_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target, int width,
-                  int height) {
+static void _sl_lab6_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
+                                int width, int height) {
     sl_frame_info *info = &r->info;
     info->cascades_ready = false;
     info->cascade_texture = 0;
@@ -427,7 +428,9 @@ static void _sl_lab6_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_
     if (ok && params->show_shadow_map) _sl_lab6_debug_view(r, width, height);
 }
 
-void sl_lab6_layer_rect(int width, int height, int count, int layer, int *x, int *y, int *side) {
+/* Where the debug view puts layer `layer` of `count`: its top-left corner from the frame's top-left, and its
+ * side, in pixels (and the overlay's labels). */
+static void _sl_lab6_layer_rect(int width, int height, int count, int layer, int *x, int *y, int *side) {
     *side = (width < height ? width : height) / 4;
     *x = width - (count - layer) * (*side + 6) - 2;
     *y = height - 8 - *side;
@@ -449,7 +452,7 @@ static void _sl_lab6_debug_view(sl_renderer *r, int width, int height) {
     glBindVertexArray(r->empty_vao);
     for (int i = 0; i < count; i++) {
         int x, y, side;
-        sl_lab6_layer_rect(width, height, count, i, &x, &y, &side);
+        _sl_lab6_layer_rect(width, height, count, i, &x, &y, &side);
         glViewport(x, height - y - side, side, side);
         glUniform1i(glGetUniformLocation(prog->id, "u_layer"), i);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -458,6 +461,26 @@ static void _sl_lab6_debug_view(sl_renderer *r, int width, int height) {
     glEnable(GL_DEPTH_TEST);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     sl_renderer_timer_mark(r, "debug view");
+}
+
+/* The cascades' colours with their view depths (K), and each layer's number in the debug view (M). */
+static void _sl_lab6_overlay_labels(sl_overlay *ov, const sl_frame_info *info, const sl_render_params *p, int width,
+                                    int height) {
+    if (!info->cascades_ready) return;
+    if (p->cascades.show_cascades) {
+        sl_overlay_panel(ov, SL_OVERLAY_TOP_RIGHT, "cascades (K), view depth");
+        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++)
+            sl_overlay_line(ov, sl_cascade_colours[i], SL_OVERLAY_SWATCH SL_OVERLAY_SWATCH " %d: %.1f - %.1f", i,
+                            (double)info->cascade_splits[i], (double)info->cascade_splits[i + 1]);
+    }
+    if (p->show_shadow_map) {
+        int s = sl_overlay_scale_for(ov, width, height);
+        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++) {
+            int x, y, side;
+            _sl_lab6_layer_rect(width, height, info->cascade_count, i, &x, &y, &side);
+            sl_overlay_label(ov, x + s, y + s, sl_cascade_colours[i], "%d", i);
+        }
+    }
 }
 
 static bool _sl_lab6_takes_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *params) {
@@ -472,6 +495,7 @@ const sl_technique sl_lab6_technique = {
     .lab = 6,
     .takes_frame = _sl_lab6_takes_frame,
     .draw_frame = _sl_lab6_draw_frame,
+    .overlay_labels = _sl_lab6_overlay_labels,
     .reload_changed = _sl_lab6_reload_changed,
     .program_stats = _sl_lab6_program_stats,
     .destroy = _sl_lab6_destroy,

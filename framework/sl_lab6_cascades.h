@@ -18,9 +18,4 @@
 
 #include "sl_renderer.h"
 
-
-/* Where the debug view puts layer `layer` of `count`: its top-left corner from the frame's top-left, and its
- * side, in pixels (the viewer's labels). */
-void sl_lab6_layer_rect(int width, int height, int count, int layer, int *x, int *y, int *side);
-
 #endif

@@ -6,6 +6,7 @@
 
 #include "sl_renderer.h"
 #include "sl_shader.h"
+#include "sl_overlay.h"
 #include "sl_technique.h"
 
 /* The programs lab 7 draws with, each built the first time a frame needs it. */
@@ -278,7 +279,9 @@ static void _sl_camera_pass(sl_renderer *r, const sl_scene *scene, const sl_rend
 /* The cross's cells: a side of half what fits 4 x 3 cells in the frame, 8 pixels off the lower right corner. */
 static int _sl_cross_cell(int width, int height) { return (width / 4 < height / 3 ? width / 4 : height / 3) / 2; }
 
-void sl_lab7_cross_face_rect(int width, int height, int face, int *x, int *y, int *side) {
+/* Where the cross (params.show_shadow_map) puts face `face` (0..5: +x -x +y -y +z -z) in a width x
+ * height frame: its top-left corner from the frame's top-left, and its side, in pixels (face labels). */
+static void _sl_lab7_cross_face_rect(int width, int height, int face, int *x, int *y, int *side) {
     /* cube_cross.frag's net, cells counted from the cross's lower left: -X -Z +X +Z across the middle row,
      * +Y above -Z, -Y below it */
     static const int cells[6][2] = {{2, 1}, {0, 1}, {1, 2}, {1, 0}, {3, 1}, {1, 1}};
@@ -309,8 +312,8 @@ static void _sl_cross_view(sl_renderer *r, int width, int height) {
     sl_renderer_timer_mark(r, "debug view");
 }
 
-static void _sl_lab7_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, GLuint target, int width,
-                       int height) {
+static void _sl_lab7_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, GLuint target,
+                                int width, int height) {
     sl_frame_info *info = &r->info;
     info->cube_frame = true;
     struct _sl_lab7 *s = _sl_state(r);
@@ -377,12 +380,27 @@ static void _sl_lab7_destroy(sl_renderer *r) {
     r->technique_state[7] = NULL;
 }
 
+/* The faces' names on the cross (M). */
+static void _sl_lab7_overlay_labels(sl_overlay *ov, const sl_frame_info *info, const sl_render_params *p, int width,
+                                    int height) {
+    if (!info->cube_frame || !info->cube_map_ready || !p->show_shadow_map) return;
+    static const float white[3] = {1, 1, 1};
+    static const char *const faces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+    int s = sl_overlay_scale_for(ov, width, height);
+    for (int f = 0; f < 6; f++) {
+        int x, y, side;
+        _sl_lab7_cross_face_rect(width, height, f, &x, &y, &side);
+        sl_overlay_label(ov, x + 2 * s, y + 2 * s, white, "%s", faces[f]);
+    }
+}
+
 /* Lab 7 draws a frame of its own for a point light. */
 const sl_technique sl_lab7_technique = {
     .name = "cube maps",
     .lab = 7,
     .takes_frame = _sl_lab7_takes_frame,
     .draw_frame = _sl_lab7_draw_frame,
+    .overlay_labels = _sl_lab7_overlay_labels,
     .reload_changed = _sl_lab7_reload_changed,
     .program_stats = _sl_lab7_program_stats,
     .destroy = _sl_lab7_destroy,

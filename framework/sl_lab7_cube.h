@@ -24,10 +24,6 @@
 #include "sl_params.h"
 #include "sl_scene.h"
 
-/* Where the cross (params.show_shadow_map) puts face `face` (0..5: +x -x +y -y +z -z) in a width x
- * height frame: its top-left corner from the frame's top-left, and its side, in pixels (face labels). */
-void sl_lab7_cross_face_rect(int width, int height, int face, int *x, int *y, int *side);
-
 /* One face of a depth cube map as a top-down image (1 channel, face size
  * squared); false with err set if the texture is no depth cube map. */
 bool sl_capture_cube_face(GLuint cube, int face, sl_image *out, char *err, size_t err_size);

@@ -24,6 +24,8 @@
 
 struct sl_renderer;
 struct sl_program_stats;
+struct sl_frame_info;
+struct sl_overlay;
 
 typedef struct sl_technique {
     const char *name; /* what the lab teaches, as the status line says it ("VSM", "cascades") */
@@ -44,6 +46,11 @@ typedef struct sl_technique {
     GLuint (*camera_texture)(const struct sl_renderer *r);
     /* The debug view (params.show_shadow_map) when this lab's code drew the shadow-map frame. */
     void (*debug_view)(struct sl_renderer *r, int width, int height);
+
+    /* The viewer's labels for what its frame shows, drawn when the overlay or --labels is on: lab 6's
+     * cascade legend and layer numbers, lab 7's face names on the cross. */
+    void (*overlay_labels)(struct sl_overlay *ov, const struct sl_frame_info *info, const sl_render_params *params,
+                           int width, int height);
 
     /* Rebuilds its programs whose files changed (hot reload); false with err set if one failed. */
     bool (*reload_changed)(struct sl_renderer *r, bool *reloaded, char *err, size_t err_size);
