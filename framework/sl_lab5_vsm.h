@@ -25,12 +25,7 @@
 #include "sl_scene.h"
 #include "shadowlab.h"
 
-/* Level 0 of a moments texture (2 channels, top row first), and what the
- * grader checks of the target: framebuffer status, the texture's internal
- * format, width, height, red and green bits, whether it is a float format,
- * the depth attachment's type, then for moments[0] and moments[1] the width of mipmap level 1 (0: none)
- * and the min filter (SL_MOMENTS_TARGET_NUMBERS numbers). */
-bool sl_vsm_capture_moments(GLuint texture, sl_image *out, char *err, size_t err_size);
-void sl_vsm_describe_target(const sl_moments_target *t, double out[SL_MOMENTS_TARGET_NUMBERS]);
+/* The read-backs of its moments (sl_vsm_capture_moments, sl_vsm_describe_target) are in sl_capture.h. */
+#include "sl_capture.h"
 
 #endif

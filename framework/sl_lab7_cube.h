@@ -24,8 +24,7 @@
 #include "sl_params.h"
 #include "sl_scene.h"
 
-/* One face of a depth cube map as a top-down image (1 channel, face size
- * squared); false with err set if the texture is no depth cube map. */
-bool sl_capture_cube_face(GLuint cube, int face, sl_image *out, char *err, size_t err_size);
+/* The read-back of its faces (sl_capture_cube_face) is in sl_capture.h. */
+#include "sl_capture.h"
 
 #endif

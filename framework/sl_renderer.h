@@ -204,9 +204,7 @@ void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model
  * so one pass cannot leak into the next. */
 void sl_renderer_reset_state(GLuint target, int width, int height);
 
-/* Read-backs, as top-down images. */
-bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out);
-/* The depth texture's texels (1 channel); false if it is not a depth texture. */
-bool sl_capture_depth_texture(GLuint texture, sl_image *out, char *err, size_t err_size);
+/* Read-backs, as top-down images: sl_capture.h. */
+#include "sl_capture.h"
 
 #endif
