@@ -1,5 +1,6 @@
-/* sl_lab5_vsm: lab 5's passes before the camera pass, called by the renderer
- * when params.lab == 5:
+/* sl_lab5_vsm: lab 5's technique (sl_lab5_technique, in the table of
+ * sl_technique.h): its passes before the camera pass, which the renderer
+ * draws when params.lab == 5:
  *
  *   1. lab 5 creates its moments targets (once per size) and begins the
  *      moments pass; the framework draws every object from the light with
@@ -10,8 +11,8 @@
  *   3. lab 5 builds the mipmaps and sets trilinear filtering
  *
  * The camera pass (scene_vsm.frag, drawn by sl_renderer.c) then reads
- * moments[0]. A stub or a shader that does not compile stops the passes;
- * the renderer falls back to lab 4. */
+ * moments[0] (the technique's camera texture). A stub or a shader that does
+ * not compile stops the passes; the renderer falls back to lab 4. */
 #ifndef SL_LAB5_VSM_H
 #define SL_LAB5_VSM_H
 
@@ -24,28 +25,7 @@
 #include "sl_scene.h"
 #include "shadowlab.h"
 
-struct sl_renderer;
-typedef struct sl_vsm sl_vsm; /* lab 5's targets and programs, one per renderer */
-
-/* Runs the moments pass, the blur and the mipmaps for this frame (light
- * matrices from the renderer's frame info); true when the moments are ready
- * for the camera pass. Records stubs and shader errors in the frame info. */
-bool sl_vsm_passes(struct sl_renderer *r, const sl_scene *scene, const sl_render_params *p);
-/* The moments the camera pass reads (0 when none). */
-GLuint sl_vsm_moments_texture(const struct sl_renderer *r);
-/* The moments as a corner overlay: the mean depth and the second moment side by side. */
-void sl_vsm_debug_view(struct sl_renderer *r, int width, int height);
-/* Rebuilds lab 5's programs whose files changed (hot reload). */
-bool sl_vsm_reload_changed(struct sl_renderer *r, bool *reloaded, char *err, size_t err_size);
-void sl_vsm_destroy(struct sl_renderer *r);
-
-/* Level 0 of a moments texture (2 channels, top row first), and what the
- * grader checks of the target: framebuffer status, the texture's internal
- * format, width, height, red and green bits, whether it is a float format,
- * the depth attachment's type, then for moments[0] and moments[1] the width of mipmap level 1 (0: none)
- * and the min filter, then framebuffer[1]'s status (0: not a framebuffer), and whether moments[0] is framebuffer[0]'s colour
- * attachment (SL_MOMENTS_TARGET_NUMBERS numbers). */
-bool sl_vsm_capture_moments(GLuint texture, sl_image *out, char *err, size_t err_size);
-void sl_vsm_describe_target(const sl_moments_target *t, double out[SL_MOMENTS_TARGET_NUMBERS]);
+/* The read-backs of its moments (sl_vsm_capture_moments, sl_vsm_describe_target) are in sl_capture.h. */
+#include "sl_capture.h"
 
 #endif

@@ -1,5 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_lab6_cascades.h"
+#include "sl_overlay.h"
+#include "sl_technique.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -29,13 +31,14 @@ struct _sl_lab6 {
     double build_ms;
 };
 
+/* What lab 6 keeps between frames: made by its first frame. */
 static struct _sl_lab6 *_sl_lab6_state(sl_renderer *r) {
-    if (!r->lab6) r->lab6 = calloc(1, sizeof *r->lab6);
-    return r->lab6;
+    if (!r->technique_state[6]) r->technique_state[6] = calloc(1, sizeof(struct _sl_lab6));
+    return r->technique_state[6];
 }
 
-void sl_lab6_release(sl_renderer *r) {
-    struct _sl_lab6 *s = r->lab6;
+static void _sl_lab6_destroy(sl_renderer *r) {
+    struct _sl_lab6 *s = r->technique_state[6];
     if (!s) return;
     if (s->texture) glDeleteTextures(1, &s->texture);
     if (s->framebuffer) glDeleteFramebuffers(1, &s->framebuffer);
@@ -49,11 +52,11 @@ void sl_lab6_release(sl_renderer *r) {
         sl_program_destroy(&s->plain[i].program);
     }
     free(s);
-    r->lab6 = NULL;
+    r->technique_state[6] = NULL;
 }
 
-bool sl_lab6_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
-    struct _sl_lab6 *s = r->lab6;
+static bool _sl_lab6_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
+    struct _sl_lab6 *s = r->technique_state[6];
     if (!s) return true;
     struct {
         _sl_lab6_program *p;
@@ -76,8 +79,8 @@ bool sl_lab6_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t er
     return ok;
 }
 
-void sl_lab6_program_stats(const sl_renderer *r, sl_program_stats *out) {
-    const struct _sl_lab6 *s = r->lab6;
+static void _sl_lab6_program_stats(const sl_renderer *r, sl_program_stats *out) {
+    const struct _sl_lab6 *s = r->technique_state[6];
     if (!s) return;
     out->builds += s->builds;
     out->build_ms += s->build_ms;
@@ -86,7 +89,8 @@ void sl_lab6_program_stats(const sl_renderer *r, sl_program_stats *out) {
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) out->cached += all[i]->program.id != 0;
 }
 
-const sl_camera *sl_lab6_fit_camera(const sl_scene *scene, const sl_render_params *params) {
+/* The camera the cascades of this frame are fitted to: params' frozen one, or the scene's. */
+static const sl_camera *_sl_lab6_fit_camera(const sl_scene *scene, const sl_render_params *params) {
     return params->cascades.use_camera ? &params->cascades.camera : &scene->camera;
 }
 
@@ -109,8 +113,9 @@ static sl_program *_sl_lab6_build(sl_renderer *r, _sl_lab6_program *p, const cha
         clock_gettime(CLOCK_MONOTONIC, &t0);
         sl_program_build(&p->program, &desc, r->shader_errors[lab], sizeof r->shader_errors[lab]);
         clock_gettime(CLOCK_MONOTONIC, &t1);
-        r->lab6->builds++;
-        r->lab6->build_ms += (double)(t1.tv_sec - t0.tv_sec) * 1e3 + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-6;
+        struct _sl_lab6 *s = r->technique_state[6];
+        s->builds++;
+        s->build_ms += (double)(t1.tv_sec - t0.tv_sec) * 1e3 + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-6;
     }
     return p->program.id ? &p->program : NULL;
 }
@@ -167,7 +172,7 @@ static void _sl_lab6_unsnap(const vec4 sphere, mat4 light_view, mat4 light_proje
  * Every function is asked even after one fails, so the grader can name each stub. */
 static bool _sl_lab6_matrices(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, float aspect) {
     sl_frame_info *info = &r->info;
-    const sl_camera *cam = sl_lab6_fit_camera(scene, p);
+    const sl_camera *cam = _sl_lab6_fit_camera(scene, p);
     int count = p->cascades.count < 1 ? 1 : p->cascades.count > SL_MAX_CASCADES ? SL_MAX_CASCADES : p->cascades.count;
     float far = p->cascades.max_distance > cam->near && p->cascades.max_distance < cam->far ? p->cascades.max_distance
                                                                                             : cam->far;
@@ -337,7 +342,7 @@ static int _sl_lab6_box_edges(vec3 corners[8], float *out) {
 /* The classic demo, seen from the scene's camera: each cascade's slice of the
  * frozen camera's frustum and its light box, in the cascade's colour. */
 static void _sl_lab6_frustum_lines(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, float aspect) {
-    struct _sl_lab6 *s = r->lab6;
+    struct _sl_lab6 *s = r->technique_state[6];
     sl_frame_info *info = &r->info;
     sl_program *prog = _sl_lab6_build(r, &s->lines, r->shaders_dir, "lines.vert", r->shaders_dir, "lines.frag",
                                       NULL, 0);
@@ -403,8 +408,10 @@ static void _sl_lab6_frustum_lines(sl_renderer *r, const sl_scene *scene, const 
     sl_renderer_timer_mark(r, "frustum lines");
 }
 
-void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target, int width,
-                  int height) {
+static void _sl_lab6_debug_view(sl_renderer *r, int width, int height);
+
+static void _sl_lab6_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
+                                int width, int height) {
     sl_frame_info *info = &r->info;
     info->cascades_ready = false;
     info->cascade_texture = 0;
@@ -418,17 +425,20 @@ void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params 
         sl_renderer_note_stop(r, 1);
     if (ok && params->cascades.use_camera && params->cascades.show_frustum)
         _sl_lab6_frustum_lines(r, scene, params, aspect);
-    if (ok && params->show_shadow_map) sl_lab6_debug_view(r, width, height);
+    if (ok && params->show_shadow_map) _sl_lab6_debug_view(r, width, height);
 }
 
-void sl_lab6_layer_rect(int width, int height, int count, int layer, int *x, int *y, int *side) {
+/* Where the debug view puts layer `layer` of `count`: its top-left corner from the frame's top-left, and its
+ * side, in pixels (and the overlay's labels). */
+static void _sl_lab6_layer_rect(int width, int height, int count, int layer, int *x, int *y, int *side) {
     *side = (width < height ? width : height) / 4;
     *x = width - (count - layer) * (*side + 6) - 2;
     *y = height - 8 - *side;
 }
 
-void sl_lab6_debug_view(sl_renderer *r, int width, int height) {
-    struct _sl_lab6 *s = r->lab6;
+/* The cascades' layers side by side along the bottom of the picture. */
+static void _sl_lab6_debug_view(sl_renderer *r, int width, int height) {
+    struct _sl_lab6 *s = r->technique_state[6];
     if (!s || !r->info.cascades_ready) return;
     sl_program *prog = _sl_lab6_build(r, &s->debug, r->shaders_dir, "debug_quad.vert", r->shaders_dir,
                                         "debug_layer.frag", NULL, 0);
@@ -442,7 +452,7 @@ void sl_lab6_debug_view(sl_renderer *r, int width, int height) {
     glBindVertexArray(r->empty_vao);
     for (int i = 0; i < count; i++) {
         int x, y, side;
-        sl_lab6_layer_rect(width, height, count, i, &x, &y, &side);
+        _sl_lab6_layer_rect(width, height, count, i, &x, &y, &side);
         glViewport(x, height - y - side, side, side);
         glUniform1i(glGetUniformLocation(prog->id, "u_layer"), i);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -452,3 +462,41 @@ void sl_lab6_debug_view(sl_renderer *r, int width, int height) {
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     sl_renderer_timer_mark(r, "debug view");
 }
+
+/* The cascades' colours with their view depths (K), and each layer's number in the debug view (M). */
+static void _sl_lab6_overlay_labels(sl_overlay *ov, const sl_frame_info *info, const sl_render_params *p, int width,
+                                    int height) {
+    if (!info->cascades_ready) return;
+    if (p->cascades.show_cascades) {
+        sl_overlay_panel(ov, SL_OVERLAY_TOP_RIGHT, "cascades (K), view depth");
+        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++)
+            sl_overlay_line(ov, sl_cascade_colours[i], SL_OVERLAY_SWATCH SL_OVERLAY_SWATCH " %d: %.1f - %.1f", i,
+                            (double)info->cascade_splits[i], (double)info->cascade_splits[i + 1]);
+    }
+    if (p->show_shadow_map) {
+        int s = sl_overlay_scale_for(ov, width, height);
+        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++) {
+            int x, y, side;
+            _sl_lab6_layer_rect(width, height, info->cascade_count, i, &x, &y, &side);
+            sl_overlay_label(ov, x + s, y + s, sl_cascade_colours[i], "%d", i);
+        }
+    }
+}
+
+static bool _sl_lab6_takes_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *params) {
+    (void)r;
+    (void)scene;
+    return params->lab == 6;
+}
+
+/* Lab 6 draws a frame of its own whenever it is asked, whatever the light. */
+const sl_technique sl_lab6_technique = {
+    .name = "cascades",
+    .lab = 6,
+    .takes_frame = _sl_lab6_takes_frame,
+    .draw_frame = _sl_lab6_draw_frame,
+    .overlay_labels = _sl_lab6_overlay_labels,
+    .reload_changed = _sl_lab6_reload_changed,
+    .program_stats = _sl_lab6_program_stats,
+    .destroy = _sl_lab6_destroy,
+};

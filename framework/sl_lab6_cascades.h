@@ -10,28 +10,12 @@
  *   3. the camera pass (scene_cascades.frag) picks each pixel's cascade and
  *      compares with lab 6's GLSL (cascade_index, cascade_compare)
  *
- * The renderer calls this when params->lab == 6; it records the labs' calls
- * in the renderer's sl_frame_info like the other labs' steps. */
+ * Its technique (sl_lab6_technique, in the table of sl_technique.h) takes
+ * every frame drawn for lab 6; it records the labs' calls in the renderer's
+ * sl_frame_info like the other labs' steps. */
 #ifndef SL_LAB6_CASCADES_H
 #define SL_LAB6_CASCADES_H
 
 #include "sl_renderer.h"
-
-
-void sl_lab6_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target, int width,
-                  int height);
-/* The cascades' layers side by side along the bottom of the picture (viewer overlay). */
-void sl_lab6_debug_view(sl_renderer *r, int width, int height);
-/* Where the debug view puts layer `layer` of `count`: its top-left corner from the frame's top-left, and its
- * side, in pixels (the viewer's labels). */
-void sl_lab6_layer_rect(int width, int height, int count, int layer, int *x, int *y, int *side);
-void sl_lab6_release(sl_renderer *r);
-/* Adds lab 6's program builds (and their time) and the programs it holds to out. */
-void sl_lab6_program_stats(const sl_renderer *r, sl_program_stats *out);
-/* Rebuilds lab 6's programs whose files changed (the viewer's hot reload); false with err set if one failed. */
-bool sl_lab6_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size);
-
-/* The camera the cascades of this frame are fitted to: params' frozen one, or the scene's. */
-const sl_camera *sl_lab6_fit_camera(const sl_scene *scene, const sl_render_params *params);
 
 #endif

@@ -6,6 +6,8 @@
 
 #include "sl_renderer.h"
 #include "sl_shader.h"
+#include "sl_overlay.h"
+#include "sl_technique.h"
 
 /* The programs lab 7 draws with, each built the first time a frame needs it. */
 typedef struct _sl_cube_program {
@@ -34,18 +36,23 @@ struct _sl_lab7 {
     bool map_attempted;
 };
 
-bool sl_lab7_cube_applies(const sl_scene *scene, const sl_render_params *params) {
-    return params->lab == 7 && scene->light.type == SL_LIGHT_POINT;
+/* Lab 7 casts from a point light only: asked for on a spot or a sun, labs 1-4 draw (and the frame says why). */
+static bool _sl_lab7_takes_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *params) {
+    if (params->lab != 7) return false;
+    if (scene->light.type == SL_LIGHT_POINT) return true;
+    sl_renderer_note_off(r, 7, SL_STOP_NO_POINT_LIGHT);
+    return false;
 }
 
+/* What lab 7 keeps between frames: made by its first frame. */
 static struct _sl_lab7 *_sl_state(sl_renderer *r) {
-    if (!r->lab7) r->lab7 = calloc(1, sizeof *r->lab7);
-    return r->lab7;
+    if (!r->technique_state[7]) r->technique_state[7] = calloc(1, sizeof(struct _sl_lab7));
+    return r->technique_state[7];
 }
 
 /* Builds program `which` if no frame has tried yet; NULL if it does not compile (error in shader_errors[7]). */
 static _sl_cube_program *_sl_program(sl_renderer *r, int which) {
-    struct _sl_lab7 *s = r->lab7;
+    struct _sl_lab7 *s = r->technique_state[7];
     _sl_cube_program *p = &s->programs[which];
     s->used[which] = true;
     if (!p->attempted) {
@@ -129,7 +136,7 @@ static bool _sl_face_matrices(sl_renderer *r, const sl_light *light) {
 
 /* Step 2: the cube map, made once per size. */
 static bool _sl_cube_map(sl_renderer *r, int size) {
-    struct _sl_lab7 *s = r->lab7;
+    struct _sl_lab7 *s = r->technique_state[7];
     if (s->map_attempted && s->map_status == SL_OK && s->map.size != size) {
         sl_renderer_lab_enter("lab7_destroy_cube_map");
         r->fns[7]->lab7_destroy_cube_map(&s->map);
@@ -159,7 +166,7 @@ static void _sl_depth_pass_culling(void) {
 static bool _sl_depth_passes(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
     sl_frame_info *info = &r->info;
     const sl_light *light = &scene->light;
-    struct _sl_lab7 *s = r->lab7;
+    struct _sl_lab7 *s = r->technique_state[7];
     mat4 view_projection[6];
     for (int f = 0; f < 6; f++) glm_mat4_mul(info->cube_projection, info->cube_views[f], view_projection[f]);
     vec3 position;
@@ -215,7 +222,7 @@ static bool _sl_depth_passes(sl_renderer *r, const sl_scene *scene, const sl_ren
 /* Step 3: the camera pass. */
 static void _sl_camera_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int width, int height) {
     sl_frame_info *info = &r->info;
-    struct _sl_lab7 *s = r->lab7;
+    struct _sl_lab7 *s = r->technique_state[7];
     _sl_cube_program *prog = NULL;
     bool shadows = info->cube_map_ready;
     if (shadows) {
@@ -272,7 +279,9 @@ static void _sl_camera_pass(sl_renderer *r, const sl_scene *scene, const sl_rend
 /* The cross's cells: a side of half what fits 4 x 3 cells in the frame, 8 pixels off the lower right corner. */
 static int _sl_cross_cell(int width, int height) { return (width / 4 < height / 3 ? width / 4 : height / 3) / 2; }
 
-void sl_lab7_cross_face_rect(int width, int height, int face, int *x, int *y, int *side) {
+/* Where the cross (params.show_shadow_map) puts face `face` (0..5: +x -x +y -y +z -z) in a width x
+ * height frame: its top-left corner from the frame's top-left, and its side, in pixels (face labels). */
+static void _sl_lab7_cross_face_rect(int width, int height, int face, int *x, int *y, int *side) {
     /* cube_cross.frag's net, cells counted from the cross's lower left: -X -Z +X +Z across the middle row,
      * +Y above -Z, -Y below it */
     static const int cells[6][2] = {{2, 1}, {0, 1}, {1, 2}, {1, 0}, {3, 1}, {1, 1}};
@@ -292,7 +301,7 @@ static void _sl_cross_view(sl_renderer *r, int width, int height) {
     glDisable(GL_DEPTH_TEST);
     glUseProgram(prog->program.id);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, r->lab7->map.depth_cube);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, ((struct _sl_lab7 *)r->technique_state[7])->map.depth_cube);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     glUniform1i(prog->cube_map, 0);
     glBindVertexArray(r->empty_vao);
@@ -303,8 +312,8 @@ static void _sl_cross_view(sl_renderer *r, int width, int height) {
     sl_renderer_timer_mark(r, "debug view");
 }
 
-void sl_lab7_cube_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, GLuint target, int width,
-                       int height) {
+static void _sl_lab7_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, GLuint target,
+                                int width, int height) {
     sl_frame_info *info = &r->info;
     info->cube_frame = true;
     struct _sl_lab7 *s = _sl_state(r);
@@ -323,8 +332,8 @@ void sl_lab7_cube_draw(sl_renderer *r, const sl_scene *scene, const sl_render_pa
     if (p->show_shadow_map) _sl_cross_view(r, width, height);
 }
 
-bool sl_lab7_cube_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
-    struct _sl_lab7 *s = r->lab7;
+static bool _sl_lab7_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
+    struct _sl_lab7 *s = r->technique_state[7];
     if (!s) return true;
     bool ok = true;
     for (int i = 0; i < _SL_PROGRAM_COUNT; i++) {
@@ -348,17 +357,18 @@ bool sl_lab7_cube_reload_changed(sl_renderer *r, bool *reloaded, char *err, size
     return ok;
 }
 
-void sl_lab7_cube_program_counts(const sl_renderer *r, int *built, int *held) {
-    *built = *held = 0;
-    if (!r->lab7) return;
+/* Lab 7's programs: how many were built (first builds only) and how many are held now. */
+static void _sl_lab7_program_stats(const sl_renderer *r, sl_program_stats *out) {
+    const struct _sl_lab7 *s = r->technique_state[7];
+    if (!s) return;
     for (int i = 0; i < _SL_PROGRAM_COUNT; i++) {
-        *built += r->lab7->programs[i].attempted;
-        *held += r->lab7->programs[i].program.id != 0;
+        out->builds += s->programs[i].attempted;
+        out->cached += s->programs[i].program.id != 0;
     }
 }
 
-void sl_lab7_cube_destroy(sl_renderer *r) {
-    struct _sl_lab7 *s = r->lab7;
+static void _sl_lab7_destroy(sl_renderer *r) {
+    struct _sl_lab7 *s = r->technique_state[7];
     if (!s) return;
     if (s->map_attempted && s->map_status == SL_OK) {
         sl_renderer_lab_enter("lab7_destroy_cube_map");
@@ -367,45 +377,31 @@ void sl_lab7_cube_destroy(sl_renderer *r) {
     }
     for (int i = 0; i < _SL_PROGRAM_COUNT; i++) sl_program_destroy(&s->programs[i].program);
     free(s);
-    r->lab7 = NULL;
+    r->technique_state[7] = NULL;
 }
 
-bool sl_capture_cube_face(GLuint cube, int face, sl_image *out, char *err, size_t err_size) {
-    *out = (sl_image){0};
-    if (!cube || !glIsTexture(cube) || face < 0 || face > 5) {
-        snprintf(err, err_size, "depth_cube (%u) is not a texture name", cube);
-        return false;
+/* The faces' names on the cross (M). */
+static void _sl_lab7_overlay_labels(sl_overlay *ov, const sl_frame_info *info, const sl_render_params *p, int width,
+                                    int height) {
+    if (!info->cube_frame || !info->cube_map_ready || !p->show_shadow_map) return;
+    static const float white[3] = {1, 1, 1};
+    static const char *const faces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+    int s = sl_overlay_scale_for(ov, width, height);
+    for (int f = 0; f < 6; f++) {
+        int x, y, side;
+        _sl_lab7_cross_face_rect(width, height, f, &x, &y, &side);
+        sl_overlay_label(ov, x + 2 * s, y + 2 * s, white, "%s", faces[f]);
     }
-    while (glGetError() != GL_NO_ERROR) {}
-    glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
-    if (glGetError() != GL_NO_ERROR) {
-        snprintf(err, err_size, "depth_cube (%u) is not a GL_TEXTURE_CUBE_MAP (was it first bound to another target?)",
-                 cube);
-        return false;
-    }
-    GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face;
-    GLint w = 0, h = 0, fmt = 0, depth_bits = 0;
-    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_WIDTH, &w);
-    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_HEIGHT, &h);
-    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
-    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_DEPTH_SIZE, &depth_bits);
-    if (glGetError() != GL_NO_ERROR || w <= 0 || h <= 0) {
-        snprintf(err, err_size, "face %s of depth_cube has no storage (glTexImage2D for each of the six faces)",
-                 sl_cube_face_name(face));
-        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-        return false;
-    }
-    if (depth_bits == 0) {
-        snprintf(err, err_size, "face %s of depth_cube has internal format %s (0x%x), not a depth format",
-                 sl_cube_face_name(face), sl_gl_enum_name((GLenum)fmt), fmt);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-        return false;
-    }
-    *out = sl_image_alloc(w, h, 1);
-    if (!out->data) return false;
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTexImage(target, 0, GL_DEPTH_COMPONENT, GL_FLOAT, out->data);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-    sl_image_flip_rows(out);
-    return true;
 }
+
+/* Lab 7 draws a frame of its own for a point light. */
+const sl_technique sl_lab7_technique = {
+    .name = "cube maps",
+    .lab = 7,
+    .takes_frame = _sl_lab7_takes_frame,
+    .draw_frame = _sl_lab7_draw_frame,
+    .overlay_labels = _sl_lab7_overlay_labels,
+    .reload_changed = _sl_lab7_reload_changed,
+    .program_stats = _sl_lab7_program_stats,
+    .destroy = _sl_lab7_destroy,
+};

@@ -10,9 +10,10 @@
  *   3. the camera pass looks each pixel up in the cube map with lab 7's
  *      point_shadow() (or point_shadow_soft())
  *
- * The renderer hands a frame to this module when params.lab is 7 and the
- * scene's light is a point light; every call into lab code goes through the
- * renderer's table, so a crash or a stub is pinned on the function. */
+ * Its technique (sl_lab7_technique, in the table of sl_technique.h) takes a
+ * frame when params.lab is 7 and the scene's light is a point light; every
+ * call into lab code goes through the renderer's table, so a crash or a stub
+ * is pinned on the function. */
 #ifndef SL_LAB7_CUBE_H
 #define SL_LAB7_CUBE_H
 
@@ -23,26 +24,7 @@
 #include "sl_params.h"
 #include "sl_scene.h"
 
-struct sl_renderer;
-
-/* Whether lab 7's frame applies: lab 7 asked for and a point light to cast from. */
-bool sl_lab7_cube_applies(const sl_scene *scene, const sl_render_params *params);
-/* Draws the frame (depth passes, camera pass, the faces as a cross when
- * params.show_shadow_map) into framebuffer `target`. */
-void sl_lab7_cube_draw(struct sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
-                       int width, int height);
-/* Rebuilds lab 7's programs whose files changed (hot reload); false with err set on a failed build. */
-bool sl_lab7_cube_reload_changed(struct sl_renderer *r, bool *reloaded, char *err, size_t err_size);
-void sl_lab7_cube_destroy(struct sl_renderer *r);
-/* Lab 7's programs: how many were built (first builds only) and how many are held now. */
-void sl_lab7_cube_program_counts(const struct sl_renderer *r, int *built, int *held);
-
-/* Where the cross (params.show_shadow_map) puts face `face` (0..5: +x -x +y -y +z -z) in a width x
- * height frame: its top-left corner from the frame's top-left, and its side, in pixels (face labels). */
-void sl_lab7_cross_face_rect(int width, int height, int face, int *x, int *y, int *side);
-
-/* One face of a depth cube map as a top-down image (1 channel, face size
- * squared); false with err set if the texture is no depth cube map. */
-bool sl_capture_cube_face(GLuint cube, int face, sl_image *out, char *err, size_t err_size);
+/* The read-back of its faces (sl_capture_cube_face) is in sl_capture.h. */
+#include "sl_capture.h"
 
 #endif

@@ -1,16 +1,13 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_renderer.h"
 
-#include "sl_lab6_cascades.h"
-
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-#include "sl_lab5_vsm.h"
-#include "sl_lab7_cube.h"
+#include "sl_technique.h"
 
 #ifndef SL_FRAMEWORK_DIR
 #define SL_FRAMEWORK_DIR "framework"
@@ -76,194 +73,7 @@ bool sl_renderer_lab_result(sl_renderer *r, const char *function, sl_status stat
     return _sl_lab_result(r, function, status);
 }
 
-/* Calls lab N's function fn through the renderer's table, recording what it returned. */
-#define _SL_CALL_LAB(r, N, fn, ...) (_sl_enter(#fn), _sl_lab_result((r), #fn, (r)->fns[N]->fn(__VA_ARGS__)))
-
-/* ---- Programs ---------------------------------------------------------------
- * Each program is built the first time a frame needs it, then kept. The camera
- * pass has one program per lab and per setting that changes its code (compare
- * type, bias mode, filter, grid radius): those settings reach the GLSL as
- * preprocessor defines, so a program holds only the code of its own technique.
- * A software rasteriser runs every branch a pixel might take, and loops with
- * constant bounds unroll. Uniform locations are looked up once per build. */
-
-/* Every uniform the framework sets, as u_<name> in the GLSL. */
-#define _SL_UNIFORMS(X)                                                                                   \
-    X(model) X(normal_matrix) X(albedo) X(view) X(projection) X(shadow_matrix) X(light_view_projection)   \
-    X(light_position) X(light_direction) X(light_radiance) X(spot_cos) X(shadows) X(output) X(depth_bias) \
-    X(second_map) X(slope_bias) X(max_bias) X(normal_offset) X(texel_size) X(poisson_radius)              \
-    X(light_size_uv) X(light_near) X(light_far) X(shadow_map) X(texture) X(perspective) X(near) X(far)    \
-    X(moments) X(min_variance) X(bleeding)
-
-typedef struct _sl_uniforms {
-#define _SL_UNIFORM_FIELD(name) GLint name;
-    _SL_UNIFORMS(_SL_UNIFORM_FIELD)
-#undef _SL_UNIFORM_FIELD
-} _sl_uniforms;
-
-typedef struct _sl_slot {
-    sl_program program;
-    _sl_uniforms u;
-    GLuint located; /* the program id u belongs to: a rebuild changes the id */
-    bool attempted;
-    bool compiles;  /* the latest build succeeded (after a failed rebuild, the program is the one before) */
-} _sl_slot;
-
-/* What a camera-pass program is built for: each field is a compile-time constant in its GLSL. */
-typedef struct _sl_variant_key {
-    int lab;         /* 0: no shadows (plain.frag); 2, 3 or 4: scene.frag, scene_bias.frag, scene_filter.frag */
-    int light_type;  /* SL_LIGHT_TYPE */
-    bool hardware;   /* sampler2DShadow */
-    int bias_mode;   /* labs 3-4: SL_BIAS_MODE */
-    int filter_mode; /* lab 4: SL_FILTER_MODE */
-    int grid_radius; /* lab 4's grid: SL_GRID_RADIUS */
-} _sl_variant_key;
-
-typedef struct _sl_variant {
-    _sl_variant_key key;
-    _sl_slot slot;
-    bool stale;              /* its files changed while another program was in use: rebuild when used */
-    unsigned long last_used; /* frame number */
-} _sl_variant;
-
-/* Enough for every setting an instructor cycles through in a lecture; the
- * least recently used program makes room beyond that. */
-#define _SL_MAX_VARIANTS 32
-
-struct _sl_programs {
-    _sl_slot depth, debug;
-    _sl_variant variants[_SL_MAX_VARIANTS];
-    int variant_count;
-    unsigned long frame;
-    int builds;
-    double build_ms;
-};
-
-static double _sl_now_ms(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
-}
-
 static void _sl_path(char *out, size_t n, const char *dir, const char *file) { snprintf(out, n, "%s/%s", dir, file); }
-
-/* Builds s from vertex and fragment files (each under its own folder); the error goes to shader_errors[lab]. */
-static bool _sl_slot_build(sl_renderer *r, _sl_slot *s, const char *vs_dir, const char *vs_file, const char *fs_dir,
-                           const char *fs_file, const char *defines, int lab) {
-    char vs[SL_PATH_MAX * 2], fs[SL_PATH_MAX * 2];
-    _sl_path(vs, sizeof vs, vs_dir, vs_file);
-    _sl_path(fs, sizeof fs, fs_dir, fs_file);
-    sl_shader_desc desc = {
-        .vertex_path = vs,
-        .fragment_path = fs,
-        .search_dirs = {r->labs_dir, r->shaders_dir},
-        .defines = defines,
-    };
-    double start = _sl_now_ms();
-    s->attempted = true;
-    bool ok = sl_program_build(&s->program, &desc, r->shader_errors[lab], sizeof r->shader_errors[lab]);
-    s->compiles = ok;
-    r->programs->builds++;
-    r->programs->build_ms += _sl_now_ms() - start;
-    return ok;
-}
-
-/* Rebuilds s if its files changed; false (old program kept) with the error in shader_errors[lab]. */
-static bool _sl_slot_reload(sl_renderer *r, _sl_slot *s, int lab, bool *reloaded) {
-    char e[sizeof r->shader_errors[0]];
-    double start = _sl_now_ms();
-    bool rebuilt = sl_program_reload_if_changed(&s->program, e, sizeof e);
-    if (rebuilt || e[0]) {
-        r->programs->builds++;
-        r->programs->build_ms += _sl_now_ms() - start;
-    }
-    if (rebuilt) {
-        r->shader_errors[lab][0] = '\0';
-        s->compiles = true;
-        if (reloaded) *reloaded = true;
-    } else if (e[0]) {
-        snprintf(r->shader_errors[lab], sizeof r->shader_errors[lab], "%s", e);
-        s->compiles = false;
-        return false;
-    }
-    return true;
-}
-
-static const _sl_uniforms *_sl_uniforms_of(_sl_slot *s) {
-    if (s->located != s->program.id) {
-#define _SL_UNIFORM_LOOKUP(name) s->u.name = glGetUniformLocation(s->program.id, "u_" #name);
-        _SL_UNIFORMS(_SL_UNIFORM_LOOKUP)
-#undef _SL_UNIFORM_LOOKUP
-        s->located = s->program.id;
-    }
-    return &s->u;
-}
-
-/* A framework program (or lab 1's depth program), built on first use; NULL if it does not compile. */
-static _sl_slot *_sl_fixed_program(sl_renderer *r, _sl_slot *s, const char *dir, const char *vs, const char *fs,
-                                   int lab) {
-    if (!s->attempted) _sl_slot_build(r, s, dir, vs, dir, fs, NULL, lab);
-    return s->program.id ? s : NULL;
-}
-
-static _sl_slot *_sl_depth_program(sl_renderer *r) {
-    return _sl_fixed_program(r, &r->programs->depth, r->labs_dir, "lab1_depth_fbo/shaders/depth.vert",
-                             "lab1_depth_fbo/shaders/depth.frag", 1);
-}
-
-/* The camera-pass shaders of each lab: a lab's fragment shader includes its GLSL and the labs' before it. */
-static const char *const _sl_scene_vertex[SL_RENDERER_MAX_LAB + 1] = {
-    [0] = "plain.vert", [2] = "scene.vert", [3] = "scene.vert", [4] = "scene.vert", [5] = "scene.vert",
-};
-static const char *const _sl_scene_fragment[SL_RENDERER_MAX_LAB + 1] = {
-    [0] = "plain.frag", [2] = "scene.frag", [3] = "scene_bias.frag", [4] = "scene_filter.frag",
-    [5] = "scene_vsm.frag",
-};
-
-static void _sl_variant_defines(const _sl_variant_key *k, char *out, size_t n) {
-    int len = snprintf(out, n, "#define SL_LAB %d\n#define SL_LIGHT_TYPE %d\n", k->lab, k->light_type);
-    if (k->hardware) len += snprintf(out + len, n - (size_t)len, "#define SL_HARDWARE_COMPARE 1\n");
-    if (k->lab >= 3) len += snprintf(out + len, n - (size_t)len, "#define SL_BIAS_MODE %d\n", k->bias_mode);
-    if (k->lab == 4)
-        snprintf(out + len, n - (size_t)len, "#define SL_FILTER_MODE %d\n#define SL_GRID_RADIUS %d\n", k->filter_mode,
-                 k->grid_radius);
-}
-
-/* Field by field: the padding of two equal keys may differ. */
-static bool _sl_same_variant(const _sl_variant_key *a, const _sl_variant_key *b) {
-    return a->lab == b->lab && a->light_type == b->light_type && a->hardware == b->hardware &&
-           a->bias_mode == b->bias_mode && a->filter_mode == b->filter_mode && a->grid_radius == b->grid_radius;
-}
-
-/* The camera-pass program for key, built on first use; NULL if it does not compile. */
-static _sl_slot *_sl_variant_program(sl_renderer *r, const _sl_variant_key *key) {
-    struct _sl_programs *ps = r->programs;
-    _sl_variant *v = NULL;
-    for (int i = 0; i < ps->variant_count && !v; i++)
-        if (_sl_same_variant(&ps->variants[i].key, key)) v = &ps->variants[i];
-    if (v) {
-        v->last_used = ps->frame;
-        if (v->stale) {
-            v->stale = false;
-            _sl_slot_reload(r, &v->slot, key->lab, NULL);
-        }
-        return v->slot.program.id ? &v->slot : NULL;
-    }
-    if (ps->variant_count < _SL_MAX_VARIANTS) {
-        v = &ps->variants[ps->variant_count++];
-    } else {
-        v = &ps->variants[0];
-        for (int i = 1; i < ps->variant_count; i++)
-            if (ps->variants[i].last_used < v->last_used) v = &ps->variants[i];
-        sl_program_destroy(&v->slot.program);
-    }
-    *v = (_sl_variant){.key = *key, .last_used = ps->frame};
-    char defines[256];
-    _sl_variant_defines(key, defines, sizeof defines);
-    _sl_slot_build(r, &v->slot, r->shaders_dir, _sl_scene_vertex[key->lab], r->shaders_dir,
-                   _sl_scene_fragment[key->lab], defines, key->lab);
-    return v->slot.program.id ? &v->slot : NULL;
-}
 
 bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, size_t err_size) {
     memset(r, 0, sizeof *r);
@@ -282,64 +92,28 @@ bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, s
         return false;
     }
     fclose(f);
-    r->programs = calloc(1, sizeof *r->programs);
-    if (!r->programs) {
-        snprintf(err, err_size, "out of memory");
-        return false;
-    }
     glGenVertexArrays(1, &r->empty_vao);
     return true;
 }
 
 void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out) {
     *out = (sl_program_stats){0};
-    if (!r->programs) return;
-    const struct _sl_programs *ps = r->programs;
-    out->builds = ps->builds;
-    out->build_ms = ps->build_ms;
-    out->cached = (ps->depth.program.id != 0) + (ps->debug.program.id != 0);
-    for (int i = 0; i < ps->variant_count; i++) out->cached += ps->variants[i].slot.program.id != 0;
-    int built, held;
-    sl_lab7_cube_program_counts(r, &built, &held);
-    out->builds += built;
-    out->cached += held;
-    sl_lab6_program_stats(r, out); /* lab 6's programs, kept in sl_lab6_cascades.c */
+    /* the programs each technique keeps in its module */
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        const sl_technique *t = sl_technique_of(lab);
+        if (t && t->program_stats) t->program_stats(r, out);
+    }
 }
 
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
     *reloaded = false;
-    if (!r->programs) return true;
-    struct _sl_programs *ps = r->programs;
     bool ok = true;
-    /* Rebuilt now: what the last frame drew with (so a save shows at once and its errors are
-     * reported), and any program that never compiled (so a fix switches its lab back on). */
-    typedef struct { _sl_slot *slot; int lab; } watched;
-    watched now[2 + _SL_MAX_VARIANTS] = {{&ps->depth, 1}, {&ps->debug, 0}};
-    int n = 2;
-    for (int i = 0; i < ps->variant_count; i++) {
-        _sl_variant *v = &ps->variants[i];
-        if (v->last_used == ps->frame || !v->slot.program.id) now[n++] = (watched){&v->slot, v->key.lab};
-        else if (!v->stale && sl_program_files_changed(&v->slot.program)) v->stale = true;
-    }
-    for (int i = 0; i < n; i++) {
-        if (!now[i].slot->attempted || _sl_slot_reload(r, now[i].slot, now[i].lab, reloaded)) continue;
-        if (ok) snprintf(err, err_size, "%s", r->shader_errors[now[i].lab]);
-        ok = false;
-    }
-    /* lab 5's passes keep their programs in their own module */
-    char vsm_err[1024] = "";
-    if (!sl_vsm_reload_changed(r, reloaded, vsm_err, sizeof vsm_err)) {
-        if (ok) snprintf(err, err_size, "%s", vsm_err);
-        ok = false;
-    }
-    char lab6_err[sizeof r->shader_errors[0]]; /* lab 6's programs live in sl_lab6_cascades.c */
-    if (!sl_lab6_reload_changed(r, reloaded, lab6_err, sizeof lab6_err)) {
-        if (ok) snprintf(err, err_size, "%s", lab6_err);
-        ok = false;
-    }
-    char lab7_err[1024];
-    if (!sl_lab7_cube_reload_changed(r, reloaded, lab7_err, sizeof lab7_err)) {
-        if (ok) snprintf(err, err_size, "%s", lab7_err);
+    /* the programs each technique keeps in its module; the first error is reported */
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        const sl_technique *t = sl_technique_of(lab);
+        char technique_err[sizeof r->shader_errors[0]] = "";
+        if (!t || !t->reload_changed || t->reload_changed(r, reloaded, technique_err, sizeof technique_err)) continue;
+        if (ok) snprintf(err, err_size, "%s", technique_err);
         ok = false;
     }
     return ok;
@@ -352,26 +126,10 @@ static void _sl_destroy_meshes(sl_renderer *r) {
 
 void sl_renderer_destroy(sl_renderer *r) {
     _sl_destroy_meshes(r);
-    sl_lab7_cube_destroy(r);
-    if (r->shadow_map_attempted && r->shadow_map_status == SL_OK) {
-        _sl_enter("lab1_destroy_shadow_map");
-        r->fns[1]->lab1_destroy_shadow_map(&r->shadow_map);
-        if (sl_lab_call_hook) sl_lab_call_hook(NULL);
+    for (int lab = SL_LAB_COUNT; lab >= 1; lab--) {
+        const sl_technique *t = sl_technique_of(lab);
+        if (t && t->destroy) t->destroy(r);
     }
-    if (r->second_map_attempted && r->second_map_status == SL_OK) {
-        _sl_enter("lab1_destroy_shadow_map");
-        r->fns[1]->lab1_destroy_shadow_map(&r->second_map);
-        if (sl_lab_call_hook) sl_lab_call_hook(NULL);
-    }
-    sl_vsm_destroy(r);
-    if (r->programs) {
-        struct _sl_programs *ps = r->programs;
-        sl_program_destroy(&ps->depth.program);
-        sl_program_destroy(&ps->debug.program);
-        for (int i = 0; i < ps->variant_count; i++) sl_program_destroy(&ps->variants[i].slot.program);
-        free(ps);
-    }
-    sl_lab6_release(r);
     if (r->empty_vao) glDeleteVertexArrays(1, &r->empty_vao);
     if (r->timer_queries[0]) glDeleteQueries(SL_MAX_PASSES + 1, r->timer_queries);
     memset(r, 0, sizeof *r);
@@ -444,32 +202,6 @@ void sl_renderer_reset_state(GLuint target, int width, int height) {
     glDisable(GL_SCISSOR_TEST);
 }
 
-static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
-    sl_frame_info *info = &r->info;
-    sl_light light = scene->light;
-    sl_aabb bounds = scene->bounds;
-    info->lab2_ready = false;
-    if (p->lab >= 2) {
-        mat4 view, proj, shadow;
-        glm_mat4_identity(view);
-        glm_mat4_identity(proj);
-        glm_mat4_identity(shadow);
-        bool ok = _SL_CALL_LAB(r, 2, lab2_light_view, &light, &bounds, view) &&
-                  _SL_CALL_LAB(r, 2, lab2_light_projection, &light, &bounds, view, proj) &&
-                  _SL_CALL_LAB(r, 2, lab2_shadow_matrix, proj, view, shadow);
-        if (ok) {
-            glm_mat4_copy(view, info->light_view);
-            glm_mat4_copy(proj, info->light_projection);
-            glm_mat4_copy(shadow, info->shadow_matrix);
-            info->lab2_ready = true;
-            return;
-        }
-    }
-    /* Lab 1 alone (or lab 2 not done yet): a loose light camera so the depth map can be seen. */
-    sl_light_default_matrices(&light, &bounds, info->light_view, info->light_projection);
-    glm_mat4_identity(info->shadow_matrix);
-}
-
 void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model, GLint normal_matrix, GLint albedo) {
     for (int i = 0; i < r->mesh_count && i < scene->object_count; i++) {
         const sl_object *o = &scene->objects[i];
@@ -487,289 +219,6 @@ void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model
     }
 }
 
-static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const _sl_uniforms *u, bool colours) {
-    sl_renderer_draw_objects(r, scene, u->model, colours ? u->normal_matrix : -1, colours ? u->albedo : -1);
-}
-
-/* Returns the highest lab the depth pass used (0: no map, 1, or 3 with lab 3's state). */
-static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_render_params *p);
-
-/* Lab 3's extension: the second surface's depths, into a second map made with
- * lab 1's own functions. The depth program is still bound. */
-static void _sl_second_depth_pass(sl_renderer *r, const sl_scene *scene, const _sl_uniforms *u, int size) {
-    if (r->second_map_attempted && r->second_map_status == SL_OK && r->second_map.size != size) {
-        _sl_enter("lab1_destroy_shadow_map");
-        r->fns[1]->lab1_destroy_shadow_map(&r->second_map);
-        r->second_map_attempted = false;
-    }
-    if (!r->second_map_attempted) {
-        memset(&r->second_map, 0, sizeof r->second_map);
-        _sl_enter("lab1_create_shadow_map");
-        r->second_map_status = r->fns[1]->lab1_create_shadow_map(size, &r->second_map);
-        r->second_map_attempted = true;
-    }
-    if (!_sl_lab_result(r, "lab1_create_shadow_map", r->second_map_status)) return;
-    if (!_SL_CALL_LAB(r, 1, lab1_begin_depth_pass, &r->second_map)) return;
-    if (!_SL_CALL_LAB(r, 3, lab3_second_depth_state)) return;
-    _sl_draw_objects(r, scene, u, false);
-    r->info.second_map_ready = true;
-    _sl_timer_mark(r, "second depth");
-}
-
-static int _sl_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
-    int used = _sl_depth_pass_labs(r, scene, p);
-    /* Lab 3's stub is asked even when an earlier lab stops the pass, so the
-     * grader can say which of a lab's own functions are not done yet. */
-    if (used == 0 && p->lab >= 3) {
-        _SL_CALL_LAB(r, 3, lab3_depth_pass_state, &p->bias);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
-    return used;
-}
-
-static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
-    sl_frame_info *info = &r->info;
-    int size = p->shadow_map_size > 0 ? p->shadow_map_size : 1024;
-    if (r->shadow_map_attempted && r->shadow_map_status == SL_OK && r->shadow_map.size != size) {
-        _sl_enter("lab1_destroy_shadow_map");
-        r->fns[1]->lab1_destroy_shadow_map(&r->shadow_map);
-        r->shadow_map_attempted = false;
-    }
-    if (!r->shadow_map_attempted) {
-        memset(&r->shadow_map, 0, sizeof r->shadow_map);
-        _sl_enter("lab1_create_shadow_map");
-        r->shadow_map_status = r->fns[1]->lab1_create_shadow_map(size, &r->shadow_map);
-        r->shadow_map_attempted = true;
-        if (r->shadow_map_status == SL_OK && glIsTexture(r->shadow_map.depth_texture)) {
-            glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
-            glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &r->lab1_min_filter);
-            glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &r->lab1_mag_filter);
-        }
-    }
-    info->shadow_map = r->shadow_map; /* even on failure: the grader inspects what was made */
-    if (!_sl_lab_result(r, "lab1_create_shadow_map", r->shadow_map_status)) return 0;
-    _sl_slot *depth = _sl_depth_program(r);
-    if (!depth) {
-        info->shader_error = r->shader_errors[1];
-        info->shader_error_lab = 1;
-        return 0;
-    }
-    const _sl_uniforms *u = _sl_uniforms_of(depth);
-    if (!_SL_CALL_LAB(r, 1, lab1_begin_depth_pass, &r->shadow_map)) return 0;
-    int used = 1;
-    if (p->lab >= 3 && _SL_CALL_LAB(r, 3, lab3_depth_pass_state, &p->bias)) used = 3;
-    mat4 view_proj;
-    glm_mat4_mul(info->light_projection, info->light_view, view_proj);
-    glUseProgram(depth->program.id);
-    glUniformMatrix4fv(u->light_view_projection, 1, GL_FALSE, (const float *)view_proj);
-    _sl_draw_objects(r, scene, u, false);
-    info->shadow_map_ready = true;
-    _sl_timer_mark(r, "depth");
-    if (used == 3 && p->bias.mode == SL_BIAS_MIDPOINT) _sl_second_depth_pass(r, scene, u, size);
-    return used;
-}
-
-/* The world size of one shadow-map texel: for a spot light, per unit of distance. */
-static float _sl_texel_size(const sl_frame_info *info, const sl_light *light, int map_size) {
-    float scale = light->type == SL_LIGHT_DIRECTIONAL ? 2.0f / info->light_projection[0][0]
-                                                        : 2.0f * tanf(glm_rad(light->spot_angle_deg));
-    return scale / (float)(map_size > 0 ? map_size : 1);
-}
-
-/* What lab `lab`'s camera-pass program is compiled for, this frame. */
-static _sl_variant_key _sl_variant_for(const sl_renderer *r, const sl_scene *scene, const sl_render_params *p,
-                                       int lab) {
-    bool midpoint = lab == 3 && p->bias.mode == SL_BIAS_MIDPOINT && r->info.second_map_ready;
-    _sl_variant_key key = {.lab = lab, .light_type = (int)scene->light.type};
-    if (lab < 2) return key; /* no shadows: plain.frag */
-    key.hardware = lab >= 4 ? lab == 4 && p->filter.mode == SL_FILTER_HARDWARE
-                            : p->compare == SL_COMPARE_HARDWARE && !midpoint;
-    /* midpoint without its second map (not implemented): lab 2's constant bias instead */
-    if (lab >= 3) key.bias_mode = p->bias.mode == SL_BIAS_MIDPOINT && !midpoint ? SL_BIAS_CONSTANT : p->bias.mode;
-    if (lab == 4) {
-        key.filter_mode = p->filter.mode;
-        key.grid_radius = p->filter.mode == SL_FILTER_GRID ? p->filter.grid_radius : 0;
-    }
-    return key;
-}
-
-/* The camera-pass program of the highest lab, at most *lab, that has one: built now, or the
- * last version that compiled (hot reload). A lab's program includes the GLSL of the labs
- * before it, so when one fails, the error names the earliest lab whose GLSL fails. */
-static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int *lab) {
-    for (; *lab >= 2; (*lab)--) {
-        _sl_variant_key key = _sl_variant_for(r, scene, p, *lab);
-        _sl_slot *slot = _sl_variant_program(r, &key);
-        if (slot) return slot;
-        if (r->info.shader_error) continue;
-        int failed = *lab;
-        for (int l = 2; l < *lab && failed == *lab; l++) {
-            _sl_variant_key lower = _sl_variant_for(r, scene, p, l);
-            _sl_slot *lower_slot = _sl_variant_program(r, &lower);
-            if (!lower_slot || !lower_slot->compiles) failed = l;
-        }
-        r->info.shader_error = r->shader_errors[failed];
-        r->info.shader_error_lab = failed;
-        sl_renderer_note_stop(r, failed);
-    }
-    return NULL;
-}
-
-/* The highest lab up to `lab` with a camera pass of a shadow map (lab 7's
- * cube maps draw their own frame: a later lab on a spot or sun is the labs' before). */
-static int _sl_planar_lab(int lab) {
-    if (lab > SL_RENDERER_MAX_LAB) lab = SL_RENDERER_MAX_LAB;
-    while (lab > 2 && !_sl_scene_fragment[lab]) lab--;
-    return lab;
-}
-
-/* Lab 5's camera pass can draw VSM this frame: its moments, lab 2's matrices, and its shaders compile. */
-static bool _sl_vsm_draws(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
-    if (!r->info.moments_ready || !r->info.lab2_ready) return false;
-    _sl_variant_key key = _sl_variant_for(r, scene, p, 5);
-    return _sl_variant_program(r, &key) != NULL;
-}
-
-static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int depth_lab,
-                           bool vsm_draws, int width, int height) {
-    sl_frame_info *info = &r->info;
-    /* The highest lab whose code can run this frame. */
-    int lab = 0;
-    if (vsm_draws) {
-        lab = 5; /* VSM reads its moments and lab 2's matrices only: no lab 1 map, no lab 3 state */
-    } else if (info->shadow_map_ready && info->lab2_ready) {
-        /* labs 6 and 7 draw in their own modules; asked for otherwise (a light they do not cast from), labs 1-4 draw */
-        lab = _sl_planar_lab(p->lab > 5 ? 4 : p->lab);
-        /* lab 5 without its moments (or VSM switched off): lab 4's filters; with them, its camera
-         * pass's shaders do not compile, and _sl_camera_program says so as it steps down */
-        if (lab == 5 && !info->moments_ready) {
-            lab = 4;
-            if (p->vsm_off) sl_renderer_note_off(r, 5, SL_STOP_SWITCHED_OFF);
-            else sl_renderer_note_stop(r, 5);
-        }
-        if (depth_lab < 3 && lab > 2) {
-            lab = 2;
-            sl_renderer_note_stop(r, 3);
-        }
-    } else if (p->lab >= 1) { /* no map to look up: lab 1's or lab 2's step stopped */
-        if (!info->shadow_map_ready) sl_renderer_note_stop(r, 1);
-        if (p->lab >= 2 && !info->lab2_ready) sl_renderer_note_stop(r, 2);
-    }
-    if (lab == 4) {
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
-        if (!_SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, r->shadow_map.depth_texture, p->filter.mode)) {
-            lab = 3;
-            sl_renderer_note_stop(r, 4);
-        }
-    } else if (p->lab >= 4 && lab != 5 && !(info->shadow_map_ready && info->lab2_ready)) {
-        /* asked anyway, on no texture, to learn whether it is still a stub (see _sl_depth_pass) */
-        glBindTexture(GL_TEXTURE_2D, 0);
-        _SL_CALL_LAB(r, 4, lab4_configure_shadow_texture, 0, p->filter.mode);
-    } else if (info->shadow_map_ready && r->lab1_min_filter) {
-        /* lab 4 may have changed the filtering in an earlier frame: back to lab 1's */
-        glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, r->lab1_min_filter);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, r->lab1_mag_filter);
-    }
-    _sl_slot *slot = lab >= 2 ? _sl_camera_program(r, scene, p, &lab) : NULL;
-    if (!slot) {
-        _sl_variant_key plain = _sl_variant_for(r, scene, p, 0);
-        slot = _sl_variant_program(r, &plain);
-        if (!slot && !info->shader_error) {
-            info->shader_error = r->shader_errors[0];
-            info->shader_error_lab = 0;
-        }
-    }
-    bool hardware = lab >= 4 ? lab == 4 && p->filter.mode == SL_FILTER_HARDWARE : p->compare == SL_COMPARE_HARDWARE;
-    bool midpoint = lab == 3 && p->bias.mode == SL_BIAS_MIDPOINT && info->second_map_ready;
-    if (midpoint) hardware = false; /* the midpoint is compared by hand, on two sampler2Ds */
-    info->lab_in_use = lab >= 2 ? lab : (info->shadow_map_ready ? 1 : 0);
-
-    /* background: sky; lit in the visibility image; not a lit surface in the mask */
-    if (p->output == SL_OUTPUT_SHADED) glClearColor(0.55f, 0.62f, 0.70f, 1);
-    else if (p->output == SL_OUTPUT_VISIBILITY) glClearColor(1, 1, 1, 1);
-    else glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (!slot) return;
-    const _sl_uniforms *u = _sl_uniforms_of(slot);
-    glUseProgram(slot->program.id);
-    mat4 view, proj;
-    sl_camera_view(&scene->camera, view);
-    sl_camera_projection(&scene->camera, height > 0 ? (float)width / (float)height : 1, proj);
-    glUniformMatrix4fv(u->view, 1, GL_FALSE, (const float *)view);
-    glUniformMatrix4fv(u->projection, 1, GL_FALSE, (const float *)proj);
-    glUniformMatrix4fv(u->shadow_matrix, 1, GL_FALSE, (const float *)info->shadow_matrix);
-    const sl_light *l = &scene->light;
-    glUniform3fv(u->light_position, 1, l->position);
-    glUniform3fv(u->light_direction, 1, l->direction);
-    vec3 radiance;
-    glm_vec3_scale((float *)l->color, l->intensity, radiance);
-    glUniform3fv(u->light_radiance, 1, radiance);
-    glUniform1f(u->spot_cos, cosf(glm_rad(l->spot_angle_deg)));
-    glUniform1i(u->shadows, lab >= 2 ? 1 : 0);
-    glUniform1i(u->output, (int)p->output);
-    /* lab 2: constant bias; lab 3: the chosen mode (compiled into the program) */
-    glUniform1f(u->depth_bias, p->bias.constant);
-    glUniform1i(u->second_map, 1);
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, midpoint ? r->second_map.depth_texture : 0);
-    if (midpoint) glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glActiveTexture(GL_TEXTURE0);
-    glUniform1f(u->slope_bias, p->bias.slope);
-    glUniform1f(u->max_bias, p->bias.max_bias);
-    glUniform1f(u->normal_offset, p->bias.normal_offset);
-    glUniform1f(u->texel_size, _sl_texel_size(info, l, p->shadow_map_size));
-    /* lab 4 (the filter and the grid radius are compiled into the program) */
-    glUniform1f(u->poisson_radius, p->filter.poisson_radius);
-    float near_width = l->type == SL_LIGHT_DIRECTIONAL ? 2.0f / info->light_projection[0][0]
-                                                       : 2.0f * l->near * tanf(glm_rad(l->spot_angle_deg));
-    glUniform1f(u->light_size_uv, l->size / near_width);
-    glUniform1f(u->light_near, l->near);
-    glUniform1f(u->light_far, l->far);
-    glUniform1i(u->shadow_map, 0);
-    /* lab 5: the blurred, mipmapped moments on unit 2 */
-    glUniform1i(u->moments, 2);
-    glUniform1f(u->min_variance, p->vsm.min_variance);
-    glUniform1f(u->bleeding, p->vsm.bleeding);
-    glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_2D, lab == 5 ? sl_vsm_moments_texture(r) : 0);
-    glActiveTexture(GL_TEXTURE0);
-    if (lab >= 2) {
-        glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
-        /* Compare mode is texture state: set it for the sampler type this program declares. */
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, hardware ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    } else {
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    _sl_draw_objects(r, scene, u, true);
-    _sl_timer_mark(r, "camera");
-}
-
-static void _sl_debug_view(sl_renderer *r, const sl_light *light, int width, int height) {
-    if (!r->info.shadow_map_ready) return;
-    _sl_slot *slot = _sl_fixed_program(r, &r->programs->debug, r->shaders_dir, "debug_quad.vert", "debug_quad.frag", 0);
-    if (!slot) return;
-    const _sl_uniforms *u = _sl_uniforms_of(slot);
-    int side = (width < height ? width : height) / 3;
-    glViewport(width - side - 8, 8, side, side);
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(slot->program.id);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, r->shadow_map.depth_texture);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glUniform1i(u->texture, 0);
-    glUniform1i(u->perspective, light->type != SL_LIGHT_DIRECTIONAL);
-    glUniform1f(u->near, light->near);
-    glUniform1f(u->far, light->far);
-    glBindVertexArray(r->empty_vao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glViewport(0, 0, width, height);
-    glEnable(GL_DEPTH_TEST);
-    _sl_timer_mark(r, "debug view");
-}
-
 void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
                       int width, int height) {
     sl_frame_info *info = &r->info;
@@ -783,82 +232,20 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->lab_asked = params->lab;
     info->stop_count = 0;
     info->cube_frame = info->cube_matrices_ready = info->cube_map_ready = info->cube_layered = false;
-    r->programs->frame++;
+    r->frame_count++;
     _sl_timer_mark(r, NULL);
-    if (params->lab == 6) { /* cascades: a frame of their own (sl_lab6_cascades.c) */
-        sl_lab6_draw(r, scene, params, target, width, height);
-        glBindVertexArray(0);
-        glUseProgram(0);
-        return;
+    /* A technique that takes the frame draws it (lab 6's cascades; lab 7's cube map for a point light);
+     * else the one that draws every other frame (lab 1's shadow map, which labs 2-5 add to). */
+    const sl_technique *drawing = NULL;
+    for (int lab = 1; lab <= SL_LAB_COUNT && !drawing; lab++) {
+        const sl_technique *t = sl_technique_of(lab);
+        if (t && t->takes_frame && t->takes_frame(r, scene, params)) drawing = t;
     }
-    if (sl_lab7_cube_applies(scene, params)) {
-        /* a point light: lab 7's cube map instead of labs 1-4's shadow map */
-        sl_lab7_cube_draw(r, scene, params, target, width, height);
-        glBindVertexArray(0);
-        glUseProgram(0);
-        return;
+    for (int lab = 1; lab <= SL_LAB_COUNT && !drawing; lab++) {
+        const sl_technique *t = sl_technique_of(lab);
+        if (t && !t->takes_frame && t->draw_frame) drawing = t;
     }
-    if (params->lab == 7) sl_renderer_note_off(r, 7, SL_STOP_NO_POINT_LIGHT); /* labs 1-4 draw instead */
-    _sl_light_matrices(r, scene, params);
-    sl_renderer_reset_state(0, width, height);
-    info->moments_ready = false;
-    bool vsm = params->lab == 5 && !params->vsm_off; /* off: lab 4's filter alone, as fast as in lab 4 */
-    if (vsm) sl_vsm_passes(r, scene, params);
-    /* VSM needs neither lab 1's map nor lab 3's depth-pass state: the depth pass runs
-     * only for labs 1-4, and for lab 5 when its moments are not there (lab 4 draws instead) */
-    bool vsm_draws = vsm && _sl_vsm_draws(r, scene, params);
-    int depth_lab = 0;
-    if (!vsm_draws) {
-        sl_renderer_reset_state(0, width, height);
-        depth_lab = _sl_depth_pass(r, scene, params);
-    }
-    sl_renderer_reset_state(target, width, height);
-    _sl_scene_pass(r, scene, params, depth_lab, vsm_draws, width, height);
-    if (params->show_shadow_map && info->lab_in_use == 5) sl_vsm_debug_view(r, width, height);
-    else if (params->show_shadow_map) _sl_debug_view(r, &scene->light, width, height);
+    if (drawing) drawing->draw_frame(r, scene, params, target, width, height);
     glBindVertexArray(0);
     glUseProgram(0);
-}
-
-bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out) {
-    static const GLenum formats[5] = {0, GL_RED, GL_RG, GL_RGB, GL_RGBA};
-    if (channels < 1 || channels > 4) return false;
-    *out = sl_image_alloc(width, height, channels);
-    if (!out->data) return false;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, formats[channels], GL_FLOAT, out->data);
-    sl_image_flip_rows(out);
-    return true;
-}
-
-bool sl_capture_depth_texture(GLuint texture, sl_image *out, char *err, size_t err_size) {
-    *out = (sl_image){0};
-    if (!texture || !glIsTexture(texture)) {
-        snprintf(err, err_size, "depth_texture (%u) is not a texture name", texture);
-        return false;
-    }
-    GLint w = 0, h = 0, fmt = 0;
-    glBindTexture(GL_TEXTURE_2D, texture);
-    while (glGetError() != GL_NO_ERROR) {}
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &fmt);
-    if (glGetError() != GL_NO_ERROR || w <= 0 || h <= 0) {
-        snprintf(err, err_size, "depth_texture (%u) is not a 2D texture with storage", texture);
-        return false;
-    }
-    GLint depth_bits = 0;
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &depth_bits);
-    if (depth_bits == 0) {
-        snprintf(err, err_size, "depth_texture has internal format %s (0x%x), not a depth format",
-                 sl_gl_enum_name((GLenum)fmt), fmt);
-        return false;
-    }
-    *out = sl_image_alloc(w, h, 1);
-    if (!out->data) return false;
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, out->data);
-    sl_image_flip_rows(out);
-    return true;
 }

@@ -1,5 +1,10 @@
 /* sl_renderer: one frame of the shadow pipeline, built from the labs' code.
  *
+ * Each lab's technique is one descriptor in the table of sl_technique.h, and
+ * the renderer names none of them: a frame is drawn by the technique that
+ * takes it (lab 6's cascades, lab 7's cube map for a point light), else by
+ * lab 1's shadow-map frame (sl_lab1_4_shadow_map.c), which labs 2-5 add to:
+ *
  *   1. lab 2 builds the light's view, projection and shadow matrix
  *      (lab 1 alone uses sl_light_default_matrices)
  *   2. lab 1 creates the shadow map (once per size) and begins the depth pass,
@@ -113,17 +118,12 @@ typedef struct sl_program_stats {
     int cached;      /* programs held now */
 } sl_program_stats;
 
-struct _sl_programs; /* the program cache (sl_renderer.c) */
-struct _sl_lab6;     /* lab 6's targets and programs (sl_lab6_cascades.c) */
-struct _sl_lab7;     /* lab 7's passes (sl_lab7_cube.c) */
 
 typedef struct sl_renderer {
     const sl_lab_functions *fns[SL_LAB_COUNT + 1]; /* whose code runs for each lab (this build's) */
     char labs_dir[SL_PATH_MAX];
     char shaders_dir[SL_PATH_MAX];
-    /* Every program (lab 1's depth pass, the camera pass per lab and setting,
-     * the unshadowed and debug views), built when a frame first needs it. */
-    struct _sl_programs *programs;
+    unsigned long frame_count; /* frames drawn (a program not used by the last one is rebuilt when next used) */
     char shader_errors[SL_RENDERER_MAX_LAB + 1][8192]; /* per lab: why its shaders do not compile (0: framework) */
     GLint lab1_min_filter, lab1_mag_filter; /* lab 1's choice, restored when lab 4 is off */
     GLuint empty_vao;
@@ -136,14 +136,14 @@ typedef struct sl_renderer {
     sl_status second_map_status;
     bool second_map_attempted;
     sl_frame_info info;
-    struct _sl_lab7 *lab7; /* lab 7's cube map and programs, made by its first frame */
     /* timing (sl_renderer_set_timing): one timestamp before the frame and one after each pass */
     bool timing;
     GLuint timer_queries[SL_MAX_PASSES + 1];
     const char *timer_names[SL_MAX_PASSES];
     int timer_count;
-    struct sl_vsm *vsm; /* lab 5's targets and programs (sl_lab5_vsm.c), made by its first frame */
-    struct _sl_lab6 *lab6; /* lab 6's frame (sl_lab6_cascades.c), made by its first frame */
+    /* Per lab, what its technique's module keeps between frames (its targets and programs), made by
+     * its first frame and freed by its destroy hook (sl_technique.h). */
+    void *technique_state[SL_LAB_COUNT + 1];
 } sl_renderer;
 
 /* Called before each call into lab code with the function's name, so a crash
@@ -183,7 +183,7 @@ void sl_renderer_set_timing(sl_renderer *r, bool enabled);
  * has finished that frame. False if no such frame was drawn. */
 bool sl_renderer_frame_timing(sl_renderer *r, sl_frame_timing *out);
 
-/* For the labs' own pass modules (sl_lab5_vsm.c, sl_lab6_cascades.c, sl_lab7_cube.c): a call into lab
+/* For the techniques' modules (sl_technique.h): a call into lab
  * code is announced, then its result recorded, as the renderer does with its own (the result is true when
  * the step may go on); a pass's end is timed. */
 void sl_renderer_lab_enter(const char *function);
@@ -204,9 +204,7 @@ void sl_renderer_draw_objects(sl_renderer *r, const sl_scene *scene, GLint model
  * so one pass cannot leak into the next. */
 void sl_renderer_reset_state(GLuint target, int width, int height);
 
-/* Read-backs, as top-down images. */
-bool sl_capture_framebuffer(GLuint framebuffer, int width, int height, int channels, sl_image *out);
-/* The depth texture's texels (1 channel); false if it is not a depth texture. */
-bool sl_capture_depth_texture(GLuint texture, sl_image *out, char *err, size_t err_size);
+/* Read-backs, as top-down images: sl_capture.h. */
+#include "sl_capture.h"
 
 #endif

@@ -10,8 +10,7 @@
 #include <unistd.h>
 
 #include "sl_context.h"
-#include "sl_lab5_vsm.h"
-#include "sl_lab7_cube.h"
+#include "sl_capture.h"
 #include "sl_probe_pass.h"
 #include "sl_protocol.h"
 #include "sl_renderer.h"

@@ -12,11 +12,10 @@
 #include "sl_context.h"
 #include "sl_log.h"
 #include "sl_overlay.h"
-#include "sl_lab6_cascades.h"
-#include "sl_lab7_cube.h"
 #include "sl_platform.h"
 #include "sl_renderer.h"
 #include "sl_serve.h"
+#include "sl_technique.h"
 #include <cjson/cJSON.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -673,9 +672,11 @@ static void _sl_update_timing(_sl_viewer *v, sl_renderer *r, double frame_second
 
 /* ---- What is drawing ------------------------------------------------------ */
 
-/* Each lab's technique, as the status line names it ("lab 5 VSM is off"). */
-static const char *const _sl_technique[SL_LAB_COUNT + 1] = {"",        "depth map", "shadow lookup", "bias",
-                                                            "filtering", "VSM",      "cascades",      "cube maps"};
+/* Each lab's technique, as the status line names it ("lab 5 VSM is off"): the table's name. */
+static const char *_sl_technique_name(int lab) {
+    const sl_technique *t = sl_technique_of(lab);
+    return t ? t->name : "?";
+}
 
 /* What lab `lab`'s code draws with these settings: "lab 2's hard shadows". */
 static void _sl_drawing(const _sl_viewer *v, int lab, char *out, size_t n) {
@@ -692,7 +693,7 @@ static void _sl_drawing(const _sl_viewer *v, int lab, char *out, size_t n) {
         else if (f->mode == SL_FILTER_NONE) snprintf(out, n, "lab 4's unfiltered shadows");
         else snprintf(out, n, "lab 4's %s filter", sl_filter_mode_name(f->mode));
         break;
-    default: snprintf(out, n, "lab %d's %s", lab, lab <= SL_LAB_COUNT ? _sl_technique[lab] : "?"); break;
+    default: snprintf(out, n, "lab %d's %s", lab, _sl_technique_name(lab)); break;
     }
 }
 
@@ -719,7 +720,7 @@ static void _sl_status(const _sl_viewer *v, const sl_frame_info *info, char *out
     if (info->stop_count == 0) return;
     int lab = info->lab_asked;
     size_t used = (size_t)snprintf(out, n, "lab %d %s is off: ", lab,
-                                   lab >= 1 && lab <= SL_LAB_COUNT ? _sl_technique[lab] : "?");
+                                   _sl_technique_name(lab));
     for (int i = 0; i < info->stop_count && used < n; i++) {
         char why[160];
         _sl_stop_text(v, &info->stops[i], why, sizeof why);
@@ -755,7 +756,7 @@ static void _sl_wrapped(sl_overlay *ov, const float *rgb, const char *text, int 
 
 static const float _sl_red[3] = {1.0f, 0.45f, 0.4f}, _sl_green[3] = {0.55f, 0.95f, 0.55f},
                    _sl_blue[3] = {0.55f, 0.75f, 1.0f}, _sl_frustum_rgb[3] = {1.0f, 0.85f, 0.2f},
-                   _sl_orange[3] = {1.0f, 0.7f, 0.3f}, _sl_white[3] = {1, 1, 1};
+                   _sl_orange[3] = {1.0f, 0.7f, 0.3f};
 
 /* The light's frustum: the clip-space cube taken back to the world by the
  * inverse of the matrices the frame used (lab 2's, or the framework's for lab 1). */
@@ -818,29 +819,8 @@ static void _sl_key_panel(_sl_viewer *v, const sl_frame_info *info) {
 static void _sl_labels(_sl_viewer *v, const sl_frame_info *info, int width, int height, bool labels) {
     sl_overlay *ov = v->overlay;
     const sl_render_params *p = &v->params;
-    if (labels && p->lab == 6 && info->cascades_ready && p->cascades.show_cascades) {
-        sl_overlay_panel(ov, SL_OVERLAY_TOP_RIGHT, "cascades (K), view depth");
-        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++)
-            sl_overlay_line(ov, sl_cascade_colours[i], SL_OVERLAY_SWATCH SL_OVERLAY_SWATCH " %d: %.1f - %.1f", i,
-                            (double)info->cascade_splits[i], (double)info->cascade_splits[i + 1]);
-    }
-    if (labels && p->lab == 6 && info->cascades_ready && p->show_shadow_map) {
-        int s = sl_overlay_scale_for(ov, width, height);
-        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++) {
-            int x, y, side;
-            sl_lab6_layer_rect(width, height, info->cascade_count, i, &x, &y, &side);
-            sl_overlay_label(ov, x + s, y + s, sl_cascade_colours[i], "%d", i);
-        }
-    }
-    if (labels && info->cube_frame && info->cube_map_ready && p->show_shadow_map) {
-        static const char *const faces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
-        int s = sl_overlay_scale_for(ov, width, height);
-        for (int f = 0; f < 6; f++) {
-            int x, y, side;
-            sl_lab7_cross_face_rect(width, height, f, &x, &y, &side);
-            sl_overlay_label(ov, x + 2 * s, y + 2 * s, _sl_white, "%s", faces[f]);
-        }
-    }
+    const sl_technique *t = sl_technique_of(p->lab);
+    if (labels && t && t->overlay_labels) t->overlay_labels(ov, info, p, width, height);
     if (p->lab == 6 && v->frozen && info->cascades_ready) {
         /* each slice is the frozen camera's frustum between two splits */
         for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++) {
