@@ -6,15 +6,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sl_capture.h"
 #include "sl_case.h"
 #include "sl_compare.h"
 #include "sl_context.h"
 #include "sl_platform.h"
 #include "sl_serve.h"
 #include <cjson/cJSON.h>
-#include "sl_lab5_vsm.h"
-#include "sl_lab6_cascades.h"
-#include "sl_lab7_cube.h"
 #include "sl_overlay.h"
 #include "sl_renderer.h"
 #define GLFW_INCLUDE_NONE
