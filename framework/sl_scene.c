@@ -298,21 +298,87 @@ void sl_camera_orbit(sl_camera *camera, float delta_yaw, float delta_pitch, floa
     glm_vec3_add(camera->target, offset, camera->position);
 }
 
-void sl_light_default_matrices(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection) {
-    vec3 up = {0, 1, 0}, dir, eye, centre;
-    glm_vec3_copy((float *)light->direction, dir);
-    if (fabsf(dir[1]) > 0.99f) glm_vec3_copy((vec3){0, 0, 1}, up);
-    if (light->type == SL_LIGHT_DIRECTIONAL) {
-        glm_vec3_center((float *)bounds->min, (float *)bounds->max, centre);
-        float radius = glm_vec3_distance((float *)bounds->min, (float *)bounds->max) / 2;
-        glm_vec3_scale(dir, -2 * radius, eye);
-        glm_vec3_add(centre, eye, eye);
-        glm_lookat(eye, centre, up, view);
-        glm_ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f, projection);
-    } else {
-        glm_vec3_copy((float *)light->position, eye);
-        glm_vec3_add(eye, dir, centre);
-        glm_lookat(eye, centre, up, view);
-        glm_perspective(glm_rad(2 * light->spot_angle_deg), 1, light->near, light->far, projection);
+/* ---- the light camera before lab 2 ----
+ * Lab 1 draws its depth map before lab 2 exists, so the framework needs a
+ * light camera of its own. For a spot light that camera is lab 2's answer
+ * (and for a sun its view is), so the students' handout does not compute
+ * it. Every build reads the matrices of the lights its scenes and lab 1's
+ * cases use from a table (sl_light_cameras.inc, printed by the staff
+ * build's shadowlab-light-table); a staff build computes any other light's
+ * with solutions/framework/sl_light_camera.c (hidden variants, a light the
+ * viewer moved), the handout draws those from straight above instead. */
+typedef struct _sl_light_camera {
+    sl_light_type type;
+    float position[3], direction[3], spot_angle_deg, near, far; /* a sun: direction alone */
+    float bounds_min[3], bounds_max[3];                         /* a sun's only: its box fits them */
+    float view[16], projection[16];
+} _sl_light_camera;
+
+#include "sl_light_cameras.inc"
+
+#ifdef SL_STAFF_LIGHT_CAMERA
+#include "sl_light_camera.h"
+#endif
+
+static bool _sl_same(const float *a, const float *b, size_t n) { return memcmp(a, b, n * sizeof(float)) == 0; }
+
+static bool _sl_light_camera_fits(const _sl_light_camera *t, const sl_light *light, const sl_aabb *bounds) {
+    if (t->type != light->type || !_sl_same(t->direction, light->direction, 3)) return false;
+    if (light->type == SL_LIGHT_DIRECTIONAL)
+        return _sl_same(t->bounds_min, bounds->min, 3) && _sl_same(t->bounds_max, bounds->max, 3);
+    return _sl_same(t->position, light->position, 3) && _sl_same(&t->spot_angle_deg, &light->spot_angle_deg, 1) &&
+           _sl_same(&t->near, &light->near, 1) && _sl_same(&t->far, &light->far, 1);
+}
+
+/* A camera straight above the scene's bounding sphere, looking down (-y, image up -z), orthographic. */
+static void _sl_overview_matrices(const sl_aabb *bounds, mat4 view, mat4 projection) {
+    vec3 centre;
+    glm_vec3_center((float *)bounds->min, (float *)bounds->max, centre);
+    float radius = glm_vec3_distance((float *)bounds->min, (float *)bounds->max) / 2;
+    if (!(radius > 0)) radius = 1;
+    vec3 eye = {centre[0], centre[1] + 2 * radius, centre[2]};
+    glm_mat4_identity(view);
+    view[1][1] = 0, view[2][1] = -1, view[1][2] = 1, view[2][2] = 0;
+    view[3][0] = -eye[0], view[3][1] = eye[2], view[3][2] = -eye[1];
+    glm_ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f, projection);
+}
+
+bool sl_light_default_matrices(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection) {
+    for (size_t i = 0; i < sizeof _sl_light_cameras / sizeof _sl_light_cameras[0]; i++) {
+        const _sl_light_camera *t = &_sl_light_cameras[i];
+        if (!_sl_light_camera_fits(t, light, bounds)) continue;
+        memcpy(view, t->view, sizeof t->view);
+        memcpy(projection, t->projection, sizeof t->projection);
+        return true;
     }
+#ifdef SL_STAFF_LIGHT_CAMERA
+    if (sl_light_camera_compute(light, bounds, view, projection)) return true;
+#endif
+    _sl_overview_matrices(bounds, view, projection);
+    return false;
+}
+
+void sl_light_camera_table_entry(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection, FILE *out) {
+    const float *numbers[6] = {light->position, light->direction, bounds->min, bounds->max, (const float *)view,
+                               (const float *)projection};
+    static const int counts[6] = {3, 3, 3, 3, 16, 16};
+    fprintf(out, "    {%d, ", (int)light->type);
+    for (int g = 0; g < 6; g++) {
+        fputc('{', out);
+        for (int i = 0; i < counts[g]; i++) {
+            char text[32];
+            snprintf(text, sizeof text, "%.9g", (double)numbers[g][i]);
+            fprintf(out, "%s%s%sf", i ? ", " : "", text, strpbrk(text, ".en") ? "" : ".0");
+        }
+        fputs("}, ", out);
+        if (g == 1) {
+            const float single[3] = {light->spot_angle_deg, light->near, light->far};
+            for (int i = 0; i < 3; i++) {
+                char text[32];
+                snprintf(text, sizeof text, "%.9g", (double)single[i]);
+                fprintf(out, "%s%sf, ", text, strpbrk(text, ".en") ? "" : ".0");
+            }
+        }
+    }
+    fputs("},\n", out);
 }

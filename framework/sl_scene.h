@@ -5,6 +5,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #include <cjson/cJSON.h>
 
@@ -56,8 +57,13 @@ void sl_camera_orbit(sl_camera *camera, float delta_yaw, float delta_pitch, floa
 
 /* The light camera used when lab 2's matrices are not in use (lab 1, and
  * before lab 2 is done): a loose box around the scene's bounding sphere for a
- * directional light, the cone for a spot light. */
-void sl_light_default_matrices(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection);
+ * directional light, the cone for a spot light. A staff build computes it for
+ * any light; the students' handout knows it for the lights of its scenes and
+ * lab 1's cases, and for another light gives a camera straight above the
+ * scene instead and returns false. */
+bool sl_light_default_matrices(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection);
+/* One entry of that table (sl_light_cameras.inc): `light` and its camera, as C. */
+void sl_light_camera_table_entry(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection, FILE *out);
 
 const char *sl_light_type_name(sl_light_type type);
 

@@ -46,6 +46,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "sl_mount_point.h"
+
 #define _SL_FENCE_FAILED 97 /* the fence could not be made: nothing ran */
 #define _SL_NOBODY 65534
 #define _SL_MAX_PATHS 256
@@ -140,18 +142,13 @@ static bool _sl_become_nobody(void) {
 
 /* In the child, in its new mount namespace: the root, then the command. */
 static void _sl_enter(const char *newroot, const _sl_fence *f, char **command) {
-    if (mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0) {
-        /* Under a chroot "/" is no mount point, and the mount that holds the
-         * fresh folder cannot be made private: mount over a mount point the
-         * chroot does show, made private first, as the runners' sandbox does. */
-        if (errno != EINVAL) _sl_die("cannot make the mounts private: %s", strerror(errno));
-        static const char *const visible[] = {"/sys", "/dev/pts", "/dev/shm", "/run", "/proc"};
-        const char *root = NULL;
-        for (size_t i = 0; i < sizeof visible / sizeof visible[0] && !root; i++)
-            if (mount(NULL, visible[i], NULL, MS_REC | MS_PRIVATE, NULL) == 0) root = visible[i];
-        if (!root) _sl_die("cannot make the mounts private: \"/\" is no mount point (a chroot?) and no other mount is");
-        newroot = root;
-    }
+    /* Under a chroot "/" is no mount point, and the mount that holds the fresh
+     * folder cannot be made private: mount over a mount point the chroot does
+     * show, made private first, as the runners' sandbox does. */
+    const char *private_point = sl_private_mount_point();
+    if (!private_point && errno != EINVAL) _sl_die("cannot make the mounts private: %s", strerror(errno));
+    if (!private_point) _sl_die("cannot make the mounts private: \"/\" is no mount point (a chroot?) and no other mount is");
+    if (strcmp(private_point, "/") != 0) newroot = private_point;
     if (mount("compile-fence", newroot, "tmpfs", MS_NOSUID | MS_NODEV, "size=256m,mode=0755") != 0)
         _sl_die("cannot mount a tmpfs on %s: %s", newroot, strerror(errno));
     char path[PATH_MAX * 2];

@@ -157,11 +157,12 @@ int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double
 /* ---- functions judged by their contract, not by the solution's numbers ---- */
 /* True when the probe's function has a contract of its own (lab 6: lab6_cascade_matrices; lab 7:
  * lab7_face_view): *broken then holds the rows that break it, text what breaks (empty when none does), and
- * *shown the row that shows it best. */
-bool sl_lab6_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t text_size,
-                            int *shown);
-bool sl_lab7_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t text_size,
-                            int *shown);
+ * *shown the row that shows it best. `expected`: the solution's outputs for the same rows (NULL: not
+ * known), which lab 7 reads each face's orientation from. */
+bool sl_lab6_probe_contract(const sl_check *k, const double *student, const double *expected, uint32_t *broken,
+                            char *text, size_t text_size, int *shown);
+bool sl_lab7_probe_contract(const sl_check *k, const double *student, const double *expected, uint32_t *broken,
+                            char *text, size_t text_size, int *shown);
 
 /* ---- function probes (grader/diagnose/probe.c) ---- */
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
@@ -198,8 +199,8 @@ typedef struct sl_lab_diagnoses {
     bool (*meets_row)(const sl_case *c, const sl_check *probe, int row);
     /* Probes of the lab's functions: a contract of their own (probe.c), a verdict read from the check's numbers
      * before the shared ones (probe.c), a verdict from the rows after them (verdict.c). */
-    bool (*probe_contract)(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t text_size,
-                           int *shown);
+    bool (*probe_contract)(const sl_check *k, const double *student, const double *expected, uint32_t *broken,
+                           char *text, size_t text_size, int *shown);
     int (*probe_verdict)(const sl_check *k, const double *student, const double *expected, uint32_t failing_rows,
                          char *text, size_t text_size);
     int (*rows_verdict)(const struct sl_verdict_rows *rows, char *text, size_t text_size);

@@ -31,6 +31,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "sl_mount_point.h"
+
 #define _SL_INNER_ID 1000      /* the runner's uid inside a user namespace */
 #define _SL_COPY_FILE_MAX (1 << 20)
 #define _SL_COPY_TOTAL_MAX (16 << 20)
@@ -430,12 +432,10 @@ static void _sl_show_display(const char *root, const sl_sandbox_spawn_desc *d) {
  * no mount point and the mount holding it cannot be reached: a mount point
  * the chroot does show (/sys, /dev/pts) is made private and mounted over. */
 static const char *_sl_private_mount_point(const sl_sandbox *sb) {
-    if (mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) == 0) return sb->mount_point;
-    if (errno != EINVAL) _sl_fail("cannot make the mounts private: %s", strerror(errno));
-    static const char *const visible[] = {"/sys", "/dev/pts", "/dev/shm", "/run", "/proc"};
-    for (size_t i = 0; i < sizeof visible / sizeof visible[0]; i++)
-        if (mount(NULL, visible[i], NULL, MS_REC | MS_PRIVATE, NULL) == 0) return visible[i];
-    _sl_fail("cannot make the mounts private: \"/\" is no mount point (a chroot?) and no other mount is");
+    const char *point = sl_private_mount_point();
+    if (!point && errno != EINVAL) _sl_fail("cannot make the mounts private: %s", strerror(errno));
+    if (!point) _sl_fail("cannot make the mounts private: \"/\" is no mount point (a chroot?) and no other mount is");
+    return strcmp(point, "/") == 0 ? sb->mount_point : point;
 }
 
 /* Builds the sandbox's file system and enters it. */

@@ -29,6 +29,7 @@
 
 #include "sl_archive.h"
 #include "sl_files.h"
+#include "sl_mount_point.h"
 #include "sl_text.h"
 
 #define _SL_TEXT_MAX 4096      /* a name or a reason on the channel */
@@ -843,11 +844,27 @@ static bool _sl_fence(const sl_stage_desc *d) {
         snprintf(map, sizeof map, "0 %u 1", (unsigned)gid);
         namespace = namespace && _sl_write_file("/proc/self/gid_map", map);
     }
-    if (namespace && mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0) namespace = false;
+    const char *private_point = namespace ? sl_private_mount_point() : NULL;
+    if (!private_point) namespace = false;
+    /* Under a chroot "/" is no mount point, and a folder hidden where it is would show outside too. The
+     * reader needs no file by name any more (the submission is open): it moves into an empty root of its
+     * own, a tmpfs over a mount point the chroot shows, where nothing of the file system is reachable. */
+    bool empty_root = false;
+    if (namespace && strcmp(private_point, "/") != 0) {
+        empty_root = mount("shadowlab-reader", private_point, "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC,
+                           "size=16k,mode=0555") == 0 &&
+                     chdir(private_point) == 0 && chroot(".") == 0 && chdir("/") == 0;
+        if (!empty_root) namespace = false;
+    }
     int hidden = 0, existing = 0;
     char not_hidden[1024] = "";
     for (int i = 0; i < d->hidden_count; i++) {
         struct stat st;
+        if (empty_root) { /* stat from the empty root cannot tell: every folder named is out of reach */
+            existing++;
+            hidden++;
+            continue;
+        }
         if (stat(d->hidden[i], &st) != 0 || !S_ISDIR(st.st_mode)) continue;
         existing++;
         if (namespace &&
@@ -881,7 +898,8 @@ static bool _sl_fence(const sl_stage_desc *d) {
     if (existing == 0)
         snprintf(said + strlen(said), sizeof said - strlen(said), "%s", namespace ? ", in a mount namespace" : "");
     else if (hidden == existing)
-        snprintf(said + strlen(said), sizeof said - strlen(said), ", in a mount namespace where the answers are hidden");
+        snprintf(said + strlen(said), sizeof said - strlen(said), ", in a mount namespace where the answers are hidden%s",
+                 empty_root ? " (an empty root of its own: \"/\" is no mount point here, a chroot)" : "");
     else
         snprintf(said + strlen(said), sizeof said - strlen(said), ", %s: it could see %s",
                  namespace ? "in a mount namespace" : "no mount namespace here", not_hidden);

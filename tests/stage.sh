@@ -413,6 +413,40 @@ report)
     problem "PrairieLearn's format errors say nothing"
   ;;
 
+chroot)
+  # Under a chroot "/" is no mount point, so it cannot be made private: the reader
+  # still must not see the answers (it moves into an empty root of its own).
+  # A chroot of bind mounts, in a mount namespace of the test's own.
+  if [ "$(id -u)" != 0 ] || ! command -v chroot >/dev/null || ! unshare -m --propagation private true 2>/dev/null; then
+    echo "stage.chroot: needs root and a mount namespace: left out"
+    exit 77
+  fi
+  mkdir -p "$work/sub" "$work/root"
+  cp -R "$solutions/lab2_projective" "$work/sub/"
+  rm -rf "$work/chroot.stage"
+  cp -R "$stubs" "$work/chroot.stage"
+  set +e
+  out=$(unshare -m --propagation private bash -c '
+    set -e
+    root=$1 stager=$2 solutions=$3 work=$4
+    for d in usr etc dev proc sys; do mkdir -p "$root/$d"; mount --rbind "/$d" "$root/$d"; done
+    for l in bin lib lib64 sbin; do
+      if [ -L "/$l" ]; then ln -s "$(readlink "/$l")" "$root/$l"
+      elif [ -d "/$l" ]; then mkdir -p "$root/$l"; mount --rbind "/$l" "$root/$l"; fi
+    done
+    for d in "$(dirname "$stager")" "$solutions" "$work"; do mkdir -p "$root$d"; mount --bind "$d" "$root$d"; done
+    [ "$(awk "\$5 == \"/\"" /proc/self/mountinfo | wc -l)" -gt 0 ]
+    exec chroot "$root" "$stager" --summary "$work/chroot.json" --hide "$solutions" "$work/sub" "$work/chroot.stage"
+  ' chroot-test "$work/root" "$stager" "$solutions" "$work" 2>&1)
+  status=$?
+  set -e
+  printf '%s\n' "--- chroot (exit $status)" "$out"
+  stage="$work/chroot.stage"
+  expect_status 0 "a folder, staged under a chroot"
+  said "where the answers are hidden" "under a chroot"
+  is_solution lab2_projective/lab2.c "a folder, staged under a chroot"
+  ;;
+
 *) echo "stage.sh: no case $case_name" >&2; exit 2 ;;
 esac
 exit $fail

@@ -7,12 +7,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
+
 #include "sl_compare.h"
+#include "sl_json.h"
 #include "sl_probe.h"
 
-/* The standard orientation of each face (GL's table of cube map faces): the axis it looks down and its up vector. */
+/* The axis each face looks down (its name). Its up vector and image right (GL's table of cube map faces) are
+ * lab 7's answer, so the grader does not hold them: it reads them from the solution's face views (the
+ * lab7_face_view probe's expected outputs, from the references or computed at grading time). */
 static const float _sl_axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-static const float _sl_ups[6][3] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
 static const char *const _sl_face_names[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 
 static const char *_sl_face(int face) { return face >= 0 && face < 6 ? _sl_face_names[face] : "?"; }
@@ -103,6 +107,57 @@ static double _sl_follows(const sl_image *s, const sl_image *t, _sl_predict pred
 
 static void _sl_vector(const float *v, char *out, size_t n) { snprintf(out, n, "(%g,%g,%g)", v[0], v[1], v[2]); }
 
+/* A face's image right and up in world space, from a correct view of it (column-major 4x4: rows 0 and 1 of
+ * its linear part), as whole numbers; false when that view is not one of a cube face's. */
+static bool _sl_face_frame(const double *view, float right[3], float up[3]) {
+    for (int i = 0; i < 3; i++) {
+        double r = view[i * 4 + 0], u = view[i * 4 + 1];
+        if (!isfinite(r) || !isfinite(u) || fabs(r - lround(r)) > 1e-3 || fabs(u - lround(u)) > 1e-3) return false;
+        right[i] = (float)lround(r);
+        up[i] = (float)lround(u);
+    }
+    return true;
+}
+
+/* Face `face`'s up vector as the solution's lab7_face_view gives it, from the references beside `ref_path`
+ * (REFERENCES/CASE/FILE): the lab7_probes case's face_view.probe.json. False where it is not there. */
+static bool _sl_reference_face_up(const char *ref_path, int face, float up[3]) {
+    char path[1200];
+    snprintf(path, sizeof path, "%s", ref_path);
+    for (int cut = 0; cut < 2; cut++) {
+        char *slash = strrchr(path, '/');
+        if (!slash) return false;
+        *slash = '\0';
+    }
+    size_t used = strlen(path);
+    snprintf(path + used, sizeof path - used, "/lab7_probes/face_view.probe.json");
+    char err[600];
+    cJSON *json = sl_json_load_file(path, "reference", err, sizeof err);
+    if (!json) return false;
+    bool found = false;
+    const cJSON *rows = cJSON_GetObjectItemCaseSensitive(json, "rows"), *row;
+    cJSON_ArrayForEach(row, rows) {
+        const cJSON *in = cJSON_GetObjectItemCaseSensitive(row, "inputs"), *outs = cJSON_GetObjectItemCaseSensitive(row, "outputs");
+        if (!cJSON_IsArray(in) || !cJSON_IsNumber(cJSON_GetArrayItem(in, 0)) || cJSON_GetArrayItem(in, 0)->valuedouble != face ||
+            cJSON_GetArraySize(outs) != 16)
+            continue;
+        double view[16];
+        bool numbers = true;
+        for (int i = 0; i < 16; i++) {
+            const cJSON *v = cJSON_GetArrayItem(outs, i);
+            numbers &= cJSON_IsNumber(v);
+            view[i] = numbers ? v->valuedouble : 0;
+        }
+        float right[3];
+        if (numbers && _sl_face_frame(view, right, up)) {
+            found = true;
+            break;
+        }
+    }
+    cJSON_Delete(json);
+    return found;
+}
+
 void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                            sl_check_result *out) {
     const char *face = _sl_face(k->face);
@@ -131,8 +186,9 @@ void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_re
     if (out->message[0]) return; /* only the mean is off: said */
     double near = c->scene.light.near, far = c->scene.light.far;
     double empty = sl_fraction_equal(s, 1.0f, 1e-6f), ref_empty = sl_fraction_equal(t, 1.0f, 1e-6f);
-    char up[40];
-    _sl_vector(_sl_ups[k->face], up, sizeof up);
+    char up[80] = "from GL's table of cube map faces";
+    float face_up[3];
+    if (_sl_reference_face_up(ref->path, k->face, face_up)) _sl_vector(face_up, up, sizeof up);
     bool layered = sl_lab7_drawn_layered(r), others_drawn = false;
     for (int f = 0; f < 6; f++) {
         const sl_capture *other = f == k->face ? NULL : sl_result_capture(r, sl_capture_name(SL_CAPTURE_CUBE_FACE + f));
@@ -259,7 +315,6 @@ static void _sl_matrix_row(const double *m, int row, double out[3]) {
  * the light and turn the face's axis to the image's centre (view -z), its up
  * vector to the image's +y and GL's "image right" of that face (s, the
  * table's column) to +x, without scaling: a rigid motion. */
-static const float _sl_rights[6][3] = {{0, 0, -1}, {0, 0, 1}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {-1, 0, 0}};
 
 /* The view's linear part applied to a world direction (column-major 4x4). */
 static void _sl_turn(const double *m, const float v[3], double out[3]) {
@@ -270,8 +325,10 @@ static bool _sl_is(const double a[3], double x, double y, double z, double eps) 
     return fabs(a[0] - x) <= eps && fabs(a[1] - y) <= eps && fabs(a[2] - z) <= eps;
 }
 
-/* What face `face`'s view breaks, into text; false when it keeps the contract. */
-static bool _sl_face_view_broken(const float *in, const double *m, double eps, char *text, size_t n) {
+/* What face `face`'s view breaks, into text; false when it keeps the contract. `expected`: the solution's
+ * view of the same row, the face's up and right (NULL: unknown, those two promises go unchecked). */
+static bool _sl_face_view_broken(const float *in, const double *m, const double *expected, double eps, char *text,
+                                 size_t n) {
     int face = (int)in[0];
     const float *light = in + 1;
     if (face < 0 || face > 5) return false;
@@ -281,14 +338,16 @@ static bool _sl_face_view_broken(const float *in, const double *m, double eps, c
                               "divides by zero — those faces need up (0,0,1) and (0,0,-1)", _sl_face(face));
             return true;
         }
+    float face_up[3] = {0, 0, 0}, face_right[3] = {0, 0, 0};
+    bool frame = expected && _sl_face_frame(expected, face_right, face_up);
     char axis[40], up[40], right[40];
     _sl_vector(_sl_axes[face], axis, sizeof axis);
-    _sl_vector(_sl_ups[face], up, sizeof up);
-    _sl_vector(_sl_rights[face], right, sizeof right);
+    _sl_vector(face_up, up, sizeof up);
+    _sl_vector(face_right, right, sizeof right);
     double a[3], u[3], s[3];
     _sl_turn(m, _sl_axes[face], a);
-    _sl_turn(m, _sl_ups[face], u);
-    _sl_turn(m, _sl_rights[face], s);
+    _sl_turn(m, face_up, u);
+    _sl_turn(m, face_right, s);
     double forward[3], image_up[3], image_right[3];
     _sl_matrix_row(m, 2, forward);
     _sl_matrix_row(m, 1, image_up);
@@ -303,12 +362,12 @@ static bool _sl_face_view_broken(const float *in, const double *m, double eps, c
                  axis, -forward[0], -forward[1], -forward[2]);
         return true;
     }
-    if (!_sl_is(u, 0, 1, 0, eps)) {
+    if (frame && !_sl_is(u, 0, 1, 0, eps)) {
         snprintf(text, n, "face %s: the up vector should be %s, not (%.3g,%.3g,%.3g)", _sl_face(face), up,
                  image_up[0], image_up[1], image_up[2]);
         return true;
     }
-    if (!_sl_is(s, 1, 0, 0, eps)) {
+    if (frame && !_sl_is(s, 1, 0, 0, eps)) {
         snprintf(text, n, "face %s is mirrored: the image's right (+x) must be %s, as GL's table of cube map faces reads "
                           "it; here it is (%.3g,%.3g,%.3g) — a lookAt's right is forward x up", _sl_face(face), right,
                  image_right[0], image_right[1], image_right[2]);
@@ -325,8 +384,8 @@ static bool _sl_face_view_broken(const float *in, const double *m, double eps, c
     return false;
 }
 
-bool sl_lab7_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t n,
-                            int *shown) {
+bool sl_lab7_probe_contract(const sl_check *k, const double *student, const double *expected, uint32_t *broken,
+                            char *text, size_t n, int *shown) {
     const sl_probe_function *f = sl_probe_at(k->function);
     if (!f || strcmp(f->name, "lab7_face_view") != 0) return false;
     *broken = 0;
@@ -335,7 +394,9 @@ bool sl_lab7_probe_contract(const sl_check *k, const double *student, uint32_t *
     double eps = k->tolerance > 0 ? k->tolerance : 1e-4;
     for (int row = 0; row < k->rows; row++) {
         char why[400];
-        if (!_sl_face_view_broken(k->inputs[row], student + row * 16, eps, why, sizeof why)) continue;
+        if (!_sl_face_view_broken(k->inputs[row], student + row * 16, expected ? expected + row * 16 : NULL, eps, why,
+                                  sizeof why))
+            continue;
         *broken |= 1u << row;
         if (*shown < 0) {
             *shown = row;

@@ -157,10 +157,10 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
              k->about[row]);
 }
 
-static bool _sl_probe_contract(const sl_check *k, const double *student, uint32_t *broken, char *text, size_t n,
-                               int *shown) {
+static bool _sl_probe_contract(const sl_check *k, const double *student, const double *expected, uint32_t *broken,
+                               char *text, size_t n, int *shown) {
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(sl_probe_at(k->function)->lab);
-    return lab && lab->probe_contract && lab->probe_contract(k, student, broken, text, n, shown);
+    return lab && lab->probe_contract && lab->probe_contract(k, student, expected, broken, text, n, shown);
 }
 
 void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
@@ -210,7 +210,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     char verdict[600] = "";
     uint32_t broken = 0;
     int shown = -1;
-    if (_sl_probe_contract(k, cap->numbers, &broken, verdict, sizeof verdict, &shown)) {
+    if (_sl_probe_contract(k, cap->numbers, ref->loaded ? ref->numbers : NULL, &broken, verdict, sizeof verdict, &shown)) {
         out->failing_rows = broken;
         failing = 0;
         first = -1;
