@@ -55,6 +55,15 @@ if [ "${mode%%-*}" = beside ]; then
   if [ "$(id -u)" != 0 ]; then
     [ "$level" != uid ] || { echo "attack $name ($mode): the uid sandbox needs a grader running as root" >&2; exit 77; }
   else
+    if [ "$level" = uid ]; then
+      # the runners' uids must reach the system and the runner: where a folder on the way is closed
+      # to other users (a root folder of mode 0700, as under a chroot) the grader falls back to
+      # basic, and the attack would run as root: skip before it runs at all
+      runner=""
+      for ((i = 0; i < ${#args[@]}; i++)); do [ "${args[$i]}" = --runners ] && runner=${args[$((i + 1))]}/shadowlab-runner; done
+      setpriv --reuid=60800 --regid=60800 --clear-groups -- /bin/sh -c "test -x '$runner'" 2>/dev/null ||
+        { echo "attack $name ($mode): a runner's uid cannot run $runner here (a folder on its path is closed to others)" >&2; exit 77; }
+    fi
     if [ "$level" = basic ]; then
       as_user=(setpriv --reuid=61100 --regid=61100 --clear-groups --)
       # a user of its own must reach the system and the grader: not where a folder on the way is
@@ -117,16 +126,19 @@ if ! grep -q "sandbox:" "$out"; then
   problem "the grader graded nothing (exit status $status)"
   exit 1
 fi
+# A run skipped below still must not leave the attack's marker files behind (in the project
+# they would be read as case files by every later grade).
+skip() { markers | xargs -r rm -f; exit 77; }
 if ! grep -q "sandbox: $level" "$out"; then
   echo "attack $name ($mode): this machine gives the runners another sandbox than $level:" >&2
   grep "sandbox:" "$out" >&2
   echo "the attack suite needs the namespaces sandbox (root, or unprivileged user namespaces)" >&2
-  exit 77
+  skip
 fi
 if grep -q "^shadowlab-grade: compiler: NOT fenced" "$out"; then
   echo "attack $name ($mode): this machine gives the compiler no fence: the attack's lab code was built where it could" >&2
   echo "read the answers (the build said why when it was configured)" >&2
-  exit 77
+  skip
 fi
 [ "$status" = 1 ] || problem "exit status $status, expected 1 (checks failed)"
 [ "$(grep -c '^Score:' "$out")" = 1 ] || problem "more than one line starts with 'Score:' (forged output reached the report)"
