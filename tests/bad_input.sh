@@ -22,7 +22,9 @@ cp "$src/references/lab3_contact/visibility.exr" "$work/references/lab3_front_cu
 # misfitting: the case renders 256x256 (it now asks for 128x128)
 sed 's/"lab": 2,/"lab": 2, "width": 128, "height": 128,/' "$src/cases/lab2_directional_hardware.json" \
   >"$work/cases/lab2_directional_hardware.json"
-out=$("$grader" --cases "$work/cases" --references "$work/references" "$@" 2>&1)
+# labs 1-3 hold every planted fault (the case files of lab 1 and the references of labs 1-3):
+# grading the other labs too would only repeat their clean cases
+out=$("$grader" --cases "$work/cases" --references "$work/references" "$@" --lab 1-3 2>&1)
 status=$?
 echo "$out"
 fail=0
