@@ -1,6 +1,6 @@
 /* sl_reference_cache: decoded reference images in a folder of the build
  * (sl_reference_cache.h says what is trusted and why). */
-#define _GNU_SOURCE /* mkostemps */
+#define _POSIX_C_SOURCE 200809L
 #include "sl_reference_cache.h"
 
 #include <errno.h>
@@ -207,6 +207,19 @@ static bool _sl_write_all(int fd, const void *data, size_t n) {
     return true;
 }
 
+/* A new file of the cache folder (mode 0600), made through the folder's
+ * descriptor: if the folder's path were swapped after it was checked, no
+ * file would go elsewhere. Its name is `prefix`, a number, `suffix`. */
+static int _sl_new_file(sl_reference_cache *cache, const char *prefix, const char *suffix, char *name, size_t n) {
+    static unsigned counter;
+    for (int attempt = 0; attempt < 100; attempt++) {
+        snprintf(name, n, "%s%ld-%u%s", prefix, (long)getpid(), counter++, suffix);
+        int fd = openat(cache->dir_fd, name, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+        if (fd >= 0 || errno != EEXIST) return fd;
+    }
+    return -1;
+}
+
 /* Writes the entry whole under a temporary name, then renames it into place
  * (over an ignored one too). Failing is no matter: the next grade decodes again. */
 static bool _sl_entry_write(sl_reference_cache *cache, const char *sha256, const sl_image *image) {
@@ -219,16 +232,14 @@ static bool _sl_entry_write(sl_reference_cache *cache, const char *sha256, const
     char pixels_hash[65];
     _sl_sha256_of(image->data, count * sizeof(float), pixels_hash);
     memcpy(header + 24 + 64, pixels_hash, 64);
-    char temporary[1200], name[80];
-    snprintf(temporary, sizeof temporary, "%s/.entry-XXXXXX", cache->dir);
+    char temporary[80], name[80];
     snprintf(name, sizeof name, "%s.slref", sha256);
-    int fd = mkostemp(temporary, O_CLOEXEC); /* mode 0600 */
+    int fd = _sl_new_file(cache, ".entry-", "", temporary, sizeof temporary);
     if (fd < 0) return false;
     bool ok = _sl_write_all(fd, header, sizeof header) && _sl_write_all(fd, image->data, count * sizeof(float));
     ok = close(fd) == 0 && ok;
-    const char *temporary_name = strrchr(temporary, '/') + 1;
-    ok = ok && renameat(cache->dir_fd, temporary_name, cache->dir_fd, name) == 0;
-    if (!ok) unlinkat(cache->dir_fd, temporary_name, 0);
+    ok = ok && renameat(cache->dir_fd, temporary, cache->dir_fd, name) == 0;
+    if (!ok) unlinkat(cache->dir_fd, temporary, 0);
     return ok;
 }
 
@@ -236,16 +247,17 @@ static bool _sl_entry_write(sl_reference_cache *cache, const char *sha256, const
  * copy in the cache folder: what is decoded is what was hashed. */
 static bool _sl_decode_bytes(sl_reference_cache *cache, const unsigned char *bytes, size_t size, const char *extension,
                              sl_image *out) {
-    char temporary[1200];
-    int written = snprintf(temporary, sizeof temporary, "%s/.decode-XXXXXX%s", cache->dir, extension);
-    if (written <= 0 || (size_t)written >= sizeof temporary) return false;
-    int fd = mkostemps(temporary, (int)strlen(extension), O_CLOEXEC);
+    char temporary[80], path[1300];
+    int fd = _sl_new_file(cache, ".decode-", extension, temporary, sizeof temporary);
     if (fd < 0) return false;
     bool ok = _sl_write_all(fd, bytes, size);
     ok = close(fd) == 0 && ok;
+    /* the image module takes a path: through the folder's descriptor where the system shows one */
+    snprintf(path, sizeof path, "/proc/self/fd/%d/%s", cache->dir_fd, temporary);
+    if (access(path, R_OK) != 0) snprintf(path, sizeof path, "%s/%s", cache->dir, temporary);
     char err[512];
-    ok = ok && sl_image_read(temporary, out, err, sizeof err);
-    unlink(temporary);
+    ok = ok && sl_image_read(path, out, err, sizeof err);
+    unlinkat(cache->dir_fd, temporary, 0);
     if (!ok) sl_image_free(out);
     return ok;
 }
