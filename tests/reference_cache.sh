@@ -45,5 +45,8 @@ for run in first second; do
   diff -u "$tmp/plain.text" "$tmp/$run.text" >&2 || problem "the $run grade's report differs from one without the cache"
 done
 grep -q '^Score: ' "$tmp/second.out" || problem "no score in the report"
-[ $fail = 0 ] && echo "reference_cache: the second grade kept the image module out, and said the same"
+# at the basic level runners run as the grader's user, who owns the cache: it is not used
+grade basic "$@" --sandbox basic --case lab1_depth_boxes
+grep -q 'reference cache off (the basic sandbox' "$tmp/basic.debug" || problem "at the basic level the cache was used: $(cat "$tmp/basic.debug")"
+[ $fail = 0 ] && echo "reference_cache: a grade with the cache filled kept the image module out and said the same; basic used no cache"
 exit $fail
