@@ -2,7 +2,8 @@
 # A grade of lab 1 reads its references from the build's reference cache:
 # a grade with the cache filled maps no image module into the grader's process
 # (SHADOWLAB_GRADE_DEBUG's line, from /proc/self/maps), reads every image
-# reference from the cache, and says what a grade without the cache says.
+# reference from the cache, and says what a grade without the cache says; a
+# grade at the basic sandbox level does not use the cache.
 #   reference_cache.sh GRADER GRADER-ARGS...
 # Exit 77 (skipped) where the cache is off: the basic sandbox, a build folder
 # that is not the grader's.
