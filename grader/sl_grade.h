@@ -11,6 +11,7 @@
 #include "sl_image.h"
 #include "sl_manifest.h"
 #include "sl_probe.h"
+#include "sl_reference_cache.h"
 #include "sl_run.h"
 
 /* The types a check's diagnosis reads and writes (sl_reference, sl_check_result,
@@ -49,6 +50,11 @@ typedef struct sl_grade_context {
  * the file: a problem for the staff, not the student. */
 void sl_reference_load(sl_reference *ref, const char *references_dir, const sl_manifest *manifest,
                        const char *manifest_error, const sl_case *c, const sl_check *k);
+/* The same, with image references read through `cache` where it has them
+ * (NULL: none; sl_reference_cache.h): the same reference, error or message. */
+void sl_reference_load_cached(sl_reference *ref, const char *references_dir, const sl_manifest *manifest,
+                              const char *manifest_error, sl_reference_cache *cache, const sl_case *c,
+                              const sl_check *k);
 void sl_reference_free(sl_reference *ref);
 /* Writes the capture a check needs as its reference (from the solutions'
  * runner) and records it in the manifest. */

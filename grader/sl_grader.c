@@ -97,6 +97,8 @@ static void _sl_usage(FILE *f) {
             "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
             "                       and the class report: DIR/class-report.html and .csv\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
+            "  --no-reference-cache decode every reference image from its file: no use of the build's\n"
+            "                       cache of decoded references (cache/references beside bin/)\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
             "(a staff-side problem: missing or changed references, bad case files, unwritable reports),\n"
             "3 graded, but the --submission-summary says the submission held no lab file.\n");
@@ -336,7 +338,7 @@ typedef struct _sl_options {
     int pattern_count, exclude_count;
     const char *report_dir, *gradescope, *prairielearn, *junit;
     uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
-    bool update, list, isolate, strict, hidden, progress;
+    bool update, list, isolate, strict, hidden, progress, no_reference_cache;
     const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
@@ -444,6 +446,7 @@ static int _sl_parse(int argc, char **argv, _sl_options *o) {
         } else if (strcmp(a, "--strict") == 0) o->strict = true;
         else if (strcmp(a, "--progress") == 0) o->progress = true;
         else if (strcmp(a, "--update-references") == 0) o->update = true;
+        else if (strcmp(a, "--no-reference-cache") == 0) o->no_reference_cache = true;
         else if (strcmp(a, "--isolate") == 0) o->isolate = true;
         else if (strcmp(a, "--hidden") == 0) o->hidden = true;
         else if (strcmp(a, "--seed") == 0) o->seed = v;
@@ -670,6 +673,40 @@ static int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int c
     bool reports_ok = _sl_write_reports(o, rep);
     sl_report_print(rep, stdout, isatty(1));
     return reports_ok && !rep->problem_count ? (rep->no_lab_file ? SL_EXIT_NO_LAB_FILE : SL_EXIT_FAILED) : SL_EXIT_ERROR;
+}
+
+/* The build's cache of decoded references (sl_reference_cache.h), where no
+ * runner can have written it: at the uid level runners are other uids, at
+ * namespaces they see no build. At basic and in the fallback module they run
+ * as this user, who owns the cache: it is neither read nor written then. NULL
+ * (and why, in `state`) where it is not used; never an error. */
+static sl_reference_cache *_sl_reference_cache_open(const _sl_options *o, const sl_sandbox *sandbox, char *state,
+                                                    size_t n) {
+    char dir[1100];
+    if (o->no_reference_cache) snprintf(state, n, "off (--no-reference-cache)");
+    else if (o->hidden) snprintf(state, n, "off (--hidden: this run's own references)");
+    else if (sandbox->self_check || sandbox->level < SL_SANDBOX_UID)
+        snprintf(state, n, "off (the %s sandbox: runners run as this user)", sl_sandbox_level_name(sandbox->level));
+    else if (!sl_reference_cache_default_dir(dir, sizeof dir)) snprintf(state, n, "off (no folder of the program)");
+    else {
+        char why[1300];
+        sl_reference_cache *cache = sl_reference_cache_open(dir, why, sizeof why);
+        if (!cache) snprintf(state, n, "off (%s)", why);
+        return cache;
+    }
+    return NULL;
+}
+
+/* Whether the image module (OpenImageIO) is in this process, as the system
+ * maps it: what SHADOWLAB_GRADE_DEBUG reports, for the tests of the cache. */
+static const char *_sl_image_module_mapped(void) {
+    FILE *f = fopen("/proc/self/maps", "r");
+    if (!f) return "unknown";
+    char line[1400];
+    bool mapped = false;
+    while (!mapped && fgets(line, sizeof line, f)) mapped = strstr(line, "OpenImageIO") || strstr(line, "shadowlab_image");
+    fclose(f);
+    return mapped ? "yes" : "no";
 }
 
 static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_root[64], sl_hidden *hidden) {
@@ -923,18 +960,27 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     /* Every reference is read and verified in this process, which runs no lab code. */
     static sl_reference refs[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
     sl_manifest *manifest = NULL;
+    sl_reference_cache *reference_cache = NULL;
+    char reference_cache_state[1400] = "not used";
     char reference_renderer[160] = "";
     if (!o.update) {
         char manifest_error[1500] = "";
         manifest = sl_manifest_load(o.refs_dir, false, manifest_error, sizeof manifest_error);
+        reference_cache = _sl_reference_cache_open(&o, sandbox, reference_cache_state, sizeof reference_cache_state);
         for (int i = 0; i < count; i++) {
             if (manifest) cases[i].reference_render_seconds = sl_manifest_render_seconds(manifest, cases[i].name);
             if (manifest) snprintf(reference_renderer, sizeof reference_renderer, "%s", sl_manifest_renderer(manifest));
             for (int k = 0; k < cases[i].check_count; k++)
-                sl_reference_load(&refs[i * SL_CASE_MAX_CHECKS + k], o.refs_dir, manifest, manifest_error, &cases[i],
-                                  &cases[i].checks[k]);
+                sl_reference_load_cached(&refs[i * SL_CASE_MAX_CHECKS + k], o.refs_dir, manifest, manifest_error,
+                                         reference_cache, &cases[i], &cases[i].checks[k]);
         }
         sl_manifest_free(manifest);
+        if (reference_cache) {
+            sl_reference_cache_counts counts = sl_reference_cache_counts_of(reference_cache);
+            snprintf(reference_cache_state, sizeof reference_cache_state, "%s: %d read, %d stored, %d ignored",
+                     sl_reference_cache_dir(reference_cache), counts.hits, counts.stored, counts.ignored);
+        }
+        sl_reference_cache_close(reference_cache);
     }
 
     _sl_progress progress = {.lines = o.progress, .terminal = !o.progress && isatty(2)};
@@ -1081,6 +1127,10 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         sl_case_result_free(&results[i]);
         for (int k = 0; k < SL_CASE_MAX_CHECKS; k++) sl_reference_free(&refs[i * SL_CASE_MAX_CHECKS + k]);
     }
+    const char *debug = getenv("SHADOWLAB_GRADE_DEBUG");
+    if (debug && debug[0] && strcmp(debug, "0") != 0 && !o.update)
+        fprintf(stderr, "shadowlab-grade: debug: reference cache %s; image module loaded: %s\n", reference_cache_state,
+                _sl_image_module_mapped());
     return status;
 }
 

@@ -53,10 +53,14 @@ static cJSON *_sl_case_entry(const sl_manifest *m, const char *case_name) {
     return cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(m->root, "cases"), case_name);
 }
 
+const char *sl_manifest_hash(const sl_manifest *m, const char *case_name, const char *file) {
+    return cJSON_GetStringValue(
+        cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(_sl_case_entry(m, case_name), "files"), file));
+}
+
 bool sl_manifest_verify(const sl_manifest *m, const char *case_name, const char *file, const char *path, char *why,
                         size_t n) {
-    const char *recorded =
-        cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(_sl_case_entry(m, case_name), "files"), file));
+    const char *recorded = sl_manifest_hash(m, case_name, file);
     if (!recorded) {
         snprintf(why, n, "reference not in the manifest: %s (%s lists no %s/%s; staff: --update-references)", path,
                  m->path, case_name, file);

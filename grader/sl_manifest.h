@@ -21,6 +21,8 @@ void sl_manifest_free(sl_manifest *m);
  * it; otherwise false with the reason. */
 bool sl_manifest_verify(const sl_manifest *m, const char *case_name, const char *file, const char *path, char *why,
                         size_t why_size);
+/* The SHA-256 recorded for a case's reference `file` (64 hex digits), NULL if none. */
+const char *sl_manifest_hash(const sl_manifest *m, const char *case_name, const char *file);
 /* The CPU seconds one of the solutions' frames took for the case, 0 when not recorded. */
 double sl_manifest_render_seconds(const sl_manifest *m, const char *case_name);
 /* Forgets what a case had: its references are about to be written anew. */

@@ -19,6 +19,7 @@
 #include "sl_mesh.h"
 #include "sl_scene.h"
 #include "sl_protocol.h"
+#include "sl_reference_cache.h"
 #include "sl_run.h"
 #include "sl_sha256.h"
 #include "sl_shader.h"
@@ -977,6 +978,100 @@ static void test_text_normalise_and_check(void) {
     CHECK(strstr(said, "pcf.glsl: invalid UTF-8 at byte offset 3 (line 2)") != NULL);
 }
 
+/* The reference cache: a hit gives the decoded pixels; an entry that does
+ * not parse, is cut short, damaged, group-writable or another uid's is
+ * ignored and written anew; a folder others may use is no cache. */
+static bool same_pixels(const sl_image *a, const sl_image *b) {
+    return a->data && b->data && a->width == b->width && a->height == b->height && a->channels == b->channels &&
+           memcmp(a->data, b->data, (size_t)a->width * a->height * a->channels * sizeof(float)) == 0;
+}
+
+static void test_reference_cache_trust(void) {
+    char exr[512], dir[512], entry[700], why[1400];
+    snprintf(exr, sizeof exr, "%s/reference.exr", tmp_dir);
+    snprintf(dir, sizeof dir, "%s/cache/references", tmp_dir);
+    sl_image source = sl_image_alloc(37, 23, 2);
+    for (int i = 0; i < 37 * 23 * 2; i++) source.data[i] = (float)i / 97.0f + 0.125f;
+    char err[512] = "";
+    CHECK(sl_image_write(exr, &source, err, sizeof err));
+    sl_image_free(&source);
+    sl_image decoded;
+    CHECK(sl_image_read(exr, &decoded, err, sizeof err));
+    char hash[65];
+    CHECK(sl_sha256_file(exr, hash));
+    snprintf(entry, sizeof entry, "%s/%s.slref", dir, hash);
+
+    sl_reference_cache *cache = sl_reference_cache_open(dir, why, sizeof why);
+    CHECK(cache != NULL);
+    if (!cache) return;
+    struct stat st;
+    CHECK(stat(dir, &st) == 0 && (st.st_mode & 0777) == 0700);
+    sl_image got;
+    /* a miss decodes and stores, a hit reads the entry: the decode's pixels both times */
+    CHECK(sl_reference_cache_read(cache, exr, hash, &got) && same_pixels(&got, &decoded));
+    sl_image_free(&got);
+    CHECK(stat(entry, &st) == 0 && st.st_uid == geteuid() && (st.st_mode & 0777) == 0600);
+    off_t entry_size = st.st_size;
+    CHECK(sl_reference_cache_read(cache, exr, hash, &got) && same_pixels(&got, &decoded));
+    sl_image_free(&got);
+    sl_reference_cache_counts counts = sl_reference_cache_counts_of(cache);
+    CHECK(counts.hits == 1 && counts.stored == 1 && counts.ignored == 0);
+    /* bytes that are not the manifest's: not from the cache */
+    char other[65];
+    memset(other, 'a', 64);
+    other[64] = '\0';
+    CHECK(!sl_reference_cache_read(cache, exr, other, &got) && got.data == NULL);
+    CHECK(!sl_reference_cache_read(cache, exr, "not a hash", &got) && got.data == NULL);
+
+    /* each bad entry is ignored (counted), decoded again and rewritten whole */
+    int ignored = 0;
+    for (int bad = 0; bad < 5; bad++) {
+        if (bad == 0) CHECK(truncate(entry, entry_size / 2) == 0); /* cut short */
+        if (bad == 1) CHECK(truncate(entry, 0) == 0);
+        if (bad == 2) { /* one pixel changed: the pixels' hash does not fit */
+            FILE *f = fopen(entry, "r+b");
+            CHECK(f && fseek(f, -4, SEEK_END) == 0 && fwrite("\x00\x00\x80\x7f", 1, 4, f) == 4);
+            if (f) fclose(f);
+        }
+        if (bad == 3) CHECK(chmod(entry, 0620) == 0); /* group-writable */
+        if (bad == 4) { /* another uid's: only root can make one */
+            if (geteuid() != 0 || chown(entry, 65534, 65534) != 0) {
+                printf("note: reference_cache_trust: not root, a foreign-owned entry not tried\n");
+                continue;
+            }
+        }
+        ignored++;
+        CHECK(sl_reference_cache_read(cache, exr, hash, &got) && same_pixels(&got, &decoded));
+        sl_image_free(&got);
+        counts = sl_reference_cache_counts_of(cache);
+        CHECK(counts.ignored == ignored && counts.stored == 1 + ignored);
+        CHECK(stat(entry, &st) == 0 && st.st_size == entry_size && st.st_uid == geteuid() &&
+              (st.st_mode & 0777) == 0600);
+    }
+    /* a hit after all that */
+    CHECK(sl_reference_cache_read(cache, exr, hash, &got) && same_pixels(&got, &decoded));
+    sl_image_free(&got);
+    CHECK(sl_reference_cache_counts_of(cache).hits == 2);
+    sl_reference_cache_close(cache);
+
+    /* the folders: others may not write the parent, nor use the cache folder; no link */
+    CHECK(chmod(dir, 0750) == 0);
+    CHECK(sl_reference_cache_open(dir, why, sizeof why) == NULL && strstr(why, "mode 0750"));
+    CHECK(chmod(dir, 0700) == 0);
+    char parent[512], link_dir[512];
+    snprintf(parent, sizeof parent, "%s/cache", tmp_dir);
+    CHECK(chmod(parent, 0777) == 0);
+    CHECK(sl_reference_cache_open(dir, why, sizeof why) == NULL && strstr(why, "write"));
+    CHECK(chmod(parent, 0700) == 0);
+    snprintf(link_dir, sizeof link_dir, "%s/cache/linked", tmp_dir);
+    CHECK(symlink("references", link_dir) == 0);
+    CHECK(sl_reference_cache_open(link_dir, why, sizeof why) == NULL);
+    cache = sl_reference_cache_open(dir, why, sizeof why);
+    CHECK(cache != NULL);
+    sl_reference_cache_close(cache);
+    sl_image_free(&decoded);
+}
+
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
@@ -1002,6 +1097,7 @@ int main(int argc, char **argv) {
         {"channel_rejects_lies", test_channel_rejects_lies},
         {"sha256_known_answers", test_sha256_known_answers},
         {"text_normalise_and_check", test_text_normalise_and_check},
+        {"reference_cache_trust", test_reference_cache_trust},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
