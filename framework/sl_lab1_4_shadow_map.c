@@ -228,8 +228,14 @@ static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_r
             return;
         }
     }
-    /* Lab 1 alone (or lab 2 not done yet): a loose light camera so the depth map can be seen. */
-    sl_light_default_matrices(&light, &bounds, info->light_view, info->light_projection);
+    /* Lab 1 alone (or lab 2 not done yet): a loose light camera so the depth map can be seen; the one the
+     * grader gave in a lab 1 case's job. */
+    if (r->light_camera_given) {
+        glm_mat4_copy(r->light_camera_view, info->light_view);
+        glm_mat4_copy(r->light_camera_projection, info->light_projection);
+    } else {
+        sl_light_default_matrices(&light, &bounds, info->light_view, info->light_projection);
+    }
     glm_mat4_identity(info->shadow_matrix);
 }
 

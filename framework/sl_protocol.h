@@ -11,7 +11,8 @@
  * the runner's process and can write anything to fd 3. So every length is
  * bounded, every capture must be one the job asked for and come once, and
  * nothing after DONE is allowed (grader/sl_run.c enforces it). The job holds
- * only what the runner needs to render: never a reference. */
+ * only what the runner needs to render: never a reference, and of lab
+ * code's answers only lab 1's light camera, in lab 1's cases (below). */
 #ifndef SL_PROTOCOL_H
 #define SL_PROTOCOL_H
 
@@ -24,7 +25,7 @@
 #include "sl_scene.h"
 
 #define SL_JOB_MAGIC 0x424a4c53u /* "SLJB" */
-#define SL_PROTOCOL_VERSION 1
+#define SL_PROTOCOL_VERSION 2
 #define SL_JOB_MAX_FRAMES 16
 #define SL_JOB_MAX_PROBES 8   /* a case's checks: each may be a probe */
 #define SL_CHANNEL_FD 3
@@ -71,6 +72,12 @@ typedef struct sl_job {
     int backend;                   /* sl_backend: the headless GL to render with */
     sl_scene scene;
     sl_light frame_lights[SL_JOB_MAX_FRAMES]; /* the light of each frame; the last frame is captured */
+    /* A lab 1 case's: lab 1's light camera for each frame's light (view, projection), the one its depth
+     * map is drawn with. It is lab 2's answer for that light, so the grader computes it, no runner can
+     * (framework/sl_scene.h), and only lab 1's cases get it: lab 2's code, run in a later lab's case,
+     * must not find its own answer in the job. Without it a frame takes sl_light_default_matrices. */
+    bool light_cameras_given;
+    float frame_light_cameras[SL_JOB_MAX_FRAMES][2][16];
     int frame_count;
     /* lab 6: the camera the cascades are fitted to in each frame (the picture keeps the scene's camera) */
     bool camera_path;

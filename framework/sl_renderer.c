@@ -153,6 +153,13 @@ bool sl_renderer_set_scene(sl_renderer *r, const sl_scene *scene, char *err, siz
 
 const sl_frame_info *sl_renderer_info(const sl_renderer *r) { return &r->info; }
 
+void sl_renderer_set_light_camera(sl_renderer *r, const float *view, const float *projection) {
+    r->light_camera_given = view && projection;
+    if (!r->light_camera_given) return;
+    memcpy(r->light_camera_view, view, sizeof r->light_camera_view);
+    memcpy(r->light_camera_projection, projection, sizeof r->light_camera_projection);
+}
+
 void sl_renderer_set_timing(sl_renderer *r, bool enabled) {
     if (enabled && !r->timer_queries[0]) glGenQueries(SL_MAX_PASSES + 1, r->timer_queries);
     r->timing = enabled;

@@ -6,7 +6,7 @@
  * lab 1's shadow-map frame (sl_lab1_4_shadow_map.c), which labs 2-5 add to:
  *
  *   1. lab 2 builds the light's view, projection and shadow matrix
- *      (lab 1 alone uses sl_light_default_matrices)
+ *      (lab 1 alone uses the light camera its job gives, else sl_light_default_matrices)
  *   2. lab 1 creates the shadow map (once per size) and begins the depth pass,
  *      lab 3 adds its depth-pass state (polygon offset, culling); the
  *      framework draws every object with lab 1's depth shaders
@@ -144,6 +144,9 @@ typedef struct sl_renderer {
     /* Per lab, what its technique's module keeps between frames (its targets and programs), made by
      * its first frame and freed by its destroy hook (sl_technique.h). */
     void *technique_state[SL_LAB_COUNT + 1];
+    /* lab 1's light camera, where the grader gave it (sl_renderer_set_light_camera) */
+    bool light_camera_given;
+    mat4 light_camera_view, light_camera_projection;
 } sl_renderer;
 
 /* Called before each call into lab code with the function's name, so a crash
@@ -169,6 +172,11 @@ bool sl_renderer_set_scene(sl_renderer *r, const sl_scene *scene, char *err, siz
  * err set if one failed (a program that compiled before stays in use). Other
  * programs whose files changed are rebuilt when a frame next uses them. */
 bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size);
+
+/* The light camera the next frames draw lab 1's depth map with when lab 2's
+ * matrices are not in use (the runner: the one its job gives), instead of
+ * sl_light_default_matrices; NULL, NULL: back to that. */
+void sl_renderer_set_light_camera(sl_renderer *r, const float *view, const float *projection);
 
 /* Draws one frame into framebuffer `target` (0 = the window or OSMesa buffer). */
 void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,

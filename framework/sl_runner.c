@@ -228,6 +228,8 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     if (want_flicker) flicker = sl_image_alloc(job->width, job->height * job->frame_count, 1);
     for (int f = 0; f < job->frame_count; f++) {
         scene.light = job->frame_lights[f];
+        if (job->light_cameras_given)
+            sl_renderer_set_light_camera(&r, &job->frame_light_cameras[f][0][0], &job->frame_light_cameras[f][1][0]);
         if (job->camera_path) { /* lab 6: the cascades follow the path; the picture's camera stays */
             p.cascades.use_camera = true;
             p.cascades.camera = job->frame_cameras[f];

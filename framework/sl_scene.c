@@ -304,9 +304,11 @@ void sl_camera_orbit(sl_camera *camera, float delta_yaw, float delta_pitch, floa
  * (and for a sun its view is), so the students' handout does not compute
  * it. Every build reads the matrices of the lights its scenes and lab 1's
  * cases use from a table (sl_light_cameras.inc, printed by the staff
- * build's shadowlab-light-table); a staff build computes any other light's
- * with solutions/framework/sl_light_camera.c (hidden variants, a light the
- * viewer moved), the handout draws those from straight above instead. */
+ * build's shadowlab-light-table). Staff programs compute any other light's
+ * with solutions/framework/sl_light_camera.c, given through
+ * sl_light_camera_compute_with (the grader, for hidden variants, and sends
+ * the matrices in the job; a staff viewer, for a light it moved); no runner
+ * links that code. Without it, another light is drawn from straight above. */
 typedef struct _sl_light_camera {
     sl_light_type type;
     float position[3], direction[3], spot_angle_deg, near, far; /* a sun: direction alone */
@@ -316,9 +318,9 @@ typedef struct _sl_light_camera {
 
 #include "sl_light_cameras.inc"
 
-#ifdef SL_STAFF_LIGHT_CAMERA
-#include "sl_light_camera.h"
-#endif
+static sl_light_camera_fn _sl_light_camera_computation;
+
+void sl_light_camera_compute_with(sl_light_camera_fn compute) { _sl_light_camera_computation = compute; }
 
 static bool _sl_same(const float *a, const float *b, size_t n) { return memcmp(a, b, n * sizeof(float)) == 0; }
 
@@ -351,9 +353,7 @@ bool sl_light_default_matrices(const sl_light *light, const sl_aabb *bounds, mat
         memcpy(projection, t->projection, sizeof t->projection);
         return true;
     }
-#ifdef SL_STAFF_LIGHT_CAMERA
-    if (sl_light_camera_compute(light, bounds, view, projection)) return true;
-#endif
+    if (_sl_light_camera_computation && _sl_light_camera_computation(light, bounds, view, projection)) return true;
     _sl_overview_matrices(bounds, view, projection);
     return false;
 }

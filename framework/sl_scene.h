@@ -57,11 +57,17 @@ void sl_camera_orbit(sl_camera *camera, float delta_yaw, float delta_pitch, floa
 
 /* The light camera used when lab 2's matrices are not in use (lab 1, and
  * before lab 2 is done): a loose box around the scene's bounding sphere for a
- * directional light, the cone for a spot light. A staff build computes it for
- * any light; the students' handout knows it for the lights of its scenes and
- * lab 1's cases, and for another light gives a camera straight above the
- * scene instead and returns false. */
+ * directional light, the cone for a spot light. It is lab 2's answer, so it is
+ * computed by staff programs only (the grader, which sends it to its runners
+ * in the job; a staff build's viewer): each gives its computation with
+ * sl_light_camera_compute_with. Everywhere else (the runners, the students'
+ * handout) it is known for the lights of the scenes and lab 1's cases (a
+ * table); for another light this gives a camera straight above the scene
+ * instead and returns false. */
 bool sl_light_default_matrices(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection);
+typedef bool (*sl_light_camera_fn)(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection);
+/* The computation sl_light_default_matrices uses for a light its table lacks (NULL: none, the default). */
+void sl_light_camera_compute_with(sl_light_camera_fn compute);
 /* One entry of that table (sl_light_cameras.inc): `light` and its camera, as C. */
 void sl_light_camera_table_entry(const sl_light *light, const sl_aabb *bounds, mat4 view, mat4 projection, FILE *out);
 

@@ -17,6 +17,9 @@
 
 #include "sl_backend.h"
 #include "sl_protocol.h"
+#ifdef SL_STAFF_LIGHT_CAMERA
+#include "sl_light_camera.h" /* staff builds: solutions/framework/ */
+#endif
 
 #define _SL_MAX_JOBS 64
 #define _SL_CASE_BYTES_MAX ((uint64_t)512 << 20) /* everything one case may send */
@@ -336,6 +339,19 @@ static void _sl_close(int *fd) {
     *fd = -1;
 }
 
+/* The light camera a lab 1 case's frame draws its depth map with: the table's (sl_scene.c), else, in a
+ * staff build, the staff computation (a hidden variant's light), else the overview the handout draws. */
+static void _sl_lab1_light_camera(const sl_light *light, const sl_aabb *bounds, float view[16], float projection[16]) {
+    mat4 v, p;
+    bool known = sl_light_default_matrices(light, bounds, v, p);
+#ifdef SL_STAFF_LIGHT_CAMERA
+    if (!known) sl_light_camera_compute(light, bounds, v, p);
+#endif
+    (void)known;
+    memcpy(view, v, sizeof v);
+    memcpy(projection, p, sizeof p);
+}
+
 static void _sl_build_job(sl_job *job, const sl_case *c, const sl_run_options *o, const sl_sandbox_process *p) {
     memset(job, 0, sizeof *job);
     job->magic = SL_JOB_MAGIC;
@@ -348,6 +364,10 @@ static void _sl_build_job(sl_job *job, const sl_case *c, const sl_run_options *o
     job->scene = c->scene;
     job->frame_count = c->frame_count;
     memcpy(job->frame_lights, c->frame_lights, sizeof c->frame_lights[0] * (size_t)c->frame_count);
+    job->light_cameras_given = c->lab < 2; /* only lab 1's frames draw with it (see sl_protocol.h) */
+    for (int f = 0; job->light_cameras_given && f < c->frame_count; f++)
+        _sl_lab1_light_camera(&c->frame_lights[f], &c->scene.bounds, job->frame_light_cameras[f][0],
+                              job->frame_light_cameras[f][1]);
     job->camera_path = c->camera_path;
     if (c->camera_path) memcpy(job->frame_cameras, c->frame_cameras, sizeof c->frame_cameras[0] * (size_t)c->frame_count);
     job->params = c->params;

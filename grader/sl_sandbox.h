@@ -70,6 +70,8 @@ typedef struct sl_sandbox {
     uid_t uid_count;         /* with own_uids: the pool's size */
     int process_limit;       /* threads (and processes) one runner may have at once */
     char pids_cgroup[256];   /* a pids cgroup folder each runner gets a child of, or "" */
+    bool pids_cgroup_v2;     /* that folder is cgroup v2's */
+    bool pids_cgroup_threaded; /* v2: each child is a threaded cgroup (the folder holds the grader) */
     char lock_dir[64];       /* with own_uids: the pool's lock files */
     char mount_point[64];    /* an empty folder the sandbox's root is mounted on */
     _sl_sandbox_runners *runners; /* the execute-only copies of the runners started so far */

@@ -1075,11 +1075,97 @@ static void _sl_pool_release(const sl_sandbox *sb, uid_t uid, int lock) {
 
 /* ---- a pids cgroup per runner, where the grader may make them ---- */
 
-/* cgroup v1's pids hierarchy: the folder of this process's own cgroup there,
- * when the grader may make children in it (as root, or where staff gave it
- * the folder). */
-static bool _sl_find_pids_cgroup(char *out, size_t n) {
-    char line[1200], own[1024] = "", mount_point[512] = "", mount_root[512] = "";
+/* Whether `file` (a cgroup's controllers list) names the pids controller. */
+static bool _sl_lists_pids(const char *file) {
+    char text[512] = "";
+    FILE *f = fopen(file, "re");
+    if (!f) return false;
+    bool read = fgets(text, sizeof text, f) != NULL;
+    fclose(f);
+    if (!read) return false;
+    for (char *c = strtok(text, " \n"); c; c = strtok(NULL, " \n"))
+        if (strcmp(c, "pids") == 0) return true;
+    return false;
+}
+
+/* The folder of cgroup `own` (a path of /proc/self/cgroup) where its hierarchy
+ * is mounted: cgroup v1's pids hierarchy (v2 false), or v2's unified one. */
+static bool _sl_cgroup_folder(const char *own, bool v2, char *out, size_t n) {
+    char line[1200], mount_point[512] = "", mount_root[512] = "";
+    FILE *f = fopen("/proc/self/mountinfo", "re");
+    if (!f) return false;
+    while (fgets(line, sizeof line, f)) {
+        /* id parent major:minor root mount-point options ... - type source super-options */
+        char root[512], point[512], type[64], super[512];
+        const char *dash = strstr(line, " - ");
+        if (!dash || sscanf(line, "%*s %*s %*s %511s %511s", root, point) != 2 ||
+            sscanf(dash + 3, "%63s %*s %511s", type, super) != 2 || strcmp(type, v2 ? "cgroup2" : "cgroup") != 0)
+            continue;
+        bool pids = v2;
+        for (char *c = strtok(super, ","); c && !pids; c = strtok(NULL, ",")) pids = strcmp(c, "pids") == 0;
+        if (!pids) continue;
+        snprintf(mount_point, sizeof mount_point, "%s", point);
+        snprintf(mount_root, sizeof mount_root, "%s", root);
+    }
+    fclose(f);
+    if (!mount_point[0]) return false;
+    size_t root_length = strcmp(mount_root, "/") == 0 ? 0 : strlen(mount_root);
+    if (root_length && strncmp(own, mount_root, root_length) != 0) return false;
+    const char *below = own + root_length;
+    return (size_t)snprintf(out, n, "%s%s", mount_point, strcmp(below, "/") == 0 ? "" : below) < n;
+}
+
+/* Whether a process can join cgroup folder `cgroup`: a child that joins it and leaves. */
+static bool _sl_cgroup_joinable(const char *cgroup) {
+    char procs[1100];
+    snprintf(procs, sizeof procs, "%s/cgroup.procs", cgroup);
+    pid_t pid = fork();
+    if (pid < 0) return false;
+    if (pid == 0) _exit(_sl_write_text(procs, "0") ? 0 : 1);
+    int status = 0;
+    pid_t waited;
+    while ((waited = waitpid(pid, &status, 0)) < 0 && errno == EINTR) {}
+    return waited == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/* Whether the grader may make children of cgroup folder `folder` that each get
+ * a pids.max and a runner can join; a probe child made, joined and removed.
+ * In v2 the pids controller must be given to the folder and enabled for its
+ * children, or enabled here: a cgroup that holds processes (the grader's own)
+ * may enable pids, a threaded controller, for its children, which are then
+ * threaded cgroups (*threaded). */
+static bool _sl_pids_children_allowed(const char *folder, bool v2, bool *threaded) {
+    char file[1100], probe[1100];
+    *threaded = false;
+    if (v2) {
+        snprintf(file, sizeof file, "%s/cgroup.controllers", folder);
+        if (!_sl_lists_pids(file)) return false;
+        snprintf(file, sizeof file, "%s/cgroup.subtree_control", folder);
+        if (!_sl_lists_pids(file) && !_sl_write_text(file, "+pids")) return false;
+    }
+    snprintf(probe, sizeof probe, "%s/shadowlab-probe-%d", folder, (int)getpid());
+    if (mkdir(probe, 0755) != 0) return false;
+    snprintf(file, sizeof file, "%s/pids.max", probe);
+    bool allowed = access(file, W_OK) == 0;
+    if (allowed && !_sl_cgroup_joinable(probe)) {
+        snprintf(file, sizeof file, "%s/cgroup.type", probe);
+        *threaded = v2 && _sl_write_text(file, "threaded");
+        allowed = *threaded && _sl_cgroup_joinable(probe);
+    }
+    /* the probe's process is gone; the kernel may take a moment to say the cgroup is empty */
+    for (int attempt = 0; attempt < 50 && rmdir(probe) != 0 && errno == EBUSY; attempt++) usleep(2000);
+    return allowed;
+}
+
+/* This process's own pids cgroup folder, when the grader may make children
+ * in it that each get a pids.max: in cgroup v1's pids hierarchy (as root, or
+ * where staff gave it the folder), else in cgroup v2's unified one (its own
+ * cgroup delegated to it: writable, with the pids controller). False: none,
+ * and a runner's thread limit is RLIMIT_NPROC alone. */
+static bool _sl_find_pids_cgroup(sl_sandbox *sb) {
+    char line[1200], own_v1[1024] = "", own_v2[1024] = "";
+    char *out = sb->pids_cgroup;
+    size_t n = sizeof sb->pids_cgroup;
     FILE *f = fopen("/proc/self/cgroup", "re");
     if (!f) return false;
     while (fgets(line, sizeof line, f)) {
@@ -1087,34 +1173,21 @@ static bool _sl_find_pids_cgroup(char *out, size_t n) {
         if (!path) continue;
         *path++ = '\0';
         path[strcspn(path, "\n")] = '\0';
+        if (strcmp(line, "0") == 0 && controllers[1] == '\0') snprintf(own_v2, sizeof own_v2, "%s", path);
         for (char *c = strtok(controllers + 1, ","); c; c = strtok(NULL, ","))
-            if (strcmp(c, "pids") == 0) snprintf(own, sizeof own, "%s", path);
+            if (strcmp(c, "pids") == 0) snprintf(own_v1, sizeof own_v1, "%s", path);
     }
     fclose(f);
-    if (!own[0] || !(f = fopen("/proc/self/mountinfo", "re"))) return false;
-    while (fgets(line, sizeof line, f)) {
-        /* id parent major:minor root mount-point options ... - type source super-options */
-        char root[512], point[512], type[64], super[512];
-        const char *dash = strstr(line, " - ");
-        if (!dash || sscanf(line, "%*s %*s %*s %511s %511s", root, point) != 2 ||
-            sscanf(dash + 3, "%63s %*s %511s", type, super) != 2 || strcmp(type, "cgroup") != 0)
-            continue;
-        for (char *c = strtok(super, ","); c; c = strtok(NULL, ","))
-            if (strcmp(c, "pids") == 0) {
-                snprintf(mount_point, sizeof mount_point, "%s", point);
-                snprintf(mount_root, sizeof mount_root, "%s", root);
-            }
+    bool threaded = false;
+    if (own_v1[0] && _sl_cgroup_folder(own_v1, false, out, n) && _sl_pids_children_allowed(out, false, &threaded))
+        return true;
+    if (own_v2[0] && _sl_cgroup_folder(own_v2, true, out, n) && _sl_pids_children_allowed(out, true, &threaded)) {
+        sb->pids_cgroup_v2 = true;
+        sb->pids_cgroup_threaded = threaded;
+        return true;
     }
-    fclose(f);
-    if (!mount_point[0]) return false;
-    size_t root_length = strcmp(mount_root, "/") == 0 ? 0 : strlen(mount_root);
-    if (root_length && strncmp(own, mount_root, root_length) != 0) return false;
-    if ((size_t)snprintf(out, n, "%s%s", mount_point, own + root_length) >= n) return false;
-    char probe[1100];
-    snprintf(probe, sizeof probe, "%s/shadowlab-probe-%d", out, (int)getpid());
-    if (mkdir(probe, 0755) != 0) return false;
-    rmdir(probe);
-    return true;
+    out[0] = '\0';
+    return false;
 }
 
 static bool _sl_cgroup_make(const sl_sandbox *sb, char *cgroup, size_t n, int limit, char *err, size_t err_size) {
@@ -1123,7 +1196,11 @@ static bool _sl_cgroup_make(const sl_sandbox *sb, char *cgroup, size_t n, int li
     snprintf(cgroup, n, "%s/shadowlab-runner-%d-%u", sb->pids_cgroup, (int)getpid(), sequence++);
     snprintf(file, sizeof file, "%s/pids.max", cgroup);
     snprintf(value, sizeof value, "%d", limit);
-    if (mkdir(cgroup, 0755) == 0 && _sl_write_text(file, value)) return true;
+    char type[400];
+    snprintf(type, sizeof type, "%s/cgroup.type", cgroup);
+    if (mkdir(cgroup, 0755) == 0 && (!sb->pids_cgroup_threaded || _sl_write_text(type, "threaded")) &&
+        _sl_write_text(file, value))
+        return true;
     snprintf(err, err_size, "cannot make the runner's pids cgroup %s: %s", cgroup, strerror(errno));
     rmdir(cgroup);
     cgroup[0] = '\0';
@@ -1131,14 +1208,18 @@ static bool _sl_cgroup_make(const sl_sandbox *sb, char *cgroup, size_t n, int li
 }
 
 static void _sl_cgroup_remove(const char *cgroup) {
-    char procs[400];
-    snprintf(procs, sizeof procs, "%s/cgroup.procs", cgroup);
+    /* its processes, or in a threaded cgroup (v2), which lists none, its threads (killing one kills its process) */
+    static const char *const lists[] = {"cgroup.procs", "cgroup.threads"};
     for (int attempt = 0; attempt < 50; attempt++) {
         if (rmdir(cgroup) == 0 || errno == ENOENT) return;
-        FILE *f = fopen(procs, "re");
-        int pid;
-        while (f && fscanf(f, "%d", &pid) == 1) kill(pid, SIGKILL);
-        if (f) fclose(f);
+        for (int l = 0; l < 2; l++) {
+            char file[400];
+            snprintf(file, sizeof file, "%s/%s", cgroup, lists[l]);
+            FILE *f = fopen(file, "re");
+            int pid;
+            while (f && fscanf(f, "%d", &pid) == 1) kill(pid, SIGKILL);
+            if (f) fclose(f);
+        }
         usleep(2000);
     }
 }
@@ -1226,7 +1307,7 @@ bool sl_sandbox_open(sl_sandbox *sb, sl_sandbox_level at_most, const char *runne
 #endif
     sb->process_limit = _sl_default_process_limit();
     sb->landlock = _sl_landlock_abi();
-    if (!_sl_find_pids_cgroup(sb->pids_cgroup, sizeof sb->pids_cgroup)) sb->pids_cgroup[0] = '\0';
+    if (!_sl_find_pids_cgroup(sb)) sb->pids_cgroup[0] = '\0';
     _sl_runners_open(sb);
     /* As root, each runner gets a uid of its own: the pool must be usable. */
     if (root && at_most >= SL_SANDBOX_UID) {
@@ -1292,7 +1373,7 @@ void sl_sandbox_describe(const sl_sandbox *sb, char *out, size_t n) {
     snprintf(extra, sizeof extra, "%s%s, at most %d threads %s%s%s", sb->seccomp ? ", seccomp" : "",
              sb->landlock ? ", Landlock" : "", sb->process_limit,
              per_runner ? "each" : "each beyond the user's others (shared with them)",
-             sb->pids_cgroup[0] ? " (pids cgroup)" : "",
+             sb->pids_cgroup[0] ? (sb->pids_cgroup_v2 ? " (pids cgroup, v2)" : " (pids cgroup)") : "",
              sb->runners ? "" : ", dumpable (no folder to run execute-only copies from)");
     switch (sb->level) {
     case SL_SANDBOX_NAMESPACES:

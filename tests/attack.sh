@@ -6,6 +6,7 @@
 # the project, the build or the reports changed after the grader finished, no
 # process the attack started is alive, and no marker file it tried to leave exists.
 #   MODE plain, isolate   in the namespaces sandbox (skipped where there is none), plainly or with --isolate
+#   MODE hidden           plainly, on the hidden cases of seed 1 (--hidden --seed 1)
 #   MODE beside-LEVEL     with --sandbox LEVEL (namespaces, uid or basic), and, while the attack's runners
 #                         run, a grade of an honest submission (the arguments after --beside) at the same
 #                         level beside it, as grade-batch or a server grading two submissions at once: the
@@ -24,6 +25,7 @@ level=namespaces
 case "$mode" in
   plain) ;;
   isolate) args+=(--isolate) ;;
+  hidden) args+=(--hidden --seed 1) ;;
   beside-namespaces | beside-uid | beside-basic)
     level=${mode#beside-}
     args+=(--sandbox "$level")

@@ -19,7 +19,8 @@ root=$(find "$work" -maxdepth 1 -type d -name 'shadowlab-*' | head -n 1)
   problem "the benchmark's plain-GL program (an answer to labs 1-4) is in the handout"
 # No implementation of a lab step: each lab's key calls, as patterns that match
 # the solutions, match nothing in the handout's code (a stub's comment may say
-# what to call). Lab 1's light camera is a table there (framework/sl_light_cameras.inc),
+# what to call). Lab 1's light camera is a table there (framework/sl_light_cameras.inc; the
+# grader sends a lab 1 case's in its job),
 # and the grader reads lab 6's splits and lab 7's faces from the solutions' probe outputs.
 answers=$(bash "$src/tests/handout_answers.sh" "$src/solutions" "$root")
 case $? in

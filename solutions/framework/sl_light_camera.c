@@ -1,11 +1,12 @@
 /* The light camera the framework draws lab 1's depth map with before lab 2's
- * matrices are in use: staff code, linked into the framework of a build that
- * has solutions/ (framework/CMakeLists.txt). It is lab 2's light view (and,
- * for a spot light, its projection), so the students' handout does not hold
- * it. Both builds read the matrices of the lights the scenes and lab 1's
- * cases use from a table (framework/sl_light_cameras.inc, which
- * `shadowlab-light-table` prints from this function); a staff build computes
- * those of any other light here (hidden variants, the viewer's moved light). */
+ * matrices are in use: staff code, in a library of its own
+ * (sl_light_camera_staff, framework/CMakeLists.txt) that the grader, a staff
+ * build's viewer and shadowlab-light-table link, and no runner. It is lab 2's
+ * light view (and, for a spot light, its projection), so the students' handout
+ * does not hold it. The grader computes a lab 1 case's cameras with it and
+ * sends them in the job; every build reads the matrices of the lights the
+ * scenes and lab 1's cases use from a table (framework/sl_light_cameras.inc,
+ * which `shadowlab-light-table` prints from this function). */
 #include <math.h>
 
 #include "sl_light_camera.h"
