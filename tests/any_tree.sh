@@ -26,7 +26,8 @@ git -C "$src" archive --format=tar HEAD labs | tar -xf - -C "$tree" || exit 1
 for lab in "$tree"/solutions/lab*; do cp -R "$lab"/. "$tree/labs/$(basename "$lab")/"; done
 cmp -s "$tree/labs/lab1_depth_fbo/lab1.c" "$tree/solutions/lab1_depth_fbo/lab1.c" || { echo "any_tree: the copy failed" >&2; exit 1; }
 
-cmake -S "$tree" -B "$tree/build" -DSL_LABS=student >"$work/configure.log" 2>&1 || { tail -n 20 "$work/configure.log"; exit 1; }
+gen=(); ! command -v ninja >/dev/null || gen=(-G Ninja) # as bootstrap.sh makes a new build folder
+cmake "${gen[@]}" -S "$tree" -B "$tree/build" -DSL_LABS=student >"$work/configure.log" 2>&1 || { tail -n 20 "$work/configure.log"; exit 1; }
 stubs="$tree/build/stubs/labs"
 
 # 1. the build's stubs are the committed ones, not the finished labs
@@ -73,11 +74,16 @@ for b in bad: print("any_tree:", b, file=sys.stderr)
 sys.exit(1 if bad else 0)
 EOF
 
-# 3. the attacks' trees are made from the committed stubs
-grep -rl "make_attack.sh" "$tree/build/tests" --include=build.make >"$work/attack-rules" 2>/dev/null
+# 3. the attacks' trees are made from the committed stubs (each command that makes one, in
+# either generator's rules)
+if [ -f "$tree/build/build.ninja" ]; then
+  grep -E "bash .*make_attack\.sh" "$tree/build/build.ninja" >"$work/attack-rules"
+else
+  grep -rhE "bash .*make_attack\.sh" "$tree/build/tests" --include=build.make >"$work/attack-rules" 2>/dev/null
+fi
 [ -s "$work/attack-rules" ] || problem "no rule makes the attacks' trees"
 while IFS= read -r rule; do
-  grep -E "make_attack\.sh" "$rule" | grep -qF "$stubs" || problem "$rule: an attack's tree is not made from $stubs"
+  grep -qF "$stubs" <<<"$rule" || problem "an attack's tree is not made from $stubs: $rule"
 done <"$work/attack-rules"
 # the stubs' viewer shows the committed stubs
 grep -qF "\"$stubs\"" "$tree/build/generated/shadowlab-stubs_build_info.c" 2>/dev/null ||

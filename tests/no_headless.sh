@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
-# no_headless.sh SOURCE_DIR TREE VIEWER IMAGE_COMPARE
+# no_headless.sh SOURCE_DIR TREE VIEWER IMAGE_COMPARE [GRADER ARGS...]
 # A build with both headless backends switched off (-DSL_OSMESA=OFF
 # -DSL_EGL=OFF), as on macOS and Windows, which have neither, and without
 # the browser viewer (-DSL_SERVE=OFF): it configures
 # and builds, and renders through hidden GLFW windows in a virtual display
-# (Xvfb): the grader gives the solutions full marks and the stubs (labs 1, 4) 0 with "not
+# (Xvfb): the grader gives the solutions full marks on the cases GRADER ARGS choose (each
+# lab's probes and one scene case: the staff suite grades every case through OSMesa),
+# and the stubs (labs 1, 4) 0 with "not
 # implemented", its header says that this is a self-check, and the viewer's
 # --headless picture matches VIEWER's (the solutions' viewer of this build,
 # through OSMesa or EGL).
 # TREE is kept between runs, so a second run builds only what changed.
 set -u
 src=$1 tree=$2 viewer=$3 compare=$4
+shift 4
+solution_cases=("$@")
 work="$tree/test-output"
 fail=0
 say() { echo "no_headless: $*"; }
@@ -22,7 +26,9 @@ rm -rf "$work"; mkdir -p "$work"
 
 # Configure: neither backend, though this machine has both.
 # Nor the browser viewer (as where libwebsockets is missing): the viewer still builds.
-cmake -S "$src" -B "$tree" -DSL_LABS=student -DSL_OSMESA=OFF -DSL_EGL=OFF -DSL_SERVE=OFF -DBUILD_TESTING=OFF \
+gen=() # a new tree uses Ninja, as bootstrap.sh makes one
+[ -f "$tree/CMakeCache.txt" ] || ! command -v ninja >/dev/null || gen=(-G Ninja)
+cmake "${gen[@]}" -S "$src" -B "$tree" -DSL_LABS=student -DSL_OSMESA=OFF -DSL_EGL=OFF -DSL_SERVE=OFF -DBUILD_TESTING=OFF \
   >"$work/configure.log" 2>&1 || { cat "$work/configure.log"; say "FAIL: configure"; exit 1; }
 check "configure says both backends are off and what stands in" "$work/configure.log" \
   "both headless backends switched off.*hidden window"
@@ -47,7 +53,7 @@ x() { xvfb-run -a -s "-screen 0 640x480x24" "$@"; }
 
 # The solutions, through hidden windows by default: full marks.
 x "$tree/bin/shadowlab-grade" -j 2 --labs-dir "$src/solutions" --runners "$tree/bin/solutions" \
-  >"$work/solutions.log" 2>&1
+  "${solution_cases[@]}" >"$work/solutions.log" 2>&1
 status=$?
 [ $status -eq 0 ] && say "ok: the solutions grade exits 0" || { say "FAIL: the solutions grade exited $status"; fail=1; }
 check "rendered with the hidden window" "$work/solutions.log" "^shadowlab-grade: rendered with window: "
@@ -56,8 +62,10 @@ check "the solutions get full marks" "$work/solutions.log" "^Score: ([0-9.]+)/\1
 grep -E "^(Score|  Lab)" "$work/solutions.log"
 
 # The stubs: 0, each check saying what is not implemented (labs 1 and 4: the
-# first stub and a lab resting on three others; the solutions ran all seven).
-x "$tree/bin/shadowlab-grade" -j 2 --lab 1,4 >"$work/stubs.log" 2>&1
+# first stub and a lab resting on three others, their probes and scene cases;
+# the solutions ran all seven).
+x "$tree/bin/shadowlab-grade" -j 2 --lab 1,4 --case lab1_probes --case lab1_depth_boxes \
+  --case lab4_probes --case lab4_grid_3x3 >"$work/stubs.log" 2>&1
 status=$?
 [ $status -eq 1 ] && say "ok: the stubs' grade exits 1" || { say "FAIL: the stubs' grade exited $status"; fail=1; }
 check "the stubs score 0" "$work/stubs.log" "^Score: 0/[0-9]+"
