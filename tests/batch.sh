@@ -3,10 +3,12 @@
 # the solutions, the stubs, two known mistakes and one that does not compile.
 # The first run is interrupted as soon as a submission is graded; the second
 # grades the rest without grading the finished ones again, and the gradebook
-# is the expected one (tests/batch/expected-gradebook.csv).
-#   batch.sh BUILD SOURCE WORK LAB2_MISTAKE_TREE LAB4_MISTAKE_TREE
+# is the expected one (tests/batch/expected-gradebook.csv). What is tested is
+# the batch's bookkeeping, so two labs are graded (2 and 3, where the mistakes
+# are), one case each: grade-submission builds those two labs only.
+#   batch.sh BUILD SOURCE WORK LAB2_MISTAKE_TREE LAB3_MISTAKE_TREE
 set -euo pipefail
-build=$1 source=$2 work=$3 lab2_tree=$4 lab4_tree=$5
+build=$1 source=$2 work=$3 lab2_tree=$4 lab3_tree=$5
 expected="$source/tests/batch/expected-gradebook.csv"
 rm -rf "$work"
 mkdir -p "$work/submissions"
@@ -21,15 +23,15 @@ cp -R "${SHADOWLAB_STUBS:-$source/labs}" "$subs/stubs"                          
 mkdir "$subs/lab2_inverted_compare"                          # 3. loose files
 find "$lab2_tree" -type f \( -name 'lab[0-9].c' -o -path '*/shaders/*' \) -exec cp {} "$subs/lab2_inverted_compare/" \;
 echo "my notes" >"$subs/lab2_inverted_compare/notes.txt"
-mkdir -p "$subs/lab4_pcss_inverted/shadowlab-main"           # an unpacked archive: one folder
-cp -R "$lab4_tree" "$subs/lab4_pcss_inverted/shadowlab-main/labs"
+mkdir -p "$subs/lab3_slope_sin/shadowlab-main"               # an unpacked archive: one folder
+cp -R "$lab3_tree" "$subs/lab3_slope_sin/shadowlab-main/labs"
 mkdir "$subs/does_not_build"
 find "$source/solutions" -type f -exec cp {} "$subs/does_not_build/" \;
 sed -i '0,/return SL_OK;/s//return SL_OK/' "$subs/does_not_build/lab3.c"
 
-# A case or two per lab: enough for each mistake to show, and a quicker batch.
+# One case in each of the two labs with a mistake: lab 2's scene and lab 3's probes.
 # A generous time limit: the test machine may be busy.
-cases=(--case lab1_depth_boxes --case lab2_directional_manual --case lab3_contact --case lab4_pcss --timeout 120)
+cases=(--case lab2_directional_manual --case lab3_probes --timeout 120)
 batch=("$source/scripts/grade-batch" -j 2 --build "$build" --out "$out" "$subs" -- "${cases[@]}")
 
 # ---- 1. interrupted once a submission is graded ----
@@ -66,38 +68,40 @@ for name in "${finished[@]}"; do
     problem "$name was graded again"
   ! grep -q "started $name" "$work/second.log" || problem "$name was started again"
 done
-for name in does_not_build lab2_inverted_compare lab4_pcss_inverted solutions stubs; do
+for name in does_not_build lab2_inverted_compare lab3_slope_sin solutions stubs; do
   [ -f "$out/$name/report/report.html" ] && [ -f "$out/$name/grade.log" ] || problem "$name has no report folder"
 done
 grep -q "layout: loose files" "$out/lab2_inverted_compare/grade.log" || problem "the loose files were not taken"
-grep -q "layout: a labs/ folder" "$out/lab4_pcss_inverted/grade.log" || problem "the unpacked archive was not looked into"
+grep -q "layout: a labs/ folder" "$out/lab3_slope_sin/grade.log" || problem "the unpacked archive was not looked into"
 
 # ---- 3. the gradebook ----
 gradebook="$out/gradebook.csv"
 cat "$gradebook"
 header=$(head -n 1 "$gradebook")
-[ "$header" = "submission,student,student_id,late,status,lab1,lab2,lab3,lab4,bonus,total,max,seed,options,note" ] ||
+[ "$header" = "submission,student,student_id,late,status,lab2,lab3,bonus,total,max,seed,options,note" ] ||
   problem "the gradebook's columns: $header"
 # every column before the note is a name, a status, a number or options without a comma
 column() { tr ',' '\n' <<<"$header" | grep -nx "$1" | cut -d: -f1; }
 field() { cut -d, -f"$2" <<<"$1"; }
 status_at=$(column status) total_at=$(column total) max_at=$(column max) note_at=$(column note)
-lab_at=$(column lab1)
+lab_at=$(column lab2)
 solutions_row=$(grep '^solutions,' "$gradebook")
-[ "$(field "$solutions_row" "$total_at")" = "$(field "$solutions_row" "$max_at")" ] || problem "the solutions' total is not the maximum"
-grep -q -- "--case lab1_depth_boxes --case lab2_directional_manual" <<<"$solutions_row" ||
+# (the total counts the bonus: lab 3's probes have a bonus check)
+awk -v t="$(field "$solutions_row" "$total_at")" -v b="$(field "$solutions_row" "$(column bonus)")" \
+  -v m="$(field "$solutions_row" "$max_at")" 'BEGIN { exit !(t - b == m) }' || problem "the solutions' total is not the maximum"
+grep -q -- "--case lab2_directional_manual --case lab3_probes" <<<"$solutions_row" ||
   problem "the solutions' row does not say its options"
 rows=0
 while IFS= read -r line; do
   [[ "$line" == \#* ]] && continue
   rows=$((rows + 1))
-  IFS=, read -r name status l1 l2 l3 l4 note_re <<<"$line"
+  IFS=, read -r name status l2 l3 note_re <<<"$line"
   row=$(grep "^$name," "$gradebook") || { problem "no row for $name"; continue; }
   [ "$(field "$row" "$status_at")" = "$status" ] || problem "$name: status '$(field "$row" "$status_at")', expected '$status'"
-  want=("$l1" "$l2" "$l3" "$l4")
-  for lab in 1 2 3 4; do
-    at=$((lab_at + lab - 1))
-    got=$(field "$row" $at) full=$(field "$solutions_row" $at) w=${want[$((lab - 1))]}
+  want=("$l2" "$l3")
+  for lab in 2 3; do
+    at=$((lab_at + lab - 2))
+    got=$(field "$row" $at) full=$(field "$solutions_row" $at) w=${want[$((lab - 2))]}
     case "$w" in
       any) ;;
       full) [ "$got" = "$full" ] || problem "$name: lab $lab scored $got, expected full marks ($full)" ;;

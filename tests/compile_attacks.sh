@@ -6,7 +6,10 @@
 # a submission: one submission holding them all (each attacks another lab),
 # through scripts/grade-submission, each lab built on its own behind the
 # compile fence. Every lab scores 0, no solution text reaches the report, and
-# the build says it was fenced.
+# the build says it was fenced. Graded: the attacked labs only (the others are
+# the stubs, nothing to see), each through its probes (every function a lab
+# writes, called: an #include of the solution would score there) and lab 1's
+# scene (the lab 1 attack prints what it embedded when the shadow map is made).
 set -uo pipefail
 src=$1 build=$2 work=$3
 rm -rf "$work"
@@ -19,6 +22,7 @@ case "$fence" in
   *) echo "compile_attacks: this machine gives the compiler no fence ($fence): skipped"; exit 77 ;;
 esac
 # each attack's lab files over the stubs, as the attack suite lays them, then their lab folders into one submission
+attacked=""
 for attack in "$src"/tests/attacks/compile_*/; do
   name=$(basename "$attack")
   bash "$src/tests/make_attack.sh" "$attack" "$src" "$work/trees/$name" || exit 1
@@ -26,11 +30,12 @@ for attack in "$src"/tests/attacks/compile_*/; do
     folder=$(basename "$lab")
     [ ! -e "$work/submission/labs/$folder" ] || { problem "two attacks on $folder: give each its own lab"; continue; }
     cp -R "$work/trees/$name/$folder" "$work/submission/labs/$folder"
+    n=${folder#lab}; attacked+="${attacked:+,}${n%%_*}"
   done
 done
 set +e
 "$src/scripts/grade-submission" --build "$build" --jobs 2 "$work/submission" -- --report "$work/report" \
-  --timeout 120 >"$work/out.txt" 2>&1
+  --lab "$attacked" --case '*_probes' --case lab1_depth_boxes --timeout 120 >"$work/out.txt" 2>&1
 status=$?
 set -e
 cat "$work/out.txt"

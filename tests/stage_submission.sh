@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # End to end through scripts/grade-submission: the solutions, saved by a
 # Windows editor (CRLF, a byte-order mark in every lab file) and zipped by
-# macOS Finder (a top folder beside __MACOSX/ and ._ files), get full marks,
-# and the grade says the line ends were normalised.
+# macOS Finder (a top folder beside __MACOSX/ and ._ files), get full marks
+# in every lab, and the grade says the line ends were normalised.
 #   stage_submission.sh FIXTURES_TOOL SOURCE BUILD WORK GRADE_EXPECT
 set -euo pipefail
 fixtures=$1 source=$2 build=$3 work=$4 grade_expect=$5
@@ -18,8 +18,10 @@ chmod -R a+rX "$work"
 checks=(--exit 0 --reject FAIL --expect "layout: a labs/ folder \(in Shadowlab/\)"
         --expect "^Submission: Line ends and byte-order marks made plain before compiling .*lab1_depth_fbo/lab1.c")
 for lab in 1 2 3 4 5 6 7; do checks+=(--full "$lab"); done
-# every lab function through its probes, and each lab's shaders in one picture: a shorter grade
-cases=(--case 'lab*_probes' --case lab1_depth_boxes --case lab2_directional_manual --case lab3_contact
-       --case lab4_grid_3x3 --case lab5_visibility --case lab6_field --case lab7_room_front)
+# The suite's one grade of a whole submission end to end: every lab staged, built and
+# graded, one picture per lab (it runs that lab's C code and shaders as staged): a
+# shorter grade than every case.
+cases=(--case lab1_depth_boxes --case lab2_directional_manual --case lab3_contact --case lab4_grid_3x3
+       --case lab5_visibility --case lab6_field_three --case lab7_room_front)
 exec "$grade_expect" --exe "$source/scripts/grade-submission" "${checks[@]}" \
   -- --build "$build" --jobs 2 "$work/Shadowlab.zip" -- --timeout 120 "${cases[@]}"

@@ -15,9 +15,17 @@ cmake --build "$source_dir/build" -j "$(nproc)" --target shadowlab-grade
 # The shipped references were rendered elsewhere: the solutions must still get
 # full marks with this image's libraries and renderer, or the upload fails here
 # rather than every student's grade later. (Pixels are checked, not speed: an
-# image build may run on a busy machine.)
+# image build may run on a busy machine.) An assignment of one lab
+# (make-gradescope-bundle --lab N) checks the lab it grades.
+labs=()
+if [ -f "$source_dir/grader-options" ]; then
+  previous=""
+  while IFS= read -r line; do [ "$previous" != --lab ] || labs+=(--lab "$line"); previous=$line; done \
+    <"$source_dir/grader-options"
+fi
 if ! "$source_dir/build/bin/shadowlab-grade" --runners "$source_dir/build/bin/solutions" \
-       --labs-dir "$source_dir/solutions" --timeout 300 >"$source_dir/build/self-check.log" 2>&1; then
+       --labs-dir "$source_dir/solutions" --timeout 300 "${labs[@]+"${labs[@]}"}" \
+       >"$source_dir/build/self-check.log" 2>&1; then
   cat "$source_dir/build/self-check.log"
   echo "setup.sh: the solutions do not get full marks on this image (see above)" >&2
   exit 1
