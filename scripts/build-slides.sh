@@ -96,8 +96,7 @@ build_deck() { # DECK WHO
   name=$(basename "$deck" .md)
   dest=$out
   [ "$who" = student ] && dest=$out/student
-  md="$out/.$name.$who.md"
-  "$py" "$src/tools/prepare_deck.py" --audience "$who" --out-dir "$out" "$deck" >"$md" || return 1
+  md="$out/.$name.$who.md"   # made by prepare_deck.py (below)
   # Unchanged since the last build (the deck, its figures, the styles, the tools): nothing to do.
   local key stamp="$out/.$name.$who.key"
   key=$( { cat "$md" "$src/slides.css" "$src/print.css" "$src/tools/katex-filter.js" "$out/.katex/"*.css;
@@ -142,8 +141,20 @@ rm -f "$out"/.*.to-print
 jobs=${SL_FIGURE_JOBS:-2}
 pids=()
 failed=0
+# A students' deck whose Markdown is the lecturer's (no slide quotes a solution) is the
+# lecturer's deck: built once, copied after (same_as_lecturer).
+same_as_lecturer=()
 for deck in "${decks[@]}"; do
+  name=$(basename "$deck" .md)
   for who in "${audiences[@]}"; do
+    "$py" "$src/tools/prepare_deck.py" --audience "$who" --out-dir "$out" "$deck" >"$out/.$name.$who.md" ||
+      { say "prepare_deck.py failed on $name ($who)" >&2; failed=1; continue 2; }
+  done
+  for who in "${audiences[@]}"; do
+    if [ "$who" = student ] && [ ${#audiences[@]} = 2 ] && cmp -s "$out/.$name.lecturer.md" "$out/.$name.student.md"; then
+      same_as_lecturer+=("$name")
+      continue
+    fi
     build_deck "$deck" "$who" &
     pids+=($!)
     if [ ${#pids[@]} -ge "$jobs" ]; then
@@ -182,5 +193,12 @@ if [ "$print_in_one" = 1 ]; then
     fi
   done
 fi
+for name in "${same_as_lecturer[@]}"; do
+  [ -f "$out/.$name.lecturer.key" ] || continue   # the lecturer's failed (above)
+  cp "$out/$name.html" "$out/student/$name.html"
+  [ "$pdf" = 1 ] && cp "$out/$name.pdf" "$out/student/$name.pdf"
+  cp "$out/.$name.lecturer.key" "$out/.$name.student.key"
+  say "$out/student/$name.html$([ "$pdf" = 1 ] && echo " and $name.pdf"): the lecturer's (no slide quotes a solution)"
+done
 [ $failed = 0 ] || { say "a deck failed to build (above)" >&2; exit 1; }
 say "done in $((SECONDS - start)) s"
