@@ -15,20 +15,9 @@ viewer=$1 solutions=$2 check=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
 fail=0
 problem() { echo "viewer_overlay: $*" >&2; fail=1; }
-# Every picture check in one image_check (`image_check -`, a check a line): the image module
-# it loads costs more than a check, so one process for all of them.
-coproc checker { "$check" -; }
-check_image() { # ARGS of image_check: its output, and its exit status
-  local line
-  local IFS=$'\t'
-  echo "$*" >&"${checker[1]}"
-  while IFS= read -r line <&"${checker[0]}"; do
-    [[ $line =~ ^image_check:\ exit\ ([0-9]+)$ ]] && return "${BASH_REMATCH[1]}"
-    echo "$line"
-  done
-  echo "viewer_overlay: image_check stopped" >&2
-  return 2
-}
+# Every picture check in one image_check process (check_image).
+source "$(dirname "$0")/image_checks.sh"
+start_image_check "$check"
 run() { "$@" >"$work/log" 2>&1 || { cat "$work/log"; problem "failed: $*"; }; }
 common=(--headless --lab 4 --scene spot_on_floor --size 640x400 --frames 2)
 run "$solutions" "${common[@]}" --screenshot "$work/plain.png"
