@@ -13,7 +13,7 @@
 #                                       (SHADOWLAB_PRERENDERED, default SLIDES_DIR/figures),
 #                                       or are left out with a note
 # HTML: pandoc's dzslides, one self-contained file. PDF: pandoc's HTML printed by
-# WeasyPrint, a 16:9 page per slide. Math is typeset by KaTeX at build time
+# WeasyPrint (slides/tools/print_decks.py, every deck in one process), a 16:9 page per slide. Math is typeset by KaTeX at build time
 # (slides/tools/katex-filter.js), so both show real equations without a script.
 # Where pandoc is missing it says so and stops without failing the build;
 # without WeasyPrint it makes the HTML decks only.
@@ -96,8 +96,7 @@ build_deck() { # DECK WHO
   name=$(basename "$deck" .md)
   dest=$out
   [ "$who" = student ] && dest=$out/student
-  md="$out/.$name.$who.md"
-  "$py" "$src/tools/prepare_deck.py" --audience "$who" --out-dir "$out" "$deck" >"$md" || return 1
+  md="$out/.$name.$who.md"   # made by prepare_deck.py (below)
   # Unchanged since the last build (the deck, its figures, the styles, the tools): nothing to do.
   local key stamp="$out/.$name.$who.key"
   key=$( { cat "$md" "$src/slides.css" "$src/print.css" "$src/tools/katex-filter.js" "$out/.katex/"*.css;
@@ -118,6 +117,13 @@ build_deck() { # DECK WHO
     SL_DECK="$name ($who)" pandoc "$md" --from markdown --to html5 --standalone --section-divs \
       --filter "$src/tools/katex-filter.js" \
       --css="$out/.katex/katex-ttf.css" --css="$src/print.css" --output="$print" || return 1
+    if [ "$print_in_one" = 1 ]; then
+      # Printed after every deck's HTML, all in one WeasyPrint (below); the stamp comes with the PDF.
+      rm -f "$dest/$name.pdf"
+      printf '%s\n' "$print" "$dest/$name.pdf" "$key" "$stamp" >"$out/.$name.$who.to-print"
+      say "$dest/$name.html"
+      return 0
+    fi
     # WeasyPrint warns about CSS it does not use (KaTeX's and pandoc's); keep those out of the way.
     weasyprint --base-url "$out/" "$print" "$dest/$name.pdf" 2>"$out/.$name.$who.weasyprint.log" ||
       { cat "$out/.$name.$who.weasyprint.log" >&2; return 1; }
@@ -125,12 +131,30 @@ build_deck() { # DECK WHO
   echo "$key" >"$stamp"
   say "$dest/$name.html$([ "$pdf" = 1 ] && echo " and $name.pdf")"
 }
+# The PDFs are printed by one Python process (or SL_FIGURE_JOBS of them) for all decks: starting
+# Python and importing WeasyPrint costs more than half of printing a deck. Where this Python
+# cannot import WeasyPrint (it came with another one), each deck runs the weasyprint command.
+print_in_one=0
+[ "$pdf" = 1 ] && "$py" -c 'import weasyprint' 2>/dev/null && print_in_one=1
+rm -f "$out"/.*.to-print
 # Two decks at a time (SL_FIGURE_JOBS): pandoc and WeasyPrint use one core each.
 jobs=${SL_FIGURE_JOBS:-2}
 pids=()
 failed=0
+# A students' deck whose Markdown is the lecturer's (no slide quotes a solution) is the
+# lecturer's deck: built once, copied after (same_as_lecturer).
+same_as_lecturer=()
 for deck in "${decks[@]}"; do
+  name=$(basename "$deck" .md)
   for who in "${audiences[@]}"; do
+    "$py" "$src/tools/prepare_deck.py" --audience "$who" --out-dir "$out" "$deck" >"$out/.$name.$who.md" ||
+      { say "prepare_deck.py failed on $name ($who)" >&2; failed=1; continue 2; }
+  done
+  for who in "${audiences[@]}"; do
+    if [ "$who" = student ] && [ ${#audiences[@]} = 2 ] && cmp -s "$out/.$name.lecturer.md" "$out/.$name.student.md"; then
+      same_as_lecturer+=("$name")
+      continue
+    fi
     build_deck "$deck" "$who" &
     pids+=($!)
     if [ ${#pids[@]} -ge "$jobs" ]; then
@@ -140,5 +164,41 @@ for deck in "${decks[@]}"; do
   done
 done
 for p in "${pids[@]}"; do wait "$p" || failed=1; done
+if [ "$print_in_one" = 1 ]; then
+  to_print=("$out"/.*.to-print)
+  [ -e "${to_print[0]}" ] || to_print=()
+  pids=()
+  for ((i = 0; i < jobs && i < ${#to_print[@]}; i++)); do
+    pairs=()
+    for ((j = i; j < ${#to_print[@]}; j += jobs)); do
+      mapfile -t job <"${to_print[j]}"
+      pairs+=("${job[0]}" "${job[1]}")
+    done
+    # WeasyPrint warns about CSS it does not use (KaTeX's and pandoc's); keep those out of the way.
+    "$py" "$src/tools/print_decks.py" "$out/" "${pairs[@]}" 2>"$out/.print-decks.$i.log" &
+    pids+=($!)
+  done
+  for ((i = 0; i < ${#pids[@]}; i++)); do
+    wait "${pids[i]}" || { cat "$out/.print-decks.$i.log" >&2; failed=1; }
+  done
+  for t in "${to_print[@]}"; do
+    mapfile -t job <"$t"
+    rm -f "$t"
+    if [ -s "${job[1]}" ]; then
+      echo "${job[2]}" >"${job[3]}"
+      say "${job[1]}"
+    else
+      say "no ${job[1]}: printing it failed (above)" >&2
+      failed=1
+    fi
+  done
+fi
+for name in "${same_as_lecturer[@]}"; do
+  [ -f "$out/.$name.lecturer.key" ] || continue   # the lecturer's failed (above)
+  cp "$out/$name.html" "$out/student/$name.html"
+  [ "$pdf" = 1 ] && cp "$out/$name.pdf" "$out/student/$name.pdf"
+  cp "$out/.$name.lecturer.key" "$out/.$name.student.key"
+  say "$out/student/$name.html$([ "$pdf" = 1 ] && echo " and $name.pdf"): the lecturer's (no slide quotes a solution)"
+done
 [ $failed = 0 ] || { say "a deck failed to build (above)" >&2; exit 1; }
 say "done in $((SECONDS - start)) s"

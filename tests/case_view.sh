@@ -64,10 +64,12 @@ face=$work/lab7_cube_faces-face_ny.png
 if [ ! -x "$check" ]; then
   problem "no image_check beside the viewer ($check): build it"
 elif [ -s "$face" ]; then
+  source "$(dirname "$0")/image_checks.sh"
+  start_image_check "$check"
   # 1536 wide: three 512-px panels; the labels' text is at scale 2 (12 px a character)
-  for x in 8 520 1032; do "$check" label "$face" $x 8 60 18 || problem "no label on the panel at x=$x"; done
-  "$check" label "$face" 8 40 140 18 || problem "no range under the label of yours"
-  mean=$("$check" mean "$face" 0 80 512 420)
+  for x in 8 520 1032; do check_image label "$face" $x 8 60 18 || problem "no label on the panel at x=$x"; done
+  check_image label "$face" 8 40 140 18 || problem "no range under the label of yours"
+  mean=$(check_image mean "$face" 0 80 512 420)
   # unstretched, no pixel could be brighter than the top of its range: the mean grey is above it
   top=$(sed -nE 's/^shadowlab: each picture stretched .*: yours [0-9.]+ - ([0-9.]+),.*/\1/p' "$work/face_ny.log")
   echo "case_view: face_ny, yours: mean grey $mean, values up to $top"

@@ -14,7 +14,12 @@
  *     prints the percentage of pixels that differ (by more than 0.1 in a
  *     channel); exit 0 if any do.
  *   image_check mean IMAGE.png X Y W H
- *     prints the rectangle's mean luminance (0..1); exit 0. */
+ *     prints the rectangle's mean luminance (0..1); exit 0.
+ *   image_check -
+ *     one of the above a line from stdin (words split at tabs, so paths may hold spaces), each
+ *     answered by its output and a line "image_check: exit N": a test makes
+ *     many checks in one process, which loads the image module once (most of
+ *     what a check costs). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,7 +41,31 @@ static bool _differs(const sl_image *a, const sl_image *b, int x, int y, int bx,
     return false;
 }
 
+static int _check(int argc, char **argv);
+
 int main(int argc, char **argv) {
+    if (argc != 2 || strcmp(argv[1], "-") != 0) return _check(argc, argv);
+    char line[4096];
+    while (fgets(line, sizeof line, stdin)) {
+        char *words[9] = {argv[0]};
+        int n = 1;
+        for (char *w = strtok(line, "\t\r\n"); w; w = strtok(NULL, "\t\r\n")) {
+            if (n == 9) {
+                n = 0; /* too many words: the usage */
+                break;
+            }
+            words[n++] = w;
+        }
+        if (n == 1) continue;
+        int rc = _check(n ? n : 1, words);
+        printf("image_check: exit %d\n", rc);
+        fflush(stdout);
+        fflush(stderr);
+    }
+    return 0;
+}
+
+static int _check(int argc, char **argv) {
     char err[1024];
     if (argc == 3 && strcmp(argv[1], "not-blank") == 0) {
         sl_image im;
@@ -50,6 +79,7 @@ int main(int argc, char **argv) {
         double pct = 100.0 * (double)differ / ((double)im.width * im.height);
         printf("image_check: %s (%dx%d): %.2f%% of the pixels differ from the corner's colour\n", argv[2], im.width,
                im.height, pct);
+        sl_image_free(&im);
         return pct >= 1.0 ? 0 : 1;
     }
     if ((argc == 7 && (strcmp(argv[1], "label") == 0 || strcmp(argv[1], "mean") == 0))) {
@@ -62,6 +92,7 @@ int main(int argc, char **argv) {
         if (x0 < 0 || y0 < 0 || w <= 0 || h <= 0 || x0 + w > im.width || y0 + h > im.height) {
             fprintf(stderr, "image_check: the rectangle %d,%d %dx%d is not inside %s (%dx%d)\n", x0, y0, w, h, argv[2],
                     im.width, im.height);
+            sl_image_free(&im);
             return 2;
         }
         long dark = 0, bright = 0;
@@ -73,6 +104,7 @@ int main(int argc, char **argv) {
                 dark += l < 0.3f;
                 bright += l > 0.6f;
             }
+        sl_image_free(&im);
         double n = (double)w * h, k = 100 * dark / n, b = 100 * bright / n;
         if (strcmp(argv[1], "mean") == 0) {
             printf("%.4f\n", sum / n);
@@ -85,22 +117,27 @@ int main(int argc, char **argv) {
         sl_image a, b;
         if (!sl_image_read(argv[2], &a, err, sizeof err) || !sl_image_read(argv[3], &b, err, sizeof err)) {
             fprintf(stderr, "image_check: %s\n", err);
+            sl_image_free(&a);
             return 2;
         }
+        long differ = -1;
         if (a.width != b.width || a.height != b.height) {
             fprintf(stderr, "image_check: %s is %dx%d, %s %dx%d\n", argv[2], a.width, a.height, argv[3], b.width, b.height);
-            return 2;
+        } else {
+            differ = 0;
+            for (int y = 0; y < a.height; y++)
+                for (int x = 0; x < a.width; x++) differ += _differs(&a, &b, x, y, x, y);
+            printf("%.3f\n", 100.0 * (double)differ / ((double)a.width * a.height));
         }
-        long differ = 0;
-        for (int y = 0; y < a.height; y++)
-            for (int x = 0; x < a.width; x++) differ += _differs(&a, &b, x, y, x, y);
-        printf("%.3f\n", 100.0 * (double)differ / ((double)a.width * a.height));
-        return differ > 0 ? 0 : 1;
+        sl_image_free(&a);
+        sl_image_free(&b);
+        return differ < 0 ? 2 : differ > 0 ? 0 : 1;
     }
     if (argc == 8 && strcmp(argv[1], "text") == 0) {
         sl_image with, without;
         if (!sl_image_read(argv[2], &with, err, sizeof err) || !sl_image_read(argv[3], &without, err, sizeof err)) {
             fprintf(stderr, "image_check: %s\n", err);
+            sl_image_free(&with);
             return 2;
         }
         int x0 = atoi(argv[4]), y0 = atoi(argv[5]), w = atoi(argv[6]), h = atoi(argv[7]);
@@ -108,6 +145,8 @@ int main(int argc, char **argv) {
             x0 + w > with.width || y0 + h > with.height) {
             fprintf(stderr, "image_check: the sizes do not fit (%dx%d, %dx%d, rectangle %d,%d %dx%d)\n", with.width,
                     with.height, without.width, without.height, x0, y0, w, h);
+            sl_image_free(&with);
+            sl_image_free(&without);
             return 2;
         }
         long differ = 0, dark = 0, bright = 0;
@@ -118,12 +157,15 @@ int main(int argc, char **argv) {
                 dark += l < 0.3f;
                 bright += l > 0.6f;
             }
+        sl_image_free(&with);
+        sl_image_free(&without);
         double n = (double)w * h, d = 100 * differ / n, k = 100 * dark / n, b = 100 * bright / n;
         printf("image_check: %s, rectangle %d,%d %dx%d: %.1f%% of pixels differ from %s, %.1f%% dark, %.1f%% bright\n",
                argv[2], x0, y0, w, h, d, argv[3], k, b);
         return d >= 20 && k >= 25 && b >= 2 && b <= 40 ? 0 : 1;
     }
     fprintf(stderr, "usage: image_check text WITH.png WITHOUT.png X Y W H | not-blank IMAGE.png |\n"
-                    "       label IMAGE.png X Y W H | differ A.png B.png | mean IMAGE.png X Y W H\n");
+                    "       label IMAGE.png X Y W H | differ A.png B.png | mean IMAGE.png X Y W H |\n"
+                    "       - (one of these a line from stdin)\n");
     return 2;
 }

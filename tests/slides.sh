@@ -107,6 +107,8 @@ pdf-pages)
   need_tools
   command -v pdftoppm >/dev/null || skip "pdftoppm (poppler-utils) is not installed"
   mkdir -p "$review/pdf"
+  source "$here/image_checks.sh"
+  start_image_check "$check"
   # lab 3: the title, the acne diagram, the bias sweep's row; lab 5: Chebyshev's bound.
   for spec in "lab3_bias 1" "lab3_bias 4" "lab3_bias 7" "lab5_vsm 5" "lab7_cube 6"; do
     set -- $spec
@@ -114,7 +116,7 @@ pdf-pages)
     [ -s "$pdf" ] || pdf="$out/student/$1.pdf"   # a copy without solutions has the students' decks only
     png="$review/pdf/$1-p$2"
     pdftoppm -png -r 60 -f "$2" -l "$2" -singlefile "$pdf" "$png" || { problem "pdftoppm failed on $pdf"; continue; }
-    "$check" not-blank "$png.png" || problem "page $2 of $pdf is blank"
+    check_image not-blank "$png.png" || problem "page $2 of $pdf is blank"
   done
   echo "slides: PDF pages kept in $review/pdf"
   ;;

@@ -11,6 +11,8 @@ viewer=$1 solutions=$2 check=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
 fail=0
 problem() { echo "viewer_animation: $*" >&2; fail=1; }
+source "$(dirname "$0")/image_checks.sh"   # check_image: the picture checks in one image_check
+start_image_check "$check"
 shimmer=(--headless --lab 6 --scene cascade_field --map-size 256 --path-fits-cascades --frames 12 --size 480x300)
 
 # The share of pixels --mark-changes says changed, in percent (its last line).
@@ -39,7 +41,7 @@ if "$solutions" "${shimmer[@]}" --camera-path turn --overlay --mark-changes --sc
      >"$work/turn-overlay.log" 2>&1; then
   [ "$(changed "$work/turn-overlay.log")" = "$(changed "$work/turn-snapped.log")" ] ||
     problem "with the overlay --mark-changes counts $(changed "$work/turn-overlay.log")%, without it $(changed "$work/turn-snapped.log")%"
-  "$check" label "$work/turn-overlay.png" 8 8 150 40 || problem "--mark-changes with --overlay saved no overlay"
+  check_image label "$work/turn-overlay.png" 8 8 150 40 || problem "--mark-changes with --overlay saved no overlay"
 else
   cat "$work/turn-overlay.log"; problem "--mark-changes with --overlay failed"
 fi
@@ -64,7 +66,7 @@ if [ -f "$work/anim.gif" ]; then
   delays=$(while read -r _ _ _ _ lo hi _; do echo $((16#$hi$lo)); done <<<"$blocks" | sort -u | tr '\n' ' ')
   echo "viewer_animation: anim.gif: $frames frames, delay (1/100 s): $delays"
   grep -q "4e 45 54 53 43 41 50 45 32 2e 30" <<<"$bytes" || problem "anim.gif does not loop (no NETSCAPE2.0 block)"
-  "$check" not-blank "$work/anim.gif" >/dev/null || problem "anim.gif's first frame is blank or unreadable"
+  check_image not-blank "$work/anim.gif" >/dev/null || problem "anim.gif's first frame is blank or unreadable"
 else
   problem "no anim.gif"
 fi

@@ -15,6 +15,9 @@ viewer=$1 solutions=$2 check=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
 fail=0
 problem() { echo "viewer_overlay: $*" >&2; fail=1; }
+# Every picture check in one image_check process (check_image).
+source "$(dirname "$0")/image_checks.sh"
+start_image_check "$check"
 run() { "$@" >"$work/log" 2>&1 || { cat "$work/log"; problem "failed: $*"; }; }
 common=(--headless --lab 4 --scene spot_on_floor --size 640x400 --frames 2)
 run "$solutions" "${common[@]}" --screenshot "$work/plain.png"
@@ -47,15 +50,15 @@ grep -q "shadow map: 1024x1024" "$work/log" && problem "the lab 7 overlay names 
 run "$solutions" "${common[@]}" --frustum --screenshot "$work/frustum.png"
 cmp -s "$work/plain.png" "$work/no-overlay.png" || problem "--frames without --overlay does not give the plain picture"
 # The top-left panel (lab, scene, code, light, map, bias, filter) at scale 1 (400 px high).
-"$check" text "$work/overlay.png" "$work/plain.png" 8 8 150 50 || problem "no text in the overlay's panel"
+check_image text "$work/overlay.png" "$work/plain.png" 8 8 150 50 || problem "no text in the overlay's panel"
 # Below the panels, the scene is as it was.
-"$check" text "$work/overlay.png" "$work/plain.png" 8 300 300 90 >/dev/null && problem "the overlay changed the scene below its panels"
+check_image text "$work/overlay.png" "$work/plain.png" 8 300 300 90 >/dev/null && problem "the overlay changed the scene below its panels"
 cmp -s "$work/plain.png" "$work/frustum.png" && problem "--frustum drew nothing"
 # The keys do what the options do (--keys presses them before the first frame).
 run "$solutions" "${common[@]}" --keys G --screenshot "$work/key-l.png"
 cmp -s "$work/key-l.png" "$work/frustum.png" || problem "key G does not draw what --frustum draws"
 run "$solutions" "${common[@]}" --keys O --screenshot "$work/key-o.png"
-"$check" text "$work/key-o.png" "$work/plain.png" 8 8 150 50 >/dev/null || problem "key O does not show the overlay"
+check_image text "$work/key-o.png" "$work/plain.png" 8 8 150 50 >/dev/null || problem "key O does not show the overlay"
 run "$solutions" "${common[@]}" --keys OO --screenshot "$work/key-oo.png"
 cmp -s "$work/key-oo.png" "$work/plain.png" || problem "key O twice does not hide the overlay again"
 if "$viewer" --help | grep -q -- "--solutions"; then
@@ -108,25 +111,25 @@ run "$solutions" --headless --lab 6 --scene cascade_field --size 640x400 --frame
 for line in "\[top right\] cascades \(K\), view depth" "\[top right\] ## 0: [0-9.]+ - [0-9.]+" "\[top right\] ## 3: [0-9.]+ - [0-9.]+"; do
   grep -qE "$line" "$work/log" || problem "the cascade legend does not say: $line"
 done
-"$check" label "$work/l6-labels.png" 490 6 140 50 || problem "no cascade legend in the top right corner"
+check_image label "$work/l6-labels.png" 490 6 140 50 || problem "no cascade legend in the top right corner"
 run "$solutions" --headless --lab 7 --scene closed_room --size 640x400 --frames 1 --show-map --labels \
   --screenshot "$work/l7-labels.png"
 for face in +X -X +Y -Y +Z -Z; do grep -qF "[label] $face" "$work/log" || problem "the cube face $face is not labelled"; done
 grep -qF "[marker] point light" "$work/log" || problem "no marker at the point light"
 # The cross's cells are 66 px (half what fits 4 x 3 in 640x400), 8 px off the lower right: +Y's top left is
 # at 434,194, +X's at 500,260; the labels sit just inside.
-"$check" label "$work/l7-labels.png" 436 196 16 13 || problem "no +Y label on the cross"
-"$check" label "$work/l7-labels.png" 502 262 16 13 || problem "no +X label on the cross"
+check_image label "$work/l7-labels.png" 436 196 16 13 || problem "no +Y label on the cross"
+check_image label "$work/l7-labels.png" 502 262 16 13 || problem "no +X label on the cross"
 
 # --lecture: the frustum's lines are thicker (more pixels change) and the text larger (the panel reaches
 # farther); the same scene otherwise.
 run "$solutions" "${common[@]}" --frustum --lecture --screenshot "$work/lecture-frustum.png"
-normal=$("$check" differ "$work/plain.png" "$work/frustum.png") lecture=$("$check" differ "$work/plain.png" "$work/lecture-frustum.png")
+normal=$(check_image differ "$work/plain.png" "$work/frustum.png") lecture=$(check_image differ "$work/plain.png" "$work/lecture-frustum.png")
 echo "viewer_overlay: the frustum changes $normal% of the pixels, $lecture% with --lecture"
 awk -v a="$normal" -v b="$lecture" 'BEGIN { exit !(b >= 2 * a && a > 0) }' || problem "--lecture's frustum lines are not thicker"
 run "$solutions" "${common[@]}" --overlay --lecture --screenshot "$work/lecture-overlay.png"
-"$check" text "$work/lecture-overlay.png" "$work/plain.png" 8 100 280 60 || problem "--lecture's panel is not larger"
-"$check" text "$work/overlay.png" "$work/plain.png" 8 100 280 60 >/dev/null && problem "the plain overlay reaches as far as --lecture's"
+check_image text "$work/lecture-overlay.png" "$work/plain.png" 8 100 280 60 || problem "--lecture's panel is not larger"
+check_image text "$work/overlay.png" "$work/plain.png" 8 100 280 60 >/dev/null && problem "the plain overlay reaches as far as --lecture's"
 
 # --help lists the key table (--list-keys, for scripts) and nothing says the solutions key is A.
 "$viewer" --help >"$work/help" 2>&1 || problem "--help failed"
@@ -148,7 +151,7 @@ if command -v xvfb-run >/dev/null; then
     grep -qE "$line" "$work/log" || problem "the key panel does not say: $line"
   done
   grep -qE "\[bottom left\] (B|F|C) " "$work/log" && problem "lab 6's key panel lists keys of labs 2-4"
-  "$check" label "$work/keys-window.png" 8 330 120 60 || problem "no key panel in the lower left corner"
+  check_image label "$work/keys-window.png" 8 330 120 60 || problem "no key panel in the lower left corner"
   if grep -q "drawing with the solutions code" "$work/log"; then
     grep -qF "U code: solutions" "$work/log" || problem "after U the key panel does not say the solutions' code draws"
   else

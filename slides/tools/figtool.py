@@ -13,6 +13,7 @@ Runs with the Python WeasyPrint brings (python3-pil); used by the decks'
 `<!-- derive: ... -->` lines (scripts/render-figures.sh).
 """
 import argparse
+import os
 import sys
 
 from PIL import Image, ImageDraw
@@ -27,8 +28,10 @@ def region(s):
     return x, y, w, h
 
 
-def main():
-    ap = argparse.ArgumentParser()
+def main(argv=None, cwd="."):
+    """argv as the command line's (default sys.argv[1:]); relative paths are read from cwd.
+    render_figures.py calls this in its own process (a Python and PIL less to start a figure)."""
+    ap = argparse.ArgumentParser(prog="figtool.py")
     ap.add_argument("op", choices=["crop", "inset", "stats"])
     ap.add_argument("src")
     ap.add_argument("xy")
@@ -36,8 +39,8 @@ def main():
     ap.add_argument("--scale", type=int, default=2)
     ap.add_argument("--corner", default="tr")
     ap.add_argument("--out")
-    a = ap.parse_args()
-    img = Image.open(a.src).convert("RGB")
+    a = ap.parse_args(argv)
+    img = Image.open(os.path.join(cwd, a.src)).convert("RGB")
     x, y, w, h = region((a.xy, a.wh))
     if x < 0 or y < 0 or x + w > img.width or y + h > img.height:
         sys.exit(f"figtool: region {a.xy} {a.wh} is outside {a.src} ({img.width}x{img.height})")
@@ -52,7 +55,7 @@ def main():
         sys.exit("figtool: --out is needed")
     big = part.resize((w * a.scale, h * a.scale), Image.NEAREST)
     if a.op == "crop":
-        big.save(a.out)
+        big.save(os.path.join(cwd, a.out))
         return
     out = img.copy()
     d = ImageDraw.Draw(out)
@@ -62,7 +65,7 @@ def main():
     by = out.height - big.height - margin if "b" in a.corner else margin
     out.paste(big, (bx, by))
     d.rectangle((bx - 3, by - 3, bx + big.width + 2, by + big.height + 2), outline=FRAME, width=5)
-    out.save(a.out)
+    out.save(os.path.join(cwd, a.out))
 
 
 if __name__ == "__main__":

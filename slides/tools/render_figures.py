@@ -76,6 +76,20 @@ def tree_hash(paths):
     return h.hexdigest()
 
 
+def derive(args, out):
+    """figtool.py ARGS run from OUT, in this process: (failed, what it said)."""
+    try:
+        sys.path.insert(0, HERE)
+        import figtool  # beside this file; needs PIL, as the crops do
+        figtool.main(args, cwd=out)
+    except SystemExit as e:
+        if e.code not in (None, 0):
+            return True, e.code if isinstance(e.code, str) else f"figtool.py exited with {e.code}"
+    except Exception as e:  # a broken picture: that figure fails, the others are made
+        return True, f"figtool.py: {type(e).__name__}: {e}"
+    return False, ""
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--viewer")
@@ -149,11 +163,15 @@ def main():
         elif kind == "diagram":
             cmd = [a.python, os.path.join(SLIDES, "diagrams", args[0])] + args[1:]
         else:
-            cmd = [a.python, os.path.join(HERE, "figtool.py")] + args
+            cmd = None  # figtool, in this process: no Python and PIL to start for a crop
         t0 = time.time()
-        r = subprocess.run(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        if r.returncode != 0 or not os.path.isfile(path):
-            err = "\n".join(r.stderr.strip().splitlines()[-3:])
+        if cmd:
+            r = subprocess.run(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+            failed, err = r.returncode != 0, r.stderr
+        else:
+            failed, err = derive(args, out)
+        if failed or not os.path.isfile(path):
+            err = "\n".join(err.strip().splitlines()[-3:])
             return target, "failed", f"{deck}:{no}: {' '.join(shlex.quote(x) for x in args)}\n  {err}"
         with open(stamp_file, "w") as f:
             f.write(key)
