@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "sl_image.h"
+#include "check_lines.h"
 
 static float _luma(const sl_image *im, int x, int y) {
     const float *p = sl_image_pixel(im, x, y);
@@ -45,24 +46,7 @@ static int _check(int argc, char **argv);
 
 int main(int argc, char **argv) {
     if (argc != 2 || strcmp(argv[1], "-") != 0) return _check(argc, argv);
-    char line[4096];
-    while (fgets(line, sizeof line, stdin)) {
-        char *words[9] = {argv[0]};
-        int n = 1;
-        for (char *w = strtok(line, "\t\r\n"); w; w = strtok(NULL, "\t\r\n")) {
-            if (n == 9) {
-                n = 0; /* too many words: the usage */
-                break;
-            }
-            words[n++] = w;
-        }
-        if (n == 1) continue;
-        int rc = _check(n ? n : 1, words);
-        printf("image_check: exit %d\n", rc);
-        fflush(stdout);
-        fflush(stderr);
-    }
-    return 0;
+    return sl_test_check_lines("image_check", argv[0], 9, _check);
 }
 
 static int _check(int argc, char **argv) {

@@ -11,6 +11,8 @@
 #include "sl_compare.h"
 #include "sl_image.h"
 
+#include "check_lines.h"
+
 static int _compare(int argc, char **argv) {
     if (argc < 3) {
         fprintf(stderr, "usage: image_compare A B [threshold 0.1] [max failing percent 0.5] | image_compare -\n");
@@ -35,22 +37,5 @@ static int _compare(int argc, char **argv) {
 
 int main(int argc, char **argv) {
     if (argc != 2 || strcmp(argv[1], "-") != 0) return _compare(argc, argv);
-    char line[4096];
-    while (fgets(line, sizeof line, stdin)) {
-        char *words[6] = {argv[0]};
-        int n = 1;
-        for (char *w = strtok(line, "\t\r\n"); w; w = strtok(NULL, "\t\r\n")) {
-            if (n == 6) {
-                n = 0; /* too many words: the usage */
-                break;
-            }
-            words[n++] = w;
-        }
-        if (n == 1) continue;
-        int rc = _compare(n ? n : 1, words);
-        printf("image_compare: exit %d\n", rc);
-        fflush(stdout);
-        fflush(stderr);
-    }
-    return 0;
+    return sl_test_check_lines("image_compare", argv[0], 6, _compare);
 }
