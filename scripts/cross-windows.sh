@@ -108,11 +108,18 @@ const char sl_build_labs_dir[] = "$(cd "$labs" && pwd)";
 const char sl_build_labs_kind[] = "$kind";
 EOF
 strict=(-std=c11 -O2 -Wall -Wextra -Wshadow -Wno-unused-parameter -Wno-format-truncation -Werror)
-common=(-I"$root/framework" -I"$prefix/include")
-core=(sl_backend sl_case sl_compare sl_gl sl_image sl_json sl_log sl_params sl_platform sl_probe sl_protocol sl_scene
-      sl_text)
-framework=(sl_bench sl_bench_baseline sl_case_view sl_context sl_lab5_vsm sl_labs sl_lab6_cascades sl_lab7_cube
-           sl_mesh sl_overlay sl_probe_pass sl_renderer sl_runner sl_serve sl_shader sl_viewer)
+common=(-I"$root/framework" -I"$obj/include" -I"$prefix/include")
+# The modules of a library, as framework/CMakeLists.txt lists them (add_library(NAME STATIC a.c b.c ...)),
+# so that this build follows every module added, split or moved there.
+cmake_sources() {
+  awk -v lib="$1" '$0 ~ "^add_library[(]" lib " STATIC" { on = 1 } on { print; if ($0 ~ /[)]/) exit }' \
+    "$root/framework/CMakeLists.txt" | tr ' ()' '\n\n\n' | sed -n 's/^\(sl_[a-z0-9_]*\)[.]c$/\1/p'
+}
+core=($(cmake_sources sl_core) $(cmake_sources sl_cases))
+framework=($(cmake_sources sl_framework))
+[ ${#core[@]} -gt 5 ] && [ ${#framework[@]} -gt 5 ] || { say "FAIL: no module lists in framework/CMakeLists.txt"; exit 1; }
+# sl_lab_dependencies.h (sl_params.c): written from framework/lab_dependencies.cmake, as CMake does
+cmake -DOUT="$obj/include" -P "$root/framework/lab_dependencies_header.cmake"
 objects=()
 : >"$out/compile.log"
 # an object older than its source or than any of the project's headers is made again
