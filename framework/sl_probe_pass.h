@@ -2,8 +2,9 @@
  * GLSL functions run in a full-screen pass, one pixel per row, that includes
  * the lab's shader file and writes the function's result into an RGBA32F
  * target; functions that read a depth map get synthetic ones (sl_probe_map).
- * C functions are called directly through this build's lab table, with the
- * GL state they set read back. */
+ * C functions are called directly, one row at a time, by the probes of the
+ * technique of their lab (sl_technique.h; the labs' are in sl_probe_calls.c),
+ * with the GL state they set read back. */
 #ifndef SL_PROBE_PASS_H
 #define SL_PROBE_PASS_H
 

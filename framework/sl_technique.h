@@ -26,6 +26,17 @@ struct sl_renderer;
 struct sl_program_stats;
 struct sl_frame_info;
 struct sl_overlay;
+struct sl_probe_function;
+
+/* One C function of a technique the probe pass calls (sl_probe_pass.h): one row of its probe table's
+ * inputs in (sl_probe.h says their layout), its outputs out; what it returns is the function's status. */
+typedef struct sl_technique_probe {
+    const char *function; /* as the probe table names it: "lab2_light_view"; NULL ends a list */
+    sl_status (*run_row)(const float *inputs, double *outputs);
+    /* A technique whose function is not in sl_probe.c's table (one a build adds, slot 0) describes it
+     * here; NULL: sl_probe_find(function). */
+    const struct sl_probe_function *described;
+} sl_technique_probe;
 
 typedef struct sl_technique {
     const char *name; /* what the lab teaches, as the status line says it ("VSM", "cascades") */
@@ -58,9 +69,16 @@ typedef struct sl_technique {
     void (*program_stats)(const struct sl_renderer *r, struct sl_program_stats *out);
     /* Frees what its frames made (the renderer's technique_state[lab]). */
     void (*destroy)(struct sl_renderer *r);
+
+    /* ---- Probes: the C functions of this lab the probe pass calls on probe inputs ----
+     * A list ended by an entry whose function is NULL; NULL: none. The GLSL functions need no entry: the
+     * probe pass draws them in a full-screen pass from their sl_probe.c entry alone. */
+    const sl_technique_probe *probes;
 } sl_technique;
 
 /* The technique of lab `lab` (1..SL_LAB_COUNT), NULL otherwise. */
 const sl_technique *sl_technique_of(int lab);
+/* The probe of `function` among the technique of lab `lab`'s, NULL if it has none of that name. */
+const sl_technique_probe *sl_technique_probe_of(int lab, const char *function);
 
 #endif

@@ -112,7 +112,7 @@ common=(-I"$root/framework" -I"$prefix/include")
 core=(sl_backend sl_case sl_compare sl_gl sl_image sl_json sl_log sl_params sl_platform sl_probe sl_protocol sl_scene
       sl_text)
 framework=(sl_bench sl_bench_baseline sl_case_view sl_context sl_lab5_vsm sl_labs sl_lab6_cascades sl_lab7_cube
-           sl_mesh sl_overlay sl_probe_pass sl_renderer sl_runner sl_serve sl_shader sl_viewer)
+           sl_mesh sl_overlay sl_probe_calls sl_probe_pass sl_renderer sl_runner sl_serve sl_shader sl_viewer)
 objects=()
 : >"$out/compile.log"
 # an object older than its source or than any of the project's headers is made again
