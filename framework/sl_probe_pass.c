@@ -321,8 +321,14 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
 
 bool sl_probe_pass_run(const sl_probe_table *t, const char *labs_dir, const char *framework_dir, double *outputs,
                        bool *not_implemented, char *err, size_t n) {
+    return sl_probe_pass_run_function(sl_probe_at(t->function), t, labs_dir, framework_dir, outputs, not_implemented,
+                                      err, n);
+}
+
+bool sl_probe_pass_run_function(const sl_probe_function *f, const sl_probe_table *t, const char *labs_dir,
+                                const char *framework_dir, double *outputs, bool *not_implemented, char *err,
+                                size_t n) {
     *not_implemented = false;
-    const sl_probe_function *f = sl_probe_at(t->function);
     if (!f || t->rows < 1 || t->rows > SL_PROBE_MAX_ROWS) {
         snprintf(err, n, "a malformed probe table");
         return false;

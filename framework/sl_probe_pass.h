@@ -18,5 +18,10 @@
  * names the lab's file and line), when the function could not be called. */
 bool sl_probe_pass_run(const sl_probe_table *table, const char *labs_dir, const char *framework_dir, double *outputs,
                        bool *not_implemented, char *err, size_t err_size);
+/* The same for a function described by its technique rather than sl_probe.c's table (table->function
+ * unused): a technique a build adds (sl_technique_probe.described). */
+bool sl_probe_pass_run_function(const sl_probe_function *f, const sl_probe_table *table, const char *labs_dir,
+                                const char *framework_dir, double *outputs, bool *not_implemented, char *err,
+                                size_t err_size);
 
 #endif

@@ -12,8 +12,12 @@ extern const sl_technique sl_lab5_technique;
 extern const sl_technique sl_lab6_technique;
 extern const sl_technique sl_lab7_technique;
 
+/* Slot 0: the technique a build adds, NULL in the course's builds (sl_labs_program's TECHNIQUE, the top
+ * CMakeLists.txt, defines this in each program's generated build info). */
+extern const sl_technique *const sl_build_added_technique;
+
 static const sl_technique *const _sl_techniques[SL_LAB_COUNT + 1] = {
-    NULL,
+    NULL, /* slot 0: sl_build_added_technique */
     &sl_lab1_technique,
     &sl_lab2_technique,
     &sl_lab3_technique,
@@ -24,6 +28,7 @@ static const sl_technique *const _sl_techniques[SL_LAB_COUNT + 1] = {
 };
 
 const sl_technique *sl_technique_of(int lab) {
+    if (lab == 0) return sl_build_added_technique;
     return lab >= 1 && lab <= SL_LAB_COUNT ? _sl_techniques[lab] : NULL;
 }
 
