@@ -11,16 +11,20 @@
 #include "sl_platform.h"
 #include "sl_context.h"
 #include "sl_renderer.h"
+#include "sl_technique.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 /* One row of the benchmark: a lab, a scene and the settings that differ from
- * the viewer's defaults for that lab. */
-typedef struct _sl_technique {
+ * the viewer's defaults for that lab. The rows are listed by the technique
+ * table (sl_technique.h): each technique's rows in turn, and for one with no
+ * row here, one of its lab's defaults. */
+typedef struct _sl_bench_setup {
     const char *name;   /* for --only */
     const char *what;
     const char *scene;
     int lab;
+    int technique;      /* the technique whose rows it is among, where not its lab's (lab 5's PCF comparisons) */
     bool lab_default;   /* the viewer's defaults for this lab: the figure in the lab's README */
     sl_compare_mode compare;
     bool set_bias;
@@ -35,10 +39,10 @@ typedef struct _sl_technique {
     /* lab 7: a 6 x 512^2 cube map (whatever --map-size says, which is the 2D labs') */
     bool cube_soft;
     sl_cube_pass cube_pass;
-} _sl_technique;
+} _sl_bench_setup;
 
 #define _SL_ROW(n, w, s, l, d) .name = n, .what = w, .scene = s, .lab = l, .lab_default = d
-static const _sl_technique _sl_techniques[] = {
+static const _sl_bench_setup _sl_bench_setups[] = {
     {_SL_ROW("lab1", "depth map; camera pass without shadows", "boxes_on_floor", 1, true)},
     {_SL_ROW("lab2", "hard shadows, manual compare (sampler2D)", "boxes_on_floor", 2, true)},
     {_SL_ROW("lab2-hardware", "hard shadows, hardware compare (sampler2DShadow)", "boxes_on_floor", 2, false),
@@ -69,35 +73,35 @@ static const _sl_technique _sl_techniques[] = {
     {_SL_ROW("lab5", "VSM: 512 moments, 5-tap blur, mipmaps, Chebyshev", "boxes_on_floor", 5, true)},
     {_SL_ROW("lab5-vsm-r1", "VSM, blur radius 1 (3+3 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
      .blur_radius = 1},
-    {_SL_ROW("lab5-pcf-r1", "PCF grid 3x3, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+    {_SL_ROW("lab5-pcf-r1", "PCF grid 3x3, the same footprint", "boxes_on_floor", 4, false), .technique = 5, .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 1},
     {_SL_ROW("lab5-vsm-r2", "VSM, blur radius 2 (5+5 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
      .blur_radius = 2},
-    {_SL_ROW("lab5-pcf-r2", "PCF grid 5x5, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+    {_SL_ROW("lab5-pcf-r2", "PCF grid 5x5, the same footprint", "boxes_on_floor", 4, false), .technique = 5, .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 2},
     {_SL_ROW("lab5-vsm-r3", "VSM, blur radius 3 (7+7 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
      .blur_radius = 3},
-    {_SL_ROW("lab5-pcf-r3", "PCF grid 7x7, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+    {_SL_ROW("lab5-pcf-r3", "PCF grid 7x7, the same footprint", "boxes_on_floor", 4, false), .technique = 5, .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 3},
     {_SL_ROW("lab5-vsm-r4", "VSM, blur radius 4 (9+9 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
      .blur_radius = 4},
-    {_SL_ROW("lab5-pcf-r4", "PCF grid 9x9, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+    {_SL_ROW("lab5-pcf-r4", "PCF grid 9x9, the same footprint", "boxes_on_floor", 4, false), .technique = 5, .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 4},
     {_SL_ROW("lab5-vsm-r5", "VSM, blur radius 5 (11+11 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
      .blur_radius = 5},
-    {_SL_ROW("lab5-pcf-r5", "PCF grid 11x11, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+    {_SL_ROW("lab5-pcf-r5", "PCF grid 11x11, the same footprint", "boxes_on_floor", 4, false), .technique = 5, .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 5},
     {_SL_ROW("lab5-vsm-r6", "VSM, blur radius 6 (13+13 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
      .blur_radius = 6},
-    {_SL_ROW("lab5-pcf-r6", "PCF grid 13x13, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+    {_SL_ROW("lab5-pcf-r6", "PCF grid 13x13, the same footprint", "boxes_on_floor", 4, false), .technique = 5, .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 6},
     {_SL_ROW("lab5-vsm-r7", "VSM, blur radius 7 (15+15 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
      .blur_radius = 7},
-    {_SL_ROW("lab5-pcf-r7", "PCF grid 15x15, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+    {_SL_ROW("lab5-pcf-r7", "PCF grid 15x15, the same footprint", "boxes_on_floor", 4, false), .technique = 5, .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 7},
     {_SL_ROW("lab5-vsm-r8", "VSM, blur radius 8 (17+17 taps)", "boxes_on_floor", 5, false), .set_vsm = true,
      .blur_radius = 8},
-    {_SL_ROW("lab5-pcf-r8", "PCF grid 17x17, the same footprint", "boxes_on_floor", 4, false), .set_filter = true,
+    {_SL_ROW("lab5-pcf-r8", "PCF grid 17x17, the same footprint", "boxes_on_floor", 4, false), .technique = 5, .set_filter = true,
      .filter = SL_FILTER_GRID, .grid_radius = 8},
     /* lab 6: one depth pass per cascade (each --map-size square), the camera pass picks one per pixel */
     {_SL_ROW("lab6", "4 cascades, lambda 0.8", "cascade_field", 6, true), .cascades = 4},
@@ -114,7 +118,7 @@ static const _sl_technique _sl_techniques[] = {
      .cube_soft = true},
 };
 #undef _SL_ROW
-#define _SL_TECHNIQUE_COUNT ((int)(sizeof _sl_techniques / sizeof _sl_techniques[0]))
+#define _SL_SETUP_COUNT ((int)(sizeof _sl_bench_setups / sizeof _sl_bench_setups[0]))
 
 typedef struct _sl_bench_options {
     int width, height, map_size, frames, warmup;
@@ -125,7 +129,7 @@ typedef struct _sl_bench_options {
 
 /* What one technique measured. */
 typedef struct _sl_result {
-    const _sl_technique *t;
+    const _sl_bench_setup *t;
     bool ran;
     char problem[512];             /* why it did not draw what it says, if so */
     double first_ms;               /* the first frame: builds programs, llvmpipe compiles shaders */
@@ -229,7 +233,7 @@ static bool _sl_parse_options(int argc, char **argv, _sl_bench_options *o) {
     return true;
 }
 
-static void _sl_params_for(const _sl_technique *t, int map_size, sl_render_params *p) {
+static void _sl_params_for(const _sl_bench_setup *t, int map_size, sl_render_params *p) {
     sl_render_params_defaults(p);
     p->lab = t->lab;
     p->shadow_map_size = map_size;
@@ -251,7 +255,7 @@ static void _sl_params_for(const _sl_technique *t, int map_size, sl_render_param
 }
 
 /* Says what kept a frame from drawing the technique in full: stubs, errors, a lower lab. */
-static void _sl_describe_problem(const sl_frame_info *info, const _sl_technique *t, char *out, size_t n) {
+static void _sl_describe_problem(const sl_frame_info *info, const _sl_bench_setup *t, char *out, size_t n) {
     int lab = t->lab;
     out[0] = '\0';
     size_t len = 0;
@@ -276,7 +280,7 @@ static const sl_bench_plain_gl *_sl_plain_gl;
 void sl_bench_set_plain_gl(const sl_bench_plain_gl *program) { _sl_plain_gl = program; }
 
 /* The baseline's frames, timed like the labs'. */
-static bool _sl_run_baseline(sl_context *ctx, const _sl_bench_options *o, const _sl_technique *t, const sl_scene *scene,
+static bool _sl_run_baseline(sl_context *ctx, const _sl_bench_options *o, const _sl_bench_setup *t, const sl_scene *scene,
                              _sl_result *res, double *frames, double *passes, char *err, size_t err_size) {
     double start = _sl_now_ms();
     void *b = _sl_plain_gl->create(scene, o->map_size, t->grid_radius, err, err_size);
@@ -314,7 +318,7 @@ static bool _sl_run_baseline(sl_context *ctx, const _sl_bench_options *o, const 
     return true;
 }
 
-static bool _sl_run_technique(sl_context *ctx, const _sl_bench_options *o, const _sl_technique *t,
+static bool _sl_run_technique(sl_context *ctx, const _sl_bench_options *o, const _sl_bench_setup *t,
                               _sl_result *res, char *err, size_t err_size) {
     *res = (_sl_result){.t = t};
     sl_scene scene;
@@ -480,15 +484,36 @@ static void _sl_print_json(const _sl_bench_options *o, const _sl_result *results
     cJSON_Delete(root);
 }
 
+/* The rows to time: each technique's of the table in turn (sl_technique.h), the ones --only names. */
+static void _sl_list_setups(const _sl_bench_options *o, const _sl_bench_setup **chosen, int *count) {
+    static _sl_bench_setup defaults[SL_LAB_COUNT + 1];
+    static char default_names[SL_LAB_COUNT + 1][16];
+    for (int lab = 0; lab <= SL_LAB_COUNT; lab++) {
+        const sl_technique *technique = sl_technique_of(lab);
+        if (!technique) continue;
+        bool has_rows = false;
+        for (int i = 0; i < _SL_SETUP_COUNT; i++) {
+            const _sl_bench_setup *s = &_sl_bench_setups[i];
+            if ((s->technique ? s->technique : s->lab) != lab) continue;
+            has_rows = true;
+            if ((!s->baseline || _sl_plain_gl) && (!o->only || sl_platform_match(o->only, s->name)))
+                chosen[(*count)++] = s;
+        }
+        if (has_rows) continue;
+        /* a technique with no row here: its lab's defaults, on the scene most rows use */
+        snprintf(default_names[lab], sizeof default_names[lab], "lab%d", lab);
+        defaults[lab] = (_sl_bench_setup){.name = default_names[lab], .what = technique->name,
+                                          .scene = "boxes_on_floor", .lab = lab, .lab_default = true};
+        if (!o->only || sl_platform_match(o->only, defaults[lab].name)) chosen[(*count)++] = &defaults[lab];
+    }
+}
+
 int sl_bench_main(int argc, char **argv) {
     _sl_bench_options o;
     if (!_sl_parse_options(argc, argv, &o)) return 2;
-    const _sl_technique *chosen[_SL_TECHNIQUE_COUNT];
+    const _sl_bench_setup *chosen[_SL_SETUP_COUNT + SL_LAB_COUNT + 1];
     int count = 0;
-    for (int i = 0; i < _SL_TECHNIQUE_COUNT; i++)
-        if ((!_sl_techniques[i].baseline || _sl_plain_gl) &&
-            (!o.only || sl_platform_match(o.only, _sl_techniques[i].name)))
-            chosen[count++] = &_sl_techniques[i];
+    _sl_list_setups(&o, chosen, &count);
     if (o.list) {
         for (int i = 0; i < count; i++)
             printf("%-20s lab %d, %s: %s%s\n", chosen[i]->name, chosen[i]->lab, chosen[i]->scene, chosen[i]->what,
@@ -514,7 +539,7 @@ int sl_bench_main(int argc, char **argv) {
     }
     if (o.window) glfwSwapInterval(0); /* time the frames, not the display's refresh */
     double context_ms = _sl_now_ms() - start;
-    _sl_result results[_SL_TECHNIQUE_COUNT];
+    _sl_result results[_SL_SETUP_COUNT + SL_LAB_COUNT + 1];
     int status = 0;
     for (int i = 0; i < count; i++) {
         if (isatty(STDERR_FILENO)) fprintf(stderr, "shadowlab: timing %s ...\r", chosen[i]->name);

@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_lab6_cascades.h"
 #include "sl_overlay.h"
+#include "sl_probe_calls.h"
 #include "sl_technique.h"
 
 #include <math.h>
@@ -499,4 +500,5 @@ const sl_technique sl_lab6_technique = {
     .reload_changed = _sl_lab6_reload_changed,
     .program_stats = _sl_lab6_program_stats,
     .destroy = _sl_lab6_destroy,
+    .probes = sl_lab6_probes,
 };

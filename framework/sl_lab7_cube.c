@@ -7,6 +7,7 @@
 #include "sl_renderer.h"
 #include "sl_shader.h"
 #include "sl_overlay.h"
+#include "sl_probe_calls.h"
 #include "sl_technique.h"
 
 /* The programs lab 7 draws with, each built the first time a frame needs it. */
@@ -404,4 +405,5 @@ const sl_technique sl_lab7_technique = {
     .reload_changed = _sl_lab7_reload_changed,
     .program_stats = _sl_lab7_program_stats,
     .destroy = _sl_lab7_destroy,
+    .probes = sl_lab7_probes,
 };

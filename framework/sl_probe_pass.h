@@ -2,8 +2,9 @@
  * GLSL functions run in a full-screen pass, one pixel per row, that includes
  * the lab's shader file and writes the function's result into an RGBA32F
  * target; functions that read a depth map get synthetic ones (sl_probe_map).
- * C functions are called directly through this build's lab table, with the
- * GL state they set read back. */
+ * C functions are called directly, one row at a time, by the probes of the
+ * technique of their lab (sl_technique.h; the labs' are in sl_probe_calls.c),
+ * with the GL state they set read back. */
 #ifndef SL_PROBE_PASS_H
 #define SL_PROBE_PASS_H
 
@@ -17,5 +18,10 @@
  * names the lab's file and line), when the function could not be called. */
 bool sl_probe_pass_run(const sl_probe_table *table, const char *labs_dir, const char *framework_dir, double *outputs,
                        bool *not_implemented, char *err, size_t err_size);
+/* The same for a function described by its technique rather than sl_probe.c's table (table->function
+ * unused): a technique a build adds (sl_technique_probe.described). */
+bool sl_probe_pass_run_function(const sl_probe_function *f, const sl_probe_table *table, const char *labs_dir,
+                                const char *framework_dir, double *outputs, bool *not_implemented, char *err,
+                                size_t err_size);
 
 #endif

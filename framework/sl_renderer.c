@@ -99,7 +99,7 @@ bool sl_renderer_init(sl_renderer *r, const sl_renderer_desc *desc, char *err, s
 void sl_renderer_program_stats(const sl_renderer *r, sl_program_stats *out) {
     *out = (sl_program_stats){0};
     /* the programs each technique keeps in its module */
-    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+    for (int lab = 0; lab <= SL_LAB_COUNT; lab++) {
         const sl_technique *t = sl_technique_of(lab);
         if (t && t->program_stats) t->program_stats(r, out);
     }
@@ -109,7 +109,7 @@ bool sl_renderer_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_
     *reloaded = false;
     bool ok = true;
     /* the programs each technique keeps in its module; the first error is reported */
-    for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+    for (int lab = 0; lab <= SL_LAB_COUNT; lab++) {
         const sl_technique *t = sl_technique_of(lab);
         char technique_err[sizeof r->shader_errors[0]] = "";
         if (!t || !t->reload_changed || t->reload_changed(r, reloaded, technique_err, sizeof technique_err)) continue;
@@ -126,7 +126,7 @@ static void _sl_destroy_meshes(sl_renderer *r) {
 
 void sl_renderer_destroy(sl_renderer *r) {
     _sl_destroy_meshes(r);
-    for (int lab = SL_LAB_COUNT; lab >= 1; lab--) {
+    for (int lab = SL_LAB_COUNT; lab >= 0; lab--) {
         const sl_technique *t = sl_technique_of(lab);
         if (t && t->destroy) t->destroy(r);
     }
@@ -244,11 +244,11 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     /* A technique that takes the frame draws it (lab 6's cascades; lab 7's cube map for a point light);
      * else the one that draws every other frame (lab 1's shadow map, which labs 2-5 add to). */
     const sl_technique *drawing = NULL;
-    for (int lab = 1; lab <= SL_LAB_COUNT && !drawing; lab++) {
+    for (int lab = 0; lab <= SL_LAB_COUNT && !drawing; lab++) {
         const sl_technique *t = sl_technique_of(lab);
         if (t && t->takes_frame && t->takes_frame(r, scene, params)) drawing = t;
     }
-    for (int lab = 1; lab <= SL_LAB_COUNT && !drawing; lab++) {
+    for (int lab = 0; lab <= SL_LAB_COUNT && !drawing; lab++) {
         const sl_technique *t = sl_technique_of(lab);
         if (t && !t->takes_frame && t->draw_frame) drawing = t;
     }

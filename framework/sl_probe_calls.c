@@ -1,0 +1,449 @@
+#include "sl_probe_calls.h"
+
+#include <stdbool.h>
+
+#include "sl_gl.h"
+#include "sl_labs.h"
+
+/* Each row runner calls this build's lab function (sl_build_lab_functions) on one input row and writes what
+ * the probe reads back: the values it returns, or the GL state it set. */
+
+static void _sl_vec3(const float *in, vec3 out) { glm_vec3_copy((float *)in, out); }
+
+static sl_light _sl_light(int type, const float *direction, const float *position) {
+    sl_light light = {.type = (sl_light_type)type, .intensity = 1, .near = 0.5f, .far = 50, .spot_angle_deg = 30};
+    _sl_vec3(direction, light.direction);
+    _sl_vec3(position, light.position);
+    glm_vec3_one(light.color);
+    return light;
+}
+
+static void _sl_store_matrix(mat4 m, double *out) {
+    for (int i = 0; i < 16; i++) out[i] = ((const float *)m)[i];
+}
+
+/* GL state the depth-pass functions set, from a neutral start as the renderer gives them. */
+static void _sl_neutral_depth_state(void) {
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0, 0);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+}
+
+/* lab1_begin_depth_pass on a framebuffer of `size` made here, from a state
+ * that is wrong in every way the function must fix: another framebuffer
+ * bound, a small viewport, the depth test off with GL_ALWAYS, depth writes
+ * off, and the depths at 0.5, so a clear shows as 1.0. The framebuffer holds
+ * renderbuffers (colour and depth), not lab 1's map: what the map is made of
+ * is lab1_create_shadow_map's to get right, and this file ships to students.
+ * map.depth_texture names a depth texture of that size too, for a function
+ * that attaches it again; the depth read back is whichever is attached. */
+static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int size, double *out) {
+    sl_shadow_map map = {.size = size};
+    GLuint renderbuffers[2];
+    glGenRenderbuffers(2, renderbuffers);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size, size);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glGenTextures(1, &map.depth_texture);
+    glBindTexture(GL_TEXTURE_2D, map.depth_texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &map.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers[0]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers[1]);
+    glDepthMask(GL_TRUE);
+    glClearDepth(0.5);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glClearDepth(1.0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, 7, 5);
+    glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_FALSE);
+    sl_status status = labs->lab1_begin_depth_pass(&map);
+    GLint bound = 0, viewport[4] = {0}, func = 0;
+    GLboolean writes = GL_FALSE;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetIntegerv(GL_DEPTH_FUNC, &func);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &writes);
+    out[0] = (GLuint)bound == map.framebuffer;
+    out[1] = viewport[2];
+    out[2] = viewport[3];
+    out[3] = glIsEnabled(GL_DEPTH_TEST);
+    out[4] = func == GL_LEQUAL ? GL_LESS : func; /* both keep the nearest depth: equally right */
+    out[5] = writes;
+    float depth = -1;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, map.framebuffer);
+    glReadPixels(size / 2, size / 2, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+    out[6] = depth;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &map.framebuffer);
+    glDeleteRenderbuffers(2, renderbuffers);
+    glDeleteTextures(1, &map.depth_texture);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    return status;
+}
+
+/* lab1_create_shadow_map(size): the map's filtering and wrapping, as glGet*
+ * reports them: what a lookup of a later lab reads between texels and past
+ * the map's edge. */
+static sl_status _sl_call_create_shadow_map(const sl_lab_functions *labs, int size, double *out) {
+    sl_shadow_map map = {0};
+    sl_status status = labs->lab1_create_shadow_map(size, &map);
+    while (glGetError() != GL_NO_ERROR) {}
+    if (map.depth_texture && glIsTexture(map.depth_texture)) {
+        GLint min = 0, mag = 0, s = 0, t = 0;
+        GLfloat border[4] = {0, 0, 0, 0};
+        glBindTexture(GL_TEXTURE_2D, map.depth_texture);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &mag);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, &s);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, &t);
+        glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        out[0] = min;
+        out[1] = mag;
+        out[2] = s;
+        out[3] = t;
+        /* a depth texture reads its border's first component: only past the edge does it count */
+        out[4] = s == GL_CLAMP_TO_BORDER || t == GL_CLAMP_TO_BORDER ? border[0] : -1;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (map.framebuffer) glDeleteFramebuffers(1, &map.framebuffer);
+    if (map.depth_texture) glDeleteTextures(1, &map.depth_texture);
+    return status;
+}
+
+/* lab7_create_cube_map(size): what it made, as glGet* reports it. */
+static sl_status _sl_call_create_cube_map(const sl_lab_functions *labs, int size, double *out) {
+    sl_cube_map map = {0};
+    sl_status status = labs->lab7_create_cube_map(size, &map);
+    while (glGetError() != GL_NO_ERROR) {}
+    bool cube = map.depth_cube && glIsTexture(map.depth_cube);
+    if (cube) {
+        glBindTexture(GL_TEXTURE_CUBE_MAP, map.depth_cube);
+        cube = glGetError() == GL_NO_ERROR; /* a texture first bound as 2D cannot become a cube map */
+    }
+    out[0] = cube;
+    for (int o = 1; o < 9; o++) out[o] = 0;
+    if (cube) {
+        GLint w = 0, h = 0, bits = 0, faces = 0, min = 0, mag = 0, s = 0, t = 0, r = 0;
+        glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_TEXTURE_WIDTH, &w);
+        glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_TEXTURE_HEIGHT, &h);
+        glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_TEXTURE_DEPTH_SIZE, &bits);
+        for (int face = 0; face < 6; face++) {
+            GLint fw = 0, fb = 0;
+            glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, 0, GL_TEXTURE_WIDTH, &fw);
+            glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, 0, GL_TEXTURE_DEPTH_SIZE, &fb);
+            faces += fw == size && fb > 0;
+        }
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, &min);
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, &mag);
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, &s);
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, &t);
+        glGetTexParameteriv(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, &r);
+        out[1] = w;
+        out[2] = h;
+        out[3] = bits > 0; /* 16, 24 or 32 bits, integer or float: distance / far fits any */
+        out[4] = faces;
+        out[5] = min == GL_NEAREST && mag == GL_NEAREST;
+        out[6] = s == GL_CLAMP_TO_EDGE && t == GL_CLAMP_TO_EDGE && r == GL_CLAMP_TO_EDGE;
+        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    }
+    if (map.framebuffer && glIsFramebuffer(map.framebuffer)) {
+        GLint draw = -1, read = -1;
+        glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
+        out[7] = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+        glGetIntegerv(GL_DRAW_BUFFER, &draw);
+        glGetIntegerv(GL_READ_BUFFER, &read);
+        out[8] = draw == GL_NONE && read == GL_NONE;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    if (map.framebuffer) glDeleteFramebuffers(1, &map.framebuffer);
+    if (map.depth_cube) glDeleteTextures(1, &map.depth_cube);
+    return status;
+}
+
+/* lab7_begin_cube_pass(face) on a cube map of `size` made here, from a state
+ * wrong in every way the function must fix (as lab 1's probe), every face's
+ * depths at 0.5 so a clear shows as 1.0. */
+static sl_status _sl_call_begin_cube_pass(const sl_lab_functions *labs, int face, int size, double *out) {
+    sl_cube_map map = {.size = size};
+    glGenTextures(1, &map.depth_cube);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, map.depth_cube);
+    for (int f = 0; f < 6; f++)
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_DEPTH_COMPONENT24, size, size, 0,
+                     GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    glGenFramebuffers(1, &map.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    glDepthMask(GL_TRUE);
+    glClearDepth(0.5);
+    for (int f = 0; f < 6; f++) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f,
+                               map.depth_cube, 0);
+        glClear(GL_DEPTH_BUFFER_BIT);
+    }
+    glClearDepth(1.0);
+    /* the wrong face attached: the function must attach its own */
+    int other = face >= 0 && face < 6 ? (face + 3) % 6 : 0;
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)other,
+                           map.depth_cube, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, 7, 5);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    sl_status status = labs->lab7_begin_cube_pass(&map, face);
+    GLint bound = 0, viewport[4] = {0}, attached = 0;
+    GLboolean writes = GL_FALSE;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &writes);
+    out[0] = (GLuint)bound == map.framebuffer;
+    out[2] = viewport[2];
+    out[3] = viewport[3];
+    out[4] = glIsEnabled(GL_DEPTH_TEST);
+    out[5] = writes;
+    out[1] = 0;
+    out[6] = -1;
+    if (out[0]) {
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                              GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, &attached);
+        out[1] = attached;
+        float depth = -1;
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, map.framebuffer);
+        glReadPixels(size / 2, size / 2, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+        out[6] = depth;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &map.framebuffer);
+    glDeleteTextures(1, &map.depth_cube);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    return status;
+}
+
+/* ---- one row of each function ---- */
+
+static sl_status _sl_row_lab1_create_shadow_map(const float *in, double *out) {
+    return _sl_call_create_shadow_map(&sl_build_lab_functions, (int)in[0], out);
+}
+
+static sl_status _sl_row_lab1_begin_depth_pass(const float *in, double *out) {
+    return _sl_call_begin_depth_pass(&sl_build_lab_functions, (int)in[0], out);
+}
+
+static sl_status _sl_row_lab2_light_view(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    mat4 m;
+    glm_mat4_identity(m);
+    sl_light light = _sl_light((int)in[0], in + 1, in + 4);
+    sl_aabb bounds;
+    _sl_vec3(in + 7, bounds.min);
+    _sl_vec3(in + 10, bounds.max);
+    status = sl_build_lab_functions.lab2_light_view(&light, &bounds, m);
+    _sl_store_matrix(m, out);
+    return status;
+}
+
+static sl_status _sl_row_lab2_light_projection(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    mat4 m;
+    glm_mat4_identity(m);
+    sl_light light = _sl_light((int)in[0], in + 1, in + 4);
+    light.spot_angle_deg = in[7];
+    light.near = in[8];
+    light.far = in[9];
+    sl_aabb bounds;
+    _sl_vec3(in + 10, bounds.min);
+    _sl_vec3(in + 13, bounds.max);
+    vec3 eye, target, up;
+    _sl_vec3(in + 16, eye);
+    _sl_vec3(in + 19, target);
+    _sl_vec3(in + 22, up);
+    mat4 view;
+    glm_lookat(eye, target, up, view);
+    status = sl_build_lab_functions.lab2_light_projection(&light, &bounds, view, m);
+    _sl_store_matrix(m, out);
+    return status;
+}
+
+static sl_status _sl_row_lab2_shadow_matrix(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    mat4 m;
+    glm_mat4_identity(m);
+    mat4 projection, view;
+    glm_ortho(in[0], in[1], in[2], in[3], in[4], in[5], projection);
+    vec3 eye, target, up;
+    _sl_vec3(in + 6, eye);
+    _sl_vec3(in + 9, target);
+    _sl_vec3(in + 12, up);
+    glm_lookat(eye, target, up, view);
+    status = sl_build_lab_functions.lab2_shadow_matrix(projection, view, m);
+    _sl_store_matrix(m, out);
+    return status;
+}
+
+static sl_status _sl_row_lab3_depth_pass_state(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    sl_render_params defaults;
+    sl_render_params_defaults(&defaults);
+    sl_bias_settings bias = defaults.bias;
+    bias.mode = (sl_bias_mode)(int)in[0];
+    bias.polygon_offset_factor = in[1];
+    bias.polygon_offset_units = in[2];
+    _sl_neutral_depth_state();
+    int previous = (int)in[3];
+    if (previous >= 0 && previous < SL_BIAS_MODE_COUNT) {
+        /* the mode before: whatever it switched on must not outlive it */
+        sl_bias_settings before = bias;
+        before.mode = (sl_bias_mode)previous;
+        status = sl_build_lab_functions.lab3_depth_pass_state(&before);
+    }
+    if (status == SL_OK || previous < 0) status = sl_build_lab_functions.lab3_depth_pass_state(&bias);
+    GLfloat factor = 0, units = 0;
+    GLint face = 0;
+    glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor);
+    glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units);
+    glGetIntegerv(GL_CULL_FACE_MODE, &face);
+    /* factor, units and face only count where their switch is on: left
+     * set but disabled, they change nothing */
+    out[0] = glIsEnabled(GL_POLYGON_OFFSET_FILL);
+    out[1] = out[0] ? factor : 0;
+    out[2] = out[0] ? units : 0;
+    out[3] = glIsEnabled(GL_CULL_FACE);
+    out[4] = out[3] ? face : 0;
+    _sl_neutral_depth_state();
+    return status;
+}
+
+static sl_status _sl_row_lab6_split_distances(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    float splits[SL_MAX_CASCADES + 1] = {0};
+    int count = (int)in[2];
+    status = sl_build_lab_functions.lab6_split_distances(in[0], in[1], count, in[3], splits);
+    for (int i = 0; i <= SL_MAX_CASCADES; i++) out[i] = i <= count ? splits[i] : 0;
+    return status;
+}
+
+static sl_status _sl_row_lab6_slice_sphere(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    sl_camera cam = {.fov_deg = in[6], .near = in[8], .far = in[9]};
+    _sl_vec3(in + 0, cam.position);
+    _sl_vec3(in + 3, cam.target);
+    mat4 view, proj, vp, inv;
+    sl_camera_view(&cam, view);
+    sl_camera_projection(&cam, in[7], proj);
+    glm_mat4_mul(proj, view, vp);
+    glm_mat4_inv(vp, inv);
+    vec4 sphere = {0, 0, 0, 0};
+    status = sl_build_lab_functions.lab6_slice_sphere(inv, cam.near, cam.far, in[10], in[11], sphere);
+    for (int i = 0; i < 4; i++) out[i] = sphere[i];
+    return status;
+}
+
+static sl_status _sl_row_lab6_cascade_matrices(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    sl_light light = _sl_light(SL_LIGHT_DIRECTIONAL, in + 0, in + 0);
+    vec4 sphere = {in[3], in[4], in[5], in[6]};
+    mat4 view, proj, vp;
+    glm_mat4_identity(view);
+    glm_mat4_identity(proj);
+    status = sl_build_lab_functions.lab6_cascade_matrices(&light, sphere, in[7], (int)in[8], view, proj);
+    glm_mat4_mul(proj, view, vp);
+    _sl_store_matrix(vp, out);
+    return status;
+}
+
+static sl_status _sl_row_lab7_create_cube_map(const float *in, double *out) {
+    return _sl_call_create_cube_map(&sl_build_lab_functions, (int)in[0], out);
+}
+
+static sl_status _sl_row_lab7_begin_cube_pass(const float *in, double *out) {
+    return _sl_call_begin_cube_pass(&sl_build_lab_functions, (int)in[0], (int)in[1], out);
+}
+
+static sl_status _sl_row_lab7_face_view(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    mat4 m;
+    glm_mat4_identity(m);
+    vec3 position;
+    _sl_vec3(in + 1, position);
+    status = sl_build_lab_functions.lab7_face_view(position, (int)in[0], m);
+    _sl_store_matrix(m, out);
+    return status;
+}
+
+static sl_status _sl_row_lab7_face_projection(const float *in, double *out) {
+    mat4 m;
+    glm_mat4_identity(m);
+    sl_status status = sl_build_lab_functions.lab7_face_projection(in[0], in[1], m);
+    _sl_store_matrix(m, out);
+    return status;
+}
+
+static sl_status _sl_row_lab4_configure_shadow_texture(const float *in, double *out) {
+    sl_status status = SL_FAILED;
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 16, 16, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    /* neither value any mode asks for: what the function sets shows */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    status = sl_build_lab_functions.lab4_configure_shadow_texture(tex, (sl_filter_mode)(int)in[0]);
+    GLint min = 0, mag = 0;
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &mag);
+    out[0] = min;
+    out[1] = mag;
+    glDeleteTextures(1, &tex);
+    return status;
+}
+
+/* ---- each lab's list, for its technique's descriptor ---- */
+
+const sl_technique_probe sl_lab1_probes[] = {
+    {.function = "lab1_create_shadow_map", .run_row = _sl_row_lab1_create_shadow_map},
+    {.function = "lab1_begin_depth_pass", .run_row = _sl_row_lab1_begin_depth_pass},
+    {0},
+};
+const sl_technique_probe sl_lab2_probes[] = {
+    {.function = "lab2_light_view", .run_row = _sl_row_lab2_light_view},
+    {.function = "lab2_light_projection", .run_row = _sl_row_lab2_light_projection},
+    {.function = "lab2_shadow_matrix", .run_row = _sl_row_lab2_shadow_matrix},
+    {0},
+};
+const sl_technique_probe sl_lab3_probes[] = {
+    {.function = "lab3_depth_pass_state", .run_row = _sl_row_lab3_depth_pass_state},
+    {0},
+};
+const sl_technique_probe sl_lab4_probes[] = {
+    {.function = "lab4_configure_shadow_texture", .run_row = _sl_row_lab4_configure_shadow_texture},
+    {0},
+};
+const sl_technique_probe sl_lab6_probes[] = {
+    {.function = "lab6_split_distances", .run_row = _sl_row_lab6_split_distances},
+    {.function = "lab6_slice_sphere", .run_row = _sl_row_lab6_slice_sphere},
+    {.function = "lab6_cascade_matrices", .run_row = _sl_row_lab6_cascade_matrices},
+    {0},
+};
+const sl_technique_probe sl_lab7_probes[] = {
+    {.function = "lab7_create_cube_map", .run_row = _sl_row_lab7_create_cube_map},
+    {.function = "lab7_begin_cube_pass", .run_row = _sl_row_lab7_begin_cube_pass},
+    {.function = "lab7_face_view", .run_row = _sl_row_lab7_face_view},
+    {.function = "lab7_face_projection", .run_row = _sl_row_lab7_face_projection},
+    {0},
+};
