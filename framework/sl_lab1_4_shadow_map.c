@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include "sl_renderer.h"
+#include "sl_lab1_4_viewer.h"
 #include "sl_technique.h"
 
 /* Calls lab N's function fn through the renderer's table, recording what it returned. */
@@ -616,4 +617,7 @@ const sl_technique sl_lab1_technique = {
     .reload_changed = _sl_lab1_reload_changed,
     .program_stats = _sl_lab1_program_stats,
     .destroy = _sl_lab1_destroy,
+    /* the viewer's side: sl_lab1_4_viewer.c */
+    .settings_text = sl_lab1_settings_text,
+    .drawing_text = sl_lab1_drawing_text,
 };

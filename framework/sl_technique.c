@@ -1,12 +1,13 @@
 #include "sl_technique.h"
 
-/* Labs 2-4 add their steps to lab 1's shadow-map frame (sl_lab1_4_shadow_map.c): they build on each
- * other inside one frame, so they have no hooks of their own. */
-static const sl_technique _sl_lab2_technique = {.name = "shadow lookup", .lab = 2};
-static const sl_technique _sl_lab3_technique = {.name = "bias", .lab = 3};
-static const sl_technique _sl_lab4_technique = {.name = "filtering", .lab = 4};
-/* Each in its own module (sl_lab1_4_shadow_map.c, sl_lab5_vsm.c, sl_lab6_cascades.c, sl_lab7_cube.c). */
+/* Each in its own module (sl_lab1_4_shadow_map.c, sl_lab5_vsm.c, sl_lab6_cascades.c, sl_lab7_cube.c). Labs
+ * 2-4 add their steps to lab 1's shadow-map frame (sl_lab1_4_shadow_map.c): they build on each other inside
+ * one frame, so they have no drawing hooks of their own, only what the viewer says of them
+ * (sl_lab1_4_viewer.c, where their descriptors are). */
 extern const sl_technique sl_lab1_technique;
+extern const sl_technique sl_lab2_technique;
+extern const sl_technique sl_lab3_technique;
+extern const sl_technique sl_lab4_technique;
 extern const sl_technique sl_lab5_technique;
 extern const sl_technique sl_lab6_technique;
 extern const sl_technique sl_lab7_technique;
@@ -14,9 +15,9 @@ extern const sl_technique sl_lab7_technique;
 static const sl_technique *const _sl_techniques[SL_LAB_COUNT + 1] = {
     NULL,
     &sl_lab1_technique,
-    &_sl_lab2_technique,
-    &_sl_lab3_technique,
-    &_sl_lab4_technique,
+    &sl_lab2_technique,
+    &sl_lab3_technique,
+    &sl_lab4_technique,
     &sl_lab5_technique,
     &sl_lab6_technique,
     &sl_lab7_technique,

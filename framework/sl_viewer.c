@@ -72,6 +72,12 @@ static const char *const _sl_path_names[] = {"none", "slide", "turn"};
 #define _SL_PATH_TURN_DEGREES 3.0f  /* half the turn */
 
 
+/* What a technique's key or text is given of the viewer (sl_technique.h): `info`, the frame last drawn. */
+static sl_view_context _sl_view_context(_sl_viewer *v, const sl_frame_info *info) {
+    return (sl_view_context){.params = &v->params, .scene = &v->scene, .info = info, .frozen = v->frozen,
+                             .camera_path = v->camera_path ? _sl_path_names[v->camera_path] : NULL};
+}
+
 /* The second lab code (sl_viewer_set_second_labs), NULL in builds without one. */
 static const sl_lab_functions *_sl_second_functions;
 static const char *_sl_second_dir, *_sl_second_kind;
@@ -178,32 +184,10 @@ static void _sl_update_title(_sl_viewer *v) {
     const sl_frame_info *info = sl_renderer_info(v->show_second ? &v->second : &v->renderer);
     char title[512], settings[512];
     const sl_render_params *p = &v->params;
-    if (p->lab == 7 && v->scene.light.type == SL_LIGHT_POINT)
-        snprintf(settings, sizeof settings, "cube map %d, bias %.4f, %s, %s", p->cube.map_size, p->cube.bias,
-                 p->cube.soft ? "soft (20 directions)" : "hard",
-                 info->cube_layered ? "one layered pass" : "six passes");
-    else if (p->lab <= 2)
-        snprintf(settings, sizeof settings, "%s compare, bias %.4f", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual",
-                 p->bias.constant);
-    else
-        snprintf(settings, sizeof settings, "bias: %s %.4f%s%s", sl_bias_mode_name(p->bias.mode), p->bias.constant,
-                 p->lab >= 4 ? ", filter: " : "", p->lab >= 4 ? sl_filter_mode_name(p->filter.mode) : "");
-    if (p->lab >= 4 && p->filter.mode == SL_FILTER_GRID)
-        snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " %dx%d", 2 * p->filter.grid_radius + 1,
-                 2 * p->filter.grid_radius + 1);
-    if (p->lab >= 4 && p->filter.mode == SL_FILTER_POISSON)
-        snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " r=%.1f", p->filter.poisson_radius);
-    if (p->lab >= 4 && p->filter.mode == SL_FILTER_PCSS)
-        snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " light %.2f", v->scene.light.size);
-    if (p->lab == 5 && !p->vsm_off)
-        snprintf(settings, sizeof settings, "VSM: blur %d, bleeding %.2f, min variance %.1e", p->vsm.blur_radius,
-                 p->vsm.bleeding, p->vsm.min_variance);
-    else if (p->lab == 5)
-        snprintf(settings + strlen(settings), sizeof settings - strlen(settings), " (VSM off: P)");
-    if (p->lab == 6) /* lab 6: cascades */
-        snprintf(settings, sizeof settings, "%d cascades, lambda %.2f%s%s%s", p->cascades.count, p->cascades.lambda,
-                 p->cascades.blend_band > 0 ? ", blend band" : "", p->cascades.show_cascades ? ", coloured" : "",
-                 v->frozen ? ", frustum frozen (Z)" : "");
+    const sl_technique *t = sl_technique_of(p->lab);
+    sl_view_context c = _sl_view_context(v, info);
+    settings[0] = '\0';
+    if (t && t->settings_text) t->settings_text(&c, settings, sizeof settings);
     if (v->status[0]) snprintf(settings, sizeof settings, "%s", v->status); /* the asked lab's settings do not draw */
     int n = snprintf(title, sizeof title, "shadowlab — lab %d — %s — %s%s%s%s", p->lab, v->scene.name, settings,
                      p->output == SL_OUTPUT_VISIBILITY ? " — visibility" : "", v->show_second ? " — " : "",
@@ -288,96 +272,101 @@ static void _sl_fly(_sl_viewer *v, GLFWwindow *w, double now) {
 }
 
 /* ---- Keys ---------------------------------------------------------------
- * Every key the viewer handles, in one table: what it does (--help,
- * --list-keys), its short label and the setting it changes now (the
- * overlay's key panel). A lab's own keys are tried before the common ones,
- * so a letter can mean one thing in lab 5 and another in lab 6. */
+ * Every key the viewer handles is one binding of one table, the union of the
+ * viewer's common keys and each technique's own (sl_technique.keys): what it
+ * does (--help, --list-keys, the --serve page), its short label and the
+ * setting it changes now (the overlay's key panel). A lab's own keys are
+ * tried before the common ones, so a letter can mean one thing in lab 5 and
+ * another in lab 6. */
 typedef enum _sl_action {
     _SL_KEY_LAB, _SL_KEY_VISIBILITY, _SL_KEY_MAP, _SL_KEY_COMPARE, _SL_KEY_BIAS, _SL_KEY_BIAS_MODE, _SL_KEY_FILTER,
     _SL_KEY_KERNEL, _SL_KEY_LIGHT, _SL_KEY_OVERLAY, _SL_KEY_FRUSTUM, _SL_KEY_ANIMATE, _SL_KEY_SCREENSHOT,
     _SL_KEY_CODE, _SL_KEY_QUIT,
-    /* lab 5 */
-    _SL_KEY_VSM, _SL_KEY_BLUR, _SL_KEY_BLEEDING, _SL_KEY_MIN_VARIANCE,
-    /* lab 6 */
-    _SL_KEY_CASCADE_COLOURS, _SL_KEY_CASCADE_COUNT, _SL_KEY_LAMBDA, _SL_KEY_BLEND_BAND, _SL_KEY_FREEZE,
-    _SL_KEY_SNAPPING, _SL_KEY_CAMERA_PATH, _SL_KEY_FLY,
-    /* lab 7 */
-    _SL_KEY_SOFT, _SL_KEY_CUBE_PASS, _SL_KEY_CUBE_BIAS, _SL_KEY_LIGHT_HEIGHT,
 } _sl_action;
 
-#define _SL_MAX_BOUND 7
+/* The keys of every lab. A technique's key panel lists the ones it names (sl_technique.panel_keys) with its
+ * own; the others are the panel's line of general keys. */
+static const sl_technique_key _sl_common_keys[] = {
+    {{GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3, GLFW_KEY_4, GLFW_KEY_5, GLFW_KEY_6, GLFW_KEY_7}, "1-7", "lab",
+     "the lab in use", _SL_KEY_LAB},
+    {{GLFW_KEY_V}, "V", "view", "the visibility term (what the grader compares) or the shaded picture",
+     _SL_KEY_VISIBILITY},
+    {{GLFW_KEY_M}, "M", "map", "the shadow map in a corner (5: the moments, 6: the layers, 7: the faces)",
+     _SL_KEY_MAP},
+    {{GLFW_KEY_C}, "C", "compare", "compare by hand (sampler2D) or in hardware (sampler2DShadow)", _SL_KEY_COMPARE},
+    {{GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET}, "[ ]", "bias", "the constant depth bias halve, double",
+     _SL_KEY_BIAS},
+    {{GLFW_KEY_B}, "B", "bias mode", "bias mode: none, constant, slope, polygon offset, culling, normal offset, "
+     "midpoint", _SL_KEY_BIAS_MODE},
+    {{GLFW_KEY_F}, "F", "filter", "filter: none, hardware 2x2, grid, Poisson, PCSS (lab 5: with VSM off)",
+     _SL_KEY_FILTER},
+    {{GLFW_KEY_MINUS, GLFW_KEY_EQUAL}, "- =", "kernel", "the filter's kernel radius, Poisson radius or PCSS light "
+     "size down, up", _SL_KEY_KERNEL},
+    {{GLFW_KEY_LEFT, GLFW_KEY_RIGHT, GLFW_KEY_UP, GLFW_KEY_DOWN}, "arrows", "light",
+     "move the light (a point light: along x and z)", _SL_KEY_LIGHT},
+    {{GLFW_KEY_O}, "O", "overlay", "the overlay (this text) on, off", _SL_KEY_OVERLAY},
+    {{GLFW_KEY_G}, "G", "frustum", "the light's frustum and a marker at the light", _SL_KEY_FRUSTUM},
+    {{GLFW_KEY_H}, "H", "turn light", "the light turns about the scene", _SL_KEY_ANIMATE},
+    {{GLFW_KEY_X}, "X", "screenshot", "screenshot of the window, overlay included (shadowlab-NNN.png)",
+     _SL_KEY_SCREENSHOT},
+    {{GLFW_KEY_U}, "U", "code", "student or solutions code (builds that carry both)", _SL_KEY_CODE},
+    {{GLFW_KEY_ESCAPE}, "Esc", "quit", "quit", _SL_KEY_QUIT},
+    {{0}, NULL, NULL, NULL, 0},
+};
+
+/* One binding of the union: a technique's own key (lab N) or a common one (lab 0, no technique). */
 typedef struct _sl_key_binding {
-    int lab;                  /* 0: every lab; N: lab N's own, tried first */
-    unsigned panel_labs;      /* a common key listed with these labs' own keys in the panel (bit N: lab N);
-                                 0: on the panel's line of general keys */
-    int keys[_SL_MAX_BOUND];  /* GLFW key codes (letters, digits and [ ] - = , . are their ASCII codes); 0 ends */
-    const char *names;        /* the keys as written: "R T", "PgUp PgDn" */
-    const char *label;        /* a word or two, for the panel */
-    const char *help;         /* a line, for --help */
-    _sl_action action;
+    int lab;
+    const sl_technique *technique;
+    const sl_technique_key *key;
 } _sl_key_binding;
 
-#define _SL_LABS(first, last) (((1u << ((last) + 1)) - 1) & ~((1u << (first)) - 1))
+#define _SL_MAX_BINDINGS 128
+static _sl_key_binding _sl_bindings[_SL_MAX_BINDINGS];
+static int _sl_binding_count = -1;
 
-static const _sl_key_binding _sl_key_table[] = {
-    {5, 0, {GLFW_KEY_P}, "P", "VSM", "VSM or lab 4's filter on the same scene", _SL_KEY_VSM},
-    {5, 0, {GLFW_KEY_R, GLFW_KEY_T}, "R T", "blur radius", "blur radius of the moments down, up", _SL_KEY_BLUR},
-    {5, 0, {GLFW_KEY_K, GLFW_KEY_L}, "K L", "bleeding reduction", "light-bleeding reduction down, up", _SL_KEY_BLEEDING},
-    {5, 0, {GLFW_KEY_N, GLFW_KEY_J}, "N J", "min variance", "minimum variance halve, double", _SL_KEY_MIN_VARIANCE},
-    {6, 0, {GLFW_KEY_K}, "K", "cascade colours", "tint each pixel by its cascade (a legend names them)",
-     _SL_KEY_CASCADE_COLOURS},
-    {6, 0, {GLFW_KEY_N}, "N", "cascades", "cascade count, 1 to 4", _SL_KEY_CASCADE_COUNT},
-    {6, 0, {GLFW_KEY_COMMA, GLFW_KEY_PERIOD}, ", .", "lambda", "the split scheme's lambda down, up (0 uniform .. 1 "
-     "logarithmic)", _SL_KEY_LAMBDA},
-    {6, 0, {GLFW_KEY_J}, "J", "blend band", "blend band between cascades (bonus)", _SL_KEY_BLEND_BAND},
-    {6, 0, {GLFW_KEY_Z}, "Z", "frozen frustum", "freeze the camera's frustum, seen from above with its slices and "
-     "light boxes", _SL_KEY_FREEZE},
-    {6, 0, {GLFW_KEY_T}, "T", "texel snapping", "texel snapping on, off (off: the shimmer it removes)", _SL_KEY_SNAPPING},
-    {6, 0, {GLFW_KEY_P}, "P", "camera path", "the camera moves by itself: slide, turn, off", _SL_KEY_CAMERA_PATH},
-    {6, 0, {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E}, "W A S D Q E", "fly",
-     "fly: forward, left, back, right, down, up (Shift: faster)", _SL_KEY_FLY},
-    {7, 0, {GLFW_KEY_S}, "S", "lookup", "soft (20 directions) or hard lookup", _SL_KEY_SOFT},
-    {7, 0, {GLFW_KEY_L}, "L", "faces", "faces drawn in: auto, six passes, one layered pass", _SL_KEY_CUBE_PASS},
-    {7, 0, {GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET}, "[ ]", "cube bias", "the cube lookup's bias halve, double",
-     _SL_KEY_CUBE_BIAS},
-    {7, 0, {GLFW_KEY_PAGE_UP, GLFW_KEY_PAGE_DOWN}, "PgUp PgDn", "light height", "the point light up, down",
-     _SL_KEY_LIGHT_HEIGHT},
-    {0, 0, {GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3, GLFW_KEY_4, GLFW_KEY_5, GLFW_KEY_6, GLFW_KEY_7}, "1-7", "lab",
-     "the lab in use", _SL_KEY_LAB},
-    {0, 0, {GLFW_KEY_V}, "V", "view", "the visibility term (what the grader compares) or the shaded picture",
-     _SL_KEY_VISIBILITY},
-    {0, 0, {GLFW_KEY_M}, "M", "map", "the shadow map in a corner (5: the moments, 6: the layers, 7: the faces)",
-     _SL_KEY_MAP},
-    {0, _SL_LABS(2, 3), {GLFW_KEY_C}, "C", "compare", "compare by hand (sampler2D) or in hardware (sampler2DShadow)",
-     _SL_KEY_COMPARE},
-    {0, _SL_LABS(2, 4), {GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET}, "[ ]", "bias", "the constant depth bias "
-     "halve, double", _SL_KEY_BIAS},
-    {0, _SL_LABS(3, 4), {GLFW_KEY_B}, "B", "bias mode", "bias mode: none, constant, slope, polygon offset, "
-     "culling, normal offset, midpoint", _SL_KEY_BIAS_MODE},
-    {0, _SL_LABS(4, 5), {GLFW_KEY_F}, "F", "filter", "filter: none, hardware 2x2, grid, Poisson, PCSS (lab 5: with "
-     "VSM off)", _SL_KEY_FILTER},
-    {0, _SL_LABS(4, 5), {GLFW_KEY_MINUS, GLFW_KEY_EQUAL}, "- =", "kernel", "the filter's kernel radius, Poisson "
-     "radius or PCSS light size down, up", _SL_KEY_KERNEL},
-    {0, 0, {GLFW_KEY_LEFT, GLFW_KEY_RIGHT, GLFW_KEY_UP, GLFW_KEY_DOWN}, "arrows", "light",
-     "move the light (a point light: along x and z)", _SL_KEY_LIGHT},
-    {0, 0, {GLFW_KEY_O}, "O", "overlay", "the overlay (this text) on, off", _SL_KEY_OVERLAY},
-    {0, 0, {GLFW_KEY_G}, "G", "frustum", "the light's frustum and a marker at the light", _SL_KEY_FRUSTUM},
-    {0, 0, {GLFW_KEY_H}, "H", "turn light", "the light turns about the scene", _SL_KEY_ANIMATE},
-    {0, 0, {GLFW_KEY_X}, "X", "screenshot", "screenshot of the window, overlay included (shadowlab-NNN.png)",
-     _SL_KEY_SCREENSHOT},
-    {0, 0, {GLFW_KEY_U}, "U", "code", "student or solutions code (builds that carry both)", _SL_KEY_CODE},
-    {0, 0, {GLFW_KEY_ESCAPE}, "Esc", "quit", "quit", _SL_KEY_QUIT},
-};
-#define _SL_KEY_COUNT (int)(sizeof _sl_key_table / sizeof _sl_key_table[0])
+/* The union, made once: each technique's keys, lab by lab, then the common keys. */
+static int _sl_key_table(const _sl_key_binding **table) {
+    if (_sl_binding_count < 0) {
+        int n = 0;
+        for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+            const sl_technique *t = sl_technique_of(lab);
+            for (const sl_technique_key *k = t ? t->keys : NULL; k && k->names && n < _SL_MAX_BINDINGS; k++)
+                _sl_bindings[n++] = (_sl_key_binding){lab, t, k};
+        }
+        for (const sl_technique_key *k = _sl_common_keys; k->names && n < _SL_MAX_BINDINGS; k++)
+            _sl_bindings[n++] = (_sl_key_binding){0, NULL, k};
+        _sl_binding_count = n;
+    }
+    *table = _sl_bindings;
+    return _sl_binding_count;
+}
+
+/* Whether the common key written `names` is one technique `t`'s panel lists (NULL: any technique's). */
+static bool _sl_panel_lists(const sl_technique *t, const char *names) {
+    for (int lab = t ? t->lab : 1; lab <= (t ? t->lab : SL_LAB_COUNT); lab++) {
+        const sl_technique *u = sl_technique_of(lab);
+        for (int i = 0; u && i < (int)(sizeof u->panel_keys / sizeof u->panel_keys[0]) && u->panel_keys[i]; i++)
+            if (strcmp(u->panel_keys[i], names) == 0) return true;
+    }
+    return false;
+}
+
+/* A common key of action `action`. */
+static bool _sl_is_common(const _sl_key_binding *b, _sl_action action) {
+    return !b->technique && b->key->id == (int)action;
+}
 
 /* The binding of `key` in lab `lab`: the lab's own first, then the common ones. */
 static const _sl_key_binding *_sl_binding(int lab, int key) {
+    const _sl_key_binding *table;
+    int count = _sl_key_table(&table);
     for (int pass = 0; pass < 2; pass++)
-        for (int i = 0; i < _SL_KEY_COUNT; i++) {
-            const _sl_key_binding *b = &_sl_key_table[i];
+        for (int i = 0; i < count; i++) {
+            const _sl_key_binding *b = &table[i];
             if (b->lab != (pass == 0 ? lab : 0)) continue;
-            for (int k = 0; k < _SL_MAX_BOUND && b->keys[k]; k++)
-                if (b->keys[k] == key) return b;
+            for (int k = 0; k < SL_TECHNIQUE_KEY_CODES && b->key->codes[k]; k++)
+                if (b->key->codes[k] == key) return b;
         }
     return NULL;
 }
@@ -387,15 +376,21 @@ static const char *_sl_on(bool on) { return on ? "on" : "off"; }
 /* What `key` of binding `b` does. */
 static void _sl_act(_sl_viewer *v, GLFWwindow *w, const _sl_key_binding *b, int key) {
     sl_render_params *p = &v->params;
-    bool up = key == b->keys[1]; /* of a pair, the second key raises */
-    switch (b->action) {
+    bool up = key == b->key->codes[1]; /* of a pair, the second key raises */
+    if (b->technique) {
+        sl_view_context c = _sl_view_context(v, sl_renderer_info(v->show_second ? &v->second : &v->renderer));
+        if (b->technique->key_pressed) b->technique->key_pressed(&c, b->key, key, up);
+        if (c.request == SL_VIEW_REQUEST_FREEZE) _sl_freeze(v, !v->frozen);
+        else if (c.request == SL_VIEW_REQUEST_CAMERA_PATH) v->camera_path = (v->camera_path + 1) % 3;
+        return;
+    }
+    switch ((_sl_action)b->key->id) {
     case _SL_KEY_LAB: p->lab = key - GLFW_KEY_0; break;
     case _SL_KEY_VISIBILITY: p->output = p->output == SL_OUTPUT_SHADED ? SL_OUTPUT_VISIBILITY : SL_OUTPUT_SHADED; break;
     case _SL_KEY_MAP: p->show_shadow_map = !p->show_shadow_map; break;
     case _SL_KEY_COMPARE: p->compare = p->compare == SL_COMPARE_MANUAL ? SL_COMPARE_HARDWARE : SL_COMPARE_MANUAL; break;
-    case _SL_KEY_BIAS:
-    case _SL_KEY_CUBE_BIAS: {
-        float *bias = b->action == _SL_KEY_CUBE_BIAS ? &p->cube.bias : &p->bias.constant;
+    case _SL_KEY_BIAS: {
+        float *bias = &p->bias.constant;
         *bias = up ? (*bias > 0 ? *bias * 2 : 0.0005f) : *bias * 0.5f;
         break;
     }
@@ -430,46 +425,23 @@ static void _sl_act(_sl_viewer *v, GLFWwindow *w, const _sl_key_binding *b, int 
     case _SL_KEY_QUIT:
         if (w) glfwSetWindowShouldClose(w, GLFW_TRUE);
         break;
-    /* lab 5 */
-    case _SL_KEY_VSM: p->vsm_off = !p->vsm_off; break;
-    case _SL_KEY_BLUR: p->vsm.blur_radius = up ? (p->vsm.blur_radius < 32 ? p->vsm.blur_radius + 1 : 32)
-                                               : (p->vsm.blur_radius > 0 ? p->vsm.blur_radius - 1 : 0); break;
-    case _SL_KEY_BLEEDING: p->vsm.bleeding = glm_clamp(p->vsm.bleeding + (up ? 0.05f : -0.05f), 0, 0.95f); break;
-    case _SL_KEY_MIN_VARIANCE: p->vsm.min_variance = glm_clamp(p->vsm.min_variance * (up ? 2.0f : 0.5f), 1e-7f, 0.01f); break;
-    /* lab 6 */
-    case _SL_KEY_CASCADE_COLOURS: p->cascades.show_cascades = !p->cascades.show_cascades; break;
-    case _SL_KEY_CASCADE_COUNT: p->cascades.count = p->cascades.count % SL_MAX_CASCADES + 1; break;
-    case _SL_KEY_LAMBDA: p->cascades.lambda = glm_clamp(p->cascades.lambda + (up ? 0.1f : -0.1f), 0, 1); break;
-    case _SL_KEY_BLEND_BAND: p->cascades.blend_band = p->cascades.blend_band > 0 ? 0 : 0.2f; break;
-    case _SL_KEY_FREEZE: _sl_freeze(v, !v->frozen); break;
-    case _SL_KEY_SNAPPING: p->cascades.unsnapped = !p->cascades.unsnapped; break;
-    case _SL_KEY_CAMERA_PATH: v->camera_path = (v->camera_path + 1) % 3; break;
-    case _SL_KEY_FLY: break; /* polled every frame (_sl_fly) */
-    /* lab 7 */
-    case _SL_KEY_SOFT:
-        /* soft or hard, each with the bias it needs unless the bias was changed by hand */
-        p->cube.soft = !p->cube.soft;
-        if (p->cube.soft && p->cube.bias == SL_CUBE_HARD_BIAS) p->cube.bias = SL_CUBE_SOFT_BIAS;
-        else if (!p->cube.soft && p->cube.bias == SL_CUBE_SOFT_BIAS) p->cube.bias = SL_CUBE_HARD_BIAS;
-        break;
-    case _SL_KEY_CUBE_PASS: p->cube.pass = (sl_cube_pass)((p->cube.pass + 1) % SL_CUBE_PASS_COUNT); break;
-    case _SL_KEY_LIGHT_HEIGHT:
-        if (v->scene.light.type == SL_LIGHT_POINT) v->scene.light.position[1] += key == GLFW_KEY_PAGE_UP ? 0.2f : -0.2f;
-        break;
     }
 }
 
 /* The setting binding `b` changes, as it is now ("" when it has none to show). */
-static void _sl_key_state(const _sl_viewer *v, const sl_frame_info *info, const _sl_key_binding *b, char *out,
-                          size_t n) {
+static void _sl_key_state(_sl_viewer *v, const sl_frame_info *info, const _sl_key_binding *b, char *out, size_t n) {
     const sl_render_params *p = &v->params;
     out[0] = '\0';
-    switch (b->action) {
+    if (b->technique) {
+        sl_view_context c = _sl_view_context(v, info);
+        if (b->technique->key_state) b->technique->key_state(&c, b->key, out, n);
+        return;
+    }
+    switch ((_sl_action)b->key->id) {
     case _SL_KEY_VISIBILITY: snprintf(out, n, "%s", p->output == SL_OUTPUT_VISIBILITY ? "visibility" : "shaded"); break;
     case _SL_KEY_MAP: snprintf(out, n, "%s", _sl_on(p->show_shadow_map)); break;
     case _SL_KEY_COMPARE: snprintf(out, n, "%s", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual"); break;
     case _SL_KEY_BIAS: snprintf(out, n, "%.5f", p->bias.constant); break;
-    case _SL_KEY_CUBE_BIAS: snprintf(out, n, "%.4f", p->cube.bias); break;
     case _SL_KEY_BIAS_MODE: snprintf(out, n, "%s", sl_bias_mode_name(p->bias.mode)); break;
     case _SL_KEY_FILTER: snprintf(out, n, "%s", sl_filter_mode_name(p->filter.mode)); break;
     case _SL_KEY_KERNEL:
@@ -482,25 +454,6 @@ static void _sl_key_state(const _sl_viewer *v, const sl_frame_info *info, const 
     case _SL_KEY_FRUSTUM: snprintf(out, n, "%s", _sl_on(v->show_frustum)); break;
     case _SL_KEY_ANIMATE: snprintf(out, n, "%s", _sl_on(v->animate_light)); break;
     case _SL_KEY_CODE: snprintf(out, n, "%s", v->show_second ? _sl_second_kind : sl_build_labs_kind); break;
-    case _SL_KEY_VSM: snprintf(out, n, "%s", p->vsm_off ? "off, lab 4's filter" : "on"); break;
-    case _SL_KEY_BLUR: snprintf(out, n, "%d", p->vsm.blur_radius); break;
-    case _SL_KEY_BLEEDING: snprintf(out, n, "%.2f", p->vsm.bleeding); break;
-    case _SL_KEY_MIN_VARIANCE: snprintf(out, n, "%.1e", p->vsm.min_variance); break;
-    case _SL_KEY_CASCADE_COLOURS: snprintf(out, n, "%s", _sl_on(p->cascades.show_cascades)); break;
-    case _SL_KEY_CASCADE_COUNT: snprintf(out, n, "%d", p->cascades.count); break;
-    case _SL_KEY_LAMBDA: snprintf(out, n, "%.2f", p->cascades.lambda); break;
-    case _SL_KEY_BLEND_BAND: snprintf(out, n, "%s", _sl_on(p->cascades.blend_band > 0)); break;
-    case _SL_KEY_FREEZE: snprintf(out, n, "%s", _sl_on(v->frozen)); break;
-    case _SL_KEY_SNAPPING: snprintf(out, n, "%s", _sl_on(!p->cascades.unsnapped)); break;
-    case _SL_KEY_CAMERA_PATH: snprintf(out, n, "%s", v->camera_path ? _sl_path_names[v->camera_path] : "off"); break;
-    case _SL_KEY_SOFT: snprintf(out, n, "%s", p->cube.soft ? "soft" : "hard"); break;
-    case _SL_KEY_CUBE_PASS:
-        /* auto says which it took */
-        snprintf(out, n, "%s%s", sl_cube_pass_name(p->cube.pass),
-                 p->cube.pass != SL_CUBE_PASS_AUTO || !info || !info->cube_frame ? ""
-                 : info->cube_layered ? " (layered)" : " (six)");
-        break;
-    case _SL_KEY_LIGHT_HEIGHT: snprintf(out, n, "y %.1f", (double)v->scene.light.position[1]); break;
     default: break;
     }
 }
@@ -522,18 +475,20 @@ static void _sl_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
 
 /* --help's keys, from the table: every lab's, then each lab's own, then --case's. */
 static void _sl_print_keys(FILE *f) {
+    const _sl_key_binding *table;
+    int count = _sl_key_table(&table);
     fprintf(f, "keys (a lab's own keys come first: a letter can mean one thing in lab 5, another in lab 6):\n");
     for (int lab = 0; lab <= SL_LAB_COUNT; lab++) {
         bool any = false;
-        for (int i = 0; i < _SL_KEY_COUNT; i++) {
-            const _sl_key_binding *b = &_sl_key_table[i];
+        for (int i = 0; i < count; i++) {
+            const _sl_key_binding *b = &table[i];
             if (b->lab != lab) continue;
             if (!any) {
                 if (lab == 0) fprintf(f, "  every lab:\n");
                 else fprintf(f, "  lab %d (%s):\n", lab, sl_lab_title(lab));
                 any = true;
             }
-            fprintf(f, "    %-12s %s\n", b->names, b->help);
+            fprintf(f, "    %-12s %s\n", b->key->names, b->key->help);
         }
     }
     fprintf(f, "  mouse: drag orbits the camera, the wheel zooms; shaders reload when their files change\n"
@@ -543,10 +498,12 @@ static void _sl_print_keys(FILE *f) {
 
 /* --list-keys: the same, one key binding a line, for scripts (the slides' key test). */
 static void _sl_list_keys(FILE *f) {
-    for (int i = 0; i < _SL_KEY_COUNT; i++) {
-        const _sl_key_binding *b = &_sl_key_table[i];
-        if (b->lab == 0) fprintf(f, "all\t%s\t%s\n", b->names, b->help);
-        else fprintf(f, "%d\t%s\t%s\n", b->lab, b->names, b->help);
+    const _sl_key_binding *table;
+    int count = _sl_key_table(&table);
+    for (int i = 0; i < count; i++) {
+        const _sl_key_binding *b = &table[i];
+        if (b->lab == 0) fprintf(f, "all\t%s\t%s\n", b->key->names, b->key->help);
+        else fprintf(f, "%d\t%s\t%s\n", b->lab, b->key->names, b->key->help);
     }
     for (const sl_case_view_key *k = sl_case_view_keys(); k->names; k++) fprintf(f, "case\t%s\t%s\n", k->names, k->help);
 }
@@ -556,21 +513,23 @@ static void _sl_list_keys(FILE *f) {
  * codes and GLFW codes, and the keys only held (Shift, for lab 6's flying).
  * The page takes these keys and no others, so it has exactly the window's. */
 static char *_sl_keys_json(void) {
+    const _sl_key_binding *table;
+    int count = _sl_key_table(&table);
     cJSON *root = cJSON_CreateObject(), *keys = cJSON_AddArrayToObject(root, "keys");
     char code[16];
-    for (int i = 0; i < _SL_KEY_COUNT; i++) {
-        const _sl_key_binding *b = &_sl_key_table[i];
-        if (b->action == _SL_KEY_QUIT) continue;
+    for (int i = 0; i < count; i++) {
+        const _sl_key_binding *b = &table[i];
+        if (_sl_is_common(b, _SL_KEY_QUIT)) continue;
         cJSON *k = cJSON_CreateObject();
         cJSON_AddNumberToObject(k, "lab", b->lab);
-        cJSON_AddStringToObject(k, "names", b->names);
-        cJSON_AddStringToObject(k, "label", b->label);
-        cJSON_AddStringToObject(k, "help", b->help);
+        cJSON_AddStringToObject(k, "names", b->key->names);
+        cJSON_AddStringToObject(k, "label", b->key->label);
+        cJSON_AddStringToObject(k, "help", b->key->help);
         cJSON *codes = cJSON_AddArrayToObject(k, "codes");
-        for (int j = 0; j < _SL_MAX_BOUND && b->keys[j]; j++) {
+        for (int j = 0; j < SL_TECHNIQUE_KEY_CODES && b->key->codes[j]; j++) {
             cJSON *c = cJSON_CreateObject();
-            cJSON_AddStringToObject(c, "code", sl_serve_key_code(b->keys[j], code));
-            cJSON_AddNumberToObject(c, "key", b->keys[j]);
+            cJSON_AddStringToObject(c, "code", sl_serve_key_code(b->key->codes[j], code));
+            cJSON_AddNumberToObject(c, "key", b->key->codes[j]);
             cJSON_AddItemToArray(codes, c);
         }
         cJSON_AddItemToArray(keys, k);
@@ -679,22 +638,12 @@ static const char *_sl_technique_name(int lab) {
 }
 
 /* What lab `lab`'s code draws with these settings: "lab 2's hard shadows". */
-static void _sl_drawing(const _sl_viewer *v, int lab, char *out, size_t n) {
-    const sl_render_params *p = &v->params;
-    const sl_filter_settings *f = &p->filter;
-    switch (lab) {
-    case 0: snprintf(out, n, "no shadows"); break;
-    case 1: snprintf(out, n, "no shadows (only lab 1's depth map)"); break;
-    case 2: snprintf(out, n, "lab 2's hard shadows"); break;
-    case 3: snprintf(out, n, "lab 3's hard shadows, %s bias", sl_bias_mode_name(p->bias.mode)); break;
-    case 4:
-        if (f->mode == SL_FILTER_GRID)
-            snprintf(out, n, "lab 4's PCF grid %dx%d", 2 * f->grid_radius + 1, 2 * f->grid_radius + 1);
-        else if (f->mode == SL_FILTER_NONE) snprintf(out, n, "lab 4's unfiltered shadows");
-        else snprintf(out, n, "lab 4's %s filter", sl_filter_mode_name(f->mode));
-        break;
-    default: snprintf(out, n, "lab %d's %s", lab, _sl_technique_name(lab)); break;
-    }
+static void _sl_drawing(_sl_viewer *v, const sl_frame_info *info, int lab, char *out, size_t n) {
+    const sl_technique *t = sl_technique_of(lab);
+    sl_view_context c = _sl_view_context(v, info);
+    if (!t) snprintf(out, n, "no shadows");
+    else if (t->drawing_text) t->drawing_text(&c, out, n);
+    else snprintf(out, n, "lab %d's %s", lab, t->name);
 }
 
 /* One reason the renderer noted: "lab 3's depth_pass_state is not implemented". */
@@ -707,7 +656,11 @@ static void _sl_stop_text(const _sl_viewer *v, const sl_frame_stop *s, char *out
     case SL_STOP_NOT_IMPLEMENTED: snprintf(out, n, "lab %d's %s is not implemented", s->lab, fn); break;
     case SL_STOP_FAILED: snprintf(out, n, "lab %d's %s failed", s->lab, fn); break;
     case SL_STOP_SHADERS: snprintf(out, n, "lab %d's shaders do not compile", s->lab); break;
-    case SL_STOP_SWITCHED_OFF: snprintf(out, n, s->lab == 5 ? "switched off with P" : "switched off"); break;
+    case SL_STOP_SWITCHED_OFF: {
+        const sl_technique *t = sl_technique_of(s->lab);
+        snprintf(out, n, "%s", t && t->switched_off_text ? t->switched_off_text : "switched off");
+        break;
+    }
     case SL_STOP_NO_POINT_LIGHT: snprintf(out, n, "%s has no point light (closed_room has one)", v->scene.name); break;
     }
 }
@@ -715,7 +668,7 @@ static void _sl_stop_text(const _sl_viewer *v, const sl_frame_stop *s, char *out
 /* Why the asked lab's technique is not what draws, from what the renderer noted this frame, and what
  * draws instead: "lab 5 VSM is off: lab 3's depth_pass_state is not implemented; drawing lab 2's hard
  * shadows". Empty when it draws. */
-static void _sl_status(const _sl_viewer *v, const sl_frame_info *info, char *out, size_t n) {
+static void _sl_status(_sl_viewer *v, const sl_frame_info *info, char *out, size_t n) {
     out[0] = '\0';
     if (info->stop_count == 0) return;
     int lab = info->lab_asked;
@@ -727,7 +680,7 @@ static void _sl_status(const _sl_viewer *v, const sl_frame_info *info, char *out
         used += (size_t)snprintf(out + used, n - used, "%s%s", i == 0 ? "" : ", and ", why);
     }
     char drawing[96];
-    _sl_drawing(v, info->lab_in_use, drawing, sizeof drawing);
+    _sl_drawing(v, info, info->lab_in_use, drawing, sizeof drawing);
     if (used < n) snprintf(out + used, n - used, "; drawing %s", drawing);
 }
 
@@ -773,37 +726,40 @@ static void _sl_add_frustum(sl_overlay *ov, const sl_frame_info *info) {
 static void _sl_key_panel(_sl_viewer *v, const sl_frame_info *info) {
     sl_overlay *ov = v->overlay;
     int lab = v->params.lab;
+    const sl_technique *t = sl_technique_of(lab);
+    const _sl_key_binding *table;
+    int count = _sl_key_table(&table);
     char title[32];
     snprintf(title, sizeof title, "keys, lab %d", lab);
     sl_overlay_panel(ov, SL_OVERLAY_BOTTOM_LEFT, title);
     int pad = 0;
     for (int pass = 0; pass < 2; pass++)
-        for (int i = 0; i < _SL_KEY_COUNT; i++) {
-            const _sl_key_binding *b = &_sl_key_table[i];
-            bool listed = b->lab == lab || (b->lab == 0 && ((b->panel_labs >> lab) & 1u));
+        for (int i = 0; i < count; i++) {
+            const _sl_key_binding *b = &table[i];
+            bool listed = b->lab == lab || (b->lab == 0 && t && _sl_panel_lists(t, b->key->names));
             /* a common key the lab's own keys take over is not this lab's */
-            if (!listed || _sl_binding(lab, b->keys[0]) != b) continue;
+            if (!listed || _sl_binding(lab, b->key->codes[0]) != b) continue;
             if (pass == 0) { /* names aligned, but a long one ("W A S D Q E") does not push the others */
-                int len = (int)strlen(b->names);
+                int len = (int)strlen(b->key->names);
                 if (len > pad && len <= 5) pad = len;
                 continue;
             }
             char state[64];
             _sl_key_state(v, info, b, state, sizeof state);
-            sl_overlay_line(ov, NULL, "%-*s %s%s%s", pad, b->names, b->label, state[0] ? ": " : "", state);
+            sl_overlay_line(ov, NULL, "%-*s %s%s%s", pad, b->key->names, b->key->label, state[0] ? ": " : "", state);
         }
     /* the general keys, as many to a line as fit in 60 characters (40 in a lecture's larger text, so the
      * panel leaves room beside it for the right-hand ones) */
     size_t width = v->lecture ? 40 : 60;
     char line[128] = "";
-    for (int i = 0; i < _SL_KEY_COUNT; i++) {
-        const _sl_key_binding *b = &_sl_key_table[i];
-        if (b->lab != 0 || b->panel_labs != 0 || _sl_binding(lab, b->keys[0]) != b) continue;
-        if (b->action == _SL_KEY_CODE && !_sl_second_functions) continue;
-        if (b->action == _SL_KEY_QUIT && v->serve) continue; /* a page is closed in the browser */
+    for (int i = 0; i < count; i++) {
+        const _sl_key_binding *b = &table[i];
+        if (b->lab != 0 || _sl_panel_lists(NULL, b->key->names) || _sl_binding(lab, b->key->codes[0]) != b) continue;
+        if (_sl_is_common(b, _SL_KEY_CODE) && !_sl_second_functions) continue;
+        if (_sl_is_common(b, _SL_KEY_QUIT) && v->serve) continue; /* a page is closed in the browser */
         char state[64], item[128];
         _sl_key_state(v, info, b, state, sizeof state);
-        snprintf(item, sizeof item, "%s %s%s%s", b->names, b->label, state[0] ? ": " : "", state);
+        snprintf(item, sizeof item, "%s %s%s%s", b->key->names, b->key->label, state[0] ? ": " : "", state);
         if (line[0] && strlen(line) + 2 + strlen(item) > width) {
             sl_overlay_line(ov, _sl_blue, "%s", line);
             line[0] = '\0';
@@ -821,24 +777,9 @@ static void _sl_labels(_sl_viewer *v, const sl_frame_info *info, int width, int 
     const sl_render_params *p = &v->params;
     const sl_technique *t = sl_technique_of(p->lab);
     if (labels && t && t->overlay_labels) t->overlay_labels(ov, info, p, width, height);
-    if (p->lab == 6 && v->frozen && info->cascades_ready) {
-        /* each slice is the frozen camera's frustum between two splits */
-        for (int i = 0; i < info->cascade_count && i < SL_MAX_CASCADES; i++) {
-            sl_camera slice = p->cascades.camera;
-            slice.near = info->cascade_splits[i];
-            slice.far = info->cascade_splits[i + 1];
-            mat4 view, proj, vp, inv;
-            sl_camera_view(&slice, view);
-            sl_camera_projection(&slice, height > 0 ? (float)width / (float)height : 1, proj);
-            glm_mat4_mul(proj, view, vp);
-            glm_mat4_inv(vp, inv);
-            sl_overlay_box_on_top(ov, inv, sl_cascade_colours[i]);
-            glm_mat4_mul((vec4 *)info->cascade_projection[i], (vec4 *)info->cascade_view[i], vp);
-            glm_mat4_inv(vp, inv);
-            vec3 dim;
-            glm_vec3_scale((float *)sl_cascade_colours[i], 0.55f, dim);
-            sl_overlay_box_on_top(ov, inv, dim);
-        }
+    if (v->frozen && t && t->frozen_lines) {
+        sl_view_context c = _sl_view_context(v, info);
+        t->frozen_lines(ov, &c, width, height);
     }
     const sl_light *l = &v->scene.light;
     if ((labels || v->show_frustum) && l->type != SL_LIGHT_DIRECTIONAL)
@@ -874,65 +815,16 @@ static void _sl_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int
     static const char *const light_types[] = {"directional", "spot", "point"};
     sl_overlay_line(ov, NULL, "light: %s, size %.2f%s", light_types[l->type % 3], l->size,
                     v->animate_light ? ", turning" : "");
-    /* the settings of what draws (a lab that is off is said above) */
-    if (info->cube_frame)
-        sl_overlay_line(ov, NULL, "cube map: 6 faces of %dx%d", p->cube.map_size, p->cube.map_size);
-    else if (p->lab == 6)
-        sl_overlay_line(ov, NULL, "shadow maps: %d layers of %dx%d", p->cascades.count, p->shadow_map_size,
-                        p->shadow_map_size);
-    else
-        sl_overlay_line(ov, NULL, "shadow map: %dx%d", p->shadow_map_size, p->shadow_map_size);
-    if (drawn >= 2 && drawn <= 4 && !info->cube_frame && p->lab != 6) {
-        if (drawn == 2 || p->bias.mode == SL_BIAS_CONSTANT)
-            sl_overlay_line(ov, NULL, "bias: constant %.5f", p->bias.constant);
-        else if (p->bias.mode == SL_BIAS_SLOPE_SCALED)
-            sl_overlay_line(ov, NULL, "bias: slope %.4f + %.4f tan, max %.3f", p->bias.constant, p->bias.slope,
-                            p->bias.max_bias);
-        else if (p->bias.mode == SL_BIAS_POLYGON_OFFSET)
-            sl_overlay_line(ov, NULL, "bias: polygon offset (%.1f, %.1f)", p->bias.polygon_offset_factor,
-                            p->bias.polygon_offset_units);
-        else if (p->bias.mode == SL_BIAS_NORMAL_OFFSET)
-            sl_overlay_line(ov, NULL, "bias: normal offset %.2f texels + %.5f", p->bias.normal_offset, p->bias.constant);
-        else
-            sl_overlay_line(ov, NULL, "bias: %s", sl_bias_mode_name(p->bias.mode));
-        if (drawn <= 3) sl_overlay_line(ov, NULL, "compare: %s", p->compare == SL_COMPARE_HARDWARE ? "hardware" : "manual");
-    }
-    if (drawn == 4) {
-        const sl_filter_settings *f = &p->filter;
-        if (f->mode == SL_FILTER_GRID)
-            sl_overlay_line(ov, NULL, "filter: PCF grid %dx%d (kernel radius %d)", 2 * f->grid_radius + 1,
-                            2 * f->grid_radius + 1, f->grid_radius);
-        else if (f->mode == SL_FILTER_POISSON)
-            sl_overlay_line(ov, NULL, "filter: Poisson disk, radius %.1f texels", f->poisson_radius);
-        else if (f->mode == SL_FILTER_PCSS)
-            sl_overlay_line(ov, NULL, "filter: PCSS, light size %.2f", l->size);
-        else
-            sl_overlay_line(ov, NULL, "filter: %s", sl_filter_mode_name(f->mode));
-    }
-    if (drawn == 5) {
-        int moments = p->vsm.map_size > 0 ? p->vsm.map_size : p->shadow_map_size;
-        sl_overlay_line(ov, NULL, "VSM: moments %dx%d, blur radius %d", moments, moments, p->vsm.blur_radius);
-        sl_overlay_line(ov, NULL, "bleeding reduction %.2f, min variance %.1e", p->vsm.bleeding, p->vsm.min_variance);
-    }
-    if (drawn == 6) {
-        const sl_cascade_params *c = &p->cascades;
-        sl_overlay_line(ov, NULL, "cascades: %d, lambda %.2f%s", c->count, c->lambda,
-                        c->blend_band > 0 ? ", blend band" : "");
-        char splits[160] = "";
-        for (int i = 0; i <= info->cascade_count && i <= SL_MAX_CASCADES; i++)
-            snprintf(splits + strlen(splits), sizeof splits - strlen(splits), "%s%.1f", i ? " " : "",
-                     info->cascade_splits[i]);
-        sl_overlay_line(ov, NULL, "splits (view depth): %s", splits);
-        sl_overlay_line(ov, c->unsnapped ? _sl_red : NULL, "texel snapping: %s (T)%s%s", c->unsnapped ? "off" : "on",
-                        v->camera_path ? ", camera path: " : "", v->camera_path ? _sl_path_names[v->camera_path] : "");
-    }
-    if (p->lab == 6 && v->frozen) sl_overlay_line(ov, _sl_blue, "frustum frozen, seen from above (Z)");
-    if (drawn == 7) {
-        const sl_cube_settings *c = &p->cube;
-        sl_overlay_line(ov, NULL, "lookup: %s, bias %.4f (distance / far)",
-                        c->soft ? "soft, 20 directions" : "hard", c->bias);
-        sl_overlay_line(ov, NULL, "faces: %s", info->cube_layered ? "one layered pass" : "six passes");
-    }
+    /* the settings of what draws (a lab that is off is said above): the asked lab's maps, then the
+     * settings of the lab whose code drew */
+    const sl_technique *asked = sl_technique_of(p->lab), *drawing_technique = sl_technique_of(drawn);
+    sl_view_context c = _sl_view_context(v, info);
+    char maps[128];
+    if (!asked || !asked->maps_text || !asked->maps_text(&c, maps, sizeof maps))
+        snprintf(maps, sizeof maps, "shadow map: %dx%d", p->shadow_map_size, p->shadow_map_size);
+    sl_overlay_line(ov, NULL, "%s", maps);
+    if (drawing_technique && drawing_technique->overlay_lines) drawing_technique->overlay_lines(ov, &c);
+    if (v->frozen && asked && asked->frozen_text) sl_overlay_line(ov, _sl_blue, "%s", asked->frozen_text);
     if (p->output == SL_OUTPUT_VISIBILITY) sl_overlay_line(ov, NULL, "view: visibility term");
     for (int i = 0; i < info->not_implemented_count; i++)
         sl_overlay_line(ov, _sl_red, "not implemented: %s()", info->not_implemented[i]);
@@ -1418,8 +1310,16 @@ int sl_viewer_main(int argc, char **argv) {
     if (light_size > 0) v.scene.light.size = light_size;
     if (freeze) _sl_freeze(&v, true);
     if (!lab_given) {
-        /* the highest lab for the scene's light: lab 7 casts from a point light, the others from a sun or a spot */
-        v.params.lab = v.scene.light.type == SL_LIGHT_POINT && sl_lab_folder(7) ? 7 : 4;
+        /* the lab whose technique the scene's light is for (sl_technique.default_for_lights: a point light's cube
+         * maps, a sun's or a spot's filtering); if it is not in this build, a sun's, or the highest below it */
+        v.params.lab = 0;
+        for (int pass = 0; pass < 2 && !v.params.lab; pass++)
+            for (int lab = SL_LAB_COUNT; lab >= 1 && !v.params.lab; lab--) {
+                const sl_technique *t = sl_technique_of(lab);
+                unsigned light = 1u << (pass == 0 ? v.scene.light.type : SL_LIGHT_DIRECTIONAL);
+                if (t && (t->default_for_lights & light) && (pass == 1 || sl_lab_folder(lab))) v.params.lab = lab;
+            }
+        if (!v.params.lab) v.params.lab = 1;
         while (v.params.lab > 1 && !sl_lab_folder(v.params.lab)) v.params.lab--;
     }
     sl_context_desc cd = {
@@ -1543,7 +1443,9 @@ int sl_viewer_main(int argc, char **argv) {
             break;
         }
         bool labels = v.show_overlay || v.labels;
-        bool overlay_drawn = v.overlay && (labels || v.show_frustum || v.caption || (v.params.lab == 6 && v.frozen));
+        const sl_technique *asked = sl_technique_of(v.params.lab);
+        bool overlay_drawn = v.overlay && (labels || v.show_frustum || v.caption ||
+                                           (v.frozen && asked && asked->frozen_lines));
         mat4 camera;
         _sl_camera_view_projection(&v.scene, fw, fh, camera);
         if (overlay_drawn) {

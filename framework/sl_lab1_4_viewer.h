@@ -1,0 +1,11 @@
+/* sl_lab1_4_viewer: what the viewer shows of labs 1-4's shadow-map frame (their title and overlay
+ * texts), and labs 2-4's descriptors. Lab 1's descriptor (sl_lab1_4_shadow_map.c) lists these. */
+#ifndef SL_LAB1_4_VIEWER_H
+#define SL_LAB1_4_VIEWER_H
+
+#include "sl_technique.h"
+
+void sl_lab1_settings_text(const sl_view_context *c, char *out, size_t n);
+void sl_lab1_drawing_text(const sl_view_context *c, char *out, size_t n);
+
+#endif
