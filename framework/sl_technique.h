@@ -7,7 +7,10 @@
  * pass (lab 5's moments) and the texture that camera pass then reads. Hot
  * reload, program counts and clean-up ask every technique in turn. So the
  * renderer names no lab module: a technique is added by writing its module
- * and listing its descriptor in sl_technique.c.
+ * and listing its descriptor in sl_technique.c. The viewer reads the rest from
+ * it as well (the struct's last block): its keys, which the viewer joins to its
+ * common ones, and what the title and the overlay say of it; so the viewer
+ * names no lab either.
  *
  * Every hook may be NULL (the technique has no such step). Which labs a
  * technique builds on is framework/lab_dependencies.cmake's, read through
