@@ -111,8 +111,11 @@ strict=(-std=c11 -O2 -Wall -Wextra -Wshadow -Wno-unused-parameter -Wno-format-tr
 common=(-I"$root/framework" -I"$prefix/include")
 core=(sl_backend sl_case sl_compare sl_gl sl_image sl_json sl_log sl_params sl_platform sl_probe sl_protocol sl_scene
       sl_text)
-framework=(sl_bench sl_bench_baseline sl_case_view sl_context sl_lab5_vsm sl_labs sl_lab6_cascades sl_lab7_cube
-           sl_mesh sl_overlay sl_probe_pass sl_renderer sl_runner sl_serve sl_shader sl_viewer)
+# sl_framework's sources as framework/CMakeLists.txt lists them, so a module added there is built here too
+mapfile -t framework < <(awk '/^add_library\(sl_framework STATIC/ { inside = 1; next }
+  inside { for (i = 1; i <= NF; i++) { s = $i; sub(/\)$/, "", s); if (s ~ /\.c$/) { sub(/\.c$/, "", s); print s } }
+           if (/\)/) inside = 0 }' "$root/framework/CMakeLists.txt")
+[ ${#framework[@]} -gt 0 ] || { say "no sl_framework sources found in framework/CMakeLists.txt"; exit 1; }
 objects=()
 : >"$out/compile.log"
 # an object older than its source or than any of the project's headers is made again
