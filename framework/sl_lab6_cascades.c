@@ -510,4 +510,6 @@ const sl_technique sl_lab6_technique = {
     .own_bias = true,
     .frozen_text = "frustum frozen, seen from above (Z)",
     .frozen_lines = sl_lab6_frozen_lines,
+    .freeze = sl_lab6_freeze,
+    .fit_camera = sl_lab6_fit_camera,
 };

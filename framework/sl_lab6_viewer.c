@@ -1,5 +1,6 @@
 #include "sl_lab6_viewer.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -110,4 +111,38 @@ void sl_lab6_frozen_lines(sl_overlay *ov, const sl_view_context *c, int width, i
         glm_vec3_scale((float *)sl_cascade_colours[i], 0.55f, dim);
         sl_overlay_box_on_top(ov, inv, dim);
     }
+}
+
+/* Fits the cascades to the walking camera, frozen, and looks at its frustum from above: over the middle of
+ * the range the cascades cover, a little behind, looking down. Thawed, they follow the camera again. */
+void sl_lab6_freeze(sl_render_params *p, const sl_camera *walking, bool on, sl_camera *view) {
+    sl_cascade_params *c = &p->cascades;
+    if (!on) {
+        c->use_camera = c->show_frustum = false;
+        return;
+    }
+    c->camera = *walking;
+    c->use_camera = c->show_frustum = true;
+    const sl_camera *w = walking;
+    float reach = c->max_distance > w->near && c->max_distance < w->far ? c->max_distance : w->far;
+    float d = fminf(reach, 400.0f) * 0.5f;
+    vec3 forward;
+    glm_vec3_sub((float *)w->target, (float *)w->position, forward);
+    forward[1] = 0;
+    if (glm_vec3_norm(forward) < 1e-4f) forward[2] = -1;
+    glm_vec3_normalize(forward);
+    sl_camera *top = view;
+    glm_vec3_copy((float *)w->position, top->target);
+    glm_vec3_muladds(forward, d * 0.8f, top->target);
+    glm_vec3_copy(top->target, top->position);
+    top->position[1] += d * 2.2f;
+    glm_vec3_muladds(forward, -d * 0.35f, top->position);
+    top->near = 0.5f;
+    top->far = d * 6;
+}
+
+sl_camera *sl_lab6_fit_camera(sl_render_params *p, const sl_camera *camera) {
+    p->cascades.camera = *camera;
+    p->cascades.use_camera = true;
+    return &p->cascades.camera;
 }

@@ -1,5 +1,6 @@
 /* sl_lab6_viewer: what the viewer shows of lab 6 (its descriptor, sl_lab6_cascades.c, lists these):
- * its keys, its title and overlay texts, and the frozen frustum's slices and light boxes. */
+ * its keys, its title and overlay texts, the frozen frustum (the camera above it, its slices and
+ * light boxes) and the camera the cascades are fitted to. */
 #ifndef SL_LAB6_VIEWER_H
 #define SL_LAB6_VIEWER_H
 
@@ -12,5 +13,7 @@ void sl_lab6_settings_text(const sl_view_context *c, char *out, size_t n);
 bool sl_lab6_maps_text(const sl_view_context *c, char *out, size_t n);
 void sl_lab6_overlay_lines(struct sl_overlay *ov, const sl_view_context *c);
 void sl_lab6_frozen_lines(struct sl_overlay *ov, const sl_view_context *c, int width, int height);
+void sl_lab6_freeze(sl_render_params *p, const sl_camera *walking, bool on, sl_camera *view);
+sl_camera *sl_lab6_fit_camera(sl_render_params *p, const sl_camera *camera);
 
 #endif

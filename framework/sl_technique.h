@@ -118,6 +118,13 @@ typedef struct sl_technique {
      * frozen frustum's lines (lab 6's slices and light boxes); drawn whenever it is frozen. */
     const char *frozen_text;
     void (*frozen_lines)(struct sl_overlay *ov, const sl_view_context *c, int width, int height);
+    /* The viewer's frustum frozen on camera `walking` (`on`: what the technique fits is pinned to it and
+     * shown, and `view` becomes the camera that looks at it) or thawed (the viewer puts its camera back).
+     * Asked of every technique, whichever lab is in use (--freeze comes before the lab is known). */
+    void (*freeze)(sl_render_params *p, const sl_camera *walking, bool on, sl_camera *view);
+    /* The camera the technique fits its maps to, from now on `camera` (--path-fits-cascades moves it alone,
+     * so the picture stays and what changes is what the shadows do); NULL: it fits to none. */
+    sl_camera *(*fit_camera)(sl_render_params *p, const sl_camera *camera);
     /* The lights (bit 1 << sl_light_type) of scenes the viewer opens in this lab when none is asked. */
     unsigned default_for_lights;
 } sl_technique;
