@@ -15,140 +15,15 @@
 #include <cjson/cJSON.h>
 #include "sl_overlay.h"
 #include "sl_renderer.h"
+#include "sl_case_view_draw.h"
+#include "sl_case_view_pictures.h"
+#include "sl_case_view_state.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #ifndef SL_GRADER_DIR
 #define SL_GRADER_DIR "grader"
 #endif
-
-enum { _SL_STUDENT, _SL_REFERENCE, _SL_DIFF, _SL_PANELS };
-
-#define _SL_MAX_SHOWN 16
-
-typedef struct _sl_case_view {
-    sl_case c;
-    const sl_check *check;        /* the check shown */
-    const sl_check *shown[_SL_MAX_SHOWN]; /* every check with a picture, in the case's order (C cycles) */
-    int shown_count, shown_index;
-    const char *references_dir;
-    sl_image reference;
-    int panel_size[_SL_PANELS][2]; /* each panel's picture size, drawn with its aspect kept */
-    double reference_flicker;      /* flicker: the share of the reference's pixels that change along the path */
-    sl_context *ctx;
-    sl_renderer renderer;
-    sl_program panel_program;
-    GLuint textures[_SL_PANELS], vao, target_fbo, target_texture, target_depth;
-    bool side_by_side, show_reference, show_diff;
-    int scale;
-    char summary[320];   /* what this render scores, as the grader counts it */
-    char criterion[400]; /* how the grader decides the check, from the case and the compare code */
-    /* depth and distance pictures are stretched to their own range: each panel's, for its label */
-    bool stretched[_SL_PANELS];
-    float range[_SL_PANELS][2];
-    sl_overlay *overlay;   /* the panels' labels and the summary */
-    int band;              /* pixels below the panels for the summary */
-    int text_scale;
-} _sl_case_view;
-
-#define _SL_BAND_LINES 4
-
-/* Checks whose capture is a picture the reference can be set beside (probes and
- * matrices are numbers). Flicker's capture is every frame of a camera path,
- * stacked: it is shown as its last frame with what changed along the path in red. */
-static bool _sl_has_picture(sl_check_kind k) {
-    switch (k) {
-    case SL_CHECK_VISIBILITY: case SL_CHECK_PENUMBRA: case SL_CHECK_BLEEDING: case SL_CHECK_DEPTH_MAP:
-    case SL_CHECK_IMAGE: case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: case SL_CHECK_CASCADE_INDEX:
-    case SL_CHECK_CUBE_FACE: case SL_CHECK_FLICKER:
-        return true;
-    default:
-        return false;
-    }
-}
-
-/* Maps and per-texel buffers are square and shown scaled; pictures at the camera's size. */
-static bool _sl_is_map(sl_check_kind k) {
-    return k == SL_CHECK_DEPTH_MAP || k == SL_CHECK_MOMENTS || k == SL_CHECK_MOMENTS_BLURRED || k == SL_CHECK_CUBE_FACE;
-}
-
-/* Depths and distances: their values crowd a small part of 0..1, so each picture is stretched. */
-static bool _sl_is_distance(sl_check_kind k) { return k == SL_CHECK_DEPTH_MAP || k == SL_CHECK_CUBE_FACE; }
-
-/* The smallest and largest finite value of channel 0; false if there is none. A
- * depth map's texels the clear left at 1 (nothing drawn there) are left out
- * when it has others, so the drawn ones get the whole grey scale. */
-static bool _sl_value_range(const sl_image *img, sl_check_kind kind, float out[2]) {
-    bool any = false, drawn = false;
-    for (long i = 0; kind == SL_CHECK_DEPTH_MAP && img->data && i < (long)img->width * img->height && !drawn; i++)
-        drawn = img->data[i * img->channels] < 1.0f;
-    for (long i = 0; img->data && i < (long)img->width * img->height; i++) {
-        float x = img->data[i * img->channels];
-        if (!isfinite(x) || (drawn && x >= 1.0f)) continue;
-        if (!any || x < out[0]) out[0] = x;
-        if (!any || x > out[1]) out[1] = x;
-        any = true;
-    }
-    return any;
-}
-
-/* The difference panel's colours where yours and the reference's disagree: red (yours brighter), blue. */
-static void _sl_diff_legend(sl_check_kind k, const char **red, const char **blue) {
-    switch (k) {
-    case SL_CHECK_DEPTH_MAP: case SL_CHECK_CUBE_FACE: *red = "red: yours farther", *blue = "blue: yours nearer"; break;
-    case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: case SL_CHECK_CASCADE_INDEX:
-        *red = "red: yours higher", *blue = "blue: yours lower";
-        break;
-    default: *red = "red: a shadow missing", *blue = "blue: one too many"; break;
-    }
-}
-
-/* What the panels show, for the title and the terminal. */
-static const char *_sl_legend(sl_check_kind k) {
-    switch (k) {
-    case SL_CHECK_DEPTH_MAP: return "depth (black nearest, white farthest of each picture's own range)";
-    case SL_CHECK_CUBE_FACE: return "distance / far (black nearest, white farthest of each picture's own range)";
-    case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: return "moments (red: depth, green: depth squared)";
-    case SL_CHECK_CASCADE_INDEX: return "cascade (red 0, green 1, blue 2, yellow 3, grey none)";
-    case SL_CHECK_IMAGE: return "shaded image";
-    case SL_CHECK_FLICKER: return "the last frame of the path, in red what changed from one frame to the next";
-    default: return "visibility (white lit, black shadow)";
-    }
-}
-
-/* Flicker: of a path's frames stacked top to bottom (each width x height), the
- * last frame in grey with every pixel that changed between two frames in red;
- * `changed` gets their fraction. */
-static sl_image _sl_flicker_marks(const sl_image *stacked, int frames, double *changed) {
-    int w = stacked->width, h = frames > 0 ? stacked->height / frames : 0;
-    sl_image out = sl_image_alloc(w, h, 3);
-    long count = 0;
-    if (!out.data || !stacked->data || frames < 1) {
-        *changed = 0;
-        return out;
-    }
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-            bool moved = false;
-            for (int f = 1; f < frames && !moved; f++)
-                moved = fabsf(sl_image_pixel(stacked, x, f * h + y)[0] - sl_image_pixel(stacked, x, (f - 1) * h + y)[0]) > 0.25f;
-            float grey = sl_image_pixel(stacked, x, (frames - 1) * h + y)[0];
-            float *q = sl_image_pixel(&out, x, y);
-            q[0] = moved ? 1 : grey, q[1] = moved ? 0.05f : grey, q[2] = moved ? 0.05f : grey;
-            count += moved;
-        }
-    *changed = (double)count / ((double)w * h);
-    return out;
-}
-
-/* The last frame of a path's stack (a view into it: not to be freed). */
-static sl_image _sl_last_frame(const sl_image *stacked, int frames) {
-    int h = frames > 0 ? stacked->height / frames : stacked->height;
-    sl_image last = *stacked;
-    last.height = h;
-    if (stacked->data && frames > 0) last.data = stacked->data + (size_t)(frames - 1) * (size_t)h * (size_t)stacked->width * (size_t)stacked->channels;
-    return last;
-}
 
 /* An image as RGB texels for a panel, bottom row first (GL's order), in the
  * check's colours: cascade numbers as the viewer's K key colours them, the two
@@ -160,8 +35,8 @@ static void _sl_upload(_sl_case_view *v, int panel, const sl_image *img, int kin
     v->panel_size[panel][1] = img->height;
     /* depths and distances: black at the picture's nearest, white at its farthest */
     float lo = 0, scale = 1;
-    v->stretched[panel] = kind >= 0 && _sl_is_distance((sl_check_kind)kind) &&
-                          _sl_value_range(img, (sl_check_kind)kind, v->range[panel]);
+    v->stretched[panel] = kind >= 0 && _sl_case_view_is_distance((sl_check_kind)kind) &&
+                          _sl_case_view_value_range(img, (sl_check_kind)kind, v->range[panel]);
     if (v->stretched[panel]) {
         lo = v->range[panel][0];
         scale = v->range[panel][1] > lo ? 1.0f / (v->range[panel][1] - lo) : 0;
@@ -221,7 +96,7 @@ static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
     }
     if (kind == SL_CHECK_FLICKER) return out->data != NULL;
     const sl_frame_info *info = sl_renderer_info(&v->renderer);
-    if (_sl_is_map(kind)) {
+    if (_sl_case_view_is_map(kind)) {
         char err[256];
         bool ok = false;
         if (kind == SL_CHECK_DEPTH_MAP)
@@ -251,13 +126,6 @@ static bool _sl_render_lit_mask(_sl_case_view *v, sl_image *out) {
     return sl_capture_framebuffer(v->target_fbo, c->width, c->height, 1, out);
 }
 
-/* One channel of an image, as an image of its own (the grader compares lab 5's moments per channel). */
-static sl_image _sl_channel(const sl_image *img, int channel) {
-    sl_image out = sl_image_alloc(img->width, img->height, 1);
-    for (long i = 0; out.data && i < (long)img->width * img->height; i++) out.data[i] = img->data[i * img->channels + channel];
-    return out;
-}
-
 /* The check's verdict on these pictures, counted as the grader counts it: the
  * failing pixels (sl_compare's neighbourhood and the check's threshold), NaN,
  * the mean difference where the case bounds it, per channel for the moments,
@@ -276,8 +144,8 @@ static void _sl_judge(_sl_case_view *v, const sl_image *student, sl_image *diff)
     double failing = 0, mean = 0;
     long nan_pixels = 0;
     for (int ch = 0; ch < channels; ch++) {
-        sl_image a = channels == 2 ? _sl_channel(student, ch) : *student;
-        sl_image b = channels == 2 ? _sl_channel(&v->reference, ch) : v->reference;
+        sl_image a = channels == 2 ? _sl_case_view_channel(student, ch) : *student;
+        sl_image b = channels == 2 ? _sl_case_view_channel(&v->reference, ch) : v->reference;
         sl_image d = {0};
         st[ch] = sl_compare_images(&a, &b, k->threshold, &d);
         if (channels == 2) {
@@ -358,8 +226,8 @@ static void _sl_update(_sl_case_view *v) {
         /* the path's frames: what changed along it, and the last frames side by side */
         const sl_frame_info *info = sl_renderer_info(&v->renderer);
         double yours = 0, reference = v->reference_flicker;
-        sl_image marks = _sl_flicker_marks(&student, v->c.frame_count, &yours);
-        sl_image last = _sl_last_frame(&student, v->c.frame_count), ref_last = _sl_last_frame(&v->reference, v->c.frame_count);
+        sl_image marks = _sl_case_view_flicker_marks(&student, v->c.frame_count, &yours);
+        sl_image last = _sl_case_view_last_frame(&student, v->c.frame_count), ref_last = _sl_case_view_last_frame(&v->reference, v->c.frame_count);
         sl_compare_images(&last, &ref_last, 0.05, &diff);
         snprintf(v->summary, sizeof v->summary,
                  "%s / %s: along the camera path %.3f%% of pixels change from one frame to the next in yours, %.3f%% in "
@@ -379,7 +247,7 @@ static void _sl_update(_sl_case_view *v) {
     }
     _sl_judge(v, &student, &diff);
     if (student.data) _sl_upload(v, _SL_STUDENT, &student, v->check->kind);
-    if (diff.data && _sl_is_distance(v->check->kind) && v->stretched[_SL_REFERENCE]) {
+    if (diff.data && _sl_case_view_is_distance(v->check->kind) && v->stretched[_SL_REFERENCE]) {
         /* the reference under the marks, darkened, in its stretched greys (sl_compare leaves grey where
          * nothing differs: 0.35 of the raw value, nearly black for distances) */
         float lo = v->range[_SL_REFERENCE][0], span = v->range[_SL_REFERENCE][1] - lo;
@@ -396,118 +264,13 @@ static void _sl_update(_sl_case_view *v) {
     sl_image_free(&diff);
 }
 
-/* Draws a panel's picture in slot `slot` (width x height, above the summary band); false if it has none yet. */
-static void _sl_draw_panel(_sl_case_view *v, int panel, int slot, int width, int height) {
-    /* the picture's aspect kept: a square map in a wide panel is centred */
-    int pw = v->panel_size[panel][0], ph = v->panel_size[panel][1], w = width, h = height;
-    if (pw > 0 && ph > 0) {
-        if ((long)width * ph > (long)height * pw) w = (int)((long)height * pw / ph);
-        else h = (int)((long)width * ph / pw);
-    }
-    glViewport(slot * width + (width - w) / 2, v->band + (height - h) / 2, w, h);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, v->textures[panel]);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-}
-
-/* A panel's label: whose picture, and for depths and distances the range it is stretched from. */
-static void _sl_label(_sl_case_view *v, int panel, int x, int y) {
-    static const char *const names[_SL_PANELS] = {"yours", "reference", "difference"};
-    static const float colours[_SL_PANELS][3] = {{1, 1, 1}, {1, 1, 1}, {1, 0.85f, 0.35f}};
-    static const float red[3] = {1, 0.35f, 0.3f}, blue[3] = {0.45f, 0.65f, 1}, grey[3] = {0.75f, 0.75f, 0.75f};
-    int line = (SL_OVERLAY_CELL_H * 16 / 10) * v->text_scale; /* a label's backing is a little taller than a cell */
-    if (panel == _SL_DIFF) {
-        const char *r, *b;
-        _sl_diff_legend(v->check->kind, &r, &b);
-        sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
-        sl_overlay_label(v->overlay, x, y + line, red, "%s", r);
-        sl_overlay_label(v->overlay, x, y + 2 * line, blue, "%s", b);
-    } else if (v->stretched[panel]) {
-        sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
-        if (v->range[panel][1] > v->range[panel][0])
-            sl_overlay_label(v->overlay, x, y + line, grey, "%.4f - %.4f%s", (double)v->range[panel][0],
-                             (double)v->range[panel][1], v->check->kind == SL_CHECK_DEPTH_MAP && v->range[panel][1] < 1
-                                                             ? " (1: cleared)" : "");
-        else
-            sl_overlay_label(v->overlay, x, y + line, grey, "all %.4f", (double)v->range[panel][0]);
-    } else {
-        sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
-    }
-}
-
-/* Text in lines of at most `width` characters, broken at spaces, into the current panel; at most `lines`. */
-static int _sl_band_text(sl_overlay *ov, const float *rgb, const char *text, int width, int lines) {
-    int used = 0;
-    while (*text && used < lines) {
-        int len = (int)strlen(text), cut = len;
-        if (len > width) {
-            cut = width;
-            while (cut > width / 2 && text[cut] != ' ') cut--;
-            if (text[cut] != ' ') cut = width;
-        }
-        sl_overlay_line(ov, rgb, "%.*s", cut, text);
-        used++;
-        text += cut;
-        while (*text == ' ') text++;
-    }
-    return used;
-}
-
-static void _sl_draw(_sl_case_view *v, int width, int height) {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
-    glDisable(GL_DEPTH_TEST);
-    glClearColor(0.1f, 0.1f, 0.1f, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glUseProgram(v->panel_program.id);
-    glUniform1i(sl_program_uniform(&v->panel_program, "u_texture"), 0);
-    glBindVertexArray(v->vao);
-    int panels_h = height - v->band > 0 ? height - v->band : height;
-    if (v->overlay) sl_overlay_clear(v->overlay);
-    int s = v->overlay ? sl_overlay_scale_for(v->overlay, width, height) : 1;
-    if (v->side_by_side) {
-        for (int panel = 0; panel < _SL_PANELS; panel++) {
-            _sl_draw_panel(v, panel, panel, width / 3, panels_h);
-            if (v->overlay) _sl_label(v, panel, panel * (width / 3) + 4 * s, 4 * s);
-        }
-    } else {
-        int panel = v->show_diff ? _SL_DIFF : v->show_reference ? _SL_REFERENCE : _SL_STUDENT;
-        _sl_draw_panel(v, panel, 0, width, panels_h);
-        if (v->overlay) _sl_label(v, panel, 4 * s, 4 * s);
-    }
-    glBindVertexArray(0);
-    glUseProgram(0);
-    if (!v->overlay) return;
-    /* the summary and the criterion under the panels */
-    sl_overlay_panel(v->overlay, SL_OVERLAY_BOTTOM_LEFT, NULL);
-    int chars = (width - 16 * s) / (SL_OVERLAY_CELL_W * s);
-    if (chars > 118) chars = 118; /* the overlay's longest line */
-    int used = _sl_band_text(v->overlay, NULL, v->summary, chars, 2);
-    _sl_band_text(v->overlay, (const float[3]){0.6f, 0.8f, 1.0f}, v->criterion, chars, _SL_BAND_LINES - used);
-    mat4 identity;
-    glm_mat4_identity(identity);
-    sl_overlay_draw(v->overlay, identity, 0, width, height);
-}
-
-static void _sl_title(_sl_case_view *v) {
-    GLFWwindow *w = sl_context_window(v->ctx);
-    if (!w) return;
-    char title[512];
-    const char *layout = v->side_by_side ? "yours | reference | difference (red: shadow missing, blue: extra)"
-                         : v->show_diff  ? "difference (red: shadow missing, blue: extra)"
-                         : v->show_reference ? "reference" : "yours";
-    snprintf(title, sizeof title, "shadowlab — %s — %s — %s%s", v->summary, layout, _sl_legend(v->check->kind),
-             v->shown_count > 1 ? " — C: next check" : "");
-    glfwSetWindowTitle(w, title);
-}
-
 /* The reference's panel: flicker's frames as what changed along the path. */
 static void _sl_upload_reference(_sl_case_view *v) {
     if (v->check->kind != SL_CHECK_FLICKER) {
         _sl_upload(v, _SL_REFERENCE, &v->reference, v->check->kind);
         return;
     }
-    sl_image marks = _sl_flicker_marks(&v->reference, v->c.frame_count, &v->reference_flicker);
+    sl_image marks = _sl_case_view_flicker_marks(&v->reference, v->c.frame_count, &v->reference_flicker);
     if (marks.data) _sl_upload(v, _SL_REFERENCE, &marks, -1);
     sl_image_free(&marks);
 }
@@ -528,7 +291,7 @@ static bool _sl_show_check(_sl_case_view *v, int index) {
     v->check = k;
     v->shown_index = index;
     if (v->textures[_SL_REFERENCE]) _sl_upload_reference(v);
-    printf("shadowlab: showing check %s (%d of %d): %s\n", k->name, index + 1, v->shown_count, _sl_legend(k->kind));
+    printf("shadowlab: showing check %s (%d of %d): %s\n", k->name, index + 1, v->shown_count, _sl_case_view_legend(k->kind));
     return true;
 }
 
@@ -586,7 +349,7 @@ static bool _sl_keys(_sl_case_view *v) {
 }
 
 /* --serve's key table for the page: the case view's keys but Esc (a page is
- * closed in the browser), as the viewer's table is sent (sl_viewer.c). */
+ * closed in the browser), as the viewer's table is sent (sl_viewer_keys.c). */
 static char *_sl_case_keys_json(int lab) {
     cJSON *root = cJSON_CreateObject(), *keys = cJSON_AddArrayToObject(root, "keys");
     char code[16];
@@ -622,9 +385,9 @@ static bool _sl_setup(_sl_case_view *v, const sl_case_view_desc *d, char *err, s
     bool maps_only = true;
     for (int i = 0; i < v->c.check_count && v->shown_count < _SL_MAX_SHOWN; i++) {
         const sl_check *k = &v->c.checks[i];
-        if (!_sl_has_picture(k->kind)) continue;
+        if (!_sl_case_view_has_picture(k->kind)) continue;
         if (d->check_name && strcmp(k->name, d->check_name) == 0) first = v->shown_count;
-        maps_only &= _sl_is_map(k->kind);
+        maps_only &= _sl_case_view_is_map(k->kind);
         v->shown[v->shown_count++] = k;
     }
     if (v->shown_count == 0) {
@@ -768,10 +531,10 @@ int sl_case_view_main(const sl_case_view_desc *d) {
                             keys_acted++;
                         }
             }
-            _sl_title(&v);
+            _sl_case_view_title(&v);
             int fw, fh;
             sl_context_framebuffer_size(v.ctx, &fw, &fh);
-            _sl_draw(&v, fw, fh);
+            _sl_case_view_draw(&v, fw, fh);
             rendered++;
             if (serve) {
                 static char text[16384]; /* the labels and the band's summary, in words */

@@ -11,6 +11,7 @@
 
 #include "sl_renderer.h"
 #include "sl_probe_calls.h"
+#include "sl_lab1_4_viewer.h"
 #include "sl_technique.h"
 
 /* Calls lab N's function fn through the renderer's table, recording what it returned. */
@@ -618,10 +619,7 @@ const sl_technique sl_lab1_technique = {
     .program_stats = _sl_lab1_program_stats,
     .destroy = _sl_lab1_destroy,
     .probes = sl_lab1_probes,
+    /* the viewer's side: sl_lab1_4_viewer.c (also labs 2-4's descriptors) */
+    .settings_text = sl_lab1_settings_text,
+    .drawing_text = sl_lab1_drawing_text,
 };
-
-/* Labs 2-4 add their steps to lab 1's shadow-map frame (above): they build on each other inside one
- * frame, so they have no frame hooks of their own, only their functions' probes. */
-const sl_technique sl_lab2_technique = {.name = "shadow lookup", .lab = 2, .probes = sl_lab2_probes};
-const sl_technique sl_lab3_technique = {.name = "bias", .lab = 3, .probes = sl_lab3_probes};
-const sl_technique sl_lab4_technique = {.name = "filtering", .lab = 4, .probes = sl_lab4_probes};

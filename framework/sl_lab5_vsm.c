@@ -6,7 +6,10 @@
 
 #include "sl_renderer.h"
 #include "sl_shader.h"
+#include "sl_overlay.h"
 #include "sl_technique.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 typedef struct _sl_vsm_program {
     sl_program program;
@@ -229,6 +232,60 @@ static void _sl_lab5_destroy(sl_renderer *r) {
 }
 
 /* Lab 5 draws within labs 1-4's frame: its moments before the camera pass, which reads them. */
+/* ---- The viewer: lab 5's keys and what the title and overlay say of it ---- */
+enum { _SL_LAB5_KEY_VSM, _SL_LAB5_KEY_BLUR, _SL_LAB5_KEY_BLEEDING, _SL_LAB5_KEY_MIN_VARIANCE };
+
+static const sl_technique_key _sl_lab5_keys[] = {
+    {{GLFW_KEY_P}, "P", "VSM", "VSM or lab 4's filter on the same scene", _SL_LAB5_KEY_VSM},
+    {{GLFW_KEY_R, GLFW_KEY_T}, "R T", "blur radius", "blur radius of the moments down, up", _SL_LAB5_KEY_BLUR},
+    {{GLFW_KEY_K, GLFW_KEY_L}, "K L", "bleeding reduction", "light-bleeding reduction down, up", _SL_LAB5_KEY_BLEEDING},
+    {{GLFW_KEY_N, GLFW_KEY_J}, "N J", "min variance", "minimum variance halve, double", _SL_LAB5_KEY_MIN_VARIANCE},
+    {{0}, NULL, NULL, NULL, 0},
+};
+
+static void _sl_lab5_key_pressed(sl_view_context *c, const sl_technique_key *k, int code, bool up) {
+    (void)code;
+    sl_vsm_settings *vsm = &c->params->vsm;
+    switch (k->id) {
+    case _SL_LAB5_KEY_VSM: c->params->vsm_off = !c->params->vsm_off; break;
+    case _SL_LAB5_KEY_BLUR: vsm->blur_radius = up ? (vsm->blur_radius < 32 ? vsm->blur_radius + 1 : 32)
+                                                  : (vsm->blur_radius > 0 ? vsm->blur_radius - 1 : 0); break;
+    case _SL_LAB5_KEY_BLEEDING: vsm->bleeding = glm_clamp(vsm->bleeding + (up ? 0.05f : -0.05f), 0, 0.95f); break;
+    case _SL_LAB5_KEY_MIN_VARIANCE: vsm->min_variance = glm_clamp(vsm->min_variance * (up ? 2.0f : 0.5f), 1e-7f, 0.01f); break;
+    }
+}
+
+static void _sl_lab5_key_state(const sl_view_context *c, const sl_technique_key *k, char *out, size_t n) {
+    const sl_render_params *p = c->params;
+    switch (k->id) {
+    case _SL_LAB5_KEY_VSM: snprintf(out, n, "%s", p->vsm_off ? "off, lab 4's filter" : "on"); break;
+    case _SL_LAB5_KEY_BLUR: snprintf(out, n, "%d", p->vsm.blur_radius); break;
+    case _SL_LAB5_KEY_BLEEDING: snprintf(out, n, "%.2f", p->vsm.bleeding); break;
+    case _SL_LAB5_KEY_MIN_VARIANCE: snprintf(out, n, "%.1e", p->vsm.min_variance); break;
+    }
+}
+
+/* VSM's settings; with VSM off (P), lab 4's, which then draw. */
+static void _sl_lab5_settings_text(const sl_view_context *c, char *out, size_t n) {
+    const sl_render_params *p = c->params;
+    if (!p->vsm_off) {
+        snprintf(out, n, "VSM: blur %d, bleeding %.2f, min variance %.1e", p->vsm.blur_radius, p->vsm.bleeding,
+                 p->vsm.min_variance);
+        return;
+    }
+    const sl_technique *filtering = sl_technique_of(4);
+    out[0] = '\0';
+    if (filtering && filtering->settings_text) filtering->settings_text(c, out, n);
+    snprintf(out + strlen(out), n - strlen(out), " (VSM off: P)");
+}
+
+static void _sl_lab5_overlay_lines(sl_overlay *ov, const sl_view_context *c) {
+    const sl_render_params *p = c->params;
+    int moments = p->vsm.map_size > 0 ? p->vsm.map_size : p->shadow_map_size;
+    sl_overlay_line(ov, NULL, "VSM: moments %dx%d, blur radius %d", moments, moments, p->vsm.blur_radius);
+    sl_overlay_line(ov, NULL, "bleeding reduction %.2f, min variance %.1e", p->vsm.bleeding, p->vsm.min_variance);
+}
+
 const sl_technique sl_lab5_technique = {
     .name = "VSM",
     .lab = 5,
@@ -237,4 +294,11 @@ const sl_technique sl_lab5_technique = {
     .debug_view = _sl_lab5_debug_view,
     .reload_changed = _sl_lab5_reload_changed,
     .destroy = _sl_lab5_destroy,
+    .keys = _sl_lab5_keys,
+    .key_pressed = _sl_lab5_key_pressed,
+    .key_state = _sl_lab5_key_state,
+    .panel_keys = {"F", "- ="},
+    .settings_text = _sl_lab5_settings_text,
+    .switched_off_text = "switched off with P",
+    .overlay_lines = _sl_lab5_overlay_lines,
 };

@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_lab6_cascades.h"
+#include "sl_lab6_viewer.h"
 #include "sl_overlay.h"
 #include "sl_probe_calls.h"
 #include "sl_technique.h"
@@ -501,4 +502,16 @@ const sl_technique sl_lab6_technique = {
     .program_stats = _sl_lab6_program_stats,
     .destroy = _sl_lab6_destroy,
     .probes = sl_lab6_probes,
+    /* the viewer's side: sl_lab6_viewer.c */
+    .keys = sl_lab6_keys,
+    .key_pressed = sl_lab6_key_pressed,
+    .key_state = sl_lab6_key_state,
+    .settings_text = sl_lab6_settings_text,
+    .maps_text = sl_lab6_maps_text,
+    .overlay_lines = sl_lab6_overlay_lines,
+    .own_bias = true,
+    .frozen_text = "frustum frozen, seen from above (Z)",
+    .frozen_lines = sl_lab6_frozen_lines,
+    .freeze = sl_lab6_freeze,
+    .fit_camera = sl_lab6_fit_camera,
 };

@@ -9,6 +9,8 @@
 #include "sl_overlay.h"
 #include "sl_probe_calls.h"
 #include "sl_technique.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 /* The programs lab 7 draws with, each built the first time a frame needs it. */
 typedef struct _sl_cube_program {
@@ -396,6 +398,78 @@ static void _sl_lab7_overlay_labels(sl_overlay *ov, const sl_frame_info *info, c
 }
 
 /* Lab 7 draws a frame of its own for a point light. */
+/* ---- The viewer: lab 7's keys and what the title and overlay say of it ---- */
+enum { _SL_LAB7_KEY_SOFT, _SL_LAB7_KEY_CUBE_PASS, _SL_LAB7_KEY_CUBE_BIAS, _SL_LAB7_KEY_LIGHT_HEIGHT };
+
+static const sl_technique_key _sl_lab7_keys[] = {
+    {{GLFW_KEY_S}, "S", "lookup", "soft (20 directions) or hard lookup", _SL_LAB7_KEY_SOFT},
+    {{GLFW_KEY_L}, "L", "faces", "faces drawn in: auto, six passes, one layered pass", _SL_LAB7_KEY_CUBE_PASS},
+    {{GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET}, "[ ]", "cube bias", "the cube lookup's bias halve, double",
+     _SL_LAB7_KEY_CUBE_BIAS},
+    {{GLFW_KEY_PAGE_UP, GLFW_KEY_PAGE_DOWN}, "PgUp PgDn", "light height", "the point light up, down",
+     _SL_LAB7_KEY_LIGHT_HEIGHT},
+    {{0}, NULL, NULL, NULL, 0},
+};
+
+static void _sl_lab7_key_pressed(sl_view_context *c, const sl_technique_key *k, int code, bool up) {
+    sl_cube_settings *cube = &c->params->cube;
+    switch (k->id) {
+    case _SL_LAB7_KEY_SOFT:
+        /* soft or hard, each with the bias it needs unless the bias was changed by hand */
+        cube->soft = !cube->soft;
+        if (cube->soft && cube->bias == SL_CUBE_HARD_BIAS) cube->bias = SL_CUBE_SOFT_BIAS;
+        else if (!cube->soft && cube->bias == SL_CUBE_SOFT_BIAS) cube->bias = SL_CUBE_HARD_BIAS;
+        break;
+    case _SL_LAB7_KEY_CUBE_PASS: cube->pass = (sl_cube_pass)((cube->pass + 1) % SL_CUBE_PASS_COUNT); break;
+    case _SL_LAB7_KEY_CUBE_BIAS: cube->bias = up ? (cube->bias > 0 ? cube->bias * 2 : 0.0005f) : cube->bias * 0.5f; break;
+    case _SL_LAB7_KEY_LIGHT_HEIGHT:
+        if (c->scene->light.type == SL_LIGHT_POINT) c->scene->light.position[1] += code == GLFW_KEY_PAGE_UP ? 0.2f : -0.2f;
+        break;
+    }
+}
+
+static void _sl_lab7_key_state(const sl_view_context *c, const sl_technique_key *k, char *out, size_t n) {
+    const sl_cube_settings *cube = &c->params->cube;
+    const sl_frame_info *info = c->info;
+    switch (k->id) {
+    case _SL_LAB7_KEY_SOFT: snprintf(out, n, "%s", cube->soft ? "soft" : "hard"); break;
+    case _SL_LAB7_KEY_CUBE_PASS:
+        /* auto says which it took */
+        snprintf(out, n, "%s%s", sl_cube_pass_name(cube->pass),
+                 cube->pass != SL_CUBE_PASS_AUTO || !info || !info->cube_frame ? ""
+                 : info->cube_layered ? " (layered)" : " (six)");
+        break;
+    case _SL_LAB7_KEY_CUBE_BIAS: snprintf(out, n, "%.4f", cube->bias); break;
+    case _SL_LAB7_KEY_LIGHT_HEIGHT: snprintf(out, n, "y %.1f", (double)c->scene->light.position[1]); break;
+    }
+}
+
+/* The cube map's settings for a point light; with another light lab 4's, which then draw. */
+static void _sl_lab7_settings_text(const sl_view_context *c, char *out, size_t n) {
+    const sl_cube_settings *cube = &c->params->cube;
+    if (c->scene->light.type == SL_LIGHT_POINT) {
+        snprintf(out, n, "cube map %d, bias %.4f, %s, %s", cube->map_size, cube->bias,
+                 cube->soft ? "soft (20 directions)" : "hard", c->info->cube_layered ? "one layered pass" : "six passes");
+        return;
+    }
+    const sl_technique *filtering = sl_technique_of(4);
+    out[0] = '\0';
+    if (filtering && filtering->settings_text) filtering->settings_text(c, out, n);
+}
+
+static bool _sl_lab7_maps_text(const sl_view_context *c, char *out, size_t n) {
+    if (!c->info->cube_frame) return false;
+    snprintf(out, n, "cube map: 6 faces of %dx%d", c->params->cube.map_size, c->params->cube.map_size);
+    return true;
+}
+
+static void _sl_lab7_overlay_lines(sl_overlay *ov, const sl_view_context *c) {
+    const sl_cube_settings *cube = &c->params->cube;
+    sl_overlay_line(ov, NULL, "lookup: %s, bias %.4f (distance / far)", cube->soft ? "soft, 20 directions" : "hard",
+                    cube->bias);
+    sl_overlay_line(ov, NULL, "faces: %s", c->info->cube_layered ? "one layered pass" : "six passes");
+}
+
 const sl_technique sl_lab7_technique = {
     .name = "cube maps",
     .lab = 7,
@@ -406,4 +480,11 @@ const sl_technique sl_lab7_technique = {
     .program_stats = _sl_lab7_program_stats,
     .destroy = _sl_lab7_destroy,
     .probes = sl_lab7_probes,
+    .keys = _sl_lab7_keys,
+    .key_pressed = _sl_lab7_key_pressed,
+    .key_state = _sl_lab7_key_state,
+    .settings_text = _sl_lab7_settings_text,
+    .maps_text = _sl_lab7_maps_text,
+    .overlay_lines = _sl_lab7_overlay_lines,
+    .default_for_lights = 1u << SL_LIGHT_POINT,
 };

@@ -2,8 +2,10 @@
 
 #include <string.h>
 
-/* Each in its own module (sl_lab1_4_shadow_map.c for labs 1-4, sl_lab5_vsm.c, sl_lab6_cascades.c,
- * sl_lab7_cube.c). */
+/* Each in its own module (sl_lab1_4_shadow_map.c, sl_lab5_vsm.c, sl_lab6_cascades.c, sl_lab7_cube.c). Labs
+ * 2-4 add their steps to lab 1's shadow-map frame (sl_lab1_4_shadow_map.c): they build on each other inside
+ * one frame, so they have no drawing hooks of their own, only what the viewer says of them
+ * (sl_lab1_4_viewer.c, where their descriptors are). */
 extern const sl_technique sl_lab1_technique;
 extern const sl_technique sl_lab2_technique;
 extern const sl_technique sl_lab3_technique;
