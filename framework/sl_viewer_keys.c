@@ -54,7 +54,8 @@ static const sl_technique_key _sl_common_keys[] = {
     {{0}, NULL, NULL, NULL, 0},
 };
 
-/* One binding of the union: a technique's own key (lab N) or a common one (lab 0, no technique). */
+/* One binding of the union: a technique's own key (its lab, 0 for a build's slot-0 technique) or a common
+ * one (no technique). */
 typedef struct _sl_key_binding {
     int lab;
     const sl_technique *technique;
@@ -69,7 +70,7 @@ static int _sl_binding_count = -1;
 static int _sl_key_table(const _sl_key_binding **table) {
     if (_sl_binding_count < 0) {
         int n = 0;
-        for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
+        for (int lab = 0; lab <= SL_LAB_COUNT; lab++) {
             const sl_technique *t = sl_technique_of(lab);
             for (const sl_technique_key *k = t ? t->keys : NULL; k && k->names && n < _SL_MAX_BINDINGS; k++)
                 _sl_bindings[n++] = (_sl_key_binding){lab, t, k};
@@ -104,7 +105,7 @@ static const _sl_key_binding *_sl_binding(int lab, int key) {
     for (int pass = 0; pass < 2; pass++)
         for (int i = 0; i < count; i++) {
             const _sl_key_binding *b = &table[i];
-            if (b->lab != (pass == 0 ? lab : 0)) continue;
+            if (pass == 0 ? !b->technique || b->lab != lab : b->technique != NULL) continue;
             for (int k = 0; k < SL_TECHNIQUE_KEY_CODES && b->key->codes[k]; k++)
                 if (b->key->codes[k] == key) return b;
         }
@@ -218,13 +219,14 @@ void _sl_viewer_print_keys(FILE *f) {
     const _sl_key_binding *table;
     int count = _sl_key_table(&table);
     fprintf(f, "keys (a lab's own keys come first: a letter can mean one thing in lab 5, another in lab 6):\n");
-    for (int lab = 0; lab <= SL_LAB_COUNT; lab++) {
+    for (int lab = -1; lab <= SL_LAB_COUNT; lab++) { /* -1: the common keys */
         bool any = false;
         for (int i = 0; i < count; i++) {
             const _sl_key_binding *b = &table[i];
-            if (b->lab != lab) continue;
+            if (lab < 0 ? b->technique != NULL : !b->technique || b->lab != lab) continue;
             if (!any) {
-                if (lab == 0) fprintf(f, "  every lab:\n");
+                if (lab < 0) fprintf(f, "  every lab:\n");
+                else if (lab == 0) fprintf(f, "  lab 0 (%s, this build's own):\n", b->technique->name);
                 else fprintf(f, "  lab %d (%s):\n", lab, sl_lab_title(lab));
                 any = true;
             }
@@ -242,7 +244,7 @@ void _sl_viewer_list_keys(FILE *f) {
     int count = _sl_key_table(&table);
     for (int i = 0; i < count; i++) {
         const _sl_key_binding *b = &table[i];
-        if (b->lab == 0) fprintf(f, "all\t%s\t%s\n", b->key->names, b->key->help);
+        if (!b->technique) fprintf(f, "all\t%s\t%s\n", b->key->names, b->key->help);
         else fprintf(f, "%d\t%s\t%s\n", b->lab, b->key->names, b->key->help);
     }
     for (const sl_case_view_key *k = sl_case_view_keys(); k->names; k++) fprintf(f, "case\t%s\t%s\n", k->names, k->help);
@@ -304,7 +306,7 @@ void _sl_viewer_key_panel(_sl_viewer *v, const sl_frame_info *info) {
     for (int pass = 0; pass < 2; pass++)
         for (int i = 0; i < count; i++) {
             const _sl_key_binding *b = &table[i];
-            bool listed = b->lab == lab || (b->lab == 0 && t && _sl_panel_lists(t, b->key->names));
+            bool listed = (b->technique && b->lab == lab) || (!b->technique && t && _sl_panel_lists(t, b->key->names));
             /* a common key the lab's own keys take over is not this lab's */
             if (!listed || _sl_binding(lab, b->key->codes[0]) != b) continue;
             if (pass == 0) { /* names aligned, but a long one ("W A S D Q E") does not push the others */
@@ -322,7 +324,7 @@ void _sl_viewer_key_panel(_sl_viewer *v, const sl_frame_info *info) {
     char line[128] = "";
     for (int i = 0; i < count; i++) {
         const _sl_key_binding *b = &table[i];
-        if (b->lab != 0 || _sl_panel_lists(NULL, b->key->names) || _sl_binding(lab, b->key->codes[0]) != b) continue;
+        if (b->technique || _sl_panel_lists(NULL, b->key->names) || _sl_binding(lab, b->key->codes[0]) != b) continue;
         if (_sl_is_common(b, _SL_KEY_CODE) && !v->second_functions) continue;
         if (_sl_is_common(b, _SL_KEY_QUIT) && v->serve) continue; /* a page is closed in the browser */
         char state[64], item[128];

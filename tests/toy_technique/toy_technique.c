@@ -43,7 +43,8 @@ static _toy_state *_toy_program(sl_renderer *r) {
     return s->built ? s : NULL;
 }
 
-/* The whole frame: the scene's objects, each pixel the visibility as grey, on black. */
+/* The whole frame: the scene's objects, each pixel the visibility as grey (as red in its debug view), on
+ * black. */
 static void _toy_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
                             int width, int height) {
     sl_renderer_reset_state(target, width, height);
@@ -61,6 +62,8 @@ static void _toy_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_rend
     glUniformMatrix4fv(sl_program_uniform(&s->program, "u_view"), 1, GL_FALSE, (const float *)view);
     glUniformMatrix4fv(sl_program_uniform(&s->program, "u_projection"), 1, GL_FALSE, (const float *)projection);
     glUniform1f(sl_program_uniform(&s->program, "u_visibility"), visibility);
+    glUniform3f(sl_program_uniform(&s->program, "u_tint"), 1, params->show_shadow_map ? 0 : 1,
+                params->show_shadow_map ? 0 : 1);
     sl_renderer_draw_objects(r, scene, sl_program_uniform(&s->program, "u_model"), -1, -1);
     r->info.lab_in_use = 0;
 }
@@ -98,6 +101,22 @@ static const sl_technique_probe _toy_probes[] = {
     {0},
 };
 
+/* Its key: the viewer joins it to its common keys (--help, --list-keys, the key panel) and calls the
+ * hooks below when it is pressed in lab 0. Letters are their ASCII codes (GLFW's key codes). */
+enum { _TOY_KEY_DEBUG_VIEW = 1 };
+static const sl_technique_key _toy_keys[] = {
+    {{'T'}, "T", "toy view", "the toy's debug view (its visibility in red) on, off", _TOY_KEY_DEBUG_VIEW},
+    {{0}, NULL, NULL, NULL, 0},
+};
+
+static void _toy_key_pressed(sl_view_context *c, const sl_technique_key *k, int code, bool raise) {
+    if (k->id == _TOY_KEY_DEBUG_VIEW) c->params->show_shadow_map = !c->params->show_shadow_map;
+}
+
+static void _toy_key_state(const sl_view_context *c, const sl_technique_key *k, char *out, size_t n) {
+    snprintf(out, n, "%s", c->params->show_shadow_map ? "on" : "off");
+}
+
 const sl_technique toy_technique = {
     .name = "toy: constant visibility",
     .lab = 0,
@@ -105,4 +124,7 @@ const sl_technique toy_technique = {
     .draw_frame = _toy_draw_frame,
     .destroy = _toy_destroy,
     .probes = _toy_probes,
+    .keys = _toy_keys,
+    .key_pressed = _toy_key_pressed,
+    .key_state = _toy_key_state,
 };
