@@ -237,9 +237,10 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
         ref_dark++;
         exactly_lit += s->data[i] >= 0.995f;
     }
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
     if (has_shadows && stu_shadowed < 0.1 * ref_shadowed) {
         out->symptoms |= 1u << SL_SYMPTOM_NO_SHADOWS;
-        if (c->lab >= 4 && c->lab != 7 && exactly_lit < ref_dark / 2) {
+        if (lab && lab->filtered_lookup && exactly_lit < ref_dark / 2) {
             sl_diag_say(out, "shadows far too faint: where the reference is shadowed, %s leaves most pixels nearly lit", fn);
             sl_diag_cause_in(out, fn, "most samples land off the map, where the border counts as lit — are the offsets "
                                       "scaled by the texel size, 1.0 / textureSize(map, 0) (TODO %s)?", todo);
@@ -250,7 +251,6 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
         }
         return;
     }
-    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
     if (lab && lab->visibility && lab->visibility(c, s, t, mask, out)) return;
     if (has_shadows && v.missing_shadow > 0.3 && v.extra_shadow > 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_SWAPPED;
@@ -369,13 +369,13 @@ static const sl_probe_failure *_sl_explaining_failure(const sl_case *c, const sl
 
 /* Whether an earlier lab's failed check `lf` can be behind this check: the
  * case draws with all of that lab's code the failed check drew with, along
- * the same path (the light's kind; lab 1's moving light, lab 3's bias mode),
+ * the same path (the light's kind, and what that lab's descriptor asks: same_path),
  * and the symptoms point the same way. */
 static bool _sl_shares_failure(const sl_case *c, const sl_check *k, const sl_lab_failure *lf, uint32_t symptoms) {
     if (!lf->c || !lf->k || lf->k->kind == SL_CHECK_PROBE) return false; /* probes: their own evidence */
     if ((lf->c->scene.light.type == SL_LIGHT_DIRECTIONAL) != (c->scene.light.type == SL_LIGHT_DIRECTIONAL)) return false;
-    if (lf->lab == 1 && lf->c->frame_count > 1 && c->frame_count <= 1) return false;
-    if (lf->lab == 3 && lf->c->params.bias.mode != c->params.bias.mode) return false;
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(lf->lab);
+    if (lab && lab->same_path && !lab->same_path(lf->c, c)) return false;
     for (int i = 0; i < sl_lab_function_count(); i++) {
         sl_lab_function fn = sl_lab_function_at(i);
         if (fn.lab == lf->lab && sl_case_runs(lf->c, lf->k, fn.name) && !sl_case_runs(c, k, fn.name)) return false;

@@ -608,8 +608,15 @@ void sl_lab5_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 }
 
 /* ---- lab 5 in the diagnosis table (diagnose/table.c) ---- */
+/* With the moments off (--no-vsm), a lab 5 case filters as lab 4's do. */
+static bool _sl_lab5_filters_past_edge(const sl_case *c) {
+    return c->params.vsm_off && c->params.filter.mode != SL_FILTER_NONE;
+}
+
 const sl_lab_diagnoses sl_lab5_diagnoses = {
     .lab = 5,
+    .filtered_lookup = true,
+    .filters_past_edge = _sl_lab5_filters_past_edge,
     .checks = {{SL_CHECK_MOMENTS, sl_diagnose_moments},
                {SL_CHECK_MOMENTS_BLURRED, sl_diagnose_moments},
                {SL_CHECK_BLEEDING, sl_diagnose_bleeding}},

@@ -692,6 +692,7 @@ void sl_lab6_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 /* ---- lab 6 in the diagnosis table (diagnose/table.c) ---- */
 const sl_lab_diagnoses sl_lab6_diagnoses = {
     .lab = 6,
+    .filtered_lookup = true,
     .checks = {{SL_CHECK_CASCADE_INDEX, sl_diagnose_cascade_index}, {SL_CHECK_FLICKER, sl_diagnose_flicker}},
     .case_runs = sl_lab6_case_runs,
     .case_path = sl_lab6_case_path,
