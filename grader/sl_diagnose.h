@@ -197,6 +197,16 @@ typedef struct sl_lab_diagnoses {
     bool (*case_runs)(const sl_case *c, const sl_check *k, const char *function);
     void (*case_path)(const sl_case *c, const sl_case_result *r, char *out, size_t n);
     bool (*meets_row)(const sl_case *c, const sl_check *probe, int row);
+    /* The lab's lookup averages samples around the point (a filter): shadows far too faint, where the
+     * reference has them, mean most samples land off the map, rather than a lookup that returns 1.0. */
+    bool filtered_lookup;
+    /* Whether case c reads the shadow map through a filter that reads past the map's edge, where a
+     * wrap mode and border matter (the lab's cases; NULL: never). */
+    bool (*filters_past_edge)(const sl_case *c);
+    /* Whether case c takes the path of the lab's case `failed` (a failed check of it can be behind
+     * c's): the settings the lab's code branches on (lab 1: a moving light; lab 3: the bias mode).
+     * NULL: the same light's kind is enough. */
+    bool (*same_path)(const sl_case *failed, const sl_case *c);
     /* Probes of the lab's functions: a contract of their own (probe.c), a verdict read from the check's numbers
      * before the shared ones (probe.c), a verdict from the rows after them (verdict.c). */
     bool (*probe_contract)(const sl_check *k, const double *student, const double *expected, uint32_t *broken,

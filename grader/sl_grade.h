@@ -11,6 +11,7 @@
 #include "sl_image.h"
 #include "sl_manifest.h"
 #include "sl_probe.h"
+#include "sl_reference.h"
 #include "sl_reference_cache.h"
 #include "sl_run.h"
 
@@ -42,24 +43,6 @@ typedef struct sl_grade_context {
     int lab_failure_count;
     bool isolated;  /* --isolate: the solutions stand in for the other labs, whose failures do not show here */
 } sl_grade_context;
-
-/* Loads the reference of one check, if it needs one. A missing, corrupt or
- * changed file (against the manifest: NULL means the manifest itself could
- * not be read, `manifest_error` says why), or one that does not fit the case
- * (another image size), comes back with loaded = false and an error naming
- * the file: a problem for the staff, not the student. */
-void sl_reference_load(sl_reference *ref, const char *references_dir, const sl_manifest *manifest,
-                       const char *manifest_error, const sl_case *c, const sl_check *k);
-/* The same, with image references read through `cache` where it has them
- * (NULL: none; sl_reference_cache.h): the same reference, error or message. */
-void sl_reference_load_cached(sl_reference *ref, const char *references_dir, const sl_manifest *manifest,
-                              const char *manifest_error, sl_reference_cache *cache, const sl_case *c,
-                              const sl_check *k);
-void sl_reference_free(sl_reference *ref);
-/* Writes the capture a check needs as its reference (from the solutions'
- * runner) and records it in the manifest. */
-bool sl_reference_write(const char *references_dir, sl_manifest *manifest, const sl_case *c, const sl_check *k,
-                        const sl_case_result *r, char *err, size_t err_size);
 
 /* Grades one check; context may be NULL (nothing known besides this check). */
 void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,

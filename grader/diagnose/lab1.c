@@ -133,8 +133,14 @@ static void _sl_diagnose_fbo_check(const sl_case *c, const sl_check *k, const sl
                                    const sl_reference *ref, sl_check_result *out) {
     sl_diagnose_fbo(c, r, out);
 }
+/* A failed check of a moving light's case (more than one frame) is not behind a still one's. */
+static bool _sl_lab1_same_path(const sl_case *failed, const sl_case *c) {
+    return !(failed->frame_count > 1 && c->frame_count <= 1);
+}
+
 const sl_lab_diagnoses sl_lab1_diagnoses = {
     .lab = 1,
     .checks = {{SL_CHECK_FBO, _sl_diagnose_fbo_check}, {SL_CHECK_DEPTH_MAP, sl_diagnose_depth}},
     .case_runs = sl_lab1_case_runs,
+    .same_path = _sl_lab1_same_path,
 };

@@ -180,8 +180,14 @@ static bool _sl_lab3_visibility_on_mask(const sl_case *c, const sl_image *s, con
                                         sl_check_result *out) {
     return mask && sl_diagnose_lab3_visibility(c, s, t, mask, out);
 }
+/* Each bias mode runs code of its own: a failed check in one mode is not behind another's. */
+static bool _sl_lab3_same_path(const sl_case *failed, const sl_case *c) {
+    return failed->params.bias.mode == c->params.bias.mode;
+}
+
 const sl_lab_diagnoses sl_lab3_diagnoses = {
     .lab = 3,
+    .same_path = _sl_lab3_same_path,
     .visibility = _sl_lab3_visibility_on_mask,
     .case_runs = sl_lab3_case_runs,
     .case_path = sl_lab3_case_path,

@@ -248,8 +248,13 @@ void sl_lab4_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 }
 
 /* ---- lab 4 in the diagnosis table (diagnose/table.c) ---- */
+/* Any filter of lab 4's reads past the map's edge. */
+static bool _sl_lab4_filters_past_edge(const sl_case *c) { return c->params.filter.mode != SL_FILTER_NONE; }
+
 const sl_lab_diagnoses sl_lab4_diagnoses = {
     .lab = 4,
+    .filtered_lookup = true,
+    .filters_past_edge = _sl_lab4_filters_past_edge,
     .checks = {{SL_CHECK_PENUMBRA, sl_diagnose_penumbra}},
     .visibility = sl_diagnose_lab4_visibility,
     .case_runs = sl_lab4_case_runs,

@@ -112,8 +112,8 @@ static bool _sl_outputs_reach(const sl_case *c, const sl_probe_function *f, uint
     /* lab 1's wrap mode and border matter only to a filter that reads past the map's edge: lab 2's
      * lookups call a point off the map lit before they read it */
     if (strcmp(f->name, "lab1_create_shadow_map") == 0 && outputs && !(outputs & 0x3u)) {
-        bool filtered = (c->lab == 4 || (c->lab == 5 && c->params.vsm_off)) && c->params.filter.mode != SL_FILTER_NONE;
-        return filtered;
+        const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
+        return lab && lab->filters_past_edge && lab->filters_past_edge(c);
     }
     return true;
 }

@@ -1,0 +1,208 @@
+/* Lab 5's probes read together (lab5.c holds its pictures' diagnoses): the
+ * blur's rows, light bleeding's and the Chebyshev bound's, into one verdict. */
+#define _POSIX_C_SOURCE 200809L
+#include "sl_diagnose.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sl_compare.h"
+#include "sl_gl.h"
+#include "sl_probe.h"
+#include "sl_verdict.h"
+
+/* ---- what lab 5's probes show together ---- */
+
+static double _sl_got5(const sl_verdict_rows *v, int row, int o) { return v->student[row * v->f->output_count + o]; }
+static double _sl_want5(const sl_verdict_rows *v, int row, int o) { return v->expected[row * v->f->output_count + o]; }
+static bool _sl_failed5(const sl_verdict_rows *v, int row) { return (v->failing >> row) & 1u; }
+
+/* The texel of a moments map at a row's uv: what the stub (no blur) returns. */
+static double _sl_centre_texel(const float *in) {
+    int x = (int)floor(in[1] * SL_PROBE_MAP_SIZE), y = (int)floor(in[2] * SL_PROBE_MAP_SIZE);
+    return sl_probe_moments_depth((sl_probe_map)(int)in[0], x, y);
+}
+
+/* blur_moments(moments, uv, direction, radius): inputs map, uv.x, uv.y, direction.x, direction.y, radius. */
+static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
+    int rows = v->k->rows, failing = 0, first = -1, as_stub = 0;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        failing++;
+        if (first < 0) first = r;
+        as_stub += fabs(_sl_got5(v, r, 0) - _sl_centre_texel(v->k->inputs[r])) < 1e-5;
+    }
+    if (!failing) return -1;
+    if (as_stub == failing) {
+        snprintf(text, n, "not implemented: it returns the texel at uv unblurred, as the stub does — the weighted sum "
+                          "of 2 * radius + 1 texels along direction");
+        return first;
+    }
+    /* a flat map stays flat whatever the kernel: what it gives there is the sum of the weights */
+    for (int r = 0; r < rows; r++) {
+        const float *in = v->k->inputs[r];
+        if (!_sl_failed5(v, r) || (int)in[0] != SL_PROBE_MAP_MOMENTS_FLAT) continue;
+        double sum = _sl_got5(v, r, 0) / 0.5;
+        snprintf(text, n, "the weights sum to %.3g, not 1 (a flat map at depth 0.5 comes out at %.4g): divide the "
+                          "weighted sum by the sum of the weights", sum, _sl_got5(v, r, 0));
+        return r;
+    }
+    /* only the rows of one direction fail: the other direction is followed, this one not */
+    int fail_x = 0, fail_y = 0, first_y = -1, first_x = -1;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        if (in[3] == 0 && in[4] != 0) {
+            fail_y++;
+            if (first_y < 0) first_y = r;
+        } else if (in[4] == 0 && in[3] != 0) {
+            fail_x++;
+            if (first_x < 0) first_x = r;
+        }
+    }
+    if ((fail_y == failing) != (fail_x == failing) && (fail_x == failing || fail_y == failing)) {
+        bool y_wrong = fail_y == failing;
+        snprintf(text, n, "it blurs along %s whatever direction is: every row with direction %s differs, every row "
+                          "with direction %s is right — step along `direction`, one texel at a time",
+                 y_wrong ? "x" : "y", y_wrong ? "(0, 1)" : "(1, 0)", y_wrong ? "(1, 0)" : "(0, 1)");
+        return y_wrong ? first_y : first_x;
+    }
+    /* rows that differ in the radius alone, the same answer where the solution's differ */
+    for (int a = 0; a < rows; a++) {
+        if (!_sl_failed5(v, a)) continue;
+        for (int b = 0; b < rows; b++) {
+            const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
+            bool twin = b != a && ia[5] != ib[5];
+            for (int i = 0; twin && i < 5; i++) twin = ia[i] == ib[i];
+            if (!twin) continue;
+            if (fabs(_sl_got5(v, a, 0) - _sl_got5(v, b, 0)) < 1e-5 && fabs(_sl_want5(v, a, 0) - _sl_want5(v, b, 0)) > 1e-3) {
+                snprintf(text, n, "the radius is ignored: radius %d and radius %d give the same — a fixed kernel? "
+                                  "2 * radius + 1 taps with weights exp(-i^2 / (2 sigma^2)), sigma = max(float(radius) * 0.5, 0.5)",
+                         (int)ia[5], (int)ib[5]);
+                return a;
+            }
+        }
+    }
+    /* sigma = max(float(radius) * 0.5, 0.5) typed in GLSL: radius / 2 is an integer division, so an odd radius
+     * gets sigma 1 where 1.5 is meant (radius 3), 2 where 2.5 is meant (radius 5) */
+    int integer_sigma = 0, first_integer = -1;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        int radius = (int)in[5], dx = (int)in[3], dy = (int)in[4];
+        int x = (int)floor(in[1] * SL_PROBE_MAP_SIZE), y = (int)floor(in[2] * SL_PROBE_MAP_SIZE);
+        double sigma = fmax((double)(radius / 2), 0.5), sum = 0, weights = 0;
+        for (int i = -radius; i <= radius; i++) {
+            int tx = x + i * dx, ty = y + i * dy;
+            tx = tx < 0 ? 0 : tx >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : tx;
+            ty = ty < 0 ? 0 : ty >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : ty;
+            double w = exp(-(double)(i * i) / (2 * sigma * sigma));
+            sum += w * sl_probe_moments_depth((sl_probe_map)(int)in[0], tx, ty);
+            weights += w;
+        }
+        if (radius % 2 == 1 && radius > 1 && fabs(_sl_got5(v, r, 0) - sum / weights) < 1e-4) {
+            integer_sigma++;
+            if (first_integer < 0) first_integer = r;
+        }
+    }
+    if (integer_sigma > 0 && integer_sigma == failing) {
+        snprintf(text, n, "the kernel is too narrow at odd radii: radius %d blurs with sigma %d, as radius / 2 gives it "
+                          "in integer arithmetic — in GLSL write sigma = max(float(radius) * 0.5, 0.5)",
+                 (int)v->k->inputs[first_integer][5], (int)v->k->inputs[first_integer][5] / 2);
+        return first_integer;
+    }
+    /* across the edges: too little or too much of the other side */
+    int narrow = 0, wide = 0, first_width = -1;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        double centre = _sl_centre_texel(v->k->inputs[r]);
+        double here = fabs(_sl_got5(v, r, 0) - centre), there = fabs(_sl_want5(v, r, 0) - centre);
+        narrow += here < there;
+        wide += here > there;
+        if (first_width < 0) first_width = r;
+    }
+    if (narrow == failing || wide == failing) {
+        snprintf(text, n, "the kernel is too %s: across an edge it takes %s of the other side than a Gaussian with "
+                          "sigma = max(float(radius) * 0.5, 0.5) does — are the taps one texel apart (1.0 / textureSize), and "
+                          "the weights exp(-i^2 / (2 sigma^2))?",
+                 narrow == failing ? "narrow" : "wide", narrow == failing ? "less" : "more");
+        return first_width;
+    }
+    return -1;
+}
+
+/* reduce_light_bleeding(p_max, amount) */
+static int _sl_verdict_bleeding(const sl_verdict_rows *v, char *text, size_t n) {
+    int rows = v->k->rows, failing = 0, first = -1, swapped = 0;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double p = in[0], amount = in[1];
+        failing++;
+        if (first < 0) first = r;
+        double lo = p, hi = 1, x = amount; /* linstep(p_max, 1, amount) */
+        double inverted = hi - lo > 1e-9 ? fmin(fmax((x - lo) / (hi - lo), 0), 1) : (x >= lo ? 1 : 0);
+        swapped += fabs(_sl_got5(v, r, 0) - inverted) < 1e-3;
+    }
+    if (!failing) return -1;
+    if (swapped == failing) {
+        snprintf(text, n, "linstep's arguments swapped: linstep(amount, 1.0, p_max) cuts p_max below amount off, "
+                          "linstep(p_max, 1.0, amount) does something else");
+        return first;
+    }
+    /* one amount that explains every row: a constant of its own */
+    for (int k = 1; k < 100; k++) {
+        double amount = k / 100.0;
+        bool all = true;
+        for (int r = 0; r < rows && all; r++) {
+            double p = v->k->inputs[r][0];
+            double want = fmin(fmax((p - amount) / (1 - amount), 0), 1);
+            all = fabs(_sl_got5(v, r, 0) - want) < 1e-3;
+        }
+        if (all) {
+            snprintf(text, n, "the amount is not the one given: every row is linstep(%.2f, 1.0, p_max), whatever "
+                              "amount is — use the parameter (the viewer's K and L change it)", amount);
+            return first;
+        }
+    }
+    return -1;
+}
+
+/* chebyshev_upper_bound(moments, t, min_variance): the variance each failing row was computed with, read
+ * back from p_max = v / (v + d^2); one constant for all of them, not the row's minimum, is a minimum of its own. */
+static int _sl_verdict_chebyshev(const sl_verdict_rows *v, char *text, size_t n) {
+    int rows = v->k->rows, failing = 0, first = -1, implied_rows = 0;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed5(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double mu = in[0], m2 = in[1], t = in[2], min_variance = in[3], p = _sl_got5(v, r, 0), d = t - mu;
+        failing++;
+        if (first < 0) first = r;
+        if (t <= mu || p <= 0 || p >= 1) continue;
+        double implied = p * d * d / (1 - p);
+        /* the row's own variance is below the minimum that was used: a minimum decided it */
+        if (m2 - mu * mu < implied * 0.9 && fabs(implied - min_variance) > 0.05 * min_variance) {
+            implied_rows++;
+            lo = fmin(lo, implied);
+            hi = fmax(hi, implied);
+        }
+    }
+    if (!failing) return -1;
+    if (implied_rows == failing && hi - lo <= 0.05 * hi) {
+        snprintf(text, n, "the minimum variance is not the one given: every failing row used about %.2g whatever "
+                          "min_variance is — variance = max(M2 - M1^2, min_variance), with the parameter (the viewer's "
+                          "N and J change it)", 0.5 * (lo + hi));
+        return first;
+    }
+    return -1;
+}
+
+int sl_verdict_lab5(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "chebyshev_upper_bound") == 0) return _sl_verdict_chebyshev(v, text, n);
+    if (strcmp(v->f->name, "blur_moments") == 0) return _sl_verdict_blur(v, text, n);
+    if (strcmp(v->f->name, "reduce_light_bleeding") == 0) return _sl_verdict_bleeding(v, text, n);
+    return -1;
+}

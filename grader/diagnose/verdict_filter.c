@@ -1,0 +1,323 @@
+#define _POSIX_C_SOURCE 200809L
+#include "verdict_filter.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "sl_gl.h"
+#include "sl_params.h"
+#include "verdict_rows.h"
+
+/* ---- filters: a map, a shadow coordinate, a bias; 1 lit, 0 shadowed ---- */
+
+_sl_filter_row _sl_filter_row_of(const sl_probe_function *f, const float *in) {
+    _sl_filter_row r = {.kind = _SL_ROW_OTHER};
+    const float *map = _sl_param(f, in, "shadow_map"), *coord = _sl_param(f, in, "shadow_coord");
+    const float *bias = _sl_param(f, in, "bias");
+    r.bias = bias ? *bias : 0;
+    if (!map || !coord) return r;
+    double w = coord[3];
+    for (int i = 0; i < 3; i++) r.p[i] = w != 0 ? coord[i] / w : 0;
+    bool outside = w <= 0;
+    for (int i = 0; i < 3; i++) outside |= r.p[i] < 0 || r.p[i] > 1;
+    int texel = (int)floor(r.p[0] * SL_PROBE_MAP_SIZE);
+    texel = texel < 0 ? 0 : texel >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : texel;
+    double stored = sl_probe_map_depth((sl_probe_map)(int)*map, texel, 0);
+    r.centre = r.p[2] - r.bias > stored ? 0.0 : 1.0;
+    /* the occluder's own surface: behind its stored depth by less than the bias */
+    double occluder = sl_probe_map_depth(SL_PROBE_MAP_OCCLUDED, 0, 0);
+    bool own_surface = stored == occluder && r.p[2] > occluder && r.p[2] - r.bias <= occluder;
+    if (outside) r.kind = _SL_ROW_OUTSIDE;
+    else if (w != 1) r.kind = _SL_ROW_HOMOGENEOUS;
+    else if ((int)*map == SL_PROBE_MAP_LIT) r.kind = _SL_ROW_EMPTY_MAP;
+    else if (own_surface) r.kind = _SL_ROW_OWN_SURFACE;
+    else if ((int)*map == SL_PROBE_MAP_OCCLUDED) r.kind = _SL_ROW_OCCLUDED;
+    else if ((int)*map == SL_PROBE_MAP_STEP) r.kind = _SL_ROW_EDGE;
+    return r;
+}
+
+/* The first failing row of a kind (-1: none). */
+static int _sl_first_failing(const sl_verdict_rows *v, _sl_row_kind kind) {
+    for (int row = 0; row < v->k->rows; row++)
+        if (_sl_failed(v, row) && _sl_filter_row_of(v->f, v->k->inputs[row]).kind == kind) return row;
+    return -1;
+}
+
+/* A failing row with w not 1 whose result differs from its twin's, the same
+ * point given with w = 1 (the divide is wrong), or with no twin, the only
+ * kind of row that fails; -1 otherwise (a twin failing alike is another mistake). */
+static int _sl_homogeneous_differs(const sl_verdict_rows *v) {
+    const sl_probe_function *f = v->f;
+    int coord = 0, floats = sl_probe_input_count(f), others = 0, lone = -1;
+    for (int i = 0; i < f->param_count && strcmp(f->params[i].name, "shadow_coord") != 0; i++)
+        coord += sl_probe_type_size(f->params[i].type);
+    for (int a = 0; a < v->k->rows; a++) {
+        if (!_sl_failed(v, a)) continue;
+        _sl_filter_row fa = _sl_filter_row_of(f, v->k->inputs[a]);
+        if (fa.kind != _SL_ROW_HOMOGENEOUS) {
+            others++;
+            continue;
+        }
+        bool twin = false;
+        for (int b = 0; b < v->k->rows && !twin; b++) {
+            const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
+            bool same = ib[coord + 3] == 1.0f;
+            for (int i = 0; same && i < floats; i++)
+                same = i >= coord && i < coord + 3 ? fabs(ia[i] / ia[coord + 3] - ib[i]) < 1e-6
+                       : i == coord + 3   ? true
+                                          : ia[i] == ib[i];
+            if (!same) continue;
+            twin = true;
+            if (!_sl_near(_sl_got(v, a, 0), _sl_got(v, b, 0), 1e-3)) return a;
+        }
+        if (!twin && lone < 0) lone = a;
+    }
+    return others == 0 ? lone : -1;
+}
+
+/* Rows that differ only in a parameter called *radius*, giving the same result where the reference's differ. */
+static int _sl_radius_ignored(const sl_verdict_rows *v, char *text, size_t n) {
+    const sl_probe_function *f = v->f;
+    int radius = -1, offset = 0;
+    for (int i = 0; i < f->param_count; i++) {
+        if (strstr(f->params[i].name, "radius")) radius = offset;
+        offset += sl_probe_type_size(f->params[i].type);
+    }
+    if (radius < 0) return -1;
+    int floats = sl_probe_input_count(f);
+    for (int a = 0; a < v->k->rows; a++) {
+        if (!_sl_failed(v, a)) continue;
+        for (int b = 0; b < v->k->rows; b++) {
+            if (b == a) continue;
+            bool same = true;
+            for (int i = 0; i < floats; i++) same &= i == radius || v->k->inputs[a][i] == v->k->inputs[b][i];
+            if (!same || v->k->inputs[a][radius] == v->k->inputs[b][radius]) continue;
+            if (_sl_near(_sl_got(v, a, 0), _sl_got(v, b, 0), 1e-4) && !_sl_near(_sl_want(v, a, 0), _sl_want(v, b, 0), 0.02)) {
+                snprintf(text, n, "the radius is ignored: radius %g and radius %g give the same %.4g at the same point "
+                                  "(expected %.4g and %.4g) — the kernel's extent must come from the radius",
+                         (double)v->k->inputs[a][radius], (double)v->k->inputs[b][radius], _sl_got(v, a, 0),
+                         _sl_want(v, a, 0), _sl_want(v, b, 0));
+                return a;
+            }
+        }
+    }
+    return -1;
+}
+
+/* PCSS's blocker search, told apart from the filter that follows it:
+ * - over a floor (the "step_floor" map) the receiver's own surface, stored a
+ *   little nearer than p.z but within the bias, must not count as a blocker:
+ *   if it does, d_blocker comes out near d_receiver and the penumbra shrinks
+ *   (lighter there), while on the "step" map, with nothing behind the
+ *   occluder, every row still agrees;
+ * - on the lit side of an edge (a single comparison says lit) a wide light
+ *   still sees the occluder: a search region too small (a fixed width, not
+ *   light_size_uv * (d_receiver - near) / d_receiver) finds no blocker there
+ *   and returns 1.0, while inside the occluder, where the point itself is a
+ *   blocker, the penumbra, and so every result, is right (a penumbra wrong
+ *   there too is the filter's width: raw depths, a fixed radius). */
+static int _sl_verdict_pcss_search(const sl_verdict_rows *v, char *text, size_t n) {
+    int floor_lighter = -1, floor_rows = 0, other_failing = 0, lit_side_lost = -1, lit_side_fail = 0, shadow_partial_fail = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        const float *in = v->k->inputs[r];
+        const float *map = _sl_param(v->f, in, "shadow_map");
+        _sl_filter_row fr = _sl_filter_row_of(v->f, in);
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        bool failed = _sl_failed(v, r), floor = map && (int)*map == SL_PROBE_MAP_STEP_FLOOR;
+        if (floor) floor_rows++;
+        if (floor && failed && s > e && floor_lighter < 0) floor_lighter = r;
+        if (!floor && failed) other_failing++;
+        bool soft = e > 0.02 && e < 0.98, edge = fr.kind == _SL_ROW_EDGE;
+        if (edge && soft && fr.centre == 1.0 && failed) {
+            lit_side_fail++;
+            if (s >= 0.999 && lit_side_lost < 0) lit_side_lost = r;
+        }
+        if (edge && fr.centre == 0.0 && failed) shadow_partial_fail++; /* inside the occluder, the point is a blocker */
+    }
+    if (floor_rows && floor_lighter >= 0 && other_failing == 0) {
+        snprintf(text, n, "the blocker search counts the receiver's own surface as a blocker: over a floor it finds "
+                          "the floor itself, a little nearer than p.z, so d_blocker comes out near d_receiver and the "
+                          "penumbra shrinks — a blocker is a stored depth nearer than p.z - bias: the bias belongs in "
+                          "the blocker search too");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_NARROW_PENUMBRA | 1u << SL_SYMPTOM_GROSS);
+        return floor_lighter;
+    }
+    if (lit_side_lost >= 0 && lit_side_fail > 0 && shadow_partial_fail == 0) {
+        snprintf(text, n, "the blocker search looks too close: beside an occluder, where a wide light still sees it, it "
+                          "finds no blocker and returns 1.0, while inside the occluder the penumbra is right — search "
+                          "light_size_uv * (d_receiver - near) / d_receiver around p (the receiver's view of the light), "
+                          "not a fixed width");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_NARROW_PENUMBRA | 1u << SL_SYMPTOM_GROSS);
+        return lit_side_lost;
+    }
+    return -1;
+}
+
+/* A (2r+1)^2 grid whose samples are `spacing` texels apart, on a synthetic map (nearest texels, the
+ * border's depth 1.0 off the map): what pcf_grid gives for a row with that spacing. */
+static double _sl_grid_with_spacing(const sl_probe_function *f, const float *in, double spacing) {
+    const float *map = _sl_param(f, in, "shadow_map"), *coord = _sl_param(f, in, "shadow_coord");
+    const float *bias = _sl_param(f, in, "bias"), *radius = _sl_param(f, in, "radius");
+    if (!map || !coord || !bias || !radius || coord[3] <= 0) return NAN;
+    double x = coord[0] / coord[3], y = coord[1] / coord[3], z = coord[2] / coord[3] - *bias;
+    int r = (int)*radius, lit = 0, all = 0;
+    for (int j = -r; j <= r; j++)
+        for (int i = -r; i <= r; i++) {
+            double u = x + i * spacing / SL_PROBE_MAP_SIZE, w = y + j * spacing / SL_PROBE_MAP_SIZE;
+            double stored = u < 0 || u >= 1 || w < 0 || w >= 1
+                                ? 1.0
+                                : sl_probe_map_depth((sl_probe_map)(int)*map, (int)floor(u * SL_PROBE_MAP_SIZE),
+                                                     (int)floor(w * SL_PROBE_MAP_SIZE));
+            lit += !(z > stored);
+            all++;
+        }
+    return (double)lit / all;
+}
+
+/* The grid's samples another distance apart than one texel (a scale of 1.5, as some published
+ * kernels take, or a fixed step in uv): the spacings, in texels of the 64-texel map, at which a grid
+ * gives every failing row what the student's gives. One map size cannot tell a scale from a uv
+ * step, so the message names both. */
+static int _sl_grid_spacing(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "pcf_grid") != 0) return -1;
+    double lo = INFINITY, hi = -INFINITY;
+    int first = -1;
+    for (int step = 25; step <= 400; step++) {
+        double spacing = step / 100.0;
+        if (step == 100) continue;
+        bool all = true;
+        int failing = 0;
+        for (int r = 0; r < v->k->rows && all; r++) {
+            if (!_sl_failed(v, r)) continue;
+            failing++;
+            double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
+            double model = _sl_grid_with_spacing(v->f, v->k->inputs[r], spacing);
+            all = !isnan(model) && _sl_near(_sl_got(v, r, 0), model, tolerance + 1e-4);
+            if (all && first < 0) first = r;
+        }
+        if (all && failing > 0) {
+            lo = fmin(lo, spacing);
+            hi = fmax(hi, spacing);
+        }
+    }
+    if (first < 0 || !(lo <= hi) || (lo < 1 && hi > 1)) return -1;
+    bool wide = lo > 1;
+    char spacing[64];
+    if (hi - lo < 0.05) snprintf(spacing, sizeof spacing, "%.2g", lo);
+    else snprintf(spacing, sizeof spacing, "%.2g to %.2g", lo, hi);
+    snprintf(text, n, "the kernel is too %s: its samples are %s texels apart on this 64-texel map, not one — offset "
+                      "(x, y) times the texel, 1.0 / textureSize(map, 0), and nothing else: no scale (some published "
+                      "kernels spread a 3x3 grid 1.5 texels apart) and no fixed step in uv",
+             wide ? "wide" : "narrow", spacing);
+    sl_verdict_predicts(v, (wide ? 1u << SL_SYMPTOM_WIDE_PENUMBRA : 1u << SL_SYMPTOM_NARROW_PENUMBRA) |
+                               1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_GROSS |
+                               SL_PREDICTS_EVERY_SETTING);
+    return first;
+}
+
+int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
+    const sl_probe_function *f = v->f;
+    bool kernel = strcmp(f->name, "pcf_grid") == 0 || strcmp(f->name, "pcf_poisson") == 0;
+    bool pcss = strcmp(f->name, "pcss") == 0;
+    int row;
+    /* lit and shadowed exchanged on most rows: the comparison itself, whatever else */
+    int swapped = 0, compared = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        _sl_filter_row fr = _sl_filter_row_of(f, v->k->inputs[r]);
+        if (fr.kind == _SL_ROW_OUTSIDE || fr.kind == _SL_ROW_OTHER) continue;
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        if (e > 0.02 && e < 0.98) continue;
+        compared++;
+        swapped += _sl_near(s, 1 - e, 0.02);
+    }
+    if (compared >= 3 && swapped * 3 >= compared * 2) {
+        snprintf(text, n, "the comparison is inverted: lit where the point is shadowed and the other way round — 0.0 "
+                          "when p.z - bias is farther than the stored depth");
+        return -1; /* the first row that differs shows it */
+    }
+    /* the coordinate first: every other row depends on it */
+    if ((row = _sl_first_failing(v, _SL_ROW_OUTSIDE)) >= 0) {
+        snprintf(text, n, "a point outside the light's frustum must be lit: return 1.0 when w <= 0, or when x, y or z "
+                          "is outside [0, 1] after the divide");
+        return row;
+    }
+    if ((row = _sl_homogeneous_differs(v)) >= 0) {
+        snprintf(text, n, "no divide by w: the shadow coordinate is homogeneous — divide xyz by w before the lookup");
+        return row;
+    }
+    if (pcss && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
+        snprintf(text, n, "no blocker found must mean fully lit: with nothing in the map in front of the point, the "
+                          "blocker search finds none, and pcss() returns 1.0");
+        return row;
+    }
+    if (kernel && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
+        double sum = _sl_got(v, row, 0);
+        snprintf(text, n, "the weights sum to %.4g, not 1 (nothing in front gives %.4g): the kernel is not normalised "
+                          "— divide the sum of the results by the number of samples", sum, sum);
+        return row;
+    }
+    if ((row = _sl_first_failing(v, _SL_ROW_OWN_SURFACE)) >= 0 && _sl_got(v, row, 0) < _sl_want(v, row, 0)) {
+        snprintf(text, n, "the bias is not subtracted: a point on the stored surface itself compares as shadowed, which "
+                          "is shadow acne — compare p.z - bias with the stored depth");
+        return row;
+    }
+    if ((row = _sl_first_failing(v, _SL_ROW_OCCLUDED)) >= 0 && _sl_got(v, row, 0) > _sl_want(v, row, 0)) {
+        if (pcss)
+            snprintf(text, n, "the blocker search finds no blockers where an occluder covers the whole map: stored "
+                              "depths nearer than p.z - bias are the blockers");
+        else
+            snprintf(text, n, "samples land off the map: with an occluder over the whole map it still gives %.3g lit — "
+                              "the kernel is far too wide; scale the offsets by the texel size, 1.0 / textureSize(map, 0)",
+                     _sl_got(v, row, 0));
+        return row;
+    }
+    if (pcss && (row = _sl_verdict_pcss_search(v, text, n)) >= 0) return row;
+    if (!kernel) return -1; /* PCSS and single lookups: their rows say the rest */
+    /* Across the edge: hard 0/1 results where soft ones are expected, then the width */
+    int soft = 0, hard = 0, as_centre = 0, narrow = 0, wide = 0, first_soft = -1, first_width = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        _sl_filter_row fr = _sl_filter_row_of(f, v->k->inputs[r]);
+        if (fr.kind != _SL_ROW_EDGE || !_sl_failed(v, r)) continue;
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        if (e > 0.02 && e < 0.98) {
+            soft++;
+            if (first_soft < 0) first_soft = r;
+            if (s <= 0.001 || s >= 0.999) {
+                hard++;
+                as_centre += _sl_near(s, fr.centre, 0.001);
+            }
+        }
+        double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
+        double here = fabs(s - fr.centre), there = fabs(e - fr.centre);
+        if (here < there - tolerance) narrow++;
+        if (here > there + tolerance) wide++;
+        if (first_width < 0 && (here < there - tolerance || here > there + tolerance)) first_width = r;
+    }
+    if (soft > 0 && hard == soft) {
+        if (as_centre == hard)
+            snprintf(text, n, "one comparison per point: results are 0 or 1 where the kernel should blend, exactly as "
+                              "a single lookup gives them — the kernel has no width; compare at every sample and "
+                              "average the results");
+        else
+            snprintf(text, n, "depths averaged, then compared once: results are 0 or 1 where the kernel should blend, "
+                              "and not where one comparison puts them — filtering depths instead of comparison results "
+                              "(Reeves 1987); compare at every sample, then average the 0/1 results");
+        return first_soft;
+    }
+    /* fractional, but the same whatever the radius */
+    if ((row = _sl_radius_ignored(v, text, n)) >= 0) return row;
+    if ((row = _sl_grid_spacing(v, text, n)) >= 0) return row;
+    if (narrow > wide && first_width >= 0) {
+        snprintf(text, n, "the kernel is too narrow: across an occluder's edge its results stay closer to a single "
+                          "comparison's 0 or 1 than they should — are the offsets radius texels wide, each texel "
+                          "1.0 / textureSize(map, 0)?");
+        return first_width;
+    }
+    if (wide > narrow && first_width >= 0) {
+        snprintf(text, n, "the kernel is too wide: results blend farther from an occluder's edge than they should — "
+                          "are the offsets scaled by the texel size, 1.0 / textureSize(map, 0), and by the radius only once?");
+        return first_width;
+    }
+    return -1;
+}

@@ -1,0 +1,28 @@
+/* What the verdicts on a probe's rows read of them (verdict.c, verdict_filter.c):
+ * a parameter's inputs, whether a row failed, its outputs and the solution's. */
+#ifndef SL_VERDICT_ROWS_H
+#define SL_VERDICT_ROWS_H
+
+#include <math.h>
+#include <stdbool.h>
+#include <string.h>
+
+#include "sl_probe.h"
+#include "sl_verdict.h"
+
+/* The inputs of one parameter of a row, or NULL if the function has none of that name. */
+static inline const float *_sl_param(const sl_probe_function *f, const float *row, const char *name) {
+    int offset = 0;
+    for (int i = 0; i < f->param_count; i++) {
+        if (strcmp(f->params[i].name, name) == 0) return row + offset;
+        offset += sl_probe_type_size(f->params[i].type);
+    }
+    return NULL;
+}
+
+static inline bool _sl_failed(const sl_verdict_rows *v, int row) { return (v->failing >> row) & 1u; }
+static inline double _sl_got(const sl_verdict_rows *v, int row, int o) { return v->student[row * v->f->output_count + o]; }
+static inline double _sl_want(const sl_verdict_rows *v, int row, int o) { return v->expected[row * v->f->output_count + o]; }
+static inline bool _sl_near(double a, double b, double tolerance) { return fabs(a - b) <= tolerance; }
+
+#endif

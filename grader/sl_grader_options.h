@@ -1,0 +1,43 @@
+/* shadowlab-grade's command line (sl_grader.c): its options, parsed and
+ * described, its usage text and its exit statuses. */
+#ifndef SL_GRADER_OPTIONS_H
+#define SL_GRADER_OPTIONS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "sl_backend.h"
+#include "sl_sandbox.h"
+
+/* 3: graded, but the submission held no lab file (--submission-summary says so): a status of its own
+ * for a gradebook, not a staff-side problem. */
+enum { SL_EXIT_FULL = 0, SL_EXIT_FAILED = 1, SL_EXIT_ERROR = 2, SL_EXIT_NO_LAB_FILE = 3 };
+#define _SL_MAX_PATTERNS 32
+
+typedef struct _sl_options {
+    const char *cases_dir, *refs_dir, *labs_dir, *runners_dir;
+    const char *patterns[_SL_MAX_PATTERNS], *excludes[_SL_MAX_PATTERNS];
+    int pattern_count, exclude_count;
+    const char *report_dir, *gradescope, *prairielearn, *junit;
+    uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
+    bool update, list, isolate, strict, hidden, progress, no_reference_cache;
+    const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
+    sl_sandbox_level sandbox_level;
+    double timeout, memory_mb;
+    int jobs;
+    sl_backend backend;
+} _sl_options;
+
+/* 0: go on; otherwise the exit status. */
+int _sl_parse(int argc, char **argv, _sl_options *o);
+
+/* The options that decide a grade, as one line for the report and the
+ * gradebook ("--lab 1-2 --case lab1_* --hidden --seed 4711"): a second pass
+ * with other options says so instead of passing for the first. Where the
+ * files come from is named only when it is not this build's own. */
+void _sl_describe_options(const _sl_options *o, const char *default_cases, const char *default_refs, char *out,
+                          size_t n);
+
+#endif
