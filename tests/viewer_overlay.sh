@@ -9,7 +9,7 @@
 # draws when the asked lab is off (as the renderer noted it); --labels names the
 # cascade colours, the cube faces and the light; --lecture draws thicker lines
 # and larger text; in a window the key panel lists the lab's own keys with their
-# state; --help's keys are the key table's.
+# state; --help's keys are the key table's; --batch refuses what is not a headless run.
 set -u
 viewer=$1 solutions=$2 check=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
@@ -146,6 +146,18 @@ echo "viewer_overlay: the frustum changes $normal% of the pixels, $lecture% with
 awk -v a="$normal" -v b="$lecture" 'BEGIN { exit !(b >= 2 * a && a > 0) }' || problem "--lecture's frustum lines are not thicker"
 check_image text "$work/lecture-overlay.png" "$work/plain.png" 8 100 280 60 || problem "--lecture's panel is not larger"
 check_image text "$work/overlay.png" "$work/plain.png" 8 100 280 60 >/dev/null && problem "the plain overlay reaches as far as --lecture's"
+
+# --batch runs headless runs only, says which line it refuses and why, and fails when a line does (no picture
+# is drawn here: each line is refused before a context is made).
+printf '%s\n' "# a comment, then a blank line" "" "--lab 4 --frames 1" "--headless --serve 8123" \
+  "--headless --batch x" "--headless --caption 'not closed" >"$work/refused.txt"
+"$solutions" --batch "$work/refused.txt" >"$work/refused.out" 2>"$work/refused.err" && problem "--batch with failing lines exits 0"
+for line in "line 3 opens a window" "line 4 serves (--serve)" "line 5 has --batch" "line 6: a ' is not closed"; do
+  grep -qF -- "$line" "$work/refused.err" || problem "--batch does not say: $line"
+done
+[ "$(grep -c '^shadowlab: batch line [0-9]*: exit 2$' "$work/refused.out")" = 4 ] || problem "--batch does not mark each line's end"
+"$solutions" --headless --batch "$work/refused.txt" >"$work/log" 2>&1 && problem "--batch with other options is not refused"
+grep -qF "takes no other options" "$work/log" || problem "--batch with other options does not say why it is refused"
 
 # --help lists the key table (--list-keys, for scripts) and nothing says the solutions key is A.
 "$viewer" --help >"$work/help" 2>&1 || problem "--help failed"
