@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_viewer.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,9 +30,9 @@ void sl_viewer_set_second_labs(const sl_lab_functions *functions, const char *la
     _sl_second_kind = kind;
 }
 
-int sl_viewer_main(int argc, char **argv) {
-    for (int i = 1; i < argc; i++)
-        if (strcmp(argv[i], "--bench") == 0) return sl_bench_main(argc, argv);
+/* One viewer run: the options of one command line. `batch_line` > 0: line batch_line of --batch, which
+ * must be a headless run that ends by itself (no window, no --serve). */
+static int _sl_viewer_run(int argc, char **argv, int batch_line) {
     _sl_viewer v = {0};
     sl_render_params_defaults(&v.params);
     v.second_functions = _sl_second_functions;
@@ -40,6 +41,11 @@ int sl_viewer_main(int argc, char **argv) {
     _sl_viewer_options o;
     int parsed = _sl_viewer_options_parse(argc, argv, &v, &o);
     if (parsed >= 0) return parsed;
+    if (batch_line && (!o.headless || o.serve_port)) {
+        fprintf(stderr, "shadowlab: --batch: line %d %s: a batch runs headless runs only (--headless or "
+                        "--backend, with --frames)\n", batch_line, o.serve_port ? "serves (--serve)" : "opens a window");
+        return 2;
+    }
     if (o.case_name) {
         sl_case_view_desc cv = {.case_name = o.case_name, .labs_dir = o.labs_dir, .headless = o.headless,
                                 .backend = o.backend, .frames = o.frames, .screenshot = o.screenshot,
@@ -125,6 +131,7 @@ int sl_viewer_main(int argc, char **argv) {
         _sl_viewer_input_callbacks(window);
     }
     int rendered = 0;
+    bool last_second = false; /* whose code the last frame drew with: said when it changes */
     double last_reload_check = 0, last_frame_time = 0;
     char reported_missing[512] = "-";
     const char *reported_shader_error = NULL;
@@ -158,7 +165,6 @@ int sl_viewer_main(int argc, char **argv) {
             }
         }
         sl_renderer *active = v.show_second ? &v.second : &v.renderer;
-        static bool last_second;
         if (last_second != v.show_second) {
             printf("shadowlab: drawing with the %s code\n", v.show_second ? v.second_kind : sl_build_labs_kind);
             last_second = v.show_second;
@@ -289,4 +295,117 @@ int sl_viewer_main(int argc, char **argv) {
     sl_renderer_destroy(&v.renderer);
     sl_context_destroy(v.ctx);
     return status;
+}
+
+/* Splits `line` into words as a POSIX shell quotes them, without expanding anything: blanks separate
+ * words; '...' keeps everything; "..." keeps everything but a backslash before " $ ` or a backslash;
+ * a backslash elsewhere keeps the next character; # at a word's start comments out the rest. The words
+ * go to `text` (2x the line's length + 2) and `words` (the line's length + 2 entries). Returns the count, or -1 with `why`. */
+static int _sl_batch_split(const char *line, char *text, char **words, const char **why) {
+    int n = 0;
+    const char *p = line;
+    char *out = text;
+    for (;;) {
+        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') p++;
+        if (!*p || *p == '#') return n;
+        words[n++] = out;
+        while (*p && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
+            if (*p == '\'') {
+                const char *close = strchr(p + 1, '\'');
+                if (!close) return *why = "a ' is not closed", -1;
+                memcpy(out, p + 1, (size_t)(close - p - 1));
+                out += close - p - 1;
+                p = close + 1;
+            } else if (*p == '"') {
+                for (p++; *p && *p != '"'; p++) {
+                    if (*p == '\\' && p[1] && strchr("\"\\$`", p[1])) p++;
+                    *out++ = *p;
+                }
+                if (!*p) return *why = "a \" is not closed", -1;
+                p++;
+            } else if (*p == '\\') {
+                if (!p[1] || p[1] == '\n' || p[1] == '\r') return *why = "the line ends in a \\", -1;
+                *out++ = p[1];
+                p += 2;
+            } else {
+                *out++ = *p++;
+            }
+        }
+        *out++ = '\0';
+    }
+}
+
+/* --batch FILE: each line a viewer command line, run here one after another (the image module and the
+ * GL drivers load once). Every run starts from the same state as a process of its own. */
+static int _sl_viewer_batch(const char *program, const char *path) {
+    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
+    if (!f) {
+        fprintf(stderr, "shadowlab: --batch: cannot read %s: %s\n", path, strerror(errno));
+        return 2;
+    }
+    char *line = NULL;
+    size_t capacity = 0;
+    int line_number = 0, failed = 0;
+    while (getline(&line, &capacity, f) >= 0) {
+        line_number++;
+        size_t length = strlen(line);
+        char *text = malloc(2 * length + 2);
+        char **argv = malloc((length + 3) * sizeof *argv);
+        if (!text || !argv) {
+            free(text);
+            free(argv);
+            fprintf(stderr, "shadowlab: --batch: out of memory at line %d\n", line_number);
+            failed = 1;
+            break;
+        }
+        const char *why = NULL;
+        int words = _sl_batch_split(line, text, argv + 1, &why);
+        if (words != 0) {
+            printf("shadowlab: batch line %d\n", line_number);
+            fflush(stdout);
+            fprintf(stderr, "shadowlab: batch line %d\n", line_number);
+            int status = 2;
+            if (words < 0) fprintf(stderr, "shadowlab: --batch: line %d: %s\n", line_number, why);
+            else {
+                argv[0] = (char *)program;
+                argv[words + 1] = NULL;
+                const char *refused = NULL;
+                for (int i = 1; i <= words && !refused; i++)
+                    if (strcmp(argv[i], "--batch") == 0 || strcmp(argv[i], "--bench") == 0) refused = argv[i];
+                if (refused)
+                    fprintf(stderr, "shadowlab: --batch: line %d has %s: a batch's lines are viewer runs\n",
+                            line_number, refused);
+                else
+                    status = _sl_viewer_run(words + 1, argv, line_number);
+            }
+            fflush(stdout);
+            fflush(stderr);
+            printf("shadowlab: batch line %d: exit %d\n", line_number, status);
+            fflush(stdout);
+            if (status != 0) failed = 1;
+        }
+        free(text);
+        free(argv);
+    }
+    if (ferror(f)) {
+        fprintf(stderr, "shadowlab: --batch: cannot read %s: %s\n", path, strerror(errno));
+        failed = 1;
+    }
+    free(line);
+    if (f != stdin) fclose(f);
+    return failed;
+}
+
+int sl_viewer_main(int argc, char **argv) {
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--batch") == 0) {
+            if (i != 1 || argc != 3) {
+                fprintf(stderr, "shadowlab: --batch FILE takes no other options: each line of FILE has its own\n");
+                return 2;
+            }
+            return _sl_viewer_batch(argv[0], argv[2]);
+        }
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--bench") == 0) return sl_bench_main(argc, argv);
+    return _sl_viewer_run(argc, argv, 0);
 }

@@ -45,33 +45,53 @@ if [ -n "$check" ]; then
     return 2
   }
 fi
+# Every README command is a line of one `VIEWER --batch` (one process: the image module and the GL
+# drivers load once); the arguments are the README's own words, split as a shell would, without running one.
+quote() { local w out=""; for w in "$@"; do out+=" '${w//\'/\'\\\'\'}'"; done; printf '%s\n' "${out# }"; }
+readmes=() lines=() names=()
+batch=$out/batch.txt
+: >"$batch"
 for readme in "$here"/labs/lab*/README.md; do
   while IFS= read -r line; do
     [[ $line =~ $pattern ]] || continue
     args=${BASH_REMATCH[1]} name=${BASH_REMATCH[2]}
     named[$name]=1
     count=$((count + 1))
-    # the arguments are the README's own words: split as a shell would, without running one
     read -r -a argv <<<"$args"
-    if ! "$viewer" --headless --frames 1 "${argv[@]}" --screenshot "$out/$name" >"$out/$name.log" 2>&1; then
-      echo "render-readme-figures: ${readme#"$here"/}: '$line' failed:" >&2
-      cat "$out/$name.log" >&2
-      fail=1
-      continue
-    fi
-    rm -f "$out/$name.log"
-    if [ -n "$check" ]; then
-      shipped=$here/docs/labs/$name
-      if [ ! -f "$shipped" ]; then
-        echo "render-readme-figures: ${readme#"$here"/} shows docs/labs/$name, which is not there" >&2
-        fail=1
-      elif ! compare_image "$out/$name" "$shipped" 0.05 0.2; then
-        echo "render-readme-figures: docs/labs/$name does not match what '$line' renders" >&2
-        fail=1
-      fi
-    fi
+    quote --headless --frames 1 "${argv[@]}" --screenshot "$out/$name" >>"$batch"
+    readmes+=("$readme") lines+=("$line") names+=("$name")
   done <"$readme"
 done
+rm -f "$out"/batch.*.log "$out"/batch.*.exit
+if [ "$count" -gt 0 ]; then
+  "$viewer" --batch "$batch" >"$out/batch.log" 2>&1
+  # each line's output (the viewer marks where each starts and how it ended) in batch.N.log, its status in batch.N.exit
+  awk -v dir="$out" '
+    /^shadowlab: batch line [0-9]+: exit [0-9]+$/ { n = $4; sub(":", "", n); print $6 > (dir "/batch." n ".exit"); next }
+    /^shadowlab: batch line [0-9]+$/ { n = $4; next }
+    n { print > (dir "/batch." n ".log") }' "$out/batch.log"
+fi
+for i in "${!names[@]}"; do
+  readme=${readmes[$i]} line=${lines[$i]} name=${names[$i]} n=$((i + 1))
+  touch "$out/batch.$n.log"
+  if [ "$(cat "$out/batch.$n.exit" 2>/dev/null)" != 0 ]; then
+    echo "render-readme-figures: ${readme#"$here"/}: '$line' failed:" >&2
+    if [ -f "$out/batch.$n.exit" ]; then cat "$out/batch.$n.log" >&2; else tail -n 20 "$out/batch.log" >&2; fi
+    fail=1
+    continue
+  fi
+  if [ -n "$check" ]; then
+    shipped=$here/docs/labs/$name
+    if [ ! -f "$shipped" ]; then
+      echo "render-readme-figures: ${readme#"$here"/} shows docs/labs/$name, which is not there" >&2
+      fail=1
+    elif ! compare_image "$out/$name" "$shipped" 0.05 0.2; then
+      echo "render-readme-figures: docs/labs/$name does not match what '$line' renders" >&2
+      fail=1
+    fi
+  fi
+done
+[ "$fail" != 0 ] || rm -f "$batch" "$out/batch.log" "$out"/batch.*.log "$out"/batch.*.exit
 [ "$count" -gt 0 ] || { echo "render-readme-figures: no figure commands in labs/*/README.md" >&2; exit 1; }
 if [ -n "$check" ]; then
   for shipped in "$here"/docs/labs/*.png; do

@@ -9,7 +9,7 @@
 # draws when the asked lab is off (as the renderer noted it); --labels names the
 # cascade colours, the cube faces and the light; --lecture draws thicker lines
 # and larger text; in a window the key panel lists the lab's own keys with their
-# state; --help's keys are the key table's.
+# state; --help's keys are the key table's; --batch refuses what is not a headless run.
 set -u
 viewer=$1 solutions=$2 check=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
@@ -18,73 +18,96 @@ problem() { echo "viewer_overlay: $*" >&2; fail=1; }
 # Every picture check in one image_check process (check_image).
 source "$(dirname "$0")/image_checks.sh"
 start_image_check "$check"
-run() { "$@" >"$work/log" 2>&1 || { cat "$work/log"; problem "failed: $*"; }; }
+# The headless runs are independent: each viewer's runs are one process (viewer_batch.sh), NAME's output
+# in $work/NAME.log. A run that fails is a problem, except the ones named try-*, looked at below.
+source "$(dirname "$0")/viewer_batch.sh"
+run() { viewer_batch_add "$@"; }
+run_all() {
+  local name
+  viewer_batch_run "$1" "$work"
+  for name in "${@:2}"; do
+    [[ $name == try-* ]] && continue
+    viewer_batch_status "$work" "$name" || { cat "$work/$name.log"; problem "failed: $name ($1)"; }
+  done
+}
 common=(--headless --lab 4 --scene spot_on_floor --size 640x400 --frames 2)
-run "$solutions" "${common[@]}" --screenshot "$work/plain.png"
-run "$solutions" "${common[@]}" --no-overlay --screenshot "$work/no-overlay.png"
-run "$solutions" "${common[@]}" --overlay --screenshot "$work/overlay.png"
+run plain "${common[@]}" --screenshot "$work/plain.png"
+run no-overlay "${common[@]}" --no-overlay --screenshot "$work/no-overlay.png"
+run overlay "${common[@]}" --overlay --screenshot "$work/overlay.png"
+# Labs 5-7 say their own settings: the moments, the cascades and their splits, the cube map.
+run lab5 --headless --lab 5 --scene stacked_occluders --size 640x400 --frames 1 --overlay --blur 3
+run lab6 --headless --lab 6 --scene cascade_field --size 640x400 --frames 1 --overlay --cascades 3 --no-snap
+run lab7 --headless --lab 7 --scene closed_room --size 640x400 --frames 1 --overlay --soft
+run frustum "${common[@]}" --frustum --screenshot "$work/frustum.png"
+# The keys do what the options do (--keys presses them before the first frame).
+run key-l "${common[@]}" --keys G --screenshot "$work/key-l.png"
+run key-o "${common[@]}" --keys O --screenshot "$work/key-o.png"
+run key-oo "${common[@]}" --keys OO --screenshot "$work/key-oo.png"
+run lab5-pcf --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay --pcf
+run lab7-sun --headless --lab 7 --scene boxes_on_floor --size 320x200 --frames 1 --overlay
+run l6-labels --headless --lab 6 --scene cascade_field --size 640x400 --frames 1 --show-cascades --labels \
+  --screenshot "$work/l6-labels.png"
+run l7-labels --headless --lab 7 --scene closed_room --size 640x400 --frames 1 --show-map --labels \
+  --screenshot "$work/l7-labels.png"
+run lecture-frustum "${common[@]}" --frustum --lecture --screenshot "$work/lecture-frustum.png"
+run lecture-overlay "${common[@]}" --overlay --lecture --screenshot "$work/lecture-overlay.png"
+run_all "$solutions" plain no-overlay overlay lab5 lab6 lab7 frustum key-l key-o key-oo lab5-pcf lab7-sun l6-labels \
+  l7-labels lecture-frustum lecture-overlay
+run try-ab "${common[@]}" --solutions --screenshot "$work/ab.png"
+run try-key-a "${common[@]}" --keys U --screenshot "$work/key-a.png"
+run own-lab5 --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay
+run_all "$viewer" try-ab try-key-a own-lab5
 # What it says: the lab and its settings, and the pass times, with what they measure on llvmpipe.
 for line in "\[top left\] lab 4: PCF & PCSS" "\[top left\] filter: PCF grid 3x3" "\[top left\] shadow map: 1024x1024" \
             "\[top right\] depth +[0-9]+\.[0-9]{2}" "\[top right\] camera +[0-9]+\.[0-9]{2}"; do
-  grep -qE "$line" "$work/log" || problem "the overlay does not say: $line"
+  grep -qE "$line" "$work/overlay.log" || problem "the overlay does not say: $line"
 done
-if grep -q llvmpipe "$work/log"; then
-  grep -q "\[top right\] llvmpipe: rasteriser CPU time" "$work/log" || problem "the overlay does not say what llvmpipe's times are"
+if grep -q llvmpipe "$work/overlay.log"; then
+  grep -q "\[top right\] llvmpipe: rasteriser CPU time" "$work/overlay.log" || problem "the overlay does not say what llvmpipe's times are"
 fi
-# Labs 5-7 say their own settings: the moments, the cascades and their splits, the cube map.
-run "$solutions" --headless --lab 5 --scene stacked_occluders --size 640x400 --frames 1 --overlay --blur 3
 for line in "\[top left\] VSM: moments 512x512, blur radius 3" "\[top left\] bleeding reduction 0\.30"; do
-  grep -qE "$line" "$work/log" || problem "the lab 5 overlay does not say: $line"
+  grep -qE "$line" "$work/lab5.log" || problem "the lab 5 overlay does not say: $line"
 done
-run "$solutions" --headless --lab 6 --scene cascade_field --size 640x400 --frames 1 --overlay --cascades 3 --no-snap
 for line in "\[top left\] shadow maps: 3 layers of 1024x1024" "\[top left\] cascades: 3, lambda 0\.80" \
             "\[top left\] splits \(view depth\): [0-9.]+ [0-9.]+ [0-9.]+ [0-9.]+$" "\[top left\] texel snapping: off"; do
-  grep -qE "$line" "$work/log" || problem "the lab 6 overlay does not say: $line"
+  grep -qE "$line" "$work/lab6.log" || problem "the lab 6 overlay does not say: $line"
 done
-run "$solutions" --headless --lab 7 --scene closed_room --size 640x400 --frames 1 --overlay --soft
 for line in "\[top left\] cube map: 6 faces of 512x512" "\[top left\] lookup: soft, 20 directions" \
             "\[top left\] faces: (one layered pass|six passes)"; do
-  grep -qE "$line" "$work/log" || problem "the lab 7 overlay does not say: $line"
+  grep -qE "$line" "$work/lab7.log" || problem "the lab 7 overlay does not say: $line"
 done
-grep -q "shadow map: 1024x1024" "$work/log" && problem "the lab 7 overlay names the 2D map's size"
-run "$solutions" "${common[@]}" --frustum --screenshot "$work/frustum.png"
+grep -q "shadow map: 1024x1024" "$work/lab7.log" && problem "the lab 7 overlay names the 2D map's size"
 cmp -s "$work/plain.png" "$work/no-overlay.png" || problem "--frames without --overlay does not give the plain picture"
 # The top-left panel (lab, scene, code, light, map, bias, filter) at scale 1 (400 px high).
 check_image text "$work/overlay.png" "$work/plain.png" 8 8 150 50 || problem "no text in the overlay's panel"
 # Below the panels, the scene is as it was.
 check_image text "$work/overlay.png" "$work/plain.png" 8 300 300 90 >/dev/null && problem "the overlay changed the scene below its panels"
 cmp -s "$work/plain.png" "$work/frustum.png" && problem "--frustum drew nothing"
-# The keys do what the options do (--keys presses them before the first frame).
-run "$solutions" "${common[@]}" --keys G --screenshot "$work/key-l.png"
 cmp -s "$work/key-l.png" "$work/frustum.png" || problem "key G does not draw what --frustum draws"
-run "$solutions" "${common[@]}" --keys O --screenshot "$work/key-o.png"
 check_image text "$work/key-o.png" "$work/plain.png" 8 8 150 50 >/dev/null || problem "key O does not show the overlay"
-run "$solutions" "${common[@]}" --keys OO --screenshot "$work/key-oo.png"
 cmp -s "$work/key-oo.png" "$work/plain.png" || problem "key O twice does not hide the overlay again"
 if "$viewer" --help | grep -q -- "--solutions"; then
-  if "$viewer" "${common[@]}" --solutions --screenshot "$work/ab.png" >"$work/log" 2>&1; then
+  if viewer_batch_status "$work" try-ab; then
     cmp -s "$work/ab.png" "$work/plain.png" || problem "--solutions does not draw what the solutions' viewer draws"
-    run "$viewer" "${common[@]}" --keys U --screenshot "$work/key-a.png"
+    viewer_batch_status "$work" try-key-a || { cat "$work/try-key-a.log"; problem "failed: --keys U"; }
     cmp -s "$work/key-a.png" "$work/plain.png" || problem "key U does not switch to the solutions' code"
-  elif grep -q "no solutions beside" "$work/log"; then
+  elif grep -q "no solutions beside" "$work/try-ab.log"; then
     echo "viewer_overlay: this build has no second lab code (a solutions build or a handout): A/B not checked"
   else
-    cat "$work/log"; problem "--solutions failed"
+    cat "$work/try-ab.log"; problem "--solutions failed"
   fi
 fi
 
 # What really draws, as the renderer noted it: a setting (lab 5's P), the scene (lab 7 needs a point
 # light), a lab's shaders (a copy of the solutions with lab 5's GLSL broken).
-status() { grep -E "^shadowlab: lab [0-9] .* is off: " "$work/log"; }
-run "$solutions" --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay --pcf
-status | grep -qF "lab 5 VSM is off: switched off with P; drawing lab 4's PCF grid 3x3" ||
+status() { grep -E "^shadowlab: lab [0-9] .* is off: " "$work/${1:-log}"; }
+status lab5-pcf.log | grep -qF "lab 5 VSM is off: switched off with P; drawing lab 4's PCF grid 3x3" ||
   problem "lab 5 with VSM switched off does not say it draws lab 4's filter"
-grep -q "\[top left\] VSM: moments" "$work/log" && problem "lab 5's overlay gives VSM's settings while lab 4's filter draws"
-grep -q "\[top left\] filter: PCF grid 3x3" "$work/log" || problem "lab 5 with VSM off does not give lab 4's filter settings"
-run "$solutions" --headless --lab 7 --scene boxes_on_floor --size 320x200 --frames 1 --overlay
-status | grep -qF "lab 7 cube maps is off: boxes_on_floor has no point light (closed_room has one); drawing lab 4's PCF grid 3x3" ||
+grep -q "\[top left\] VSM: moments" "$work/lab5-pcf.log" && problem "lab 5's overlay gives VSM's settings while lab 4's filter draws"
+grep -q "\[top left\] filter: PCF grid 3x3" "$work/lab5-pcf.log" || problem "lab 5 with VSM off does not give lab 4's filter settings"
+status lab7-sun.log | grep -qF "lab 7 cube maps is off: boxes_on_floor has no point light (closed_room has one); drawing lab 4's PCF grid 3x3" ||
   problem "lab 7 without a point light does not say what draws"
-labs=$(sed -nE 's/^shadowlab: .* labs from (.*)$/\1/p' "$work/log" | head -n 1)
+labs=$(sed -nE 's/^shadowlab: .* labs from (.*)$/\1/p' "$work/lab7-sun.log" | head -n 1)
 if [ -d "$labs/lab5_vsm/shaders" ]; then
   cp -r "$labs" "$work/broken-labs" && echo "this is not GLSL;" >>"$work/broken-labs/lab5_vsm/shaders/vsm.glsl"
   "$solutions" --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay \
@@ -98,24 +121,19 @@ else
 fi
 # This build's own labs, stubs or not: every function the status line blames is one the same frame reports
 # as not implemented, and a lab that is not off shows its own settings.
-run "$viewer" --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay
 while read -r n fn; do
-  grep -qF "not implemented yet: lab${n}_${fn}()" "$work/log" || problem "the status blames lab${n}_${fn}, which is not reported as not implemented"
-done < <(status | grep -oE "lab [0-9]'s [a-z0-9_]+ is not implemented" | sed -E "s/lab ([0-9])'s ([a-z0-9_]+) .*/\1 \2/")
-status >/dev/null || grep -q "\[top left\] VSM: moments" "$work/log" || problem "lab 5 draws but its overlay does not say VSM"
+  grep -qF "not implemented yet: lab${n}_${fn}()" "$work/own-lab5.log" || problem "the status blames lab${n}_${fn}, which is not reported as not implemented"
+done < <(status own-lab5.log | grep -oE "lab [0-9]'s [a-z0-9_]+ is not implemented" | sed -E "s/lab ([0-9])'s ([a-z0-9_]+) .*/\1 \2/")
+status own-lab5.log >/dev/null || grep -q "\[top left\] VSM: moments" "$work/own-lab5.log" || problem "lab 5 draws but its overlay does not say VSM"
 
 # --labels: the cascade colours' legend (split depths from the frame), the cube faces named in the cross, the
 # light's marker; in the picture, text on a dark backing where they are.
-run "$solutions" --headless --lab 6 --scene cascade_field --size 640x400 --frames 1 --show-cascades --labels \
-  --screenshot "$work/l6-labels.png"
 for line in "\[top right\] cascades \(K\), view depth" "\[top right\] ## 0: [0-9.]+ - [0-9.]+" "\[top right\] ## 3: [0-9.]+ - [0-9.]+"; do
-  grep -qE "$line" "$work/log" || problem "the cascade legend does not say: $line"
+  grep -qE "$line" "$work/l6-labels.log" || problem "the cascade legend does not say: $line"
 done
 check_image label "$work/l6-labels.png" 490 6 140 50 || problem "no cascade legend in the top right corner"
-run "$solutions" --headless --lab 7 --scene closed_room --size 640x400 --frames 1 --show-map --labels \
-  --screenshot "$work/l7-labels.png"
-for face in +X -X +Y -Y +Z -Z; do grep -qF "[label] $face" "$work/log" || problem "the cube face $face is not labelled"; done
-grep -qF "[marker] point light" "$work/log" || problem "no marker at the point light"
+for face in +X -X +Y -Y +Z -Z; do grep -qF "[label] $face" "$work/l7-labels.log" || problem "the cube face $face is not labelled"; done
+grep -qF "[marker] point light" "$work/l7-labels.log" || problem "no marker at the point light"
 # The cross's cells are 66 px (half what fits 4 x 3 in 640x400), 8 px off the lower right: +Y's top left is
 # at 434,194, +X's at 500,260; the labels sit just inside.
 check_image label "$work/l7-labels.png" 436 196 16 13 || problem "no +Y label on the cross"
@@ -123,13 +141,23 @@ check_image label "$work/l7-labels.png" 502 262 16 13 || problem "no +X label on
 
 # --lecture: the frustum's lines are thicker (more pixels change) and the text larger (the panel reaches
 # farther); the same scene otherwise.
-run "$solutions" "${common[@]}" --frustum --lecture --screenshot "$work/lecture-frustum.png"
 normal=$(check_image differ "$work/plain.png" "$work/frustum.png") lecture=$(check_image differ "$work/plain.png" "$work/lecture-frustum.png")
 echo "viewer_overlay: the frustum changes $normal% of the pixels, $lecture% with --lecture"
 awk -v a="$normal" -v b="$lecture" 'BEGIN { exit !(b >= 2 * a && a > 0) }' || problem "--lecture's frustum lines are not thicker"
-run "$solutions" "${common[@]}" --overlay --lecture --screenshot "$work/lecture-overlay.png"
 check_image text "$work/lecture-overlay.png" "$work/plain.png" 8 100 280 60 || problem "--lecture's panel is not larger"
 check_image text "$work/overlay.png" "$work/plain.png" 8 100 280 60 >/dev/null && problem "the plain overlay reaches as far as --lecture's"
+
+# --batch runs headless runs only, says which line it refuses and why, and fails when a line does (no picture
+# is drawn here: each line is refused before a context is made).
+printf '%s\n' "# a comment, then a blank line" "" "--lab 4 --frames 1" "--headless --serve 8123" \
+  "--headless --batch x" "--headless --caption 'not closed" >"$work/refused.txt"
+"$solutions" --batch "$work/refused.txt" >"$work/refused.out" 2>"$work/refused.err" && problem "--batch with failing lines exits 0"
+for line in "line 3 opens a window" "line 4 serves (--serve)" "line 5 has --batch" "line 6: a ' is not closed"; do
+  grep -qF -- "$line" "$work/refused.err" || problem "--batch does not say: $line"
+done
+[ "$(grep -c '^shadowlab: batch line [0-9]*: exit 2$' "$work/refused.out")" = 4 ] || problem "--batch does not mark each line's end"
+"$solutions" --headless --batch "$work/refused.txt" >"$work/log" 2>&1 && problem "--batch with other options is not refused"
+grep -qF "takes no other options" "$work/log" || problem "--batch with other options does not say why it is refused"
 
 # --help lists the key table (--list-keys, for scripts) and nothing says the solutions key is A.
 "$viewer" --help >"$work/help" 2>&1 || problem "--help failed"

@@ -21,6 +21,9 @@ manifest (OUT_DIR/figures/manifest.json) says which, and the deck builder
 puts a note where a left-out figure was. A figure whose command, viewer
 binary, shaders and scenes are unchanged since it was made is not made again
 (OUT_DIR/figures/.stamps), so the tests and a second build share renders.
+The viewer's figures are drawn by --jobs viewer processes, each drawing its
+share one after another (shadowlab --batch): the image module and the GL
+drivers load once a process, not once a figure.
 """
 import argparse
 import concurrent.futures
@@ -32,9 +35,12 @@ import shlex
 import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 LINE = re.compile(r"^<!-- (figure|animation|diagram|derive): *(.*?) *-->$")
+BATCH_LINE = re.compile(r"^shadowlab: batch line ([0-9]+)$")            # shadowlab --batch: a line starts
+BATCH_EXIT = re.compile(r"^shadowlab: batch line ([0-9]+): exit ([0-9]+)$")  # and how it ended
 HERE = os.path.dirname(os.path.abspath(__file__))
 SLIDES = os.path.dirname(HERE)
 ROOT = os.path.dirname(SLIDES)
@@ -135,7 +141,8 @@ def main():
             extra += tree_hash([src]) if os.path.isfile(src) else "none"
         return hashlib.sha256(json.dumps([kind, args, viewer_args, extra]).encode()).hexdigest()
 
-    def run(job):
+    def prepare(job):
+        """What a job needs: (target, status, err) when nothing is to run, else (target, None, work)."""
         deck, no, kind, args, target = job
         path = os.path.join(out, target)
         os.makedirs(os.path.dirname(path), exist_ok=True)
@@ -155,42 +162,122 @@ def main():
         key = stamp_of(kind, args)
         if os.path.isfile(path) and os.path.isfile(stamp_file) and open(stamp_file).read() == key:
             return target, "cached", None
-        if kind in ("figure", "animation"):
-            if args[0] != "shadowlab":
-                return target, "failed", f"{deck}:{no}: a {kind} command starts with shadowlab"
-            first = ["--headless"] + (["--frames", "1"] if kind == "figure" else [])
-            cmd = [a.viewer] + viewer_args + first + args[1:]
-        elif kind == "diagram":
-            cmd = [a.python, os.path.join(SLIDES, "diagrams", args[0])] + args[1:]
-        else:
-            cmd = None  # figtool, in this process: no Python and PIL to start for a crop
-        t0 = time.time()
-        if cmd:
-            r = subprocess.run(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-            failed, err = r.returncode != 0, r.stderr
-        else:
-            failed, err = derive(args, out)
+        if kind in ("figure", "animation") and args[0] != "shadowlab":
+            return target, "failed", f"{deck}:{no}: a {kind} command starts with shadowlab"
+        return target, None, (path, stamp_file, key)
+
+    def finish(job, work, failed, err, seconds):
+        deck, no, kind, args, target = job
+        path, stamp_file, key = work
         if failed or not os.path.isfile(path):
             err = "\n".join(err.strip().splitlines()[-3:])
             return target, "failed", f"{deck}:{no}: {' '.join(shlex.quote(x) for x in args)}\n  {err}"
         with open(stamp_file, "w") as f:
             f.write(key)
-        print(f"render-figures: {target} ({time.time() - t0:.1f} s)", flush=True)
+        print(f"render-figures: {target} ({seconds:.1f} s)", flush=True)
         return target, "rendered", None
+
+    def run(job, work):
+        """A diagram (its script) or a derived figure (figtool, in this process: no Python and PIL to start)."""
+        deck, no, kind, args, target = job
+        t0 = time.time()
+        if kind == "diagram":
+            cmd = [a.python, os.path.join(SLIDES, "diagrams", args[0])] + args[1:]
+            r = subprocess.run(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+            failed, err = r.returncode != 0, r.stderr
+        else:
+            failed, err = derive(args, out)
+        return finish(job, work, failed, err, time.time() - t0)
+
+    def run_viewer(batch):
+        """Viewer figures and animations, [(job, work)], in one viewer process (shadowlab --batch): the
+        image module and the GL drivers load once, not once a figure. Each line's stderr is its own
+        (the viewer marks where each line starts)."""
+        lines = []
+        for job, work in batch:
+            kind, args = job[2], job[3]
+            first = ["--headless"] + (["--frames", "1"] if kind == "figure" else [])
+            lines.append(shlex.join(viewer_args + first + args[1:]))
+        with tempfile.TemporaryDirectory(prefix="render-figures-") as tmp:
+            batch_file = os.path.join(tmp, "batch")
+            with open(batch_file, "w") as f:
+                f.write("\n".join(lines) + "\n")
+            stderr_file = open(os.path.join(tmp, "stderr"), "w+")
+            exits, seconds = {}, {}
+            t0 = time.time()
+            with stderr_file, subprocess.Popen([a.viewer, "--batch", batch_file], cwd=out, stdout=subprocess.PIPE,
+                                               stderr=stderr_file, text=True) as p:
+                for line in p.stdout:
+                    m = BATCH_EXIT.match(line)
+                    if m:
+                        n = int(m.group(1))
+                        exits[n], seconds[n] = int(m.group(2)), time.time() - t0
+                        t0 = time.time()
+                status = p.wait()
+                stderr_file.seek(0)
+                said, current = {}, 0
+                for line in stderr_file:
+                    m = BATCH_LINE.match(line)
+                    if m:
+                        current = int(m.group(1))
+                    else:
+                        said.setdefault(current, []).append(line)
+        results = []
+        for n, (job, work) in enumerate(batch, 1):
+            err = "".join(said.get(n, []))
+            if n not in exits:
+                err += f"\n(the viewer stopped before this figure was done: exit {status})"
+            results.append(finish(job, work, exits.get(n, 1) != 0, err, seconds.get(n, 0.0)))
+        return results
 
     # Viewer figures and diagrams first (in parallel), then what is derived from them.
     manifest_status = {}
     first = [j for j in jobs if j[2] != "derive"]
     later = [j for j in jobs if j[2] == "derive"]
     for batch in (first, later):
+        results = {}
+        todo = []
+        for i, job in enumerate(batch):
+            target, status, work = prepare(job)
+            if status:
+                results[i] = (target, status, work)
+            else:
+                todo.append((i, job, work))
+        # The viewer's figures in --jobs viewer processes, the longest (most frames) first into the least loaded.
+        viewer = [t for t in todo if t[1][2] in ("figure", "animation")]
+        groups = [[] for _ in range(max(1, a.jobs))]
+        loads = [0] * len(groups)
+
+        def frames_of(job):
+            args = job[3]
+            for k, x in enumerate(args[:-1]):
+                if x == "--frames" and args[k + 1].isdigit():
+                    return int(args[k + 1])
+            return 1
+
+        for t in sorted(viewer, key=lambda t: -frames_of(t[1])):
+            g = loads.index(min(loads))
+            groups[g].append(t)
+            loads[g] += frames_of(t[1]) + 2
+        for g in groups:
+            g.sort()  # the decks' order within a process
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
-            for job, (target, status, err) in zip(batch, pool.map(run, batch)):
-                manifest_status[target] = status
-                manifest[target] = {"deck": job[0], "line": job[1], "kind": job[2], "status": status}
-                if err:
-                    failures.append(err)
-                else:
-                    counts[status] += 1
+            viewer_runs = [(g, pool.submit(run_viewer, [(job, work) for _, job, work in g])) for g in groups if g]
+            other_runs = [(i, pool.submit(run, job, work)) for i, job, work in todo
+                          if job[2] not in ("figure", "animation")]
+            for g, future in viewer_runs:
+                for (i, _, _), result in zip(g, future.result()):
+                    results[i] = result
+            for i, future in other_runs:
+                results[i] = future.result()
+        for i, job in enumerate(batch):
+            target, status, err = results[i]
+            manifest_status[target] = status
+            manifest[target] = {"deck": job[0], "line": job[1], "kind": job[2], "status": status}
+            if err:
+                failures.append(err)
+            else:
+                counts[status] += 1
     with open(os.path.join(figures, "manifest.json"), "w") as f:
         json.dump(manifest, f, indent=1, sort_keys=True)
     print("render-figures: %d made, %d unchanged since the last build, %d copied from pre-rendered figures, "
