@@ -267,11 +267,21 @@ static bool _sl_receive(const sl_stage_desc *d, const _sl_labs *labs, int stage_
 }
 
 /* "a, b, c and 4 more" from a list's first fields (with its second in brackets when with_reason). */
-static void _sl_join_list(const _sl_items *l, bool with_reason, int max, bool skip_clutter, char *out, size_t n) {
+static bool _sl_items_hold(const _sl_items *l, const char *a) {
+    for (int i = 0; l && i < l->count; i++)
+        if (strcmp(l->items[i].a, a) == 0) return true;
+    return false;
+}
+
+/* l's items, joined with ", "; those also in `except` left out (a refused file was found too, but
+ * is no file the submission gave). */
+static void _sl_join_list_except(const _sl_items *l, const _sl_items *except, bool with_reason, int max,
+                                 bool skip_clutter, char *out, size_t n) {
     out[0] = '\0';
     int shown = 0, left = 0;
     for (int i = 0; i < l->count; i++) {
         if (skip_clutter && strcmp(l->items[i].b, "clutter") == 0) continue;
+        if (_sl_items_hold(except, l->items[i].a)) continue;
         if (shown >= max) {
             left++;
             continue;
@@ -285,6 +295,10 @@ static void _sl_join_list(const _sl_items *l, bool with_reason, int max, bool sk
     }
     left += l->dropped;
     if (left) snprintf(out + strlen(out), n - strlen(out), " and %d more", left);
+}
+
+static void _sl_join_list(const _sl_items *l, bool with_reason, int max, bool skip_clutter, char *out, size_t n) {
+    _sl_join_list_except(l, NULL, with_reason, max, skip_clutter, out, n);
 }
 
 static cJSON *_sl_json_list(const _sl_items *l, const char *first, const char *second) {
@@ -320,16 +334,16 @@ static cJSON *_sl_notes(const _sl_labs *labs, const _sl_result *res, bool no_lab
     if (no_lab_file) {
         char accepted[1000];
         _sl_accepted_layouts(labs, accepted, sizeof accepted);
-        _sl_join_list(&res->found, false, 12, true, list, sizeof list);
-        bool clutter_only = !list[0] && res->found.count > 0;
-        if (!list[0] && clutter_only) {
-            _sl_join_list(&res->found, false, 6, false, list, sizeof list);
-            snprintf(text, sizeof text, "No lab file found: the submission holds only what macOS or Windows add (%s). "
-                     "Accepted layouts: %s. Every lab is graded as the handout's stub.", list, accepted);
-        } else if (!list[0] && (res->errors.count || res->refused.count)) {
+        _sl_join_list_except(&res->found, &res->refused, false, 12, true, list, sizeof list);
+        char clutter[1000];
+        _sl_join_list_except(&res->found, &res->refused, false, 6, false, clutter, sizeof clutter);
+        if (!list[0] && (res->errors.count || res->refused.count)) {
             snprintf(text, sizeof text, "No lab file found: %s. Accepted layouts: %s. Every lab is graded as the "
                      "handout's stub.", res->errors.count ? res->errors.items[0].a : "nothing but what was refused (below)",
                      accepted);
+        } else if (!list[0] && clutter[0]) {
+            snprintf(text, sizeof text, "No lab file found: the submission holds only what macOS or Windows add (%s). "
+                     "Accepted layouts: %s. Every lab is graded as the handout's stub.", clutter, accepted);
         } else if (!list[0]) {
             snprintf(text, sizeof text, "No lab file found: the submission is empty. Accepted layouts: %s. Every lab "
                      "is graded as the handout's stub.", accepted);

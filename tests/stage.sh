@@ -145,6 +145,9 @@ links)
   [ "$(id -u)" != 0 ] || mknod "$s/deep/labs/lab7_cube/lab7.c" c 1 3
   # 6. a top folder that is a link
   mkdir "$s/top" && ln -s "$solutions" "$s/top/shadowlab-main"
+  # 7. loose files, every one a link: nothing is taken, and the summary says so (not "found lab1.c")
+  mkdir "$s/only-links" && ln -s "$solutions/lab1_depth_fbo/lab1.c" "$s/only-links/lab1.c" \
+    && ln -s "$solutions/lab1_depth_fbo/shaders/depth.frag" "$s/only-links/depth.frag"
   chmod -R a+rX "$work"
   run_all() { # run_all WHO
     local who=$1
@@ -183,6 +186,12 @@ links)
     expect_status 3 "$who: a top folder that is a link"
     said "shadowlab-main (a symbolic link" "$who: a top folder that is a link"
     all_stubs "$who: a top folder that is a link"
+    stage "$who-only-links" "$s/only-links"
+    expect_status 3 "$who: every file a link"
+    in_summary "No lab file found: nothing but what was refused (below)" "$who: every file a link"
+    ! grep -qF "found lab1.c" "$summary" || problem "$who: every file a link: a refused link counted as found"
+    said "lab1.c (a symbolic link (to $solutions/lab1_depth_fbo/lab1.c)" "$who: every file a link"
+    all_stubs "$who: every file a link"
   }
   if [ "$(id -u)" = 0 ]; then
     run_all root
