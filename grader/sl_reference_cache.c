@@ -3,14 +3,17 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sl_reference_cache.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <signal.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "sl_platform.h"
@@ -21,6 +24,9 @@
 #define _SL_CACHE_HEADER (8 + 4 * 4 + 64 + 64)
 /* A reference file or an entry larger than this is not cached (the largest is well under 16 MiB). */
 #define _SL_CACHE_MAX_BYTES ((size_t)256 << 20)
+#define _SL_CACHE_ENTRY_PREFIX ".entry-"   /* temporary names: prefix, the writer's pid, "-", a number */
+#define _SL_CACHE_DECODE_PREFIX ".decode-"
+#define _SL_CACHE_UNUSED_DAYS 120          /* an entry no grade read for this long is removed */
 
 struct sl_reference_cache {
     int dir_fd;
@@ -72,6 +78,43 @@ static int _sl_open_folder(int parent_fd, const char *name, const char *path, mo
     return fd;
 }
 
+/* What a grader that died while writing left (its temporary files carry its pid: gone for a minute
+ * at least), and entries no grade has read for _SL_CACHE_UNUSED_DAYS (a hit renews an entry's time),
+ * so the folder does not grow with every change of the references. Only the grader's own regular
+ * files are touched; a failure leaves the file. */
+static void _sl_sweep(sl_reference_cache *cache) {
+    int fd = dup(cache->dir_fd);
+    DIR *d = fd >= 0 ? fdopendir(fd) : NULL;
+    if (!d) {
+        if (fd >= 0) close(fd);
+        return;
+    }
+    rewinddir(d);
+    time_t now = time(NULL);
+    const struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        struct stat st;
+        if (fstatat(cache->dir_fd, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(st.st_mode) ||
+            st.st_uid != geteuid())
+            continue;
+        bool stale = false;
+        const char *prefixes[] = {_SL_CACHE_ENTRY_PREFIX, _SL_CACHE_DECODE_PREFIX};
+        for (int i = 0; i < 2; i++) {
+            size_t k = strlen(prefixes[i]);
+            if (strncmp(e->d_name, prefixes[i], k) != 0) continue;
+            char *end;
+            long pid = strtol(e->d_name + k, &end, 10);
+            stale = end != e->d_name + k && *end == '-' && pid > 0 && now - st.st_mtime > 60 &&
+                    kill((pid_t)pid, 0) != 0 && errno == ESRCH;
+        }
+        size_t len = strlen(e->d_name);
+        if (len == 64 + 6 && strcmp(e->d_name + 64, ".slref") == 0)
+            stale = now - st.st_mtime > (time_t)_SL_CACHE_UNUSED_DAYS * 24 * 3600;
+        if (stale && unlinkat(cache->dir_fd, e->d_name, 0) == 0) cache->counts.removed++;
+    }
+    closedir(d);
+}
+
 sl_reference_cache *sl_reference_cache_open(const char *dir, char *why, size_t n) {
     /* The folder and its parent are checked: whoever may write the parent may swap the folder. */
     char parent[1100];
@@ -109,6 +152,7 @@ sl_reference_cache *sl_reference_cache_open(const char *dir, char *why, size_t n
     }
     cache->dir_fd = dir_fd;
     snprintf(cache->dir, sizeof cache->dir, "%s", dir);
+    _sl_sweep(cache);
     return cache;
 }
 
@@ -119,7 +163,7 @@ void sl_reference_cache_close(sl_reference_cache *cache) {
 }
 
 sl_reference_cache_counts sl_reference_cache_counts_of(const sl_reference_cache *cache) {
-    return cache ? cache->counts : (sl_reference_cache_counts){0, 0, 0};
+    return cache ? cache->counts : (sl_reference_cache_counts){0, 0, 0, 0};
 }
 
 const char *sl_reference_cache_dir(const sl_reference_cache *cache) { return cache ? cache->dir : ""; }
@@ -234,7 +278,7 @@ static bool _sl_entry_write(sl_reference_cache *cache, const char *sha256, const
     memcpy(header + 24 + 64, pixels_hash, 64);
     char temporary[80], name[80];
     snprintf(name, sizeof name, "%s.slref", sha256);
-    int fd = _sl_new_file(cache, ".entry-", "", temporary, sizeof temporary);
+    int fd = _sl_new_file(cache, _SL_CACHE_ENTRY_PREFIX, "", temporary, sizeof temporary);
     if (fd < 0) return false;
     bool ok = _sl_write_all(fd, header, sizeof header) && _sl_write_all(fd, image->data, count * sizeof(float));
     ok = close(fd) == 0 && ok;
@@ -248,7 +292,7 @@ static bool _sl_entry_write(sl_reference_cache *cache, const char *sha256, const
 static bool _sl_decode_bytes(sl_reference_cache *cache, const unsigned char *bytes, size_t size, const char *extension,
                              sl_image *out) {
     char temporary[80], path[1300];
-    int fd = _sl_new_file(cache, ".decode-", extension, temporary, sizeof temporary);
+    int fd = _sl_new_file(cache, _SL_CACHE_DECODE_PREFIX, extension, temporary, sizeof temporary);
     if (fd < 0) return false;
     bool ok = _sl_write_all(fd, bytes, size);
     ok = close(fd) == 0 && ok;
@@ -283,6 +327,9 @@ bool sl_reference_cache_read(sl_reference_cache *cache, const char *path, const 
     int found = _sl_entry_read(cache, sha256, out);
     if (found == 1) {
         cache->counts.hits++;
+        char name[80];
+        snprintf(name, sizeof name, "%s.slref", sha256);
+        utimensat(cache->dir_fd, name, NULL, AT_SYMLINK_NOFOLLOW); /* in use: kept by the sweep */
         free(bytes);
         return true;
     }

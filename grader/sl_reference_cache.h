@@ -36,12 +36,14 @@ typedef struct sl_reference_cache_counts {
     int hits;    /* images read from an entry */
     int stored;  /* images decoded and stored */
     int ignored; /* entries there that were not trusted or did not parse */
+    int removed; /* files removed when the folder was opened: a dead grader's temporary ones, and
+                    entries no grade had read for months */
 } sl_reference_cache_counts;
 
 /* This build's cache folder: ../cache/references beside the running program. */
 bool sl_reference_cache_default_dir(char *out, size_t out_size);
 /* Opens the folder `dir`, making it (and its parent) with mode 0700 where
- * missing. NULL, with the reason in `why`, where it cannot be made or is not
+ * missing, and sweeps it (counts.removed). NULL, with the reason in `why`, where it cannot be made or is not
  * the grader's own (another owner, access for group or others, a link). */
 sl_reference_cache *sl_reference_cache_open(const char *dir, char *why, size_t why_size);
 void sl_reference_cache_close(sl_reference_cache *cache);

@@ -4,6 +4,9 @@
 #define _GNU_SOURCE
 #include <stdint.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <time.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -1069,6 +1072,51 @@ static void test_reference_cache_trust(void) {
     cache = sl_reference_cache_open(dir, why, sizeof why);
     CHECK(cache != NULL);
     sl_reference_cache_close(cache);
+
+    /* the sweep on opening: a dead writer's temporary file and an entry unread for a year go; a live
+     * writer's, a fresh one, the entry in use and a file of another name stay */
+    pid_t dead = fork();
+    if (dead == 0) _exit(0);
+    CHECK(dead > 0 && waitpid(dead, NULL, 0) == dead);
+    char dead_temp[800], live_temp[800], fresh_temp[800], old_entry[800], other_file[800];
+    snprintf(dead_temp, sizeof dead_temp, "%s/.entry-%ld-0", dir, (long)dead);
+    snprintf(live_temp, sizeof live_temp, "%s/.decode-%ld-3.exr", dir, (long)getpid());
+    snprintf(fresh_temp, sizeof fresh_temp, "%s/.entry-%ld-1", dir, (long)dead);
+    snprintf(old_entry, sizeof old_entry, "%s/%064d.slref", dir, 7);
+    snprintf(other_file, sizeof other_file, "%s/notes.txt", dir);
+    const char *made[] = {dead_temp, live_temp, fresh_temp, old_entry, other_file};
+    for (int i = 0; i < 5; i++) {
+        FILE *f = fopen(made[i], "wb");
+        CHECK(f && fputs("x", f) >= 0);
+        if (f) fclose(f);
+        struct timespec when[2] = {{time(NULL) - (i == 2 ? 5 : 400L * 24 * 3600), 0}, {0, 0}};
+        when[1] = when[0];
+        CHECK(utimensat(AT_FDCWD, made[i], when, 0) == 0);
+    }
+    struct timespec last_year[2] = {{time(NULL) - 400L * 24 * 3600, 0}, {time(NULL) - 400L * 24 * 3600, 0}};
+    CHECK(utimensat(AT_FDCWD, entry, last_year, 0) == 0);
+    cache = sl_reference_cache_open(dir, why, sizeof why);
+    CHECK(cache != NULL);
+    if (cache) {
+        /* the entry in use is read once (a hit renews it) before a later grade's sweep */
+        CHECK(sl_reference_cache_counts_of(cache).removed == 3); /* dead_temp, old_entry and the year-old entry */
+        sl_reference_cache_close(cache);
+    }
+    CHECK(access(dead_temp, F_OK) != 0 && access(old_entry, F_OK) != 0 && access(entry, F_OK) != 0);
+    CHECK(access(live_temp, F_OK) == 0 && access(fresh_temp, F_OK) == 0 && access(other_file, F_OK) == 0);
+    /* a hit renews the entry's time: stored again (a miss), made a year old while a grade has the
+     * folder open, read (a hit): the next grade's sweep keeps it */
+    cache = sl_reference_cache_open(dir, why, sizeof why);
+    CHECK(cache && sl_reference_cache_read(cache, exr, hash, &got) && sl_reference_cache_counts_of(cache).stored == 1);
+    sl_image_free(&got);
+    CHECK(utimensat(AT_FDCWD, entry, last_year, 0) == 0);
+    CHECK(cache && sl_reference_cache_read(cache, exr, hash, &got) && sl_reference_cache_counts_of(cache).hits == 1);
+    sl_image_free(&got);
+    if (cache) sl_reference_cache_close(cache);
+    cache = sl_reference_cache_open(dir, why, sizeof why);
+    CHECK(cache && sl_reference_cache_counts_of(cache).removed == 0);
+    if (cache) sl_reference_cache_close(cache);
+    CHECK(stat(entry, &st) == 0 && st.st_mtime > time(NULL) - 3600);
     sl_image_free(&decoded);
 }
 
