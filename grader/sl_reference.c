@@ -35,6 +35,17 @@ void sl_reference_load(sl_reference *ref, const char *dir, const sl_manifest *ma
     sl_reference_load_cached(ref, dir, manifest, manifest_error, NULL, c, k);
 }
 
+/* A reference that does not read: where its bytes are not the manifest's either, say so too (staff
+ * then know it was changed or damaged after it was made, not made broken). */
+static void _sl_reference_corrupt(sl_reference *ref, const char *err, const sl_manifest *manifest, const sl_case *c,
+                                  const char *file) {
+    char why[1500];
+    if (manifest && !sl_manifest_verify(manifest, c->name, file, ref->path, why, sizeof why))
+        snprintf(ref->error, sizeof ref->error, "reference corrupt: %s; %s", err, why);
+    else
+        snprintf(ref->error, sizeof ref->error, "reference corrupt: %s", err);
+}
+
 void sl_reference_load_cached(sl_reference *ref, const char *dir, const sl_manifest *manifest,
                               const char *manifest_error, sl_reference_cache *cache, const sl_case *c,
                               const sl_check *k) {
@@ -69,7 +80,7 @@ void sl_reference_load_cached(sl_reference *ref, const char *dir, const sl_manif
         if (!ok && !json_err[0])
             snprintf(json_err, sizeof json_err, "%s: expected light_view, light_projection, shadow_matrix: 16 numbers each", ref->path);
         if (!ok) {
-            snprintf(ref->error, sizeof ref->error, "reference corrupt: %s", json_err);
+            _sl_reference_corrupt(ref, json_err, manifest, c, file);
             return;
         }
         ref->number_count = 48;
@@ -85,7 +96,7 @@ void sl_reference_load_cached(sl_reference *ref, const char *dir, const sl_manif
         }
         char err[512];
         if (!sl_image_read(ref->path, &ref->image, err, sizeof err)) {
-            snprintf(ref->error, sizeof ref->error, "reference corrupt: %s", err);
+            _sl_reference_corrupt(ref, err, manifest, c, file);
             return;
         }
         if (!_sl_reference_fits(ref, c, k)) return;
