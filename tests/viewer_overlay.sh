@@ -18,9 +18,9 @@ problem() { echo "viewer_overlay: $*" >&2; fail=1; }
 # Every picture check in one image_check process (check_image).
 source "$(dirname "$0")/image_checks.sh"
 start_image_check "$check"
-# The headless runs are independent: each viewer's runs are one process (viewer_batch.sh), NAME's output
-# in $work/NAME.log. A run that fails is a problem, except the ones named try-*, looked at below.
-source "$(dirname "$0")/viewer_batch.sh"
+# The headless runs are independent: each viewer's runs are one process (scripts/viewer-batch.sh), NAME's
+# output in $work/NAME.log. A run that fails is a problem, except the ones named try-*, looked at below.
+source "$(dirname "$0")/../scripts/viewer-batch.sh"
 run() { viewer_batch_add "$@"; }
 run_all() {
   local name
