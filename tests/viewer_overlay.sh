@@ -180,6 +180,14 @@ if command -v xvfb-run >/dev/null; then
   done
   grep -qE "\[bottom left\] (B|F|C) " "$work/log" && problem "lab 6's key panel lists keys of labs 2-4"
   check_image label "$work/keys-window.png" 8 330 120 60 || problem "no key panel in the lower left corner"
+  # At 800x450 with lab 6's layers shown (M), the key panel moves up above them: layer 0 (112 px square at
+  # 326,330; its number in the corner) is the same with the overlay as without.
+  xvfb-run -a -s "-screen 0 800x600x24" bash -c 'for o in --overlay --no-overlay; do
+      "$1" --lab 6 --scene cascade_field --size 800x450 --frames 2 --show-map $o --screenshot "$2/layers$o.png" || exit
+    done' layers "$solutions" "$work" >"$work/log-layers" 2>&1 || { cat "$work/log-layers"; problem "the viewer failed in a window"; }
+  check_image text "$work/layers--overlay.png" "$work/layers--no-overlay.png" 326 350 112 90 >"$work/layers.txt"
+  covered=$(sed -nE 's/.*: ([0-9.]+)% of pixels differ.*/\1/p' "$work/layers.txt")
+  [ "$covered" = 0.0 ] || problem "at 800x450 the overlay covers lab 6's layer 0 (${covered:-?}% of it changes)"
   if grep -q "drawing with the solutions code" "$work/log"; then
     grep -qF "U code: solutions" "$work/log" || problem "after U the key panel does not say the solutions' code draws"
   else
