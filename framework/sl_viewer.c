@@ -8,6 +8,9 @@
 #if !defined(_WIN32)
 #include <fcntl.h>
 #include <signal.h>
+#if defined(__linux__)
+#include <sys/prctl.h>
+#endif
 #include <sys/wait.h>
 #include <unistd.h>
 #endif
@@ -447,6 +450,7 @@ static int _sl_viewer_batch(const char *program, const char *path) {
     failed = _sl_batch_run_lines(program, lines, count, 0, -1);
 #else
     int from = 0;
+    pid_t parent = getpid();
     while (from < count) {
         int fds[2] = {-1, -1};
         pid_t pid = -1;
@@ -465,6 +469,10 @@ static int _sl_viewer_batch(const char *program, const char *path) {
         if (pid == 0) {
             close(fds[0]);
             setvbuf(stdout, NULL, _IOLBF, 0); /* what a line says before it dies is kept */
+#if defined(__linux__)
+            prctl(PR_SET_PDEATHSIG, SIGKILL); /* a batch killed (a timeout, a kill) takes its lines with it */
+#endif
+            if (getppid() != parent) _exit(1);
             exit(_sl_batch_run_lines(program, lines, count, from, fds[1]));
         }
         close(fds[1]);
