@@ -11,7 +11,7 @@
 
 enum {
     _SL_LAB6_KEY_COLOURS, _SL_LAB6_KEY_COUNT, _SL_LAB6_KEY_LAMBDA, _SL_LAB6_KEY_BLEND_BAND, _SL_LAB6_KEY_FREEZE,
-    _SL_LAB6_KEY_SNAPPING, _SL_LAB6_KEY_CAMERA_PATH, _SL_LAB6_KEY_FLY,
+    _SL_LAB6_KEY_SNAPPING, _SL_LAB6_KEY_CAMERA_PATH,
 };
 
 const sl_technique_key sl_lab6_keys[] = {
@@ -24,9 +24,6 @@ const sl_technique_key sl_lab6_keys[] = {
      "light boxes", _SL_LAB6_KEY_FREEZE},
     {{GLFW_KEY_T}, "T", "texel snapping", "texel snapping on, off (off: the shimmer it removes)", _SL_LAB6_KEY_SNAPPING},
     {{GLFW_KEY_P}, "P", "camera path", "the camera moves by itself: slide, turn, off", _SL_LAB6_KEY_CAMERA_PATH},
-    /* the viewer polls W A S D Q E every frame; listed here for the help, the panel and the page */
-    {{GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E}, "W A S D Q E", "fly",
-     "fly: forward, left, back, right, down, up (Shift: faster)", _SL_LAB6_KEY_FLY},
     {{0}, NULL, NULL, NULL, 0},
 };
 
@@ -43,7 +40,6 @@ void sl_lab6_key_pressed(sl_view_context *c, const sl_technique_key *k, int code
     case _SL_LAB6_KEY_FREEZE: c->request = SL_VIEW_REQUEST_FREEZE; break;
     case _SL_LAB6_KEY_SNAPPING: cascades->unsnapped = !cascades->unsnapped; break;
     case _SL_LAB6_KEY_CAMERA_PATH: c->request = SL_VIEW_REQUEST_CAMERA_PATH; break;
-    case _SL_LAB6_KEY_FLY: break; /* polled every frame */
     }
 }
 

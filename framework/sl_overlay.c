@@ -439,6 +439,110 @@ static void _sl_draw_lines(sl_overlay *ov, mat4 camera_view_projection, int widt
     glDepthFunc(GL_LESS);
 }
 
+/* ---- Where the panels go ------------------------------------------------
+ * Each corner's panels stack away from it; a line too long for the frame wraps at a space (its rest
+ * indented by two); a panel at the bottom moves up above a label it would cover (the names of what a lab
+ * draws there: lab 6's layers, lab 7's faces); a right-hand panel too wide to sit beside the left ones
+ * starts below (or above) them. */
+#define _SL_MAX_ROWS (2 * _SL_MAX_LINES)
+typedef struct _sl_row {
+    int line, start, length; /* the part of lines[line] this row shows */
+    bool indent;
+} _sl_row;
+typedef struct _sl_layout {
+    _sl_row rows[_SL_MAX_ROWS];
+    int row_count;
+    float panel_x[_SL_MAX_PANELS], panel_y[_SL_MAX_PANELS], panel_w[_SL_MAX_PANELS], panel_h[_SL_MAX_PANELS];
+    bool fits; /* no panel covers another or a label, and all are inside the frame */
+} _sl_layout;
+
+static bool _sl_overlaps(float ax, float ay, float aw, float ah, float bx, float by, float bw, float bh) {
+    return ax < bx + bw && bx < ax + aw && ay < by + bh && by < ay + ah;
+}
+
+static void _sl_lay_out(const sl_overlay *ov, int s, int width, int height, int labels, _sl_layout *L) {
+    const float cw = (float)(SL_OVERLAY_CELL_W * s), ch = (float)(SL_OVERLAY_CELL_H * s);
+    const float margin = (float)(4 * s), pad = (float)(3 * s);
+    int cols = (int)(((float)width - 2 * margin - 2 * pad + (float)s) / cw);
+    if (cols < 12) cols = 12;
+    L->row_count = 0;
+    L->fits = true;
+    int rows[_SL_MAX_PANELS] = {0}, widest[_SL_MAX_PANELS] = {0};
+    for (int i = 0; i < ov->line_count + ov->label_count; i++) {
+        const _sl_text_line *l = &ov->lines[i];
+        if (l->panel < 0) continue;
+        int length = (int)strlen(l->text), start = 0;
+        bool indent = false;
+        do {
+            int room = indent ? cols - 2 : cols, take = length - start;
+            if (take > room) { /* at the last space that fits, or cut */
+                take = room;
+                for (int k = room; k > room / 2; k--)
+                    if (l->text[start + k] == ' ') {
+                        take = k;
+                        break;
+                    }
+            }
+            if (L->row_count < _SL_MAX_ROWS) L->rows[L->row_count++] = (_sl_row){i, start, take, indent};
+            rows[l->panel]++;
+            if (take + (indent ? 2 : 0) > widest[l->panel]) widest[l->panel] = take + (indent ? 2 : 0);
+            start += take;
+            while (start < length && l->text[start] == ' ') start++;
+            indent = true;
+        } while (start < length);
+    }
+    float left_width[2] = {0, 0}; /* widest left panel at the top and at the bottom */
+    for (int p = 0; p < ov->panel_count; p++) {
+        L->panel_w[p] = rows[p] ? (float)widest[p] * cw - (float)s + 2 * pad : 0;
+        L->panel_h[p] = rows[p] ? (float)rows[p] * ch - 2.0f * (float)s + 2 * pad : 0;
+        sl_overlay_corner corner = ov->panels[p].corner;
+        if (corner == SL_OVERLAY_TOP_LEFT && L->panel_w[p] > left_width[0]) left_width[0] = L->panel_w[p];
+        if (corner == SL_OVERLAY_BOTTOM_LEFT && L->panel_w[p] > left_width[1]) left_width[1] = L->panel_w[p];
+    }
+    float next_y[SL_OVERLAY_CORNER_COUNT]; /* how far each corner's stack has grown */
+    for (int c = 0; c < SL_OVERLAY_CORNER_COUNT; c++) next_y[c] = margin;
+    /* Left stacks first, so a right-hand panel too wide to sit beside them can start below (or above) them. */
+    for (int pass = 0; pass < 2; pass++)
+        for (int p = 0; p < ov->panel_count; p++) {
+            sl_overlay_corner corner = ov->panels[p].corner;
+            bool right = corner == SL_OVERLAY_TOP_RIGHT || corner == SL_OVERLAY_BOTTOM_RIGHT;
+            if (right != (pass == 1) || L->panel_w[p] == 0) continue;
+            float w = L->panel_w[p], h = L->panel_h[p];
+            bool bottom = corner == SL_OVERLAY_BOTTOM_LEFT || corner == SL_OVERLAY_BOTTOM_RIGHT;
+            float x = right ? (float)width - margin - w : margin;
+            if (right) {
+                int band = bottom ? 1 : 0;
+                sl_overlay_corner beside = bottom ? SL_OVERLAY_BOTTOM_LEFT : SL_OVERLAY_TOP_LEFT;
+                if (left_width[band] > 0 && x < margin + left_width[band] + margin && next_y[corner] < next_y[beside])
+                    next_y[corner] = next_y[beside];
+            }
+            for (bool moved = bottom; moved;) { /* up above the labels it would cover */
+                moved = false;
+                float y = (float)height - next_y[corner] - h;
+                for (int i = 0; i < ov->line_count + labels; i++) { /* the labels, not the markers' texts */
+                    const _sl_text_line *l = &ov->lines[i];
+                    if (l->panel >= 0) continue;
+                    float lw = (float)strlen(l->text) * cw - (float)s + 2 * pad, lh = ch - 2.0f * (float)s + 2 * pad;
+                    if (_sl_overlaps(x, y, w, h, (float)l->x, (float)l->y, lw, lh)) {
+                        next_y[corner] = (float)height - (float)l->y + margin;
+                        moved = true;
+                    }
+                }
+            }
+            L->panel_x[p] = x;
+            L->panel_y[p] = bottom ? (float)height - next_y[corner] - h : next_y[corner];
+            next_y[corner] += h + margin;
+        }
+    for (int p = 0; p < ov->panel_count && L->fits; p++) {
+        if (L->panel_w[p] == 0) continue;
+        float x = L->panel_x[p], y = L->panel_y[p], w = L->panel_w[p], h = L->panel_h[p];
+        if (x < 0 || y < 0 || x + w > (float)width || y + h > (float)height) L->fits = false;
+        for (int q = p + 1; q < ov->panel_count; q++)
+            if (L->panel_w[q] > 0 && _sl_overlaps(x, y, w, h, L->panel_x[q], L->panel_y[q], L->panel_w[q], L->panel_h[q]))
+                L->fits = false;
+    }
+}
+
 void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, width, height);
@@ -458,12 +562,19 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
             l->x = (int)(marker_xy[m][0] + 12.0f * (float)s);
             l->y = (int)(marker_xy[m][1] + 4.0f * (float)s);
         }
-    const float cw = (float)(SL_OVERLAY_CELL_W * s), ch = (float)(SL_OVERLAY_CELL_H * s);
-    const float margin = (float)(4 * s), pad = (float)(3 * s);
+    /* The auto scale (sl_overlay_scale_for) comes down a step at a time while the panels would overlap each
+     * other or the labels (a lecture's text in a small window); a scale set with sl_overlay_set_scale stays. */
+    static _sl_layout layout;
+    for (;; s--) {
+        _sl_lay_out(ov, s, width, height, labels_before, &layout);
+        if (layout.fits || ov->scale > 0 || s <= 1) break;
+    }
+    const _sl_layout *L = &layout;
+    const float cw = (float)(SL_OVERLAY_CELL_W * s), ch = (float)(SL_OVERLAY_CELL_H * s), pad = (float)(3 * s);
     const float *backing = ov->lecture ? _sl_lecture_backing_rgb : _sl_backing_rgb;
     const float backing_alpha = ov->lecture ? _SL_LECTURE_BACKING_ALPHA : _SL_BACKING_ALPHA;
     int total = ov->line_count + ov->label_count;
-    /* Per glyph a quad, per panel and label a backing: 48 floats each. */
+    /* Per glyph a quad, per panel and label a backing: 48 floats each (a wrapped line's indent is no glyph). */
     size_t chars = 0;
     for (int i = 0; i < total; i++) chars += strlen(ov->lines[i].text) + 1;
     if (!_sl_reserve(ov, (chars + (size_t)ov->panel_count + 1) * 48)) {
@@ -473,52 +584,10 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
     /* Backings first (they are drawn under the text), then the glyphs. */
     float *v = ov->vertices;
     size_t n = 0;
-    float next_y[SL_OVERLAY_CORNER_COUNT]; /* how far each corner's stack has grown */
-    for (int c = 0; c < SL_OVERLAY_CORNER_COUNT; c++) next_y[c] = margin;
-    float panel_x[_SL_MAX_PANELS], panel_y[_SL_MAX_PANELS], panel_w[_SL_MAX_PANELS], panel_h[_SL_MAX_PANELS];
-    float left_width[2] = {0, 0}; /* widest left panel at the top and at the bottom */
-    for (int p = 0; p < ov->panel_count; p++) {
-        int rows = 0;
-        size_t cols = 0;
-        for (int i = 0; i < total; i++)
-            if (ov->lines[i].panel == p) {
-                rows++;
-                size_t len = strlen(ov->lines[i].text);
-                if (len > cols) cols = len;
-            }
-        panel_w[p] = rows ? (float)cols * cw - (float)s + 2 * pad : 0;
-        panel_h[p] = rows ? (float)rows * ch - 2.0f * (float)s + 2 * pad : 0;
-        sl_overlay_corner corner = ov->panels[p].corner;
-        if (corner == SL_OVERLAY_TOP_LEFT && panel_w[p] > left_width[0]) left_width[0] = panel_w[p];
-        if (corner == SL_OVERLAY_BOTTOM_LEFT && panel_w[p] > left_width[1]) left_width[1] = panel_w[p];
-    }
-    /* Left stacks first, so a right-hand panel too wide to sit beside them
-     * can start below (or above) them instead of covering them. */
-    for (int pass = 0; pass < 2; pass++) {
-      for (int p = 0; p < ov->panel_count; p++) {
-        sl_overlay_corner corner = ov->panels[p].corner;
-        bool right = corner == SL_OVERLAY_TOP_RIGHT || corner == SL_OVERLAY_BOTTOM_RIGHT;
-        if (right != (pass == 1)) continue;
-        if (panel_w[p] == 0) {
-            panel_x[p] = panel_y[p] = -1;
-            continue;
-        }
-        float w = panel_w[p], h = panel_h[p];
-        bool bottom = corner == SL_OVERLAY_BOTTOM_LEFT || corner == SL_OVERLAY_BOTTOM_RIGHT;
-        float x = right ? (float)width - margin - w : margin;
-        if (right) {
-            int band = bottom ? 1 : 0;
-            sl_overlay_corner beside = bottom ? SL_OVERLAY_BOTTOM_LEFT : SL_OVERLAY_TOP_LEFT;
-            if (left_width[band] > 0 && x < margin + left_width[band] + margin && next_y[corner] < next_y[beside])
-                next_y[corner] = next_y[beside];
-        }
-        float y = bottom ? (float)height - next_y[corner] - h : next_y[corner];
-        next_y[corner] += h + margin;
-        panel_x[p] = x + pad;
-        panel_y[p] = y + pad;
-        n += _sl_quad(v + n, x, y, x + w, y + h, SL_FONT_SOLID, backing, backing_alpha);
-      }
-    }
+    for (int p = 0; p < ov->panel_count; p++)
+        if (L->panel_w[p] > 0)
+            n += _sl_quad(v + n, L->panel_x[p], L->panel_y[p], L->panel_x[p] + L->panel_w[p],
+                          L->panel_y[p] + L->panel_h[p], SL_FONT_SOLID, backing, backing_alpha);
     for (int i = 0; i < total; i++) {
         const _sl_text_line *l = &ov->lines[i];
         if (l->panel >= 0) continue;
@@ -527,14 +596,17 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
                       backing_alpha);
     }
     int row[_SL_MAX_PANELS] = {0};
+    for (int r = 0; r < L->row_count; r++) {
+        const _sl_row *w = &L->rows[r];
+        const _sl_text_line *l = &ov->lines[w->line];
+        char part[_SL_LINE_CHARS];
+        snprintf(part, sizeof part, "%s%.*s", w->indent ? "  " : "", w->length, l->text + w->start);
+        n += _sl_text(v + n, part, L->panel_x[l->panel] + pad, L->panel_y[l->panel] + pad + (float)row[l->panel]++ * ch,
+                      s, l->rgb);
+    }
     for (int i = 0; i < total; i++) {
         const _sl_text_line *l = &ov->lines[i];
-        if (l->panel >= 0) {
-            if (panel_x[l->panel] < 0) continue;
-            n += _sl_text(v + n, l->text, panel_x[l->panel], panel_y[l->panel] + (float)row[l->panel]++ * ch, s, l->rgb);
-        } else {
-            n += _sl_text(v + n, l->text, (float)l->x + pad, (float)l->y + pad, s, l->rgb);
-        }
+        if (l->panel < 0) n += _sl_text(v + n, l->text, (float)l->x + pad, (float)l->y + pad, s, l->rgb);
     }
     ov->label_count = labels_before; /* the markers' texts were for this draw */
     if (n == 0) return;

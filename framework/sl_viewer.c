@@ -5,6 +5,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if !defined(_WIN32)
+#include <fcntl.h>
+#include <signal.h>
+#if defined(__linux__)
+#include <sys/prctl.h>
+#endif
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
 
 #include "sl_bench.h"
 #include "sl_case_view.h"
@@ -335,43 +344,53 @@ static int _sl_batch_split(const char *line, char *text, char **words, const cha
     }
 }
 
-/* --batch FILE: each line a viewer command line, run here one after another (the image module and the
- * GL drivers load once). Every run starts from the same state as a process of its own. */
-static int _sl_viewer_batch(const char *program, const char *path) {
-    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
-    if (!f) {
-        fprintf(stderr, "shadowlab: --batch: cannot read %s: %s\n", path, strerror(errno));
-        return 2;
-    }
-    char *line = NULL;
-    size_t capacity = 0;
-    int line_number = 0, failed = 0;
-    while (getline(&line, &capacity, f) >= 0) {
-        line_number++;
-        size_t length = strlen(line);
+/* How far a batch's runs got: the line being run (0 between lines) and the index of the next line to run.
+ * Written to the parent that started the process running them (_sl_viewer_batch) as each line starts and
+ * ends, on a pipe (`fd`, -1: none). */
+typedef struct _sl_batch_progress {
+    int running;
+    int next;
+} _sl_batch_progress;
+
+static void _sl_batch_note(int fd, int running, int next) {
+#if !defined(_WIN32)
+    _sl_batch_progress p = {running, next};
+    if (fd >= 0 && write(fd, &p, sizeof p) != (ssize_t)sizeof p) {} /* the parent is gone: nothing to tell */
+#else
+    (void)fd, (void)running, (void)next;
+#endif
+}
+
+/* Lines[from..] of a batch, run here one after another (the image module and the GL drivers load once).
+ * Every run starts from the same state as a process of its own. Returns 1 if a line failed. */
+static int _sl_batch_run_lines(const char *program, char **lines, int count, int from, int progress) {
+    int failed = 0;
+    for (int i = from; i < count; i++) {
+        int line_number = i + 1;
+        size_t length = strlen(lines[i]);
         char *text = malloc(2 * length + 2);
         char **argv = malloc((length + 3) * sizeof *argv);
         if (!text || !argv) {
             free(text);
             free(argv);
             fprintf(stderr, "shadowlab: --batch: out of memory at line %d\n", line_number);
-            failed = 1;
-            break;
+            return 1;
         }
         const char *why = NULL;
-        int words = _sl_batch_split(line, text, argv + 1, &why);
+        int words = _sl_batch_split(lines[i], text, argv + 1, &why);
         if (words != 0) {
             printf("shadowlab: batch line %d\n", line_number);
             fflush(stdout);
             fprintf(stderr, "shadowlab: batch line %d\n", line_number);
+            _sl_batch_note(progress, line_number, i);
             int status = 2;
             if (words < 0) fprintf(stderr, "shadowlab: --batch: line %d: %s\n", line_number, why);
             else {
                 argv[0] = (char *)program;
                 argv[words + 1] = NULL;
                 const char *refused = NULL;
-                for (int i = 1; i <= words && !refused; i++)
-                    if (strcmp(argv[i], "--batch") == 0 || strcmp(argv[i], "--bench") == 0) refused = argv[i];
+                for (int k = 1; k <= words && !refused; k++)
+                    if (strcmp(argv[k], "--batch") == 0 || strcmp(argv[k], "--bench") == 0) refused = argv[k];
                 if (refused)
                     fprintf(stderr, "shadowlab: --batch: line %d has %s: a batch's lines are viewer runs\n",
                             line_number, refused);
@@ -384,15 +403,116 @@ static int _sl_viewer_batch(const char *program, const char *path) {
             fflush(stdout);
             if (status != 0) failed = 1;
         }
+        _sl_batch_note(progress, 0, i + 1);
         free(text);
         free(argv);
     }
-    if (ferror(f)) {
+    return failed;
+}
+
+/* --batch FILE ("-": stdin): each line a viewer command line. The lines run one after another in one
+ * process; where a system has fork, that process is a child of this one, and when a line kills it (a
+ * crash, a signal, an exit in the middle of a run), that line alone fails (its end marked with 128 + the
+ * signal, or its exit status) and the lines after it run on in a new process. */
+static int _sl_viewer_batch(const char *program, const char *path) {
+    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
+    if (!f) {
         fprintf(stderr, "shadowlab: --batch: cannot read %s: %s\n", path, strerror(errno));
-        failed = 1;
+        return 2;
+    }
+    /* read whole: a process that starts after a line that died reads from there, stdin or not */
+    char **lines = NULL, *line = NULL;
+    size_t capacity = 0;
+    int count = 0, failed = 0;
+    while (getline(&line, &capacity, f) >= 0) {
+        char **more = realloc(lines, (size_t)(count + 1) * sizeof *lines);
+        if (!more || !(more[count] = strdup(line))) {
+            lines = more ? more : lines;
+            fprintf(stderr, "shadowlab: --batch: out of memory at line %d\n", count + 1);
+            failed = 2;
+            break;
+        }
+        lines = more;
+        count++;
+    }
+    if (!failed && ferror(f)) {
+        fprintf(stderr, "shadowlab: --batch: cannot read %s: %s\n", path, strerror(errno));
+        failed = 2;
     }
     free(line);
     if (f != stdin) fclose(f);
+    if (failed) {
+        for (int i = 0; i < count; i++) free(lines[i]);
+        free(lines);
+        return failed;
+    }
+#if defined(_WIN32)
+    failed = _sl_batch_run_lines(program, lines, count, 0, -1);
+#else
+    int from = 0;
+    pid_t parent = getpid();
+    while (from < count) {
+        int fds[2] = {-1, -1};
+        pid_t pid = -1;
+        fflush(stdout);
+        fflush(stderr);
+        if (pipe(fds) == 0) {
+            fcntl(fds[0], F_SETFD, FD_CLOEXEC);
+            fcntl(fds[1], F_SETFD, FD_CLOEXEC);
+            pid = fork();
+        }
+        if (pid < 0) { /* no process of its own: the lines run here */
+            if (fds[0] >= 0) close(fds[0]), close(fds[1]);
+            failed |= _sl_batch_run_lines(program, lines, count, from, -1);
+            break;
+        }
+        if (pid == 0) {
+            close(fds[0]);
+            setvbuf(stdout, NULL, _IOLBF, 0); /* what a line says before it dies is kept */
+#if defined(__linux__)
+            prctl(PR_SET_PDEATHSIG, SIGKILL); /* a batch killed (a timeout, a kill) takes its lines with it */
+#endif
+            if (getppid() != parent) _exit(1);
+            exit(_sl_batch_run_lines(program, lines, count, from, fds[1]));
+        }
+        close(fds[1]);
+        _sl_batch_progress got = {0, from}, p;
+        ssize_t n;
+        while ((n = read(fds[0], &p, sizeof p)) == (ssize_t)sizeof p || (n < 0 && errno == EINTR))
+            if (n > 0) got = p;
+        close(fds[0]);
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+        int running = got.running, next = got.next;
+        if (WIFEXITED(status) && running == 0 && next >= count) {
+            failed |= WEXITSTATUS(status) != 0;
+            break;
+        }
+        failed = 1;
+        char how[96];
+        int code;
+        if (WIFSIGNALED(status)) {
+            code = 128 + WTERMSIG(status);
+            snprintf(how, sizeof how, "was killed by signal %d (%s)", WTERMSIG(status), strsignal(WTERMSIG(status)));
+        } else {
+            code = WIFEXITED(status) && WEXITSTATUS(status) ? WEXITSTATUS(status) : 1;
+            snprintf(how, sizeof how, "exited with status %d", WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+        }
+        if (running == 0) { /* between two lines: none to blame */
+            fprintf(stderr, "shadowlab: --batch: the viewer %s after line %d\n", how, next);
+            if (next == from) break; /* not one line further: it would again */
+            from = next;
+            continue;
+        }
+        fprintf(stderr, "shadowlab: --batch: line %d: the viewer %s%s\n", running, how,
+                running < count ? "; the lines after it run in a new process" : "");
+        printf("shadowlab: batch line %d: exit %d\n", running, code);
+        fflush(stdout);
+        from = running;
+    }
+#endif
+    for (int i = 0; i < count; i++) free(lines[i]);
+    free(lines);
     return failed;
 }
 

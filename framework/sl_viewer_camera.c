@@ -30,35 +30,6 @@ void _sl_viewer_freeze(_sl_viewer *v, bool on) {
     }
 }
 
-/* A key held down: in the window, or on the --serve page. */
-static bool _sl_held(_sl_viewer *v, GLFWwindow *w, int key) {
-    return w ? glfwGetKey(w, key) == GLFW_PRESS : sl_serve_key_down(v->serve, key);
-}
-
-/* Lab 6's long scenes: W A S D fly along the view and across it, Q E down and up; Shift is five times faster. */
-void _sl_viewer_fly(_sl_viewer *v, GLFWwindow *w, double now) {
-    double dt = v->last_frame_time > 0 ? now - v->last_frame_time : 0;
-    v->last_frame_time = now;
-    if (dt <= 0 || dt > 0.5) return;
-    float speed = (float)dt * 8.0f *
-                  (_sl_held(v, w, GLFW_KEY_LEFT_SHIFT) || _sl_held(v, w, GLFW_KEY_RIGHT_SHIFT)
-                       ? 5.0f : 1.0f);
-    sl_camera *cam = &v->scene.camera;
-    vec3 forward, right, move = {0, 0, 0};
-    glm_vec3_sub(cam->target, cam->position, forward);
-    glm_vec3_normalize(forward);
-    glm_vec3_cross(forward, (vec3){0, 1, 0}, right);
-    glm_vec3_normalize(right);
-    if (_sl_held(v, w, GLFW_KEY_W)) glm_vec3_muladds(forward, speed, move);
-    if (_sl_held(v, w, GLFW_KEY_S)) glm_vec3_muladds(forward, -speed, move);
-    if (_sl_held(v, w, GLFW_KEY_D)) glm_vec3_muladds(right, speed, move);
-    if (_sl_held(v, w, GLFW_KEY_A)) glm_vec3_muladds(right, -speed, move);
-    if (_sl_held(v, w, GLFW_KEY_E)) move[1] += speed;
-    if (_sl_held(v, w, GLFW_KEY_Q)) move[1] -= speed;
-    glm_vec3_add(cam->position, move, cam->position);
-    glm_vec3_add(cam->target, move, cam->target);
-}
-
 /* Turns the light about the vertical axis: a sun's direction; a spot or point
  * light's position about the point it aims at on the ground, so it keeps
  * lighting the same place. */

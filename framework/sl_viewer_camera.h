@@ -1,5 +1,5 @@
 /* sl_viewer_camera: the viewer's camera and light (private to the viewer's modules): the arrows'
- * light moves, the turning light, lab 6's frozen frustum seen from above, flying, the camera path. */
+ * light moves, the turning light, lab 6's frozen frustum seen from above, the camera path. */
 #ifndef SL_VIEWER_CAMERA_H
 #define SL_VIEWER_CAMERA_H
 
@@ -11,8 +11,6 @@
 void _sl_viewer_move_light(sl_light *light, float yaw, float pitch);
 /* Freezes the cascades on the current camera and looks at its frustum from above, or goes back. */
 void _sl_viewer_freeze(_sl_viewer *v, bool on);
-/* W A S D Q E held (in the window `w`, or on the --serve page when w is NULL) move the camera. */
-void _sl_viewer_fly(_sl_viewer *v, GLFWwindow *w, double now);
 /* Turns the light about the vertical axis by `angle` radians. */
 void _sl_viewer_animate_light(sl_light *l, float angle);
 /* The camera path at `phase` (0..1 a period) for this frame. */

@@ -21,7 +21,7 @@
 typedef enum _sl_action {
     _SL_KEY_LAB, _SL_KEY_VISIBILITY, _SL_KEY_MAP, _SL_KEY_COMPARE, _SL_KEY_BIAS, _SL_KEY_BIAS_MODE, _SL_KEY_FILTER,
     _SL_KEY_KERNEL, _SL_KEY_LIGHT, _SL_KEY_OVERLAY, _SL_KEY_FRUSTUM, _SL_KEY_ANIMATE, _SL_KEY_SCREENSHOT,
-    _SL_KEY_CODE, _SL_KEY_QUIT,
+    _SL_KEY_CODE, _SL_KEY_FLY, _SL_KEY_QUIT,
 } _sl_action;
 
 /* The keys of every lab. A technique's key panel lists the ones it names (sl_technique.panel_keys) with its
@@ -50,6 +50,10 @@ static const sl_technique_key _sl_common_keys[] = {
     {{GLFW_KEY_X}, "X", "screenshot", "screenshot of the window, overlay included (shadowlab-NNN.png)",
      _SL_KEY_SCREENSHOT},
     {{GLFW_KEY_U}, "U", "code", "student or solutions code (builds that carry both)", _SL_KEY_CODE},
+    /* held, not pressed: the viewer polls them every frame (_sl_viewer_fly), but a letter a lab takes for
+     * its own key (lab 7's S) is that key there */
+    {{GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E}, "W A S D Q E", "fly",
+     "fly: forward, left, back, right, down, up (Shift: faster)", _SL_KEY_FLY},
     {{GLFW_KEY_ESCAPE}, "Esc", "quit", "quit", _SL_KEY_QUIT},
     {{0}, NULL, NULL, NULL, 0},
 };
@@ -163,10 +167,63 @@ static void _sl_act(_sl_viewer *v, GLFWwindow *w, const _sl_key_binding *b, int 
         if (!v->second_functions) printf("shadowlab: this build has no second lab code to switch to (U)\n");
         else v->show_second = !v->show_second;
         break;
+    case _SL_KEY_FLY: break; /* held keys, polled every frame (_sl_viewer_fly) */
     case _SL_KEY_QUIT:
         if (w) glfwSetWindowShouldClose(w, GLFW_TRUE);
         break;
     }
+}
+
+/* A key held down: in the window, or on the --serve page. */
+static bool _sl_held(_sl_viewer *v, GLFWwindow *w, int key) {
+    return w ? glfwGetKey(w, key) == GLFW_PRESS : sl_serve_key_down(v->serve, key);
+}
+
+/* A fly key held down, where the lab in use leaves it to fly. */
+static bool _sl_flying(_sl_viewer *v, GLFWwindow *w, int key) {
+    const _sl_key_binding *b = _sl_binding(v->params.lab, key);
+    return b && _sl_is_common(b, _SL_KEY_FLY) && _sl_held(v, w, key);
+}
+
+/* W A S D fly along the view and across it, Q E down and up (lab 6's long scenes above all); Shift is five
+ * times faster. */
+void _sl_viewer_fly(_sl_viewer *v, GLFWwindow *w, double now) {
+    double dt = v->last_frame_time > 0 ? now - v->last_frame_time : 0;
+    v->last_frame_time = now;
+    if (dt <= 0 || dt > 0.5) return;
+    float speed = (float)dt * 8.0f *
+                  (_sl_held(v, w, GLFW_KEY_LEFT_SHIFT) || _sl_held(v, w, GLFW_KEY_RIGHT_SHIFT)
+                       ? 5.0f : 1.0f);
+    sl_camera *cam = &v->scene.camera;
+    vec3 forward, right, move = {0, 0, 0};
+    glm_vec3_sub(cam->target, cam->position, forward);
+    glm_vec3_normalize(forward);
+    glm_vec3_cross(forward, (vec3){0, 1, 0}, right);
+    glm_vec3_normalize(right);
+    if (_sl_flying(v, w, GLFW_KEY_W)) glm_vec3_muladds(forward, speed, move);
+    if (_sl_flying(v, w, GLFW_KEY_S)) glm_vec3_muladds(forward, -speed, move);
+    if (_sl_flying(v, w, GLFW_KEY_D)) glm_vec3_muladds(right, speed, move);
+    if (_sl_flying(v, w, GLFW_KEY_A)) glm_vec3_muladds(right, -speed, move);
+    if (_sl_flying(v, w, GLFW_KEY_E)) move[1] += speed;
+    if (_sl_flying(v, w, GLFW_KEY_Q)) move[1] -= speed;
+    glm_vec3_add(cam->position, move, cam->position);
+    glm_vec3_add(cam->target, move, cam->target);
+}
+
+/* The names of binding `b`'s keys in lab `lab`: its own, or where the lab takes some of a common binding's
+ * letters for keys of its own (lab 7's S of W A S D Q E), the letters it leaves. */
+static const char *_sl_names_in(int lab, const _sl_key_binding *b, char *out, size_t n) {
+    bool taken = false, letters = true;
+    for (int k = 0; k < SL_TECHNIQUE_KEY_CODES && b->key->codes[k]; k++) {
+        taken |= _sl_binding(lab, b->key->codes[k]) != b;
+        letters &= b->key->codes[k] >= GLFW_KEY_A && b->key->codes[k] <= GLFW_KEY_Z;
+    }
+    if (!taken || !letters) return b->key->names;
+    out[0] = '\0';
+    for (int k = 0; k < SL_TECHNIQUE_KEY_CODES && b->key->codes[k]; k++)
+        if (_sl_binding(lab, b->key->codes[k]) == b && strlen(out) + 3 < n)
+            snprintf(out + strlen(out), n - strlen(out), "%s%c", out[0] ? " " : "", (char)b->key->codes[k]);
+    return out;
 }
 
 /* The setting binding `b` changes, as it is now ("" when it has none to show). */
@@ -327,9 +384,10 @@ void _sl_viewer_key_panel(_sl_viewer *v, const sl_frame_info *info) {
         if (b->technique || _sl_panel_lists(NULL, b->key->names) || _sl_binding(lab, b->key->codes[0]) != b) continue;
         if (_sl_is_common(b, _SL_KEY_CODE) && !v->second_functions) continue;
         if (_sl_is_common(b, _SL_KEY_QUIT) && v->serve) continue; /* a page is closed in the browser */
-        char state[64], item[128];
+        char state[64], item[128], names[32];
         _sl_key_state(v, info, b, state, sizeof state);
-        snprintf(item, sizeof item, "%s %s%s%s", b->key->names, b->key->label, state[0] ? ": " : "", state);
+        snprintf(item, sizeof item, "%s %s%s%s", _sl_names_in(lab, b, names, sizeof names), b->key->label,
+                 state[0] ? ": " : "", state);
         if (line[0] && strlen(line) + 2 + strlen(item) > width) {
             sl_overlay_line(ov, _sl_blue, "%s", line);
             line[0] = '\0';

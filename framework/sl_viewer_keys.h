@@ -14,6 +14,9 @@
 void _sl_viewer_keys_attach(_sl_viewer *v);
 /* A key pressed in window `w` (GLFW's key callback), or with w NULL for the attached viewer. */
 void _sl_viewer_key(GLFWwindow *w, int key, int scancode, int action, int mods);
+/* W A S D Q E held (in the window `w`, or on the --serve page when w is NULL) move the camera, in every lab
+ * but where the lab takes a letter for a key of its own (lab 7's S). */
+void _sl_viewer_fly(_sl_viewer *v, GLFWwindow *w, double now);
 /* The window's key, button, cursor and wheel callbacks. */
 void _sl_viewer_input_callbacks(GLFWwindow *window);
 /* The --serve page's keys, button, pointer and wheel since the last frame. */

@@ -45,12 +45,13 @@ if [ -n "$check" ]; then
     return 2
   }
 fi
-# Every README command is a line of one `VIEWER --batch` (one process: the image module and the GL
-# drivers load once); the arguments are the README's own words, split as a shell would, without running one.
-quote() { local w out=""; for w in "$@"; do out+=" '${w//\'/\'\\\'\'}'"; done; printf '%s\n' "${out# }"; }
+# Every README command is a line of one `VIEWER --batch` (scripts/viewer-batch.sh: one process, the image
+# module and the GL drivers load once); the arguments are the README's own words, split as a shell would,
+# without running one. Each line's output goes to a folder of its own, removed at the end.
+source "$here/scripts/viewer-batch.sh"
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
 readmes=() lines=() names=()
-batch=$out/batch.txt
-: >"$batch"
 for readme in "$here"/labs/lab*/README.md; do
   while IFS= read -r line; do
     [[ $line =~ $pattern ]] || continue
@@ -58,25 +59,16 @@ for readme in "$here"/labs/lab*/README.md; do
     named[$name]=1
     count=$((count + 1))
     read -r -a argv <<<"$args"
-    quote --headless --frames 1 "${argv[@]}" --screenshot "$out/$name" >>"$batch"
+    viewer_batch_add "$count" --headless --frames 1 "${argv[@]}" --screenshot "$out/$name"
     readmes+=("$readme") lines+=("$line") names+=("$name")
   done <"$readme"
 done
-rm -f "$out"/batch.*.log "$out"/batch.*.exit
-if [ "$count" -gt 0 ]; then
-  "$viewer" --batch "$batch" >"$out/batch.log" 2>&1
-  # each line's output (the viewer marks where each starts and how it ended) in batch.N.log, its status in batch.N.exit
-  awk -v dir="$out" '
-    /^shadowlab: batch line [0-9]+: exit [0-9]+$/ { n = $4; sub(":", "", n); print $6 > (dir "/batch." n ".exit"); next }
-    /^shadowlab: batch line [0-9]+$/ { n = $4; next }
-    n { print > (dir "/batch." n ".log") }' "$out/batch.log"
-fi
+[ "$count" -gt 0 ] && viewer_batch_run "$viewer" "$logs"
 for i in "${!names[@]}"; do
   readme=${readmes[$i]} line=${lines[$i]} name=${names[$i]} n=$((i + 1))
-  touch "$out/batch.$n.log"
-  if [ "$(cat "$out/batch.$n.exit" 2>/dev/null)" != 0 ]; then
+  if ! viewer_batch_status "$logs" "$n"; then
     echo "render-readme-figures: ${readme#"$here"/}: '$line' failed:" >&2
-    if [ -f "$out/batch.$n.exit" ]; then cat "$out/batch.$n.log" >&2; else tail -n 20 "$out/batch.log" >&2; fi
+    if [ -f "$logs/$n.exit" ]; then cat "$logs/$n.log" >&2; else tail -n 20 "$logs/batch.log" >&2; fi
     fail=1
     continue
   fi
@@ -91,7 +83,6 @@ for i in "${!names[@]}"; do
     fi
   fi
 done
-[ "$fail" != 0 ] || rm -f "$batch" "$out/batch.log" "$out"/batch.*.log "$out"/batch.*.exit
 [ "$count" -gt 0 ] || { echo "render-readme-figures: no figure commands in labs/*/README.md" >&2; exit 1; }
 if [ -n "$check" ]; then
   for shipped in "$here"/docs/labs/*.png; do

@@ -18,9 +18,9 @@ problem() { echo "viewer_overlay: $*" >&2; fail=1; }
 # Every picture check in one image_check process (check_image).
 source "$(dirname "$0")/image_checks.sh"
 start_image_check "$check"
-# The headless runs are independent: each viewer's runs are one process (viewer_batch.sh), NAME's output
-# in $work/NAME.log. A run that fails is a problem, except the ones named try-*, looked at below.
-source "$(dirname "$0")/viewer_batch.sh"
+# The headless runs are independent: each viewer's runs are one process (scripts/viewer-batch.sh), NAME's
+# output in $work/NAME.log. A run that fails is a problem, except the ones named try-*, looked at below.
+source "$(dirname "$0")/../scripts/viewer-batch.sh"
 run() { viewer_batch_add "$@"; }
 run_all() {
   local name
@@ -175,11 +175,19 @@ if command -v xvfb-run >/dev/null; then
   xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --lab 6 --scene cascade_field --size 640x400 --frames 2 --overlay \
     --keys KU --screenshot "$work/keys-window.png" >"$work/log" 2>&1 || { cat "$work/log"; problem "the viewer failed in a window"; }
   for line in "\[bottom left\] keys, lab 6" "\[bottom left\] K +cascade colours: on" "\[bottom left\] , \. +lambda: 0\.80" \
-              "\[bottom left\] W A S D Q E fly" "\[bottom left\] .*G frustum: off"; do
+              "\[bottom left\] .*W A S D Q E fly" "\[bottom left\] .*G frustum: off"; do
     grep -qE "$line" "$work/log" || problem "the key panel does not say: $line"
   done
   grep -qE "\[bottom left\] (B|F|C) " "$work/log" && problem "lab 6's key panel lists keys of labs 2-4"
   check_image label "$work/keys-window.png" 8 330 120 60 || problem "no key panel in the lower left corner"
+  # At 800x450 with lab 6's layers shown (M), the key panel moves up above them: layer 0 (112 px square at
+  # 326,330; its number in the corner) is the same with the overlay as without.
+  xvfb-run -a -s "-screen 0 800x600x24" bash -c 'for o in --overlay --no-overlay; do
+      "$1" --lab 6 --scene cascade_field --size 800x450 --frames 2 --show-map $o --screenshot "$2/layers$o.png" || exit
+    done' layers "$solutions" "$work" >"$work/log-layers" 2>&1 || { cat "$work/log-layers"; problem "the viewer failed in a window"; }
+  check_image text "$work/layers--overlay.png" "$work/layers--no-overlay.png" 326 350 112 90 >"$work/layers.txt"
+  covered=$(sed -nE 's/.*: ([0-9.]+)% of pixels differ.*/\1/p' "$work/layers.txt")
+  [ "$covered" = 0.0 ] || problem "at 800x450 the overlay covers lab 6's layer 0 (${covered:-?}% of it changes)"
   if grep -q "drawing with the solutions code" "$work/log"; then
     grep -qF "U code: solutions" "$work/log" || problem "after U the key panel does not say the solutions' code draws"
   else
