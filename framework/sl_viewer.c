@@ -410,6 +410,25 @@ static int _sl_batch_run_lines(const char *program, char **lines, int count, int
     return failed;
 }
 
+/* One line of `f` (with its newline), however long, in memory of its own; NULL at the end. fgets,
+ * not getline: Windows' C library has no getline. */
+static char *_sl_batch_read_line(FILE *f) {
+    size_t size = 256, used = 0;
+    char *line = malloc(size);
+    while (line && fgets(line + used, (int)(size - used), f)) {
+        used += strlen(line + used);
+        if (used > 0 && line[used - 1] == '\n') return line;
+        if (size - used > 1) break; /* the last line, without a newline */
+        char *bigger = realloc(line, size * 2);
+        if (!bigger) break;
+        line = bigger;
+        size *= 2;
+    }
+    if (line && used > 0 && !ferror(f)) return line;
+    free(line);
+    return NULL;
+}
+
 /* --batch FILE ("-": stdin): each line a viewer command line. The lines run one after another in one
  * process; where a system has fork, that process is a child of this one, and when a line kills it (a
  * crash, a signal, an exit in the middle of a run), that line alone fails (its end marked with 128 + the
@@ -422,24 +441,22 @@ static int _sl_viewer_batch(const char *program, const char *path) {
     }
     /* read whole: a process that starts after a line that died reads from there, stdin or not */
     char **lines = NULL, *line = NULL;
-    size_t capacity = 0;
     int count = 0, failed = 0;
-    while (getline(&line, &capacity, f) >= 0) {
+    while (!failed && (line = _sl_batch_read_line(f)) != NULL) {
         char **more = realloc(lines, (size_t)(count + 1) * sizeof *lines);
-        if (!more || !(more[count] = strdup(line))) {
-            lines = more ? more : lines;
+        if (!more) {
+            free(line);
             fprintf(stderr, "shadowlab: --batch: out of memory at line %d\n", count + 1);
             failed = 2;
             break;
         }
         lines = more;
-        count++;
+        lines[count++] = line;
     }
     if (!failed && ferror(f)) {
         fprintf(stderr, "shadowlab: --batch: cannot read %s: %s\n", path, strerror(errno));
         failed = 2;
     }
-    free(line);
     if (f != stdin) fclose(f);
     if (failed) {
         for (int i = 0; i < count; i++) free(lines[i]);
