@@ -566,7 +566,10 @@ function checkDeck(win, doc) {
     out.slides.push({
       index: i + 1, title: h ? h.textContent : '', shown: shown === s,
       text: (s.innerText || '').replace(/\s+/g, ' ').trim().length,
-      images: imgs.length, broken: broken, svg: s.querySelectorAll('img[src^="data:image/svg"]').length,
+      // A diagram is an <img> (the deck builder gives pandoc data: URIs); one pandoc put inline
+      // as <svg> counts too (KaTeX's own <svg>s sit inside .katex, never a paragraph's child).
+      images: imgs.length + s.querySelectorAll('section > p > svg, section figure > svg').length, broken: broken,
+      svg: s.querySelectorAll('img[src^="data:image/svg"], section > p > svg, section figure > svg').length,
       katex: kx.length, katexDisplay: s.querySelectorAll('.katex-display').length,
       katexBad: kx.filter(function (k) { return k.getBoundingClientRect().width < 2; }).length,
       katexErrors: s.querySelectorAll('.katex-error').length,
