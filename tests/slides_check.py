@@ -698,6 +698,8 @@ def browser(out, review):
                     s = next((s for s in slides if s["katexDisplay"]), None)
                     if s:
                         picks.append((deck, s["index"]))
+        if not picks:   # a window 0 px high: Chromium would wait for it until the timeout
+            return
         # One screenshot of the picked slides stacked, cut into one PNG per slide.
         frames = "".join(f'<iframe src="{d}#{i}"></iframe>' for d, i in picks)
         with open(shots_page, "w", encoding="utf-8") as f:
