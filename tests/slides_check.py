@@ -566,7 +566,10 @@ function checkDeck(win, doc) {
     out.slides.push({
       index: i + 1, title: h ? h.textContent : '', shown: shown === s,
       text: (s.innerText || '').replace(/\s+/g, ' ').trim().length,
-      images: imgs.length, broken: broken, svg: s.querySelectorAll('img[src^="data:image/svg"]').length,
+      // A diagram is an <img> (the deck builder gives pandoc data: URIs); one pandoc put inline
+      // as <svg> counts too (KaTeX's own <svg>s sit inside .katex, never a paragraph's child).
+      images: imgs.length + s.querySelectorAll('section > p > svg, section figure > svg').length, broken: broken,
+      svg: s.querySelectorAll('img[src^="data:image/svg"], section > p > svg, section figure > svg').length,
       katex: kx.length, katexDisplay: s.querySelectorAll('.katex-display').length,
       katexBad: kx.filter(function (k) { return k.getBoundingClientRect().width < 2; }).length,
       katexErrors: s.querySelectorAll('.katex-error').length,
@@ -695,6 +698,8 @@ def browser(out, review):
                     s = next((s for s in slides if s["katexDisplay"]), None)
                     if s:
                         picks.append((deck, s["index"]))
+        if not picks:   # a window 0 px high: Chromium would wait for it until the timeout
+            return
         # One screenshot of the picked slides stacked, cut into one PNG per slide.
         frames = "".join(f'<iframe src="{d}#{i}"></iframe>' for d, i in picks)
         with open(shots_page, "w", encoding="utf-8") as f:

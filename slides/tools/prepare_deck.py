@@ -12,8 +12,16 @@
 - An image whose figure was left out (OUT/figures/manifest.json: no solutions
   to draw it with and none pre-rendered) becomes a note saying so: never a
   shadowless picture under a shadow caption.
+- Every figure carries its real aspect ratio (`style="aspect-ratio: W / H"`, read
+  from the file), so a browser lays the slide out at the right size before the
+  image is decoded, and an SVG diagram is given to pandoc as a data: URI. Given
+  the file, pandoc 3 (Debian 13) puts the SVG inline as an <svg> element whose
+  width and height attributes (960x500) size it, past the slide's bottom, where
+  the styles' rules for <img> do not reach; every pandoc keeps a data: URI an
+  <img>, so the HTML decks are the same whichever pandoc made them.
 """
 import argparse
+import base64
 import json
 import os
 import re
@@ -23,6 +31,24 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 SOLUTION = re.compile(r"^<!-- solution: *(\S+) +(\S+)(?: +(TODO\([^)]*\)))? *-->$")
 IMAGE = re.compile(r"!\[([^\]]*)\]\((figures/[^)\s]+)\)(\{[^}]*\})?")
+SVG_SIZE = re.compile(r"<svg\b[^>]*?\swidth=\"([0-9.]+)(?:px)?\"[^>]*?\sheight=\"([0-9.]+)(?:px)?\"", re.S)
+SVG_VIEWBOX = re.compile(r"<svg\b[^>]*?\sviewBox=\"\s*[-0-9.]+[\s,]+[-0-9.]+[\s,]+([0-9.]+)[\s,]+([0-9.]+)\s*\"", re.S)
+
+
+def figure_size(path):
+    """(width, height) of a PNG, GIF or SVG file as it declares them, or None."""
+    with open(path, "rb") as f:
+        head = f.read(4096)
+    if head[:8] == b"\x89PNG\r\n\x1a\n" and head[12:16] == b"IHDR":
+        return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+    if head[:6] in (b"GIF87a", b"GIF89a"):
+        return int.from_bytes(head[6:8], "little"), int.from_bytes(head[8:10], "little")
+    if path.endswith(".svg"):
+        text = head.decode("utf-8", "replace")
+        m = SVG_SIZE.search(text) or SVG_VIEWBOX.search(text)
+        if m:
+            return float(m.group(1)), float(m.group(2))
+    return None
 
 
 def function_text(path, name):
@@ -90,7 +116,23 @@ def main():
                 what = f" ({cap})" if cap else ""
                 return (f"[Figure left out{what}: it is drawn with the solutions' code, which this copy does "
                         f"not have; the course's pre-rendered figures fill it in.]{{.left-out}}")
-            return mm.group(0)
+            path = os.path.join(a.out_dir, target)
+            if not os.path.isfile(path):
+                return mm.group(0)   # pandoc names the missing file
+            attrs = (mm.group(3) or "{}")[1:-1].strip()
+            size = figure_size(path)
+            if size and size[0] > 0 and size[1] > 0 and "style=" not in attrs:
+                # One style attribute: pandoc 2.17 writes a second for `width=84%` (browsers read the first).
+                style = [f"aspect-ratio: {size[0]:g} / {size[1]:g}"]
+                width = re.search(r"(?:^|\s)width=([0-9.]+%)", attrs)
+                if width:
+                    style.insert(0, f"width: {width.group(1)}")
+                    attrs = attrs.replace(width.group(0), "")
+                attrs = (attrs + f' style="{"; ".join(style)}"').strip()
+            if target.endswith(".svg"):
+                with open(path, "rb") as f:
+                    target = "data:image/svg+xml;base64," + base64.b64encode(f.read()).decode("ascii")
+            return f"![{mm.group(1)}]({target})" + (f"{{{attrs}}}" if attrs else "")
         out.append(IMAGE.sub(swap, line))
     sys.stdout.write("\n".join(out))
 
