@@ -255,13 +255,13 @@ static void _sl_params_for(const _sl_bench_setup *t, int map_size, sl_render_par
 }
 
 /* Says what kept a frame from drawing the technique in full: stubs, errors, a lower lab. */
-static void _sl_describe_problem(const sl_frame_info *info, const _sl_bench_setup *t, char *out, size_t n) {
+static void _sl_describe_problem(const sl_frame_info *info, const _sl_bench_setup *t, const sl_render_params *params,
+                                 char *out, size_t n) {
     int lab = t->lab;
     out[0] = '\0';
-    size_t len = 0;
-    if (lab == 7 && t->cube_pass == SL_CUBE_PASS_LAYERED && info->cube_map_ready && !info->cube_layered)
-        len += (size_t)snprintf(out + len, n - len, "drew six passes: these labs' lab7_begin_cube_pass has no "
-                                                    "layered pass (SL_CUBE_ALL_FACES)");
+    const sl_technique *technique = sl_technique_of(lab);
+    if (technique && technique->frame_shortfall) technique->frame_shortfall(info, params, out, n);
+    size_t len = strlen(out);
     if (info->lab_in_use == 0)
         len += (size_t)snprintf(out + len, n - len, "drew without shadows: no lab's code ran");
     else if (info->lab_in_use < lab)
@@ -382,7 +382,7 @@ static bool _sl_run_technique(sl_context *ctx, const _sl_bench_options *o, const
     _sl_median_min(frames, o->frames, &res->frame_median, &res->frame_min);
     for (int i = 0; i < res->pass_count; i++)
         _sl_median_min(passes + i * o->frames, o->frames, &res->pass_median[i], &res->pass_min[i]);
-    _sl_describe_problem(sl_renderer_info(&renderer), t, res->problem, sizeof res->problem);
+    _sl_describe_problem(sl_renderer_info(&renderer), t, &params, res->problem, sizeof res->problem);
     sl_program_stats stats;
     sl_renderer_program_stats(&renderer, &stats);
     res->programs = stats.builds;

@@ -114,10 +114,11 @@ static bool _sl_render_student(_sl_case_view *v, sl_image *out) {
     return sl_capture_framebuffer(v->target_fbo, c->width, c->height, kind == SL_CHECK_IMAGE ? 3 : 1, out);
 }
 
-/* The surfaces facing the light, as the runner captures them for a visibility check (from lab 2 on). */
+/* The surfaces facing the light, where the runner captures them for this check (sl_check_captures says
+ * when: the case decides, the same for the runner and here). */
 static bool _sl_render_lit_mask(_sl_case_view *v, sl_image *out) {
     const sl_case *c = &v->c;
-    if (c->lab < 2) return false;
+    if (!(sl_check_captures(c, v->check) & 1u << SL_CAPTURE_LIT_MASK)) return false;
     sl_scene scene = c->scene;
     sl_render_params p = c->params;
     scene.light = c->frame_lights[c->frame_count > 0 ? c->frame_count - 1 : 0];

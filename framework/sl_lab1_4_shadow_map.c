@@ -1,213 +1,21 @@
 /* sl_lab1_4_shadow_map: labs 1-4's technique, the shadow-map frame (see sl_renderer.h for its steps), and
  * the camera pass lab 5 draws with its moments. Lab 1's descriptor (sl_lab1_technique, in the table of
  * sl_technique.h) draws every frame no other technique takes; labs 2-4 add their steps to it, and the
- * frame steps down to the highest lab whose code runs. */
+ * frame steps down to the highest lab whose code runs. The programs it draws with: sl_lab1_4_programs.c. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "sl_renderer.h"
 #include "sl_probe_calls.h"
+#include "sl_lab1_4_programs.h"
 #include "sl_lab1_4_viewer.h"
 #include "sl_technique.h"
 
 /* Calls lab N's function fn through the renderer's table, recording what it returned. */
 #define _SL_CALL_LAB(r, N, fn, ...) \
     (sl_renderer_lab_enter(#fn), sl_renderer_lab_result((r), #fn, (r)->fns[N]->fn(__VA_ARGS__)))
-
-/* ---- Programs ---------------------------------------------------------------
- * Each program is built the first time a frame needs it, then kept. The camera
- * pass has one program per lab and per setting that changes its code (compare
- * type, bias mode, filter, grid radius): those settings reach the GLSL as
- * preprocessor defines, so a program holds only the code of its own technique.
- * A software rasteriser runs every branch a pixel might take, and loops with
- * constant bounds unroll. Uniform locations are looked up once per build. */
-
-/* Every uniform the framework sets, as u_<name> in the GLSL. */
-#define _SL_UNIFORMS(X)                                                                                   \
-    X(model) X(normal_matrix) X(albedo) X(view) X(projection) X(shadow_matrix) X(light_view_projection)   \
-    X(light_position) X(light_direction) X(light_radiance) X(spot_cos) X(shadows) X(output) X(depth_bias) \
-    X(second_map) X(slope_bias) X(max_bias) X(normal_offset) X(texel_size) X(poisson_radius)              \
-    X(light_size_uv) X(light_near) X(light_far) X(shadow_map) X(texture) X(perspective) X(near) X(far)    \
-    X(moments) X(min_variance) X(bleeding)
-
-typedef struct _sl_uniforms {
-#define _SL_UNIFORM_FIELD(name) GLint name;
-    _SL_UNIFORMS(_SL_UNIFORM_FIELD)
-#undef _SL_UNIFORM_FIELD
-} _sl_uniforms;
-
-typedef struct _sl_slot {
-    sl_program program;
-    _sl_uniforms u;
-    GLuint located; /* the program id u belongs to: a rebuild changes the id */
-    bool attempted;
-    bool compiles;  /* the latest build succeeded (after a failed rebuild, the program is the one before) */
-} _sl_slot;
-
-/* What a camera-pass program is built for: each field is a compile-time constant in its GLSL. */
-typedef struct _sl_variant_key {
-    int lab;         /* 0: no shadows (plain.frag); 2, 3 or 4: scene.frag, scene_bias.frag, scene_filter.frag */
-    int light_type;  /* SL_LIGHT_TYPE */
-    bool hardware;   /* sampler2DShadow */
-    int bias_mode;   /* labs 3-4: SL_BIAS_MODE */
-    int filter_mode; /* lab 4: SL_FILTER_MODE */
-    int grid_radius; /* lab 4's grid: SL_GRID_RADIUS */
-} _sl_variant_key;
-
-typedef struct _sl_variant {
-    _sl_variant_key key;
-    _sl_slot slot;
-    bool stale;              /* its files changed while another program was in use: rebuild when used */
-    unsigned long last_used; /* frame number */
-} _sl_variant;
-
-/* Enough for every setting an instructor cycles through in a lecture; the
- * least recently used program makes room beyond that. */
-#define _SL_MAX_VARIANTS 32
-
-struct _sl_programs {
-    _sl_slot depth, debug;
-    _sl_variant variants[_SL_MAX_VARIANTS];
-    int variant_count;
-    int builds;
-    double build_ms;
-};
-
-/* The programs, made by the first frame (the renderer's technique_state[1]); NULL when out of memory. */
-static struct _sl_programs *_sl_programs_of(sl_renderer *r) {
-    if (!r->technique_state[1]) r->technique_state[1] = calloc(1, sizeof(struct _sl_programs));
-    return r->technique_state[1];
-}
-
-static double _sl_now_ms(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
-}
-
-static void _sl_path(char *out, size_t n, const char *dir, const char *file) { snprintf(out, n, "%s/%s", dir, file); }
-
-/* Builds s from vertex and fragment files (each under its own folder); the error goes to shader_errors[lab]. */
-static bool _sl_slot_build(sl_renderer *r, _sl_slot *s, const char *vs_dir, const char *vs_file, const char *fs_dir,
-                           const char *fs_file, const char *defines, int lab) {
-    char vs[SL_PATH_MAX * 2], fs[SL_PATH_MAX * 2];
-    _sl_path(vs, sizeof vs, vs_dir, vs_file);
-    _sl_path(fs, sizeof fs, fs_dir, fs_file);
-    sl_shader_desc desc = {
-        .vertex_path = vs,
-        .fragment_path = fs,
-        .search_dirs = {r->labs_dir, r->shaders_dir},
-        .defines = defines,
-    };
-    double start = _sl_now_ms();
-    s->attempted = true;
-    bool ok = sl_program_build(&s->program, &desc, r->shader_errors[lab], sizeof r->shader_errors[lab]);
-    s->compiles = ok;
-    _sl_programs_of(r)->builds++;
-    _sl_programs_of(r)->build_ms += _sl_now_ms() - start;
-    return ok;
-}
-
-/* Rebuilds s if its files changed; false (old program kept) with the error in shader_errors[lab]. */
-static bool _sl_slot_reload(sl_renderer *r, _sl_slot *s, int lab, bool *reloaded) {
-    char e[sizeof r->shader_errors[0]];
-    double start = _sl_now_ms();
-    bool rebuilt = sl_program_reload_if_changed(&s->program, e, sizeof e);
-    if (rebuilt || e[0]) {
-        _sl_programs_of(r)->builds++;
-        _sl_programs_of(r)->build_ms += _sl_now_ms() - start;
-    }
-    if (rebuilt) {
-        r->shader_errors[lab][0] = '\0';
-        s->compiles = true;
-        if (reloaded) *reloaded = true;
-    } else if (e[0]) {
-        snprintf(r->shader_errors[lab], sizeof r->shader_errors[lab], "%s", e);
-        s->compiles = false;
-        return false;
-    }
-    return true;
-}
-
-static const _sl_uniforms *_sl_uniforms_of(_sl_slot *s) {
-    if (s->located != s->program.id) {
-#define _SL_UNIFORM_LOOKUP(name) s->u.name = glGetUniformLocation(s->program.id, "u_" #name);
-        _SL_UNIFORMS(_SL_UNIFORM_LOOKUP)
-#undef _SL_UNIFORM_LOOKUP
-        s->located = s->program.id;
-    }
-    return &s->u;
-}
-
-/* A framework program (or lab 1's depth program), built on first use; NULL if it does not compile. */
-static _sl_slot *_sl_fixed_program(sl_renderer *r, _sl_slot *s, const char *dir, const char *vs, const char *fs,
-                                   int lab) {
-    if (!s->attempted) _sl_slot_build(r, s, dir, vs, dir, fs, NULL, lab);
-    return s->program.id ? s : NULL;
-}
-
-static _sl_slot *_sl_depth_program(sl_renderer *r) {
-    return _sl_fixed_program(r, &_sl_programs_of(r)->depth, r->labs_dir, "lab1_depth_fbo/shaders/depth.vert",
-                             "lab1_depth_fbo/shaders/depth.frag", 1);
-}
-
-/* The camera-pass shaders of each lab: a lab's fragment shader includes its GLSL and the labs' before it. */
-static const char *const _sl_scene_vertex[SL_RENDERER_MAX_LAB + 1] = {
-    [0] = "plain.vert", [2] = "scene.vert", [3] = "scene.vert", [4] = "scene.vert", [5] = "scene.vert",
-};
-static const char *const _sl_scene_fragment[SL_RENDERER_MAX_LAB + 1] = {
-    [0] = "plain.frag", [2] = "scene.frag", [3] = "scene_bias.frag", [4] = "scene_filter.frag",
-    [5] = "scene_vsm.frag",
-};
-
-static void _sl_variant_defines(const _sl_variant_key *k, char *out, size_t n) {
-    int len = snprintf(out, n, "#define SL_LAB %d\n#define SL_LIGHT_TYPE %d\n", k->lab, k->light_type);
-    if (k->hardware) len += snprintf(out + len, n - (size_t)len, "#define SL_HARDWARE_COMPARE 1\n");
-    if (k->lab >= 3) len += snprintf(out + len, n - (size_t)len, "#define SL_BIAS_MODE %d\n", k->bias_mode);
-    if (k->lab == 4)
-        snprintf(out + len, n - (size_t)len, "#define SL_FILTER_MODE %d\n#define SL_GRID_RADIUS %d\n", k->filter_mode,
-                 k->grid_radius);
-}
-
-/* Field by field: the padding of two equal keys may differ. */
-static bool _sl_same_variant(const _sl_variant_key *a, const _sl_variant_key *b) {
-    return a->lab == b->lab && a->light_type == b->light_type && a->hardware == b->hardware &&
-           a->bias_mode == b->bias_mode && a->filter_mode == b->filter_mode && a->grid_radius == b->grid_radius;
-}
-
-/* The camera-pass program for key, built on first use; NULL if it does not compile. */
-static _sl_slot *_sl_variant_program(sl_renderer *r, const _sl_variant_key *key) {
-    struct _sl_programs *ps = _sl_programs_of(r);
-    _sl_variant *v = NULL;
-    for (int i = 0; i < ps->variant_count && !v; i++)
-        if (_sl_same_variant(&ps->variants[i].key, key)) v = &ps->variants[i];
-    if (v) {
-        v->last_used = r->frame_count;
-        if (v->stale) {
-            v->stale = false;
-            _sl_slot_reload(r, &v->slot, key->lab, NULL);
-        }
-        return v->slot.program.id ? &v->slot : NULL;
-    }
-    if (ps->variant_count < _SL_MAX_VARIANTS) {
-        v = &ps->variants[ps->variant_count++];
-    } else {
-        v = &ps->variants[0];
-        for (int i = 1; i < ps->variant_count; i++)
-            if (ps->variants[i].last_used < v->last_used) v = &ps->variants[i];
-        sl_program_destroy(&v->slot.program);
-    }
-    *v = (_sl_variant){.key = *key, .last_used = r->frame_count};
-    char defines[256];
-    _sl_variant_defines(key, defines, sizeof defines);
-    _sl_slot_build(r, &v->slot, r->shaders_dir, _sl_scene_vertex[key->lab], r->shaders_dir,
-                   _sl_scene_fragment[key->lab], defines, key->lab);
-    return v->slot.program.id ? &v->slot : NULL;
-}
 
 static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_render_params *p) {
     sl_frame_info *info = &r->info;
@@ -241,7 +49,7 @@ static void _sl_light_matrices(sl_renderer *r, const sl_scene *scene, const sl_r
     glm_mat4_identity(info->shadow_matrix);
 }
 
-static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const _sl_uniforms *u, bool colours) {
+static void _sl_draw_objects(sl_renderer *r, const sl_scene *scene, const sl_lab1_4_uniforms *u, bool colours) {
     sl_renderer_draw_objects(r, scene, u->model, colours ? u->normal_matrix : -1, colours ? u->albedo : -1);
 }
 
@@ -250,7 +58,7 @@ static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_r
 
 /* Lab 3's extension: the second surface's depths, into a second map made with
  * lab 1's own functions. The depth program is still bound. */
-static void _sl_second_depth_pass(sl_renderer *r, const sl_scene *scene, const _sl_uniforms *u, int size) {
+static void _sl_second_depth_pass(sl_renderer *r, const sl_scene *scene, const sl_lab1_4_uniforms *u, int size) {
     if (r->second_map_attempted && r->second_map_status == SL_OK && r->second_map.size != size) {
         sl_renderer_lab_enter("lab1_destroy_shadow_map");
         r->fns[1]->lab1_destroy_shadow_map(&r->second_map);
@@ -302,13 +110,13 @@ static int _sl_depth_pass_labs(sl_renderer *r, const sl_scene *scene, const sl_r
     }
     info->shadow_map = r->shadow_map; /* even on failure: the grader inspects what was made */
     if (!sl_renderer_lab_result(r, "lab1_create_shadow_map", r->shadow_map_status)) return 0;
-    _sl_slot *depth = _sl_depth_program(r);
+    sl_lab1_4_slot *depth = sl_lab1_4_depth_program(r);
     if (!depth) {
         info->shader_error = r->shader_errors[1];
         info->shader_error_lab = 1;
         return 0;
     }
-    const _sl_uniforms *u = _sl_uniforms_of(depth);
+    const sl_lab1_4_uniforms *u = sl_lab1_4_uniforms_of(depth);
     if (!_SL_CALL_LAB(r, 1, lab1_begin_depth_pass, &r->shadow_map)) return 0;
     int used = 1;
     if (p->lab >= 3 && _SL_CALL_LAB(r, 3, lab3_depth_pass_state, &p->bias)) used = 3;
@@ -331,10 +139,10 @@ static float _sl_texel_size(const sl_frame_info *info, const sl_light *light, in
 }
 
 /* What lab `lab`'s camera-pass program is compiled for, this frame. */
-static _sl_variant_key _sl_variant_for(const sl_renderer *r, const sl_scene *scene, const sl_render_params *p,
+static sl_lab1_4_variant_key _sl_variant_for(const sl_renderer *r, const sl_scene *scene, const sl_render_params *p,
                                        int lab) {
     bool midpoint = lab == 3 && p->bias.mode == SL_BIAS_MIDPOINT && r->info.second_map_ready;
-    _sl_variant_key key = {.lab = lab, .light_type = (int)scene->light.type};
+    sl_lab1_4_variant_key key = {.lab = lab, .light_type = (int)scene->light.type};
     if (lab < 2) return key; /* no shadows: plain.frag */
     key.hardware = lab >= 4 ? lab == 4 && p->filter.mode == SL_FILTER_HARDWARE
                             : p->compare == SL_COMPARE_HARDWARE && !midpoint;
@@ -350,16 +158,16 @@ static _sl_variant_key _sl_variant_for(const sl_renderer *r, const sl_scene *sce
 /* The camera-pass program of the highest lab, at most *lab, that has one: built now, or the
  * last version that compiled (hot reload). A lab's program includes the GLSL of the labs
  * before it, so when one fails, the error names the earliest lab whose GLSL fails. */
-static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int *lab) {
+static sl_lab1_4_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int *lab) {
     for (; *lab >= 2; (*lab)--) {
-        _sl_variant_key key = _sl_variant_for(r, scene, p, *lab);
-        _sl_slot *slot = _sl_variant_program(r, &key);
+        sl_lab1_4_variant_key key = _sl_variant_for(r, scene, p, *lab);
+        sl_lab1_4_slot *slot = sl_lab1_4_variant_program(r, &key);
         if (slot) return slot;
         if (r->info.shader_error) continue;
         int failed = *lab;
         for (int l = 2; l < *lab && failed == *lab; l++) {
-            _sl_variant_key lower = _sl_variant_for(r, scene, p, l);
-            _sl_slot *lower_slot = _sl_variant_program(r, &lower);
+            sl_lab1_4_variant_key lower = _sl_variant_for(r, scene, p, l);
+            sl_lab1_4_slot *lower_slot = sl_lab1_4_variant_program(r, &lower);
             if (!lower_slot || !lower_slot->compiles) failed = l;
         }
         r->info.shader_error = r->shader_errors[failed];
@@ -373,7 +181,7 @@ static _sl_slot *_sl_camera_program(sl_renderer *r, const sl_scene *scene, const
  * cube maps draw their own frame: a later lab on a spot or sun is the labs' before). */
 static int _sl_planar_lab(int lab) {
     if (lab > SL_RENDERER_MAX_LAB) lab = SL_RENDERER_MAX_LAB;
-    while (lab > 2 && !_sl_scene_fragment[lab]) lab--;
+    while (lab > 2 && !sl_lab1_4_has_camera_pass(lab)) lab--;
     return lab;
 }
 
@@ -381,8 +189,8 @@ static int _sl_planar_lab(int lab) {
  * this frame: lab 2's matrices are there and its shaders compile. */
 static bool _sl_technique_camera_draws(sl_renderer *r, const sl_scene *scene, const sl_render_params *p, int lab) {
     if (!r->info.lab2_ready) return false;
-    _sl_variant_key key = _sl_variant_for(r, scene, p, lab);
-    return _sl_variant_program(r, &key) != NULL;
+    sl_lab1_4_variant_key key = _sl_variant_for(r, scene, p, lab);
+    return sl_lab1_4_variant_program(r, &key) != NULL;
 }
 
 /* depth_lab: the highest lab lab 1's depth pass used; technique_lab: the lab whose technique's own passes
@@ -429,10 +237,10 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, r->lab1_min_filter);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, r->lab1_mag_filter);
     }
-    _sl_slot *slot = lab >= 2 ? _sl_camera_program(r, scene, p, &lab) : NULL;
+    sl_lab1_4_slot *slot = lab >= 2 ? _sl_camera_program(r, scene, p, &lab) : NULL;
     if (!slot) {
-        _sl_variant_key plain = _sl_variant_for(r, scene, p, 0);
-        slot = _sl_variant_program(r, &plain);
+        sl_lab1_4_variant_key plain = _sl_variant_for(r, scene, p, 0);
+        slot = sl_lab1_4_variant_program(r, &plain);
         if (!slot && !info->shader_error) {
             info->shader_error = r->shader_errors[0];
             info->shader_error_lab = 0;
@@ -449,7 +257,7 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
     else glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!slot) return;
-    const _sl_uniforms *u = _sl_uniforms_of(slot);
+    const sl_lab1_4_uniforms *u = sl_lab1_4_uniforms_of(slot);
     glUseProgram(slot->program.id);
     mat4 view, proj;
     sl_camera_view(&scene->camera, view);
@@ -507,10 +315,9 @@ static void _sl_scene_pass(sl_renderer *r, const sl_scene *scene, const sl_rende
 
 static void _sl_debug_view(sl_renderer *r, const sl_light *light, int width, int height) {
     if (!r->info.shadow_map_ready) return;
-    _sl_slot *slot =
-        _sl_fixed_program(r, &_sl_programs_of(r)->debug, r->shaders_dir, "debug_quad.vert", "debug_quad.frag", 0);
+    sl_lab1_4_slot *slot = sl_lab1_4_debug_program(r);
     if (!slot) return;
-    const _sl_uniforms *u = _sl_uniforms_of(slot);
+    const sl_lab1_4_uniforms *u = sl_lab1_4_uniforms_of(slot);
     int side = (width < height ? width : height) / 3;
     glViewport(width - side - 8, 8, side, side);
     glDisable(GL_DEPTH_TEST);
@@ -529,39 +336,6 @@ static void _sl_debug_view(sl_renderer *r, const sl_light *light, int width, int
     sl_renderer_timer_mark(r, "debug view");
 }
 
-/* Lab 1's technique holds the shadow-map frame's programs: lab 1's depth pass, the debug view and the camera
- * pass per lab and setting. */
-static void _sl_lab1_program_stats(const sl_renderer *r, sl_program_stats *out) {
-    const struct _sl_programs *ps = r->technique_state[1];
-    if (!ps) return;
-    out->builds += ps->builds;
-    out->build_ms += ps->build_ms;
-    out->cached += (ps->depth.program.id != 0) + (ps->debug.program.id != 0);
-    for (int i = 0; i < ps->variant_count; i++) out->cached += ps->variants[i].slot.program.id != 0;
-}
-
-static bool _sl_lab1_reload_changed(sl_renderer *r, bool *reloaded, char *err, size_t err_size) {
-    struct _sl_programs *ps = r->technique_state[1];
-    if (!ps) return true;
-    bool ok = true;
-    /* Rebuilt now: what the last frame drew with (so a save shows at once and its errors are
-     * reported), and any program that never compiled (so a fix switches its lab back on). */
-    typedef struct { _sl_slot *slot; int lab; } watched;
-    watched now[2 + _SL_MAX_VARIANTS] = {{&ps->depth, 1}, {&ps->debug, 0}};
-    int n = 2;
-    for (int i = 0; i < ps->variant_count; i++) {
-        _sl_variant *v = &ps->variants[i];
-        if (v->last_used == r->frame_count || !v->slot.program.id) now[n++] = (watched){&v->slot, v->key.lab};
-        else if (!v->stale && sl_program_files_changed(&v->slot.program)) v->stale = true;
-    }
-    for (int i = 0; i < n; i++) {
-        if (!now[i].slot->attempted || _sl_slot_reload(r, now[i].slot, now[i].lab, reloaded)) continue;
-        if (ok) snprintf(err, err_size, "%s", r->shader_errors[now[i].lab]);
-        ok = false;
-    }
-    return ok;
-}
-
 static void _sl_lab1_destroy(sl_renderer *r) {
     if (r->shadow_map_attempted && r->shadow_map_status == SL_OK) {
         sl_renderer_lab_enter("lab1_destroy_shadow_map");
@@ -573,14 +347,7 @@ static void _sl_lab1_destroy(sl_renderer *r) {
         r->fns[1]->lab1_destroy_shadow_map(&r->second_map);
         sl_renderer_lab_enter(NULL);
     }
-    struct _sl_programs *ps = r->technique_state[1];
-    if (ps) {
-        sl_program_destroy(&ps->depth.program);
-        sl_program_destroy(&ps->debug.program);
-        for (int i = 0; i < ps->variant_count; i++) sl_program_destroy(&ps->variants[i].slot.program);
-        free(ps);
-        r->technique_state[1] = NULL;
-    }
+    sl_lab1_4_programs_destroy(r);
 }
 
 /* The shadow-map frame: lab 2's matrices, the passes of the asked lab's technique before its camera pass
@@ -589,7 +356,7 @@ static void _sl_lab1_destroy(sl_renderer *r) {
 static void _sl_lab1_draw_frame(sl_renderer *r, const sl_scene *scene, const sl_render_params *params, GLuint target,
                                 int width, int height) {
     sl_frame_info *info = &r->info;
-    if (!_sl_programs_of(r)) return;
+    if (!sl_lab1_4_programs_ready(r)) return;
     _sl_light_matrices(r, scene, params);
     sl_renderer_reset_state(0, width, height);
     info->moments_ready = false;
@@ -615,8 +382,8 @@ const sl_technique sl_lab1_technique = {
     .name = "depth map",
     .lab = 1,
     .draw_frame = _sl_lab1_draw_frame,
-    .reload_changed = _sl_lab1_reload_changed,
-    .program_stats = _sl_lab1_program_stats,
+    .reload_changed = sl_lab1_4_reload_changed,
+    .program_stats = sl_lab1_4_program_stats,
     .destroy = _sl_lab1_destroy,
     .probes = sl_lab1_probes,
     /* the viewer's side: sl_lab1_4_viewer.c (also labs 2-4's descriptors) */

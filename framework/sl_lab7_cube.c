@@ -470,6 +470,13 @@ static void _sl_lab7_overlay_lines(sl_overlay *ov, const sl_view_context *c) {
     sl_overlay_line(ov, NULL, "faces: %s", c->info->cube_layered ? "one layered pass" : "six passes");
 }
 
+/* The benchmark asked for one layered pass and the build's lab7_begin_cube_pass drew six. */
+static void _sl_lab7_frame_shortfall(const sl_frame_info *info, const sl_render_params *params, char *out, size_t n) {
+    out[0] = '\0';
+    if (params->cube.pass == SL_CUBE_PASS_LAYERED && info->cube_map_ready && !info->cube_layered)
+        snprintf(out, n, "drew six passes: these labs' lab7_begin_cube_pass has no layered pass (SL_CUBE_ALL_FACES)");
+}
+
 const sl_technique sl_lab7_technique = {
     .name = "cube maps",
     .lab = 7,
@@ -487,4 +494,5 @@ const sl_technique sl_lab7_technique = {
     .maps_text = _sl_lab7_maps_text,
     .overlay_lines = _sl_lab7_overlay_lines,
     .default_for_lights = 1u << SL_LIGHT_POINT,
+    .frame_shortfall = _sl_lab7_frame_shortfall,
 };

@@ -127,3 +127,8 @@ bool sl_lab_shows(int lab, int earlier) {
     if (lab < 1 || lab >= (int)(sizeof masks / sizeof masks[0]) || earlier < 1 || earlier >= lab) return false;
     return (masks[lab] >> earlier) & 1u;
 }
+
+bool sl_lab_given_light_camera(int lab) {
+    static const bool given[SL_LAB_MAX + 1] = {[1] = true};
+    return lab >= 0 && lab <= SL_LAB_MAX && given[lab];
+}

@@ -103,6 +103,11 @@ const char *sl_lab_title(int lab);
  * pictures (a mistake there is named in it: "needs lab K first"). */
 bool sl_lab_builds_on(int lab, int earlier);
 bool sl_lab_shows(int lab, int earlier);
+/* Whether lab `lab`'s frames draw their shadow map from a light camera the grader gives in the job
+ * (sl_protocol.h's light_cameras_given): lab 1's, whose runner has no light camera of its own (lab 2's
+ * code computes it). No other lab gets it: lab 2's code, run in a later lab's case, must not find its
+ * own answer in the job. */
+bool sl_lab_given_light_camera(int lab);
 
 /* The colour a cascade is shown in (the viewer's K key and frusta, --case,
  * the grader's report): 0 red, 1 green, 2 blue, 3 yellow; grey for none (-1)

@@ -145,6 +145,12 @@ typedef struct sl_technique {
     sl_camera *(*fit_camera)(sl_render_params *p, const sl_camera *camera);
     /* The lights (bit 1 << sl_light_type) of scenes the viewer opens in this lab when none is asked. */
     unsigned default_for_lights;
+
+    /* ---- The benchmark (sl_bench.c): what only the technique can tell of a frame ---- */
+    /* Why its last frame (`info`) did not draw the way `params` asked, in a few words into out (lab 7:
+     * six passes where one layered pass was asked, the build's lab7_begin_cube_pass has none); out left
+     * empty when it did. The benchmark says it after the row, with the stubs and errors it sees itself. */
+    void (*frame_shortfall)(const struct sl_frame_info *info, const sl_render_params *params, char *out, size_t n);
 } sl_technique;
 
 /* The technique of lab `lab` (1..SL_LAB_COUNT), or the one a build adds in slot 0 (its lab is 0: a

@@ -127,36 +127,6 @@ bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check
     return false;
 }
 
-/* The GLSL function that computes visibility for this case, and its TODO. */
-void sl_diag_lookup_function(const sl_case *c, const char **function, const char **todo) {
-    static const char *const filters[SL_FILTER_MODE_COUNT][2] = {
-        {"shadow_compare_manual() (lab 2)", "lab2.5"}, {"pcf_hardware()", "lab4.2"}, {"pcf_grid()", "lab4.3"},
-        {"pcf_poisson()", "lab4.4"}, {"pcss()", "lab4.5"},
-    };
-    if (c->lab == 5) {
-        *function = "chebyshev_upper_bound()";
-        *todo = "lab5.7";
-    } else if (c->lab == 6) { /* cascades: lab 6's own lookup */
-        *function = "cascade_compare()";
-        *todo = "lab6.5";
-    } else if (c->lab == 7) {
-        *function = c->params.cube.soft ? "point_shadow_soft()" : "point_shadow()";
-        *todo = c->params.cube.soft ? "lab7.7" : "lab7.6";
-    } else if (c->lab >= 4) {
-        *function = filters[c->params.filter.mode][0];
-        *todo = filters[c->params.filter.mode][1];
-    } else if (c->lab == 3 && c->params.bias.mode == SL_BIAS_MIDPOINT) {
-        *function = "midpoint_compare()";
-        *todo = "lab3.5";
-    } else if (c->params.compare == SL_COMPARE_HARDWARE) {
-        *function = "shadow_compare_hardware()";
-        *todo = "lab2.6";
-    } else {
-        *function = "shadow_compare_manual()";
-        *todo = "lab2.5";
-    }
-}
-
 /* A GL enum's name ("GL_CLAMP_TO_EDGE"), "unknown GL enum" for others. */
 const char *sl_diag_enum_name(unsigned value) {
     /* the wrap modes a probe reads back, which the framework's table leaves out */

@@ -88,8 +88,6 @@ void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fm
 void sl_diag_hint(sl_check_result *out, const char *hint);
 /* "not implemented" for this lab's stubs first, then "needs lab K"; false if no stub is in the way. */
 bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check_result *out);
-/* The GLSL function that computes visibility for this case, and its TODO. */
-void sl_diag_lookup_function(const sl_case *c, const char **function, const char **todo);
 /* An image check's verdict from its comparison: few enough pixels off, none
  * NaN, and a mean difference within the check's mean tolerance. When only
  * the mean is off, says so (a small error everywhere) and returns false. */

@@ -1,6 +1,6 @@
 /* sl_diagnose: what turns a failed check into a message that names the
- * mistake. sl_diag.c holds what every diagnosis uses (saying things, stubs,
- * the lookup function of a case), sl_grade.c what to fix first; each lab's
+ * mistake. sl_diag.c holds what every diagnosis uses (saying things, stubs),
+ * sl_grade.c what to fix first; each lab's
  * knowledge sits in a file of its own under grader/diagnose/, registered in
  * the diagnosis table (at the end of this header), function probes in
  * grader/diagnose/probe.c, and measures shared by the visibility checks of
@@ -56,6 +56,9 @@ bool sl_probe_failure_explains(const sl_case *c, const sl_check *k, const sl_pro
 bool sl_function_may_be_blamed(const sl_case *c, const sl_check *k, const char *function, bool isolated);
 /* The path the framework takes for case c, in a few words ("pcf_grid() with radius 1"); empty when there is nothing to say. */
 void sl_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
+/* The GLSL function that computes visibility for case c ("pcf_grid()"), and its TODO ("lab4.3"): its lab's
+ * lookup_function; "the shadow lookup" and "" for a lab that draws none. */
+void sl_case_lookup_function(const sl_case *c, const char **function, const char **todo);
 /* Per lab (grader/diagnose/labN.c): sl_case_runs for that lab's cases, and its path. */
 bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *function);
 bool sl_lab2_case_runs(const sl_case *c, const sl_check *k, const char *function);
@@ -71,6 +74,8 @@ void sl_lab5_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 void sl_lab6_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
 void sl_lab7_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
 bool sl_lab4_meets_row(const sl_case *c, const sl_check *probe, int row);
+/* Lab 2's lookup for case c (its compare mode), which lab 3 draws through outside its midpoint mode. */
+void sl_lab2_lookup_function(const sl_case *c, const char **function, const char **todo);
 /* Shared by labs 1-4 (lab1.c, lab2.c, lab3.c): the depth pass (lab 1's map, from lab 2 on lab 2's
  * light camera, from lab 3 on lab 3's state), a check of the camera's picture, lab 3's biased lookup. */
 bool sl_depth_pass_runs(const sl_case *c, const sl_check *k, const char *function);
@@ -184,6 +189,24 @@ typedef struct sl_check_diagnosis {
     sl_check_diagnosis_fn diagnose;
 } sl_check_diagnosis;
 #define SL_LAB_MAX_CHECK_KINDS 4
+/* What a lab knows of one of its probe functions' rows, beyond the shared readings (verdict.c, runs.c). */
+typedef struct sl_function_verdict {
+    const char *function; /* the probe's name: "lab3_depth_pass_state" */
+    /* The mistake the failing rows show, in a few words into text, and the row that shows it (-1: none);
+     * asked before the lab's rows_verdict. */
+    int (*verdict)(const struct sl_verdict_rows *rows, char *text, size_t text_size);
+    /* What one failing row predicts a picture shows (1 << sl_symptom); NULL: the shared reading. */
+    uint32_t (*row_predicts)(const struct sl_verdict_rows *rows, int row);
+    /* A row's "mode" input is this setting of the case (lab 3's bias mode, lab 4's filter mode): a case
+     * meets the row only in that mode. NULL: the mode is the function's own. */
+    int (*case_mode)(const sl_case *c);
+    /* Outputs (1 << output) that matter only to a filter reading past the map's edge (lab 1's wrap modes
+     * and border): a row differing in these alone shows only in a case whose lab's filters_past_edge says
+     * so. 0: every output shows. */
+    uint16_t edge_outputs;
+} sl_function_verdict;
+#define SL_LAB_MAX_FUNCTION_VERDICTS 4
+#define SL_LAB_MAX_UNPROBED 5
 typedef struct sl_lab_diagnoses {
     int lab;
     sl_check_diagnosis checks[SL_LAB_MAX_CHECK_KINDS]; /* up to the first without a diagnose */
@@ -197,6 +220,15 @@ typedef struct sl_lab_diagnoses {
     bool (*case_runs)(const sl_case *c, const sl_check *k, const char *function);
     void (*case_path)(const sl_case *c, const sl_case_result *r, char *out, size_t n);
     bool (*meets_row)(const sl_case *c, const sl_check *probe, int row);
+    /* The GLSL function that computes visibility for the lab's case c ("pcf_grid()", "point_shadow()"), and
+     * its TODO ("lab4.3"); NULL: its cases draw no lookup (lab 1). */
+    void (*lookup_function)(const sl_case *c, const char **function, const char **todo);
+    /* Lab code without a probe of its own that a message may name as a candidate (files and C functions:
+     * "depth.vert", "lab5_begin_blur_pass"), ended by one without a name. */
+    sl_lab_function unprobed[SL_LAB_MAX_UNPROBED];
+    /* The lab's probe functions judged by their own rows (verdict.c asks by the probe's name): up to the
+     * first without a function. */
+    sl_function_verdict functions[SL_LAB_MAX_FUNCTION_VERDICTS];
     /* The lab's lookup averages samples around the point (a filter): shadows far too faint, where the
      * reference has them, mean most samples land off the map, rather than a lookup that returns 1.0. */
     bool filtered_lookup;
@@ -224,6 +256,10 @@ extern const sl_lab_diagnoses sl_lab6_diagnoses;
 extern const sl_lab_diagnoses sl_lab7_diagnoses;
 /* Lab `lab`'s descriptor, or NULL. */
 const sl_lab_diagnoses *sl_lab_diagnoses_of(int lab);
+/* The i-th descriptor of the table, in the labs' order; NULL past its end. */
+const sl_lab_diagnoses *sl_lab_diagnoses_at(int i);
+/* What the lab of probe function f registered for it by name (its functions), or NULL. */
+const sl_function_verdict *sl_function_verdict_of(const sl_probe_function *f);
 /* The diagnosis a lab registered for checks of that kind, or NULL. */
 sl_check_diagnosis_fn sl_check_diagnosis_of(sl_check_kind kind);
 

@@ -83,7 +83,7 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
                                  const sl_image *mask, const sl_compare_stats *st, sl_check_result *out) {
     sl_visibility_stats v = sl_visibility_compare(s, t);
     const char *fn, *todo;
-    sl_diag_lookup_function(c, &fn, &todo);
+    sl_case_lookup_function(c, &fn, &todo);
     /* On surfaces facing the light when the mask is there: surfaces facing
      * away are dark in both images and would hide a missing shadow. */
     double ref_shadowed, stu_shadowed;
@@ -192,7 +192,7 @@ static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case
     if (shadowed >= _SL_MIN_SHADOW_PIXELS && lost > _SL_MAX_SHADOW_LOST) { /* passed the count, lost the shadows */
         if (sl_diag_explain_missing(c, r, out)) return;
         const char *fn, *todo;
-        sl_diag_lookup_function(c, &fn, &todo);
+        sl_case_lookup_function(c, &fn, &todo);
         out->symptoms |= 1u << SL_SYMPTOM_MISSING_SHADOW;
         sl_diag_say(out, "the reference's shadows are missing: %.0f%% of its %ld shadowed pixels are lit in yours, even "
                          "allowing a pixel's shift (they cover %.2f%% of the image, so the pixel count alone would pass)",

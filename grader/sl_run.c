@@ -95,7 +95,7 @@ static void _sl_build_job(sl_job *job, const sl_case *c, const sl_run_options *o
     job->scene = c->scene;
     job->frame_count = c->frame_count;
     memcpy(job->frame_lights, c->frame_lights, sizeof c->frame_lights[0] * (size_t)c->frame_count);
-    job->light_cameras_given = c->lab < 2; /* only lab 1's frames draw with it (see sl_protocol.h) */
+    job->light_cameras_given = sl_lab_given_light_camera(c->lab); /* lab 1's frames alone (sl_params.h) */
     for (int f = 0; job->light_cameras_given && f < c->frame_count; f++)
         _sl_lab1_light_camera(&c->frame_lights[f], &c->scene.bounds, job->frame_light_cameras[f][0],
                               job->frame_light_cameras[f][1]);

@@ -8,6 +8,8 @@
 #include <string.h>
 
 #include "sl_compare.h"
+#include "sl_gl.h"
+#include "verdict_rows.h"
 
 void sl_diagnose_fbo(const sl_case *c, const sl_case_result *r, sl_check_result *out) {
     const sl_capture *cap = sl_result_capture(r, "fbo");
@@ -128,6 +130,77 @@ bool sl_depth_pass_runs(const sl_case *c, const sl_check *k, const char *fn) {
 
 bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *fn) { return sl_depth_pass_runs(c, k, fn); }
 
+/* ---- verdicts on its probes' rows (verdict.c asks by the probe's name) ---- */
+
+/* Outputs: min filter, mag filter, wrap S, wrap T, the border's depth (-1 without a border). */
+static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
+        double wrap_s = _sl_got(v, r, 2), wrap_t = _sl_got(v, r, 3), border = _sl_got(v, r, 4);
+        bool wrap_wrong = wrap_s != _sl_want(v, r, 2) || wrap_t != _sl_want(v, r, 3);
+        if (wrap_wrong) {
+            double wrong = wrap_s != _sl_want(v, r, 2) ? wrap_s : wrap_t;
+            snprintf(text, n, "lookups past the map's edge do not read \"nothing there\": the wrap mode is %s, not "
+                              "GL_CLAMP_TO_BORDER on S and T — %s, so a filter's samples past the edge find shadow where "
+                              "there is none (lab 4's kernels); use GL_CLAMP_TO_BORDER with GL_TEXTURE_BORDER_COLOR "
+                              "(1, 1, 1, 1), the far plane, lit",
+                     sl_diag_enum_name((unsigned)wrong),
+                     wrong == GL_REPEAT || wrong == GL_MIRRORED_REPEAT ? "depths from the opposite edge wrap in"
+                                                                       : "the edge texels are stretched outwards");
+            sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+            return r;
+        }
+        if (fabs(border - _sl_want(v, r, 4)) > 1e-6) {
+            snprintf(text, n, "the border's depth is %g, not 1.0: a lookup past the map's edge must read the far plane, "
+                              "lit — GL_TEXTURE_BORDER_COLOR (1, 1, 1, 1) (a depth texture reads its first component)",
+                     border);
+            sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+            return r;
+        }
+        double min = _sl_got(v, r, 0), mag = _sl_got(v, r, 1);
+        if (min != _sl_want(v, r, 0) || mag != _sl_want(v, r, 1)) {
+            bool mipmap = min != GL_NEAREST && min != GL_LINEAR;
+            snprintf(text, n, "the map is filtered with %s (min) and %s (mag), not GL_NEAREST: %s",
+                     sl_diag_enum_name((unsigned)min), sl_diag_enum_name((unsigned)mag),
+                     mipmap ? "a mipmap min filter makes a map without mipmaps incomplete, and every read 0"
+                            : "a depth map is read exactly; GL_LINEAR blends the depths of different surfaces");
+            return r;
+        }
+    }
+    return -1;
+}
+
+/* Outputs: the map's framebuffer bound, viewport width and height, depth
+ * test, depth function, depth writes, the depth after the call (cleared: 1). */
+static int _sl_verdict_begin_depth_pass(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
+        double size = v->k->inputs[r][0];
+        if (_sl_got(v, r, 0) != 1) {
+            snprintf(text, n, "the map's framebuffer is not bound: glBindFramebuffer(GL_FRAMEBUFFER, map->framebuffer) "
+                              "first, or the depth pass draws into another one");
+        } else if (_sl_got(v, r, 1) != size || _sl_got(v, r, 2) != size) {
+            snprintf(text, n, "the viewport is %gx%g, not the map's %gx%g: glViewport(0, 0, map->size, map->size)",
+                     _sl_got(v, r, 1), _sl_got(v, r, 2), size, size);
+        } else if (!_sl_got(v, r, 3)) {
+            snprintf(text, n, "the depth test is off: with GL_DEPTH_TEST disabled no depth is written at all — "
+                              "glEnable(GL_DEPTH_TEST)");
+        } else if (_sl_got(v, r, 4) != _sl_want(v, r, 4)) {
+            snprintf(text, n, "the depth function is not GL_LESS (nor GL_LEQUAL): each texel must keep the nearest "
+                              "depth — glDepthFunc(GL_LESS)");
+        } else if (!_sl_got(v, r, 5)) {
+            snprintf(text, n, "depth writes are off: glDepthMask(GL_TRUE), before the clear too (glClear respects it)");
+        } else if (_sl_got(v, r, 6) != 1) {
+            snprintf(text, n, "the depths are not cleared to 1.0 at the start of the pass: glClear(GL_DEPTH_BUFFER_BIT) "
+                              "after binding the map's framebuffer, every pass");
+        } else {
+            continue;
+        }
+        return r;
+    }
+    return -1;
+}
+
 /* ---- lab 1 in the diagnosis table (diagnose/table.c) ---- */
 static void _sl_diagnose_fbo_check(const sl_case *c, const sl_check *k, const sl_case_result *r,
                                    const sl_reference *ref, sl_check_result *out) {
@@ -140,6 +213,11 @@ static bool _sl_lab1_same_path(const sl_case *failed, const sl_case *c) {
 
 const sl_lab_diagnoses sl_lab1_diagnoses = {
     .lab = 1,
+    /* outputs 2-4 (wrap S, wrap T, the border) matter only to a filter that reads past the map's edge: lab 2's
+     * lookups call a point off the map lit before they read it */
+    .functions = {{"lab1_create_shadow_map", _sl_verdict_create_shadow_map, .edge_outputs = 0x1Cu},
+                  {"lab1_begin_depth_pass", _sl_verdict_begin_depth_pass}},
+    .unprobed = {{"depth.vert", 1, "TODO(lab1.4)", false}},
     .checks = {{SL_CHECK_FBO, _sl_diagnose_fbo_check}, {SL_CHECK_DEPTH_MAP, sl_diagnose_depth}},
     .case_runs = sl_lab1_case_runs,
     .same_path = _sl_lab1_same_path,

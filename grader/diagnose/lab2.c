@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "sl_compare.h"
+#include "verdict_rows.h"
 
 static double _sl_matrix_error(const double *a, const double *b) {
     double worst = 0, scale = 1;
@@ -90,11 +91,18 @@ void sl_diagnose_matrices(const sl_case *c, const sl_check *k, const sl_case_res
     }
 }
 
+/* The lookup lab 2's cases draw with: its compare mode's comparison. */
+void sl_lab2_lookup_function(const sl_case *c, const char **function, const char **todo) {
+    bool hardware = c->params.compare == SL_COMPARE_HARDWARE;
+    *function = hardware ? "shadow_compare_hardware()" : "shadow_compare_manual()";
+    *todo = hardware ? "lab2.6" : "lab2.5";
+}
+
 bool sl_diagnose_lab2_visibility(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
                                  sl_check_result *out) {
     if (!mask) return false;
     const char *fn, *todo;
-    sl_diag_lookup_function(c, &fn, &todo);
+    sl_lab2_lookup_function(c, &fn, &todo);
     sl_acne acne = sl_measure_acne(s, t, mask);
     if (acne.fraction <= 0.02) return false;
     if (sl_acne_is_pattern(&acne)) {
@@ -113,6 +121,69 @@ bool sl_diagnose_lab2_visibility(const sl_case *c, const sl_image *s, const sl_i
         return true;
     }
     return false;
+}
+
+/* ---- verdicts on its probes' rows (verdict.c asks by the probe's name) ---- */
+
+/* glm_ortho's box and glm_perspective's field of view, read back from a
+ * column-major matrix (outputs m00, m10, ...: index col * 4 + row). */
+static bool _sl_ortho_box(const double *m, double box[6]) {
+    if (fabs(m[15] - 1) > 1e-6 || fabs(m[11]) > 1e-6 || m[0] == 0 || m[5] == 0 || m[10] == 0) return false;
+    double w = 2 / m[0], h = 2 / m[5], d = -2 / m[10];
+    double cx = -m[12] * w / 2, cy = -m[13] * h / 2, cz = -m[14] * d / 2;
+    box[0] = cx - w / 2, box[1] = cx + w / 2, box[2] = cy - h / 2, box[3] = cy + h / 2;
+    box[4] = cz - d / 2, box[5] = cz + d / 2; /* near, far */
+    return true;
+}
+
+static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double s[16], e[16], bs[6], be[6];
+        for (int o = 0; o < 16; o++) {
+            s[o] = _sl_got(v, r, o);
+            e[o] = _sl_want(v, r, o);
+        }
+        if (_sl_ortho_box(e, be)) {
+            if (!_sl_ortho_box(s, bs)) {
+                snprintf(text, n, "a sun needs an orthographic projection (glm_ortho): parallel rays");
+                return r;
+            }
+            double depth = be[5] - be[4], pad = depth / 1.02 * 0.01, tol = 1e-3 * fmax(1, depth);
+            bool sides = fabs(bs[0] - be[0]) < tol && fabs(bs[1] - be[1]) < tol && fabs(bs[2] - be[2]) < tol &&
+                         fabs(bs[3] - be[3]) < tol;
+            if (sides && fabs(bs[4] - (be[4] + pad)) < tol && fabs(bs[5] - (be[5] - pad)) < tol) {
+                snprintf(text, n, "near and far hug the scene's box with no padding: pad each by 1%% of the box's "
+                                  "depth range (near = -max z - pad, far = -min z + pad), or rounding clips the "
+                                  "farthest corner");
+                sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_TOO_DARK);
+                return r;
+            }
+            if (!sides) {
+                snprintf(text, n, "the box's sides are not the scene's corners' extent in light view space: left/right "
+                                  "and bottom/top are the min and max x and y of all 8 corners, transformed by the "
+                                  "light's view as points (w = 1)");
+                return r;
+            }
+            snprintf(text, n, "near and far are not -(max z) and -(min z) of the corners in light view space (the "
+                              "camera looks down -z), padded by 1%% of the range");
+            return r;
+        }
+        /* a spot light: glm_perspective(fovy, 1, near, far), fovy = 2 * spot_angle_deg in radians */
+        if (e[5] > 0 && s[5] > 0 && fabs(e[11] + 1) < 1e-6) {
+            double fov_e = 2 * atan(1 / e[5]), fov_s = 2 * atan(1 / s[5]);
+            if (fabs(fov_s * 2 - fov_e) < 1e-3) {
+                snprintf(text, n, "the field of view is the cone's half-angle: fovy is twice spot_angle_deg");
+                return r;
+            }
+            const double degrees_per_radian = 57.29577951308232;
+            if (fabs(s[5] - 1 / tan(fov_e * degrees_per_radian / 2)) < 1e-3) {
+                snprintf(text, n, "the angle is in degrees where glm_perspective takes radians: glm_rad(2 * spot_angle_deg)");
+                return r;
+            }
+        }
+    }
+    return -1;
 }
 
 /* ---- what lab 2's cases run ---- */
@@ -145,6 +216,8 @@ void sl_lab2_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 /* ---- lab 2 in the diagnosis table (diagnose/table.c) ---- */
 const sl_lab_diagnoses sl_lab2_diagnoses = {
     .lab = 2,
+    .functions = {{"lab2_light_projection", _sl_verdict_light_projection}},
+    .lookup_function = sl_lab2_lookup_function,
     .checks = {{SL_CHECK_MATRICES, sl_diagnose_matrices}},
     .visibility = sl_diagnose_lab2_visibility,
     .case_runs = sl_lab2_case_runs,

@@ -8,8 +8,20 @@
 #include <string.h>
 
 #include "sl_compare.h"
+#include "sl_params.h"
+#include "verdict_rows.h"
 
 /* Chamfer distance (in pixels) from every pixel to the nearest pixel where `seed` is set. */
+/* The lookup lab 3's case c draws with: its own in midpoint mode, lab 2's otherwise. */
+static void _sl_lab3_lookup_function(const sl_case *c, const char **function, const char **todo) {
+    if (c->params.bias.mode == SL_BIAS_MIDPOINT) {
+        *function = "midpoint_compare()";
+        *todo = "lab3.5";
+    } else {
+        sl_lab2_lookup_function(c, function, todo);
+    }
+}
+
 static float *_sl_distance_to(const bool *seed, int w, int h) {
     float *d = malloc(sizeof(float) * (size_t)w * (size_t)h);
     if (!d) return NULL;
@@ -90,7 +102,7 @@ bool sl_diagnose_lab3_visibility(const sl_case *c, const sl_image *s, const sl_i
         out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
         sl_diag_say(out, "%.0f%% of lit surfaces are shadowed, in solid regions rather than acne's stripes", 100 * a.acne);
         const char *fn, *todo;
-        sl_diag_lookup_function(c, &fn, &todo);
+        _sl_lab3_lookup_function(c, &fn, &todo);
         sl_diag_cause_in(out, fn, "is lab 2's comparison inverted, or the bias added instead of subtracted?");
         return true;
     }
@@ -101,7 +113,7 @@ bool sl_diagnose_lab3_visibility(const sl_case *c, const sl_image *s, const sl_i
         [SL_BIAS_MIDPOINT] = "lab3_second_depth_state",
     };
     const char *lookup, *lookup_todo;
-    sl_diag_lookup_function(c, &lookup, &lookup_todo);
+    _sl_lab3_lookup_function(c, &lookup, &lookup_todo);
     const char *owner = owners[mode] ? owners[mode] : lookup;
     if (a.acne > 0.01 && a.acne >= a.missing) {
         static const char *const tips[SL_BIAS_MODE_COUNT] = {
@@ -174,7 +186,234 @@ void sl_lab3_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
                  c->params.compare == SL_COMPARE_HARDWARE ? "shadow_compare_hardware" : "shadow_compare_manual");
 }
 
+/* ---- verdicts on its probes' rows (verdict.c asks by the probe's name) ---- */
+
+static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
+    const sl_probe_function *f = v->f;
+    int rows = v->k->rows;
+    double lo = INFINITY, hi = -INFINITY, want_lo = INFINITY, want_hi = -INFINITY;
+    for (int r = 0; r < rows; r++) {
+        lo = fmin(lo, _sl_got(v, r, 0));
+        hi = fmax(hi, _sl_got(v, r, 0));
+        want_lo = fmin(want_lo, _sl_want(v, r, 0));
+        want_hi = fmax(want_hi, _sl_want(v, r, 0));
+    }
+    if (rows >= 3 && hi - lo <= 1e-7 && want_hi - want_lo > 1e-5) {
+        snprintf(text, n, "it returns %.4g for every angle and every setting: a hand-tuned constant, not the slope-scaled "
+                          "bias min(constant + slope * tan(theta), max_bias)", lo);
+        return 0;
+    }
+    /* where the reference is clamped, above max_bias here: no clamp */
+    for (int r = 0; r < rows; r++) {
+        double max_bias = *_sl_param(f, v->k->inputs[r], "max_bias");
+        if (_sl_failed(v, r) && _sl_near(_sl_want(v, r, 0), max_bias, 1e-7) && _sl_got(v, r, 0) > max_bias + 1e-7) {
+            snprintf(text, n, "not clamped: the clamp to max_bias is missing — at n_dot_l = %g it gives %.4g, above "
+                              "max_bias %.4g; return min(constant + slope * tan(theta), max_bias)",
+                     (double)*_sl_param(f, v->k->inputs[r], "n_dot_l"), _sl_got(v, r, 0), max_bias);
+            return r;
+        }
+    }
+    /* Where the clamp does not act: which function of the angle does the slope term follow? */
+    int rows_seen = 0, as_sin = 0, as_angle = 0, as_one_minus = 0, as_max_one_minus = 0, first = -1;
+    double ratio_lo = INFINITY, ratio_hi = -INFINITY, term_lo = INFINITY, term_hi = -INFINITY;
+    for (int r = 0; r < rows; r++) {
+        const float *in = v->k->inputs[r];
+        double cos_t = *_sl_param(f, in, "n_dot_l"), c = *_sl_param(f, in, "constant_bias");
+        double slope = *_sl_param(f, in, "slope"), max_bias = *_sl_param(f, in, "max_bias");
+        double e = _sl_want(v, r, 0), s = _sl_got(v, r, 0);
+        /* rows where either clamp acts say nothing about the slope term */
+        if (!_sl_failed(v, r) || slope <= 0 || cos_t <= 0.01 || cos_t >= 1 || e >= max_bias - 1e-7 ||
+            s >= max_bias - 1e-7)
+            continue;
+        if (first < 0) first = r;
+        double sin_t = sqrt(1 - cos_t * cos_t), term = (s - c) / slope;
+        rows_seen++;
+        as_sin += _sl_near(term, sin_t, 0.02 * sin_t + 1e-4);
+        as_angle += _sl_near(term, tan(cos_t), 0.02 * tan(cos_t) + 1e-4) || _sl_near(term, acos(cos_t), 0.02);
+        /* 1 - N.L: LearnOpenGL's bias, max(0.05 * (1 - N.L), 0.005), or that term added to the constant */
+        double one_minus = slope * (1 - cos_t);
+        as_one_minus += _sl_near(s, c + one_minus, 0.02 * (c + one_minus) + 1e-7);
+        as_max_one_minus += _sl_near(s, fmax(one_minus, c), 0.02 * fmax(one_minus, c) + 1e-7);
+        ratio_lo = fmin(ratio_lo, s / e);
+        ratio_hi = fmax(ratio_hi, s / e);
+        term_lo = fmin(term_lo, term / ((e - c) / slope));
+        term_hi = fmax(term_hi, term / ((e - c) / slope));
+    }
+    if (rows_seen == 0) return -1;
+    if (as_max_one_minus == rows_seen || as_one_minus == rows_seen) {
+        snprintf(text, n, "the slope term follows 1 - N.L, not tan(theta)%s: 1 - N.L stays below 1 where tan(theta) "
+                          "grows without bound, so grazing surfaces get too little bias — min(constant + slope * "
+                          "tan(theta), max_bias), tan(theta) = sqrt(1 - cos^2) / cos",
+                 as_max_one_minus == rows_seen ? ", and the larger of it and the constant where their sum belongs "
+                                                 "(LearnOpenGL's max(0.05 * (1 - N.L), 0.005))" : "");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+        return first;
+    }
+    if (as_sin == rows_seen) {
+        snprintf(text, n, "sin(theta) where tan(theta) belongs: the slope term follows sqrt(1 - cos^2), not "
+                          "sqrt(1 - cos^2) / cos — divide by cos(theta) = N.L");
+        return first;
+    }
+    if (as_angle == rows_seen) {
+        snprintf(text, n, "N.L used as an angle: n_dot_l is cos(theta) already; tan(theta) = sqrt(1 - cos^2) / cos");
+        return first;
+    }
+    if (fabs(term_hi) <= 0.02 && fabs(term_lo) <= 0.02) {
+        snprintf(text, n, "the slope term is missing: the constant alone, too small where the surface turns away "
+                          "from the light — min(constant + slope * tan(theta), max_bias)");
+        return first;
+    }
+    if (term_hi - term_lo <= 0.03 * fabs(term_hi)) {
+        snprintf(text, n, "the slope term is %.3g times slope * tan(theta): a factor inside the clamp? The bias is "
+                          "min(constant + slope * tan(theta), max_bias)", term_lo);
+        return first;
+    }
+    if (ratio_hi - ratio_lo <= 0.03 * fabs(ratio_hi)) {
+        snprintf(text, n, "%.3g times the expected bias wherever the clamp does not act: a factor inside the clamp? The "
+                          "bias is min(constant + slope * tan(theta), max_bias)", ratio_lo);
+        return first;
+    }
+    return -1;
+}
+
+static int _sl_verdict_normal_offset(const sl_verdict_rows *v, char *text, size_t n) {
+    const sl_probe_function *f = v->f;
+    int against = 0, facing = -1, seen = 0, first = -1;
+    double ratio_lo = INFINITY, ratio_hi = -INFINITY;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        const float *p = _sl_param(f, in, "world_position"), *normal = _sl_param(f, in, "normal");
+        double along_s = 0, along_e = 0, length_s = 0, length_e = 0;
+        for (int i = 0; i < 3; i++) {
+            double ds = _sl_got(v, r, i) - p[i], de = _sl_want(v, r, i) - p[i];
+            along_s += ds * normal[i];
+            along_e += de * normal[i];
+            length_s += ds * ds;
+            length_e += de * de;
+        }
+        if (first < 0) first = r;
+        if (length_e < 1e-12) {
+            if (facing < 0) facing = r;
+            continue;
+        }
+        seen++;
+        against += along_s < 0 && along_e > 0;
+        double ratio = sqrt(length_s / length_e);
+        ratio_lo = fmin(ratio_lo, ratio);
+        ratio_hi = fmax(ratio_hi, ratio);
+    }
+    if (seen > 0 && against == seen) {
+        snprintf(text, n, "the point moves against the normal, into the surface: move it along +normal, off the surface");
+        return first;
+    }
+    if (facing >= 0) {
+        snprintf(text, n, "a surface facing the light (N.L = 1) must not move: the offset is scaled by (1 - N.L)");
+        return facing;
+    }
+    if (seen > 1 && ratio_hi - ratio_lo <= 0.03 * ratio_hi) {
+        snprintf(text, n, "the offset is %.3g times texels * texel_world_size * (1 - N.L): a factor missing or extra",
+                 ratio_lo);
+        return first;
+    }
+    return -1;
+}
+
+/* Outputs: polygon offset on, factor, units, culling on, cull face. */
+static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        int mode = (int)v->k->inputs[r][0], previous = v->f->param_count > 3 ? (int)v->k->inputs[r][3] : -1;
+        char name[96];
+        if (previous >= 0 && previous != mode)
+            snprintf(name, sizeof name, "%s (right after %s)", sl_bias_mode_name((sl_bias_mode)mode),
+                     sl_bias_mode_name((sl_bias_mode)previous));
+        else
+            snprintf(name, sizeof name, "%s", sl_bias_mode_name((sl_bias_mode)mode));
+        double e[5], s[5];
+        for (int o = 0; o < 5; o++) {
+            e[o] = _sl_want(v, r, o);
+            s[o] = _sl_got(v, r, o);
+        }
+        if (isnan(s[0])) continue;
+        if (s[0] && e[0] && s[1] == e[2] && s[2] == e[1] && e[1] != e[2]) {
+            snprintf(text, n, "factor and units swapped: glPolygonOffset(factor, units) takes the slope factor first");
+            return r;
+        }
+        if (s[3] && !e[3]) {
+            snprintf(text, n, "culling is left on in %s mode: switch GL_CULL_FACE off in every mode but front-culling — "
+                              "a plane with no thickness has only a front face, and culled it casts no shadow%s", name,
+                     previous >= 0 ? "; each mode sets every switch, whatever the mode before left on" : "");
+            return r;
+        }
+        if (s[0] && !e[0]) {
+            snprintf(text, n, "polygon offset is left on in %s mode: switch GL_POLYGON_OFFSET_FILL off in every mode "
+                              "but polygon-offset%s", name,
+                     previous >= 0 ? "; each mode sets every switch, whatever the mode before left on" : "");
+            return r;
+        }
+        if (!s[0] && e[0]) {
+            snprintf(text, n, "no polygon offset in polygon-offset mode: glPolygonOffset acts only while "
+                              "GL_POLYGON_OFFSET_FILL is enabled");
+            return r;
+        }
+        if (!s[3] && e[3]) {
+            snprintf(text, n, "no culling in front-culling mode: glEnable(GL_CULL_FACE) with glCullFace(GL_FRONT)");
+            return r;
+        }
+        if (e[3] && s[4] != e[4]) {
+            snprintf(text, n, "the wrong faces are culled in front-culling mode: glCullFace(GL_FRONT), so the map keeps "
+                              "the far side of each object");
+            return r;
+        }
+    }
+    return -1;
+}
+
+/* ---- what a failing row predicts a picture shows ---- */
+
+#define _SL_DARK (1u << SL_SYMPTOM_TOO_DARK)
+#define _SL_LIGHT (1u << SL_SYMPTOM_TOO_LIGHT)
+#define _SL_GROSS (1u << SL_SYMPTOM_GROSS)
+
+/* lab3_depth_pass_state: polygon offset on, factor, units, culling on, cull face. */
+static uint32_t _sl_state_row_predicts(const sl_verdict_rows *v, int row) {
+    double e[5], s[5];
+    for (int o = 0; o < 5; o++) {
+        e[o] = _sl_want(v, row, o);
+        s[o] = _sl_got(v, row, o);
+        if (isnan(s[o])) return SL_SYMPTOMS_ANY;
+    }
+    uint32_t p = 0;
+    if (s[0] && !e[0]) p |= _SL_LIGHT;                          /* an offset pushes depths away: detached shadows */
+    if (!s[0] && e[0]) p |= _SL_DARK | _SL_GROSS;               /* acne where the offset belonged */
+    if (s[0] && e[0] && (s[1] != e[1] || s[2] != e[2])) p |= _SL_DARK | _SL_LIGHT;
+    if (s[3] && !e[3]) p |= _SL_LIGHT | _SL_GROSS;              /* culled faces cast no shadow (a plane loses its own) */
+    if (!s[3] && e[3]) p |= _SL_DARK | _SL_GROSS;               /* the lit side stays in the map: acne */
+    if (s[3] && e[3] && s[4] != e[4]) p |= _SL_DARK | _SL_GROSS; /* the near faces kept: acne */
+    return p ? p : SL_SYMPTOMS_ANY;
+}
+
+/* normal_offset_position: a point moved less along the normal than it should shadows itself. */
+static uint32_t _sl_offset_row_predicts(const sl_verdict_rows *v, int row) {
+    const float *in = v->k->inputs[row];
+    const float *p = _sl_param(v->f, in, "world_position"), *normal = _sl_param(v->f, in, "normal");
+    if (!p || !normal) return SL_SYMPTOMS_ANY;
+    double along_s = 0, along_e = 0;
+    for (int i = 0; i < 3; i++) {
+        double got = _sl_got(v, row, i);
+        if (isnan(got)) return SL_SYMPTOMS_ANY;
+        along_s += (got - p[i]) * normal[i];
+        along_e += (_sl_want(v, row, i) - p[i]) * normal[i];
+    }
+    if (along_s < 0) return _SL_DARK | _SL_GROSS; /* into the surface */
+    return along_s < along_e ? _SL_DARK : _SL_LIGHT | (along_s > 4 * along_e + 1e-6 ? _SL_GROSS : 0);
+}
+
 /* ---- lab 3 in the diagnosis table (diagnose/table.c) ---- */
+/* A row of lab3_depth_pass_state's probe is in one bias mode: the case's. */
+static int _sl_bias_mode_of(const sl_case *c) { return (int)c->params.bias.mode; }
+
 /* Acne is measured on the surfaces facing the light: only with that mask. */
 static bool _sl_lab3_visibility_on_mask(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
                                         sl_check_result *out) {
@@ -187,6 +426,11 @@ static bool _sl_lab3_same_path(const sl_case *failed, const sl_case *c) {
 
 const sl_lab_diagnoses sl_lab3_diagnoses = {
     .lab = 3,
+    .functions = {{"lab3_depth_pass_state", _sl_verdict_depth_pass_state, _sl_state_row_predicts, _sl_bias_mode_of},
+                  {"slope_scaled_bias", _sl_verdict_slope},
+                  {"normal_offset_position", _sl_verdict_normal_offset, _sl_offset_row_predicts}},
+    .unprobed = {{"lab3_second_depth_state", 3, "TODO(lab3.4)", true}},
+    .lookup_function = _sl_lab3_lookup_function,
     .same_path = _sl_lab3_same_path,
     .visibility = _sl_lab3_visibility_on_mask,
     .case_runs = sl_lab3_case_runs,

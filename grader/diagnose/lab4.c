@@ -16,6 +16,16 @@ static int _sl_compare_doubles(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
+/* The filter lab 4's case c looks up with: its filter mode's (none: lab 2's manual comparison). */
+static void _sl_lab4_lookup_function(const sl_case *c, const char **function, const char **todo) {
+    static const char *const filters[SL_FILTER_MODE_COUNT][2] = {
+        {"shadow_compare_manual() (lab 2)", "lab2.5"}, {"pcf_hardware()", "lab4.2"}, {"pcf_grid()", "lab4.3"},
+        {"pcf_poisson()", "lab4.4"}, {"pcss()", "lab4.5"},
+    };
+    *function = filters[c->params.filter.mode][0];
+    *todo = filters[c->params.filter.mode][1];
+}
+
 bool sl_diagnose_lab4_visibility(const sl_case *c, const sl_image *s, const sl_image *t, const sl_image *mask,
                                  sl_check_result *out) {
     long n = (long)t->width * t->height, soft_ref = 0, soft_stu = 0, lit = 0, lit_exact = 0, penumbra = 0;
@@ -61,7 +71,7 @@ bool sl_diagnose_lab4_visibility(const sl_case *c, const sl_image *s, const sl_i
             mode = i;
         }
     const char *fn, *todo;
-    sl_diag_lookup_function(c, &fn, &todo);
+    _sl_lab4_lookup_function(c, &fn, &todo);
     sl_acne acne = sl_measure_acne(s, t, mask);
     double soft_ref_pc = 100.0 * (double)soft_ref / (double)n, soft_stu_pc = 100.0 * (double)soft_stu / (double)n;
     bool cores_intact = core_kept >= core * 9 / 10; /* too few weights keep 0 at 0; a wide kernel does not */
@@ -173,7 +183,7 @@ void sl_diagnose_penumbra(const sl_case *c, const sl_check *k, const sl_case_res
         least = fminf(least, ws[i]);
     }
     const char *fn, *todo;
-    sl_diag_lookup_function(c, &fn, &todo);
+    _sl_lab4_lookup_function(c, &fn, &todo);
     if (last > 0 && wt[0] < wt[last] && ws[0] > ws[last] + 1) {
         sl_diag_say(out, "penumbrae inverted: wide at the contact, narrow far from it (%s)", widths);
         sl_diag_cause_in(out, "pcss", "penumbra formula inverted — w = (d_receiver - d_blocker) * w_light / d_blocker (TODO %s)",
@@ -251,6 +261,9 @@ void sl_lab4_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 /* Any filter of lab 4's reads past the map's edge. */
 static bool _sl_lab4_filters_past_edge(const sl_case *c) { return c->params.filter.mode != SL_FILTER_NONE; }
 
+/* A row of lab4_configure_shadow_texture's probe is in one filter mode: the case's. */
+static int _sl_filter_mode_of(const sl_case *c) { return (int)c->params.filter.mode; }
+
 const sl_lab_diagnoses sl_lab4_diagnoses = {
     .lab = 4,
     .filtered_lookup = true,
@@ -260,4 +273,6 @@ const sl_lab_diagnoses sl_lab4_diagnoses = {
     .case_runs = sl_lab4_case_runs,
     .case_path = sl_lab4_case_path,
     .meets_row = sl_lab4_meets_row,
+    .lookup_function = _sl_lab4_lookup_function,
+    .functions = {{"lab4_configure_shadow_texture", .case_mode = _sl_filter_mode_of}},
 };

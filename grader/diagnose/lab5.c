@@ -419,8 +419,20 @@ static bool _sl_lab5_filters_past_edge(const sl_case *c) {
     return c->params.vsm_off && c->params.filter.mode != SL_FILTER_NONE;
 }
 
+/* Lab 5's cases look up through the Chebyshev bound. */
+static void _sl_lab5_lookup_function(const sl_case *c, const char **function, const char **todo) {
+    (void)c;
+    *function = "chebyshev_upper_bound()";
+    *todo = "lab5.7";
+}
+
 const sl_lab_diagnoses sl_lab5_diagnoses = {
     .lab = 5,
+    .lookup_function = _sl_lab5_lookup_function,
+    .unprobed = {{"lab5_create_moments_target", 5, "TODO(lab5.1)", false},
+                 {"lab5_begin_moments_pass", 5, "TODO(lab5.2)", false},
+                 {"lab5_begin_blur_pass", 5, "TODO(lab5.4)", false},
+                 {"lab5_filter_moments", 5, "TODO(lab5.6)", false}},
     .filtered_lookup = true,
     .filters_past_edge = _sl_lab5_filters_past_edge,
     .checks = {{SL_CHECK_MOMENTS, sl_diagnose_moments},

@@ -12,12 +12,9 @@
 #include "sl_gl.h"
 #include "sl_probe.h"
 #include "sl_verdict.h"
+#include "verdict_rows.h"
 
 /* ---- what lab 5's probes show together ---- */
-
-static double _sl_got5(const sl_verdict_rows *v, int row, int o) { return v->student[row * v->f->output_count + o]; }
-static double _sl_want5(const sl_verdict_rows *v, int row, int o) { return v->expected[row * v->f->output_count + o]; }
-static bool _sl_failed5(const sl_verdict_rows *v, int row) { return (v->failing >> row) & 1u; }
 
 /* The texel of a moments map at a row's uv: what the stub (no blur) returns. */
 static double _sl_centre_texel(const float *in) {
@@ -29,10 +26,10 @@ static double _sl_centre_texel(const float *in) {
 static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
     int rows = v->k->rows, failing = 0, first = -1, as_stub = 0;
     for (int r = 0; r < rows; r++) {
-        if (!_sl_failed5(v, r)) continue;
+        if (!_sl_failed(v, r)) continue;
         failing++;
         if (first < 0) first = r;
-        as_stub += fabs(_sl_got5(v, r, 0) - _sl_centre_texel(v->k->inputs[r])) < 1e-5;
+        as_stub += fabs(_sl_got(v, r, 0) - _sl_centre_texel(v->k->inputs[r])) < 1e-5;
     }
     if (!failing) return -1;
     if (as_stub == failing) {
@@ -43,16 +40,16 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
     /* a flat map stays flat whatever the kernel: what it gives there is the sum of the weights */
     for (int r = 0; r < rows; r++) {
         const float *in = v->k->inputs[r];
-        if (!_sl_failed5(v, r) || (int)in[0] != SL_PROBE_MAP_MOMENTS_FLAT) continue;
-        double sum = _sl_got5(v, r, 0) / 0.5;
+        if (!_sl_failed(v, r) || (int)in[0] != SL_PROBE_MAP_MOMENTS_FLAT) continue;
+        double sum = _sl_got(v, r, 0) / 0.5;
         snprintf(text, n, "the weights sum to %.3g, not 1 (a flat map at depth 0.5 comes out at %.4g): divide the "
-                          "weighted sum by the sum of the weights", sum, _sl_got5(v, r, 0));
+                          "weighted sum by the sum of the weights", sum, _sl_got(v, r, 0));
         return r;
     }
     /* only the rows of one direction fail: the other direction is followed, this one not */
     int fail_x = 0, fail_y = 0, first_y = -1, first_x = -1;
     for (int r = 0; r < rows; r++) {
-        if (!_sl_failed5(v, r)) continue;
+        if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
         if (in[3] == 0 && in[4] != 0) {
             fail_y++;
@@ -71,13 +68,13 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
     }
     /* rows that differ in the radius alone, the same answer where the solution's differ */
     for (int a = 0; a < rows; a++) {
-        if (!_sl_failed5(v, a)) continue;
+        if (!_sl_failed(v, a)) continue;
         for (int b = 0; b < rows; b++) {
             const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
             bool twin = b != a && ia[5] != ib[5];
             for (int i = 0; twin && i < 5; i++) twin = ia[i] == ib[i];
             if (!twin) continue;
-            if (fabs(_sl_got5(v, a, 0) - _sl_got5(v, b, 0)) < 1e-5 && fabs(_sl_want5(v, a, 0) - _sl_want5(v, b, 0)) > 1e-3) {
+            if (fabs(_sl_got(v, a, 0) - _sl_got(v, b, 0)) < 1e-5 && fabs(_sl_want(v, a, 0) - _sl_want(v, b, 0)) > 1e-3) {
                 snprintf(text, n, "the radius is ignored: radius %d and radius %d give the same — a fixed kernel? "
                                   "2 * radius + 1 taps with weights exp(-i^2 / (2 sigma^2)), sigma = max(float(radius) * 0.5, 0.5)",
                          (int)ia[5], (int)ib[5]);
@@ -89,7 +86,7 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
      * gets sigma 1 where 1.5 is meant (radius 3), 2 where 2.5 is meant (radius 5) */
     int integer_sigma = 0, first_integer = -1;
     for (int r = 0; r < rows; r++) {
-        if (!_sl_failed5(v, r)) continue;
+        if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
         int radius = (int)in[5], dx = (int)in[3], dy = (int)in[4];
         int x = (int)floor(in[1] * SL_PROBE_MAP_SIZE), y = (int)floor(in[2] * SL_PROBE_MAP_SIZE);
@@ -102,7 +99,7 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
             sum += w * sl_probe_moments_depth((sl_probe_map)(int)in[0], tx, ty);
             weights += w;
         }
-        if (radius % 2 == 1 && radius > 1 && fabs(_sl_got5(v, r, 0) - sum / weights) < 1e-4) {
+        if (radius % 2 == 1 && radius > 1 && fabs(_sl_got(v, r, 0) - sum / weights) < 1e-4) {
             integer_sigma++;
             if (first_integer < 0) first_integer = r;
         }
@@ -116,9 +113,9 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
     /* across the edges: too little or too much of the other side */
     int narrow = 0, wide = 0, first_width = -1;
     for (int r = 0; r < rows; r++) {
-        if (!_sl_failed5(v, r)) continue;
+        if (!_sl_failed(v, r)) continue;
         double centre = _sl_centre_texel(v->k->inputs[r]);
-        double here = fabs(_sl_got5(v, r, 0) - centre), there = fabs(_sl_want5(v, r, 0) - centre);
+        double here = fabs(_sl_got(v, r, 0) - centre), there = fabs(_sl_want(v, r, 0) - centre);
         narrow += here < there;
         wide += here > there;
         if (first_width < 0) first_width = r;
@@ -137,14 +134,14 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
 static int _sl_verdict_bleeding(const sl_verdict_rows *v, char *text, size_t n) {
     int rows = v->k->rows, failing = 0, first = -1, swapped = 0;
     for (int r = 0; r < rows; r++) {
-        if (!_sl_failed5(v, r)) continue;
+        if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
         double p = in[0], amount = in[1];
         failing++;
         if (first < 0) first = r;
         double lo = p, hi = 1, x = amount; /* linstep(p_max, 1, amount) */
         double inverted = hi - lo > 1e-9 ? fmin(fmax((x - lo) / (hi - lo), 0), 1) : (x >= lo ? 1 : 0);
-        swapped += fabs(_sl_got5(v, r, 0) - inverted) < 1e-3;
+        swapped += fabs(_sl_got(v, r, 0) - inverted) < 1e-3;
     }
     if (!failing) return -1;
     if (swapped == failing) {
@@ -159,7 +156,7 @@ static int _sl_verdict_bleeding(const sl_verdict_rows *v, char *text, size_t n) 
         for (int r = 0; r < rows && all; r++) {
             double p = v->k->inputs[r][0];
             double want = fmin(fmax((p - amount) / (1 - amount), 0), 1);
-            all = fabs(_sl_got5(v, r, 0) - want) < 1e-3;
+            all = fabs(_sl_got(v, r, 0) - want) < 1e-3;
         }
         if (all) {
             snprintf(text, n, "the amount is not the one given: every row is linstep(%.2f, 1.0, p_max), whatever "
@@ -176,9 +173,9 @@ static int _sl_verdict_chebyshev(const sl_verdict_rows *v, char *text, size_t n)
     int rows = v->k->rows, failing = 0, first = -1, implied_rows = 0;
     double lo = INFINITY, hi = -INFINITY;
     for (int r = 0; r < rows; r++) {
-        if (!_sl_failed5(v, r)) continue;
+        if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
-        double mu = in[0], m2 = in[1], t = in[2], min_variance = in[3], p = _sl_got5(v, r, 0), d = t - mu;
+        double mu = in[0], m2 = in[1], t = in[2], min_variance = in[3], p = _sl_got(v, r, 0), d = t - mu;
         failing++;
         if (first < 0) first = r;
         if (t <= mu || p <= 0 || p >= 1) continue;

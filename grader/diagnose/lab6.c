@@ -189,8 +189,16 @@ void sl_lab6_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 }
 
 /* ---- lab 6 in the diagnosis table (diagnose/table.c) ---- */
+/* Lab 6's cases look up through its own cascade comparison. */
+static void _sl_lab6_lookup_function(const sl_case *c, const char **function, const char **todo) {
+    (void)c;
+    *function = "cascade_compare()";
+    *todo = "lab6.5";
+}
+
 const sl_lab_diagnoses sl_lab6_diagnoses = {
     .lab = 6,
+    .lookup_function = _sl_lab6_lookup_function,
     .filtered_lookup = true,
     .checks = {{SL_CHECK_CASCADE_INDEX, sl_diagnose_cascade_index}, {SL_CHECK_FLICKER, sl_diagnose_flicker}},
     .case_runs = sl_lab6_case_runs,

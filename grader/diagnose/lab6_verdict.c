@@ -12,12 +12,9 @@
 #include "sl_probe.h"
 #include "sl_scene.h"
 #include "sl_verdict.h"
+#include "verdict_rows.h"
 
 /* ---- what lab 6's probes show together ---- */
-
-static double _sl_out(const double *values, const sl_verdict_rows *v, int row, int i) {
-    return values[row * v->f->output_count + i];
-}
 
 static bool _sl_close(double a, double b) { return fabs(a - b) <= 1e-3 * fmax(1.0, fabs(b)); }
 
@@ -43,7 +40,7 @@ static bool _sl_log_splits(const sl_verdict_rows *v, int row, const double *unif
     if (best < 0) return false;
     double lambda = v->k->inputs[best][3];
     for (int i = 0; i <= (int)in[2]; i++)
-        out[i] = (_sl_out(v->expected, v, best, i) - (1 - lambda) * uniform[i]) / lambda;
+        out[i] = (_sl_want(v, best, i) - (1 - lambda) * uniform[i]) / lambda;
     return true;
 }
 
@@ -51,7 +48,7 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
     int rows = v->k->rows, uniform = 0, logarithmic = 0, swapped = 0, ends = 0, failing = 0, first = -1;
     int known = 0; /* failing rows whose logarithmic splits are known */
     for (int r = 0; r < rows; r++) {
-        if (!((v->failing >> r) & 1u)) continue;
+        if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
         int count = (int)in[2];
         if (count < 1 || count > SL_MAX_CASCADES) continue;
@@ -62,7 +59,7 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
         for (int i = 0; have_log && i <= count; i++) w[i] = (1 - in[3]) * l[i] + in[3] * u[i];
         bool is_u = true, is_l = have_log, is_w = have_log;
         for (int i = 0; i <= count; i++) {
-            double got = _sl_out(v->student, v, r, i);
+            double got = _sl_got(v, r, i);
             is_u &= _sl_close(got, u[i]);
             if (have_log) {
                 is_l &= _sl_close(got, l[i]);
@@ -75,7 +72,7 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
         uniform += is_u;
         logarithmic += is_l;
         swapped += is_w; /* at lambda 0 or 1 the swapped blend is the other pure scheme */
-        ends += !_sl_close(_sl_out(v->student, v, r, 0), in[0]) || !_sl_close(_sl_out(v->student, v, r, count), in[1]);
+        ends += !_sl_close(_sl_got(v, r, 0), in[0]) || !_sl_close(_sl_got(v, r, count), in[1]);
     }
     /* a row whose logarithmic splits no row tells (lambda 0 alone) neither confirms nor rules out those verdicts */
     if (known < failing) {
@@ -102,14 +99,14 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
     }
     /* rows that differ only in lambda, the same splits where the solution's differ: a scheme of its own */
     for (int a = 0; a < rows; a++) {
-        if (!((v->failing >> a) & 1u)) continue;
+        if (!_sl_failed(v, a)) continue;
         for (int b = 0; b < rows; b++) {
             const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
             if (b == a || ia[0] != ib[0] || ia[1] != ib[1] || ia[2] != ib[2] || ia[3] == ib[3]) continue;
             bool same = true, differ = false;
             for (int i = 0; i <= (int)ia[2] && i <= SL_MAX_CASCADES; i++) {
-                same &= _sl_close(_sl_out(v->student, v, a, i), _sl_out(v->student, v, b, i));
-                differ |= !_sl_close(_sl_out(v->expected, v, a, i), _sl_out(v->expected, v, b, i));
+                same &= _sl_close(_sl_got(v, a, i), _sl_got(v, b, i));
+                differ |= !_sl_close(_sl_want(v, a, i), _sl_want(v, b, i));
             }
             if (same && differ) {
                 snprintf(text, n, "lambda is ignored: lambda %g and lambda %g give the same splits — fixed splits of "
@@ -159,15 +156,15 @@ static void _sl_sphere(const float *in, double split_near, double split_far, dou
 static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
     int failing = 0, whole = 0, too_small = 0, first = -1;
     for (int r = 0; r < v->k->rows; r++) {
-        if (!((v->failing >> r) & 1u)) continue;
+        if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
         double all[4];
         _sl_sphere(in, in[8], in[9], all);
         bool is_whole = true;
-        for (int i = 0; i < 4; i++) is_whole &= fabs(_sl_out(v->student, v, r, i) - all[i]) <= 1e-3 * fmax(1, fabs(all[i]));
+        for (int i = 0; i < 4; i++) is_whole &= fabs(_sl_got(v, r, i) - all[i]) <= 1e-3 * fmax(1, fabs(all[i]));
         failing++;
         whole += is_whole;
-        too_small += _sl_out(v->student, v, r, 3) < _sl_out(v->expected, v, r, 3) * 0.999;
+        too_small += _sl_got(v, r, 3) < _sl_want(v, r, 3) * 0.999;
         if (first < 0) first = r;
     }
     if (!failing) return -1;
@@ -393,7 +390,7 @@ static bool _sl_reading_explains(const sl_verdict_rows *v, _sl_compare_reading h
         const float *in = v->k->inputs[r];
         int layer = h.first_layer ? 0 : (int)in[1] + h.layer_shift;
         double want = _sl_layer_compare(in, layer, h.bias < 0 ? in[6] : h.bias, h.divide);
-        if (want < 0 || fabs(_sl_out(v->student, v, r, 0) - want) > 1e-3) return false;
+        if (want < 0 || fabs(_sl_got(v, r, 0) - want) > 1e-3) return false;
     }
     return true;
 }
@@ -402,13 +399,13 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
     int rows = v->k->rows, failing = 0, first = -1, inverted = 0, far_rows = 0, no_far = 0;
     for (int r = 0; r < rows; r++) {
         const float *in = v->k->inputs[r];
-        double got = _sl_out(v->student, v, r, 0), want = _sl_out(v->expected, v, r, 0);
+        double got = _sl_got(v, r, 0), want = _sl_want(v, r, 0);
         inverted += fabs(got - (1 - want)) < 1e-3;
         if (in[4] / in[5] > 1.0) {
             far_rows++;
             no_far += got < 0.5;
         }
-        if (!((v->failing >> r) & 1u)) continue;
+        if (!_sl_failed(v, r)) continue;
         failing++;
         if (first < 0) first = r;
     }
@@ -453,14 +450,14 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
     }
     /* rows that differ only in the bias, the same answer where the solution's differ: the bias is not the one given */
     for (int a = 0; a < rows; a++) {
-        if (!((v->failing >> a) & 1u)) continue;
+        if (!_sl_failed(v, a)) continue;
         for (int b = 0; b < rows; b++) {
             const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
             bool twin = b != a && ia[6] != ib[6];
             for (int i = 0; twin && i < 6; i++) twin = ia[i] == ib[i];
             if (!twin) continue;
-            if (fabs(_sl_out(v->student, v, a, 0) - _sl_out(v->student, v, b, 0)) < 1e-3 &&
-                fabs(_sl_out(v->expected, v, a, 0) - _sl_out(v->expected, v, b, 0)) > 0.5) {
+            if (fabs(_sl_got(v, a, 0) - _sl_got(v, b, 0)) < 1e-3 &&
+                fabs(_sl_want(v, a, 0) - _sl_want(v, b, 0)) > 0.5) {
                 snprintf(text, n, "the bias is not the one given: the same point with bias %g and with bias %g gives "
                                   "the same answer — compare p.z - bias (the framework's bias is one and a half texels "
                                   "of this cascade, different in every cascade)", (double)ia[6], (double)ib[6]);
@@ -474,9 +471,9 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
 static int _sl_verdict_cascade_index(const sl_verdict_rows *v, char *text, size_t n) {
     int failing = 0, plus = 0, minus = 0, distance = 0, first = -1;
     for (int r = 0; r < v->k->rows; r++) {
-        if (!((v->failing >> r) & 1u)) continue;
+        if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
-        double got = _sl_out(v->student, v, r, 0), want = _sl_out(v->expected, v, r, 0);
+        double got = _sl_got(v, r, 0), want = _sl_want(v, r, 0);
         /* the index chosen by the distance to the camera */
         double d = sqrt(in[0] * in[0] + in[1] * in[1] + in[2] * in[2]);
         int count = (int)in[7], by_distance = count - 1;

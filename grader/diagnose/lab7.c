@@ -560,8 +560,16 @@ void sl_lab7_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 }
 
 /* ---- lab 7 in the diagnosis table (diagnose/table.c) ---- */
+/* Lab 7's cases look up in the cube map, hard or soft. */
+static void _sl_lab7_lookup_function(const sl_case *c, const char **function, const char **todo) {
+    *function = c->params.cube.soft ? "point_shadow_soft()" : "point_shadow()";
+    *todo = c->params.cube.soft ? "lab7.7" : "lab7.6";
+}
+
 const sl_lab_diagnoses sl_lab7_diagnoses = {
     .lab = 7,
+    .lookup_function = _sl_lab7_lookup_function,
+    .unprobed = {{"cube_depth.frag", 7, "TODO(lab7.5)", false}},
     .checks = {{SL_CHECK_CUBE_FACE, sl_diagnose_cube_face}},
     .visibility = sl_diagnose_lab7_visibility,
     .case_runs = sl_lab7_case_runs,

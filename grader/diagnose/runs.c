@@ -13,23 +13,28 @@
 #include "sl_probe.h"
 #include "sl_verdict.h"
 
-/* Lab code without a probe of its own: files and C functions a case may run.
- * Listed so that a message can name them as candidates. */
-static const sl_lab_function _sl_unprobed[] = {
-    {"depth.vert", 1, "TODO(lab1.4)", false},
-    {"lab3_second_depth_state", 3, "TODO(lab3.4)", true},
-    {"lab5_create_moments_target", 5, "TODO(lab5.1)", false},
-    {"lab5_begin_moments_pass", 5, "TODO(lab5.2)", false},
-    {"lab5_begin_blur_pass", 5, "TODO(lab5.4)", false},
-    {"lab5_filter_moments", 5, "TODO(lab5.6)", false},
-    {"cube_depth.frag", 7, "TODO(lab7.5)", false},
-};
-#define _SL_UNPROBED_COUNT ((int)(sizeof _sl_unprobed / sizeof _sl_unprobed[0]))
+/* Lab code without a probe of its own (files and C functions a case may run), as each lab lists it in
+ * its descriptor (`unprobed`), so that a message can name them as candidates: the i-th over the table. */
+static const sl_lab_function *_sl_unprobed_at(int i) {
+    const sl_lab_diagnoses *lab;
+    for (int l = 0; (lab = sl_lab_diagnoses_at(l)) != NULL; l++)
+        for (int j = 0; j < SL_LAB_MAX_UNPROBED && lab->unprobed[j].name; j++)
+            if (i-- == 0) return &lab->unprobed[j];
+    return NULL;
+}
+
+static const sl_lab_function *_sl_unprobed_named(const char *function) {
+    const sl_lab_function *u;
+    for (int i = 0; (u = _sl_unprobed_at(i)) != NULL; i++)
+        if (strcmp(u->name, function) == 0) return u;
+    return NULL;
+}
 
 int sl_lab_function_count(void) {
-    int probed = 0;
+    int probed = 0, unprobed = 0;
     while (sl_probe_at(probed)) probed++;
-    return probed + _SL_UNPROBED_COUNT;
+    while (_sl_unprobed_at(unprobed)) unprobed++;
+    return probed + unprobed;
 }
 
 sl_lab_function sl_lab_function_at(int i) {
@@ -39,16 +44,15 @@ sl_lab_function sl_lab_function_at(int i) {
         const sl_probe_function *f = sl_probe_at(i);
         return (sl_lab_function){f->name, f->lab, f->todo, f->bonus};
     }
-    i -= probed;
-    return i >= 0 && i < _SL_UNPROBED_COUNT ? _sl_unprobed[i] : (sl_lab_function){NULL, 0, NULL, false};
+    const sl_lab_function *u = _sl_unprobed_at(i - probed);
+    return u ? *u : (sl_lab_function){NULL, 0, NULL, false};
 }
 
 static bool _sl_is_bonus(const char *function) {
     const sl_probe_function *f = sl_probe_find(function);
     if (f) return f->bonus;
-    for (int i = 0; i < _SL_UNPROBED_COUNT; i++)
-        if (strcmp(_sl_unprobed[i].name, function) == 0) return _sl_unprobed[i].bonus;
-    return false;
+    const sl_lab_function *u = _sl_unprobed_named(function);
+    return u && u->bonus;
 }
 
 /* ---- what a case runs ---- */
@@ -68,6 +72,13 @@ void sl_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n
     out[0] = '\0';
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
     if (lab && lab->case_path) lab->case_path(c, r, out, n);
+}
+
+void sl_case_lookup_function(const sl_case *c, const char **function, const char **todo) {
+    const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
+    *function = "the shadow lookup";
+    *todo = "";
+    if (lab && lab->lookup_function) lab->lookup_function(c, function, todo);
 }
 
 /* ---- whether a case meets a probe row ---- */
@@ -97,11 +108,10 @@ static bool _sl_meets_row(const sl_case *c, const sl_check *probe, int r, bool e
     /* A call right after another mode's: a case draws in one mode from its start, only the viewer switches. */
     const float *previous = sl_probe_row_param(f, row, "previous_mode");
     if (previous && *previous >= 0) return false;
-    /* A mode: the case's own (a lab N function with a mode of lab N's settings). */
+    /* A mode: the case's own (a lab N function with a mode of lab N's settings, as its lab says). */
     const float *mode = sl_probe_row_param(f, row, "mode");
-    if (mode && strcmp(f->name, "lab3_depth_pass_state") == 0 && (int)*mode != (int)c->params.bias.mode) return false;
-    if (mode && strcmp(f->name, "lab4_configure_shadow_texture") == 0 && (int)*mode != (int)c->params.filter.mode)
-        return false;
+    const sl_function_verdict *own = sl_function_verdict_of(f);
+    if (mode && own && own->case_mode && (int)*mode != own->case_mode(c)) return false;
     return every_setting || _sl_meets_settings(c, probe, r);
 }
 
@@ -109,9 +119,9 @@ static bool _sl_meets_row(const sl_case *c, const sl_check *probe, int r, bool e
 
 /* Whether a row's mistake, in the outputs that differ, can show in case c at all. */
 static bool _sl_outputs_reach(const sl_case *c, const sl_probe_function *f, uint16_t outputs) {
-    /* lab 1's wrap mode and border matter only to a filter that reads past the map's edge: lab 2's
-     * lookups call a point off the map lit before they read it */
-    if (strcmp(f->name, "lab1_create_shadow_map") == 0 && outputs && !(outputs & 0x3u)) {
+    /* outputs that matter only to a filter reading past the map's edge (lab 1's wrap mode and border) */
+    const sl_function_verdict *own = sl_function_verdict_of(f);
+    if (own && own->edge_outputs && outputs && !(outputs & ~own->edge_outputs)) {
         const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
         return lab && lab->filters_past_edge && lab->filters_past_edge(c);
     }
@@ -168,9 +178,8 @@ bool sl_probe_failure_explains(const sl_case *c, const sl_check *k, const sl_pro
 bool sl_function_may_be_blamed(const sl_case *c, const sl_check *k, const char *function, bool isolated) {
     if (_sl_is_bonus(function) && !k->bonus) return false;
     const sl_probe_function *f = sl_probe_find(function);
-    int lab = f ? f->lab : 0;
-    for (int i = 0; !f && i < _SL_UNPROBED_COUNT; i++)
-        if (strcmp(_sl_unprobed[i].name, function) == 0) lab = _sl_unprobed[i].lab;
+    const sl_lab_function *u = f ? NULL : _sl_unprobed_named(function);
+    int lab = f ? f->lab : u ? u->lab : 0;
     if (isolated && lab && lab != c->lab) return false;
     return sl_case_runs(c, k, function);
 }

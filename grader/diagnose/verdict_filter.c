@@ -49,9 +49,8 @@ static int _sl_first_failing(const sl_verdict_rows *v, _sl_row_kind kind) {
  * kind of row that fails; -1 otherwise (a twin failing alike is another mistake). */
 static int _sl_homogeneous_differs(const sl_verdict_rows *v) {
     const sl_probe_function *f = v->f;
-    int coord = 0, floats = sl_probe_input_count(f), others = 0, lone = -1;
-    for (int i = 0; i < f->param_count && strcmp(f->params[i].name, "shadow_coord") != 0; i++)
-        coord += sl_probe_type_size(f->params[i].type);
+    int coord = _sl_param_offset(f, "shadow_coord"), floats = sl_probe_input_count(f), others = 0, lone = -1;
+    if (coord < 0) return -1;
     for (int a = 0; a < v->k->rows; a++) {
         if (!_sl_failed(v, a)) continue;
         _sl_filter_row fa = _sl_filter_row_of(f, v->k->inputs[a]);

@@ -1,4 +1,4 @@
-/* What the verdicts on a probe's rows read of them (verdict.c, verdict_filter.c):
+/* What the verdicts on a probe's rows read of them (verdict.c, verdict_filter.c, the labs' verdicts):
  * a parameter's inputs, whether a row failed, its outputs and the solution's. */
 #ifndef SL_VERDICT_ROWS_H
 #define SL_VERDICT_ROWS_H
@@ -10,14 +10,20 @@
 #include "sl_probe.h"
 #include "sl_verdict.h"
 
-/* The inputs of one parameter of a row, or NULL if the function has none of that name. */
-static inline const float *_sl_param(const sl_probe_function *f, const float *row, const char *name) {
+/* Where one parameter's inputs start in a row (floats), or -1 if the function has none of that name. */
+static inline int _sl_param_offset(const sl_probe_function *f, const char *name) {
     int offset = 0;
     for (int i = 0; i < f->param_count; i++) {
-        if (strcmp(f->params[i].name, name) == 0) return row + offset;
+        if (strcmp(f->params[i].name, name) == 0) return offset;
         offset += sl_probe_type_size(f->params[i].type);
     }
-    return NULL;
+    return -1;
+}
+
+/* The inputs of one parameter of a row, or NULL if the function has none of that name. */
+static inline const float *_sl_param(const sl_probe_function *f, const float *row, const char *name) {
+    int offset = _sl_param_offset(f, name);
+    return offset >= 0 ? row + offset : NULL;
 }
 
 static inline bool _sl_failed(const sl_verdict_rows *v, int row) { return (v->failing >> row) & 1u; }
