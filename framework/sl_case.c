@@ -369,8 +369,9 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
     } else if (!sl_case_name_valid(name) || strlen(name) >= sizeof c->name) {
         snprintf(err, n, "%s: \"name\" must be letters, digits, '_' and '-' (at most %zu): it names folders and files",
                  path, sizeof c->name - 1);
-    } else if (!cJSON_IsNumber(lab) || lab->valueint < 1 || lab->valueint > 7) {
-        snprintf(err, n, "%s: \"lab\" must be a number 1..7", path);
+    } else if (!cJSON_IsNumber(lab) || lab->valueint < 0 || lab->valueint > SL_LAB_COUNT) {
+        /* 0: the technique a build adds (its runner's slot 0, docs/adding-a-technique.md) */
+        snprintf(err, n, "%s: \"lab\" must be a number 1..%d (0: the technique a build adds)", path, SL_LAB_COUNT);
     } else if (!cJSON_IsArray(checks) || cJSON_GetArraySize(checks) < 1 ||
                cJSON_GetArraySize(checks) > SL_CASE_MAX_CHECKS) {
         snprintf(err, n, "%s: \"checks\" must be an array of 1..%d checks", path, SL_CASE_MAX_CHECKS);

@@ -1,5 +1,6 @@
 #include "sl_case_probe.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -179,12 +180,96 @@ static bool _sl_probe_vary(const sl_case *c, sl_check *k, const sl_probe_functio
     return true;
 }
 
+/* A function outside the course's table, described by the case (a technique a build adds, slot 0):
+ * "describe": {"lab": 0, "outputs": ["visibility"], "params": [{"name": "x", "type": "vec3"}, ...],
+ * "stub": 1, "bonus": false, "file": "...", "todo": "lab0.1"}. Its strings live here, for the
+ * grader's whole run. The runner finds the function by name in its own build and refuses a table
+ * whose counts are not its function's (sl_probe_pass_run), so a description cannot lie to it. */
+typedef struct _sl_described_store {
+    sl_probe_function f;
+    char name[SL_PROBE_NAME_MAX], outputs[256], file[160], todo[24];
+    char params[SL_PROBE_MAX_PARAMS][32];
+} _sl_described_store;
+
+static const sl_probe_function *_sl_probe_described(const sl_case *c, sl_check *k, const char *name,
+                                                    const cJSON *json, char *err, size_t n) {
+    static _sl_described_store stores[SL_PROBE_MAX_DESCRIBED];
+    static int store_count;
+    static const char *const types[] = {"float", "int", "vec2", "vec3", "vec4", "mat4", "map", "shadow_map",
+                                        "cube_map", "array_map", "moments_map"};
+    const cJSON *d = cJSON_GetObjectItemCaseSensitive(json, "describe");
+    if (!d) return NULL;
+    if (store_count == SL_PROBE_MAX_DESCRIBED) {
+        snprintf(err, n, "%s: checks \"%s\": more than %d functions described", c->path, k->name,
+                 SL_PROBE_MAX_DESCRIBED);
+        return NULL;
+    }
+    _sl_described_store *st = &stores[store_count];
+    memset(st, 0, sizeof *st);
+    sl_probe_function *f = &st->f;
+    const cJSON *lab = cJSON_GetObjectItemCaseSensitive(d, "lab");
+    const cJSON *outputs = cJSON_GetObjectItemCaseSensitive(d, "outputs");
+    const cJSON *params = cJSON_GetObjectItemCaseSensitive(d, "params"), *item;
+    const cJSON *stub = cJSON_GetObjectItemCaseSensitive(d, "stub");
+    const char *file = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(d, "file"));
+    const char *todo = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(d, "todo"));
+    bool ok = cJSON_IsObject(d) && strlen(name) < sizeof st->name && cJSON_IsNumber(lab) && lab->valueint == c->lab &&
+              cJSON_IsArray(outputs) && cJSON_GetArraySize(outputs) >= 1 &&
+              cJSON_GetArraySize(outputs) <= SL_PROBE_MAX_OUTPUTS && (!params || cJSON_IsArray(params)) &&
+              (!params || cJSON_GetArraySize(params) <= SL_PROBE_MAX_PARAMS) && (!stub || cJSON_IsNumber(stub));
+    const cJSON *output_list = ok ? outputs : NULL, *param_list = ok ? params : NULL;
+    cJSON_ArrayForEach(item, output_list) {
+        ok &= cJSON_IsString(item) && strlen(st->outputs) + strlen(item->valuestring) + 2 < sizeof st->outputs;
+        if (ok) snprintf(st->outputs + strlen(st->outputs), sizeof st->outputs - strlen(st->outputs), "%s%s",
+                         f->output_count ? "," : "", item->valuestring);
+        f->output_count++;
+    }
+    if (!ok) param_list = NULL;
+    cJSON_ArrayForEach(item, param_list) {
+        const char *pname = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(item, "name"));
+        const char *type = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(item, "type"));
+        int found = -1;
+        for (int i = 0; type && i < (int)(sizeof types / sizeof types[0]); i++)
+            if (strcmp(type, types[i]) == 0) found = i;
+        ok &= pname && found >= 0 && strlen(pname) < sizeof st->params[0];
+        if (!ok) break;
+        snprintf(st->params[f->param_count], sizeof st->params[0], "%s", pname);
+        f->params[f->param_count] = (sl_probe_param){st->params[f->param_count], (sl_probe_type)found};
+        f->param_count++;
+    }
+    if (ok && sl_probe_input_count(f) > SL_PROBE_MAX_INPUTS) ok = false;
+    if (!ok) {
+        snprintf(err, n, "%s: checks \"%s\": \"describe\" must give %s()'s \"lab\" (the case's), \"outputs\" "
+                         "(1..%d names), \"params\" ([{\"name\", \"type\": float, int, vec2, vec3, vec4, mat4 or a "
+                         "map}], at most %d floats a row) and optionally \"stub\", \"bonus\", \"file\", \"todo\"",
+                 c->path, k->name, name, SL_PROBE_MAX_OUTPUTS, SL_PROBE_MAX_INPUTS);
+        return NULL;
+    }
+    snprintf(st->name, sizeof st->name, "%s", name);
+    snprintf(st->file, sizeof st->file, "%s", file ? file : "");
+    snprintf(st->todo, sizeof st->todo, "%s", todo ? todo : "");
+    f->name = st->name;
+    f->lab = c->lab;
+    f->outputs = st->outputs;
+    f->file = st->file;
+    f->todo = st->todo;
+    f->stub_value = stub ? stub->valuedouble : NAN;
+    f->stub_param = -1;
+    f->bonus = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(d, "bonus"));
+    const sl_probe_function *described = sl_probe_describe(f);
+    if (described) store_count++; /* its copy points at this store's strings */
+    return described;
+}
+
 bool sl_case_probe_check(const sl_case *c, sl_check *k, const cJSON *json, char *err, size_t n) {
     const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "function"));
     const sl_probe_function *f = name ? sl_probe_find(name) : NULL;
+    err[0] = '\0';
+    if (!f && name) f = _sl_probe_described(c, k, name, json, err, n);
     if (!f) {
-        snprintf(err, n, "%s: checks \"%s\": \"function\" must name a lab function (%s is none)", c->path, k->name,
-                 name ? name : "nothing");
+        if (!err[0])
+            snprintf(err, n, "%s: checks \"%s\": \"function\" must name a lab function, or describe one of a "
+                             "technique outside the course (%s is none)", c->path, k->name, name ? name : "nothing");
         return false;
     }
     k->function = sl_probe_index(f);
