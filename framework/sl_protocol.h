@@ -87,7 +87,7 @@ typedef struct sl_job {
     sl_camera frame_cameras[SL_JOB_MAX_FRAMES];
     sl_render_params params;
     uint32_t captures;             /* bit (1 << capture) per capture wanted; probe k: SL_CAPTURE_PROBE + k */
-    sl_probe_table probes[SL_JOB_MAX_PROBES]; /* function -1: none */
+    sl_probe_table probes[SL_JOB_MAX_PROBES]; /* function "": none */
     char labs_dir[512];            /* the labs tree's shaders, as the runner sees the file system */
     char framework_dir[512];       /* framework/ (its shaders/), likewise */
 } sl_job;
