@@ -183,6 +183,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                             "technique, come from --runners)\n", cases[i].path, lab);
             return SL_EXIT_ERROR;
         }
+        if (lab == 0 && o.isolate) {
+            fprintf(stderr, "shadowlab-grade: %s grades lab 0, the technique a build adds, which --isolate has no "
+                            "runner for: grade it without --isolate\n", cases[i].path);
+            return SL_EXIT_ERROR;
+        }
         /* lab 0: the technique the runners' build adds; the runner says when its build adds none */
         if (lab > SL_LAB_COUNT || (lab > 0 && !sl_lab_folder(lab))) {
             fprintf(stderr, "shadowlab-grade: %s grades lab %d, which this build does not have\n", cases[i].path, lab);
