@@ -175,17 +175,39 @@ static const sl_probe_function _sl_functions[] = {
 
 #define _SL_FUNCTION_COUNT ((int)(sizeof _sl_functions / sizeof _sl_functions[0]))
 
+/* Functions described since (sl_probe_describe): indices _SL_FUNCTION_COUNT and up. */
+static sl_probe_function _sl_described[SL_PROBE_MAX_DESCRIBED];
+static int _sl_described_count;
+
 const sl_probe_function *sl_probe_find(const char *name) {
     for (int i = 0; i < _SL_FUNCTION_COUNT; i++)
         if (strcmp(_sl_functions[i].name, name) == 0) return &_sl_functions[i];
+    for (int i = 0; i < _sl_described_count; i++)
+        if (strcmp(_sl_described[i].name, name) == 0) return &_sl_described[i];
     return NULL;
 }
 
-const sl_probe_function *sl_probe_at(int index) {
-    return index >= 0 && index < _SL_FUNCTION_COUNT ? &_sl_functions[index] : NULL;
+const sl_probe_function *sl_probe_describe(const sl_probe_function *f) {
+    for (int i = 0; i < _SL_FUNCTION_COUNT; i++)
+        if (strcmp(_sl_functions[i].name, f->name) == 0) return NULL;
+    const sl_probe_function *known = sl_probe_find(f->name);
+    if (known) return known;
+    if (_sl_described_count == SL_PROBE_MAX_DESCRIBED || strlen(f->name) >= SL_PROBE_NAME_MAX) return NULL;
+    _sl_described[_sl_described_count] = *f;
+    return &_sl_described[_sl_described_count++];
 }
 
-int sl_probe_index(const sl_probe_function *f) { return (int)(f - _sl_functions); }
+const sl_probe_function *sl_probe_at(int index) {
+    if (index >= 0 && index < _SL_FUNCTION_COUNT) return &_sl_functions[index];
+    index -= _SL_FUNCTION_COUNT;
+    return index >= 0 && index < _sl_described_count ? &_sl_described[index] : NULL;
+}
+
+int sl_probe_index(const sl_probe_function *f) {
+    if (f >= _sl_described && f < _sl_described + SL_PROBE_MAX_DESCRIBED)
+        return _SL_FUNCTION_COUNT + (int)(f - _sl_described);
+    return (int)(f - _sl_functions);
+}
 
 int sl_probe_type_size(sl_probe_type type) {
     static const int sizes[] = {[SL_PROBE_FLOAT] = 1, [SL_PROBE_INT] = 1, [SL_PROBE_VEC2] = 2, [SL_PROBE_VEC3] = 3,

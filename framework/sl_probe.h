@@ -80,8 +80,15 @@ typedef struct sl_probe_function {
     bool bonus;         /* an extension's function */
 } sl_probe_function;
 
-/* The function of that name, or NULL. */
+/* The function of that name, or NULL: the course's (this file's table) or one described since. */
 const sl_probe_function *sl_probe_find(const char *name);
+/* Adds the description of a function outside the course's table (a technique a build adds, slot 0:
+ * its case describes it to the grader, its descriptor to the runner, sl_technique.h), so that
+ * sl_probe_find, sl_probe_at and sl_probe_index know it; the description is copied, its strings are
+ * not. A name described before keeps its first description. Returns it, or NULL when the name is the
+ * course's or SL_PROBE_MAX_DESCRIBED are described already. */
+#define SL_PROBE_MAX_DESCRIBED 8
+const sl_probe_function *sl_probe_describe(const sl_probe_function *f);
 const sl_probe_function *sl_probe_at(int index);
 int sl_probe_index(const sl_probe_function *f);
 /* Floats one input row takes (a map counts one: its sl_probe_map). */
@@ -105,9 +112,13 @@ float sl_probe_moments_depth(sl_probe_map map, int x, int y);
 /* A texture array's depth in layer `layer` at texel (x, y). */
 float sl_probe_layer_depth(sl_probe_map map, int layer, int x, int y);
 
-/* A table of inputs as the runner receives it. */
+/* A table of inputs as the runner receives it. The function travels by name, so a runner finds it in
+ * its own build (the course's table, or a technique's described probe) whatever the grader's indices;
+ * with the counts the grader read the case's rows by, which the runner's function must have. */
+#define SL_PROBE_NAME_MAX 48
 typedef struct sl_probe_table {
-    int function;  /* sl_probe_at index; -1: none */
+    char function[SL_PROBE_NAME_MAX]; /* "": none */
+    int input_count, output_count;
     int rows;
     float inputs[SL_PROBE_MAX_ROWS][SL_PROBE_MAX_INPUTS];
 } sl_probe_table;

@@ -319,10 +319,32 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     return true;
 }
 
+const sl_probe_function *sl_probe_pass_function(const char *name) {
+    const sl_probe_function *f = sl_probe_find(name);
+    for (int lab = 0; !f && lab <= SL_LAB_COUNT; lab++) {
+        const sl_technique *t = sl_technique_of(lab);
+        for (const sl_technique_probe *p = t ? t->probes : NULL; !f && p && p->function; p++)
+            if (p->described && strcmp(p->function, name) == 0) f = p->described;
+    }
+    return f;
+}
+
 bool sl_probe_pass_run(const sl_probe_table *t, const char *labs_dir, const char *framework_dir, double *outputs,
                        bool *not_implemented, char *err, size_t n) {
-    return sl_probe_pass_run_function(sl_probe_at(t->function), t, labs_dir, framework_dir, outputs, not_implemented,
-                                      err, n);
+    *not_implemented = false;
+    char name[SL_PROBE_NAME_MAX];
+    snprintf(name, sizeof name, "%s", t->function);
+    const sl_probe_function *f = sl_probe_pass_function(name);
+    if (!f) {
+        snprintf(err, n, "this build has no function %s() to probe", name);
+        return false;
+    }
+    if (sl_probe_input_count(f) != t->input_count || f->output_count != t->output_count) {
+        snprintf(err, n, "the case describes %s() with %d inputs and %d outputs a row; this build's has %d and %d",
+                 name, t->input_count, t->output_count, sl_probe_input_count(f), f->output_count);
+        return false;
+    }
+    return sl_probe_pass_run_function(f, t, labs_dir, framework_dir, outputs, not_implemented, err, n);
 }
 
 bool sl_probe_pass_run_function(const sl_probe_function *f, const sl_probe_table *t, const char *labs_dir,

@@ -25,10 +25,13 @@
 #include "sl_scene.h"
 
 #define SL_JOB_MAGIC 0x424a4c53u /* "SLJB" */
-#define SL_PROTOCOL_VERSION 2
+#define SL_PROTOCOL_VERSION 3 /* 3: probe tables name their function (sl_probe_table) */
 #define SL_JOB_MAX_FRAMES 16
 #define SL_JOB_MAX_PROBES 8   /* a case's checks: each may be a probe */
 #define SL_CHANNEL_FD 3
+/* Where, in the job's labs tree, the technique a build adds (lab 0) finds its files (its shaders/):
+ * the namespaces sandbox copies them there from the grader's --technique-dir. */
+#define SL_TECHNIQUE_FOLDER "technique"
 
 /* What a case can ask the runner to capture after its last frame. */
 typedef enum sl_capture_kind {
@@ -84,7 +87,7 @@ typedef struct sl_job {
     sl_camera frame_cameras[SL_JOB_MAX_FRAMES];
     sl_render_params params;
     uint32_t captures;             /* bit (1 << capture) per capture wanted; probe k: SL_CAPTURE_PROBE + k */
-    sl_probe_table probes[SL_JOB_MAX_PROBES]; /* function -1: none */
+    sl_probe_table probes[SL_JOB_MAX_PROBES]; /* function "": none */
     char labs_dir[512];            /* the labs tree's shaders, as the runner sees the file system */
     char framework_dir[512];       /* framework/ (its shaders/), likewise */
 } sl_job;

@@ -14,6 +14,7 @@
 #include "sl_probe_pass.h"
 #include "sl_protocol.h"
 #include "sl_renderer.h"
+#include "sl_technique.h"
 
 static void _sl_write_all(const void *data, size_t n) {
     const char *p = data;
@@ -324,16 +325,16 @@ static void _sl_run_probes(const sl_job *job, _sl_missing *missing) {
     static double outputs[SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS];
     for (int k = 0; k < SL_JOB_MAX_PROBES; k++) {
         const sl_probe_table *t = &job->probes[k];
-        const sl_probe_function *f = sl_probe_at(t->function);
-        if (!f || !_sl_wants(job, (sl_capture_kind)(SL_CAPTURE_PROBE + k))) continue;
+        if (!t->function[0] || !_sl_wants(job, (sl_capture_kind)(SL_CAPTURE_PROBE + k))) continue;
+        const char *name = t->function; /* terminated when the job was read */
         char err[8192];
         bool not_implemented = false;
-        _sl_stage_hook(f->name);
+        _sl_stage_hook(name);
         bool ok = sl_probe_pass_run(t, job->labs_dir, job->framework_dir, outputs, &not_implemented, err, sizeof err);
         _sl_stage_hook(NULL);
-        if (not_implemented) _sl_missing_add(missing, f->name);
+        if (not_implemented) _sl_missing_add(missing, name);
         if (ok) _sl_send(SL_MSG_NUMBERS, sl_capture_name(SL_CAPTURE_PROBE + k), outputs,
-                         (size_t)t->rows * (size_t)f->output_count * sizeof(double));
+                         (size_t)t->rows * (size_t)t->output_count * sizeof(double));
         else _sl_send_text(SL_MSG_CAPTURE_ERROR, sl_capture_name(SL_CAPTURE_PROBE + k), err);
     }
 }
@@ -379,6 +380,11 @@ static bool _sl_read_job(sl_job *job, char *err, size_t n) {
     }
     job->labs_dir[sizeof job->labs_dir - 1] = '\0';
     job->framework_dir[sizeof job->framework_dir - 1] = '\0';
+    for (int k = 0; k < SL_JOB_MAX_PROBES; k++) job->probes[k].function[SL_PROBE_NAME_MAX - 1] = '\0';
+    if (job->lab == 0 && !sl_technique_of(0)) {
+        snprintf(err, n, "the case grades the technique a build adds (lab 0), and this runner's build adds none");
+        return false;
+    }
     if (job->frame_count < 0 || job->frame_count > SL_JOB_MAX_FRAMES || job->width < 1 || job->height < 1 ||
         job->width > SL_IMAGE_SIDE_MAX || job->height > SL_IMAGE_SIDE_MAX) {
         snprintf(err, n, "the job is malformed");

@@ -54,6 +54,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     if (!o.cases_dir) o.cases_dir = default_cases;
     if (!o.refs_dir) o.refs_dir = default_refs;
     bool custom = o.labs_dir || o.runners_dir;
+    /* The references of a technique a build adds (lab 0) come from its correct build's runners:
+     * --update-references --runners DIR, every case of lab 0 (checked once the cases are read). */
+    bool technique_update = o.update && o.runners_dir && !o.labs_dir;
     const char *labs_kind = custom ? "other" : sl_config_labs_kind;
     if (!o.labs_dir) o.labs_dir = sl_config_labs_dir;
     if (!o.runners_dir) o.runners_dir = sl_config_runners_dir;
@@ -94,13 +97,13 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                 sl_config_stubs_dir[0] ? sl_config_stubs_dir : "none in this build");
         return SL_EXIT_ERROR;
     }
-    if (o.update && custom) {
+    if (o.update && custom && !technique_update) {
         fprintf(stderr, "shadowlab-grade: --update-references renders references from the solutions' own runner; "
                         "drop --labs-dir and --runners\n");
         return SL_EXIT_ERROR;
     }
     char err[1500];
-    const char *graded_tree = o.update ? sl_config_solutions_dir : o.labs_dir;
+    const char *graded_tree = o.update && !technique_update ? sl_config_solutions_dir : o.labs_dir;
     if (!_sl_check_labs_tree(graded_tree, err, sizeof err)) {
         fprintf(stderr, "shadowlab-grade: --labs-dir: %s\n", err);
         return SL_EXIT_ERROR;
@@ -130,12 +133,14 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                 if (sl_lab_folder(other)) s->lab_dirs[other] = _sl_isolated_source(lab, other, o.labs_dir);
         }
     } else {
-        if (o.update) snprintf(runner_paths[0], sizeof runner_paths[0], "%s", sl_config_solutions_runner);
+        if (o.update && !technique_update)
+            snprintf(runner_paths[0], sizeof runner_paths[0], "%s", sl_config_solutions_runner);
         else snprintf(runner_paths[0], sizeof runner_paths[0], "%s/shadowlab-runner", o.runners_dir);
         run.setups[0].runner = runner_paths[0];
         run.setups[0].labs_tree = graded_tree;
         for (int lab = 1; lab <= SL_LAB_COUNT; lab++)
             if (sl_lab_folder(lab)) run.setups[0].lab_dirs[lab] = graded_tree;
+        run.setups[0].lab_dirs[0] = o.technique_dir; /* lab 0's files: the technique's folder */
     }
 
     static sl_grade_report rep;
@@ -172,7 +177,19 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     for (int i = 0; i < count; i++) {
         int lab = cases[i].lab;
         const sl_runner_setup *s = run.setups[lab].runner ? &run.setups[lab] : &run.setups[0];
-        if (lab > SL_LAB_COUNT || !sl_lab_folder(lab)) {
+        if (technique_update && lab != 0) {
+            fprintf(stderr, "shadowlab-grade: --update-references renders references from the solutions' own runner; "
+                            "drop --labs-dir and --runners (%s grades lab %d; only lab 0's, a build's added "
+                            "technique, come from --runners)\n", cases[i].path, lab);
+            return SL_EXIT_ERROR;
+        }
+        if (lab == 0 && o.isolate) {
+            fprintf(stderr, "shadowlab-grade: %s grades lab 0, the technique a build adds, which --isolate has no "
+                            "runner for: grade it without --isolate\n", cases[i].path);
+            return SL_EXIT_ERROR;
+        }
+        /* lab 0: the technique the runners' build adds; the runner says when its build adds none */
+        if (lab > SL_LAB_COUNT || (lab > 0 && !sl_lab_folder(lab))) {
             fprintf(stderr, "shadowlab-grade: %s grades lab %d, which this build does not have\n", cases[i].path, lab);
             return SL_EXIT_ERROR;
         }
@@ -381,7 +398,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         static sl_lab_failure lab_failures[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
         int lab_failure_count = 0;
         memset(lab_failures, 0, sizeof lab_failures);
-        for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+        for (int lab = 0; lab <= SL_LAB_MAX; lab++) { /* 0: a build's added technique */
             for (int i = 0; i < count; i++) {
                 if (cases[i].lab != lab) continue;
                 for (int k = 0; k < cases[i].check_count; k++) {

@@ -40,6 +40,11 @@ static void _sl_usage(FILE *f) {
             "  --labs-dir DIR       the labs tree whose shaders are graded (default: this build's)\n"
             "  --runners DIR        the folder with shadowlab-runner built from those labs' C files\n"
             "                       (default: this build's)\n"
+            "  --technique-dir DIR  the folder of the technique those runners' build adds (lab 0 cases,\n"
+            "                       docs/adding-a-technique.md): the sandbox shows its shaders/ to the runner\n"
+            "                       as technique/shaders in its labs tree. With --update-references and\n"
+            "                       --runners, lab 0's references are rendered by those runners (the\n"
+            "                       technique's correct build)\n"
             "  --backend NAME       GL: osmesa or egl (default: OSMesa where this build has it, else\n"
             "                       EGL; both render with llvmpipe, as the references were), or window:\n"
             "                       a hidden window on this machine's GL (macOS, Windows, a build\n"
@@ -121,7 +126,7 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
                                                  "--sandbox", "--memory", "--seed", "--not-built", "--gradebook",
-                                                 "--build-logs", "--submission-summary"};
+                                                 "--build-logs", "--submission-summary", "--technique-dir"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -162,6 +167,7 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--references") == 0) o->refs_dir = v;
         else if (strcmp(a, "--labs-dir") == 0) o->labs_dir = v;
         else if (strcmp(a, "--runners") == 0) o->runners_dir = v;
+        else if (strcmp(a, "--technique-dir") == 0) o->technique_dir = v;
         else if (strcmp(a, "--backend") == 0) {
             if (!sl_backend_parse(v, &o->backend) || !sl_backend_available(o->backend)) {
                 fprintf(stderr, "shadowlab-grade: --backend: '%s' is not a backend of this build (it has %s)\n", v,

@@ -18,6 +18,7 @@ enum { SL_EXIT_FULL = 0, SL_EXIT_FAILED = 1, SL_EXIT_ERROR = 2, SL_EXIT_NO_LAB_F
 
 typedef struct _sl_options {
     const char *cases_dir, *refs_dir, *labs_dir, *runners_dir;
+    const char *technique_dir; /* the files of the technique the runners' build adds (lab 0): its shaders/ */
     const char *patterns[_SL_MAX_PATTERNS], *excludes[_SL_MAX_PATTERNS];
     int pattern_count, exclude_count;
     const char *report_dir, *gradescope, *prairielearn, *junit;

@@ -91,13 +91,14 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
     if (rep->self_check) fprintf(out, "%sSelf-check:%s %s\n", bold, reset, rep->self_check);
     for (int i = 0; i < rep->submission_note_count; i++)
         fprintf(out, "%sSubmission:%s %s\n", i == 0 && rep->no_lab_file ? red : bold, reset, rep->submission_notes[i]);
-    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+    for (int lab = 0; lab <= SL_LAB_MAX; lab++) { /* 0: the technique the runners' build adds */
         double score = 0, max = 0, bonus = 0;
         bool any = false;
         for (int i = 0; i < rep->case_count; i++) {
             const sl_graded_case *g = &rep->cases[i];
             if (g->c->lab != lab) continue;
-            if (!any) fprintf(out, "%sLab %d: %s%s\n", bold, lab, sl_lab_title(lab), reset);
+            if (!any)
+                fprintf(out, "%sLab %d: %s%s\n", bold, lab, lab ? sl_lab_title(lab) : "the build's added technique", reset);
             any = true;
             for (int k = 0; k < g->c->check_count; k++) {
                 const sl_check_result *cr = &g->checks[k];

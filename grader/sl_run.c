@@ -105,9 +105,11 @@ static void _sl_build_job(sl_job *job, const sl_case *c, const sl_run_options *o
     job->captures = _sl_wanted_captures(c);
     for (int k = 0; k < SL_JOB_MAX_PROBES; k++) {
         sl_probe_table *t = &job->probes[k];
-        t->function = -1;
         if (k >= c->check_count || c->checks[k].kind != SL_CHECK_PROBE) continue;
-        t->function = c->checks[k].function;
+        const sl_probe_function *f = sl_probe_at(c->checks[k].function);
+        snprintf(t->function, sizeof t->function, "%s", f->name); /* by name: the runner's build resolves it */
+        t->input_count = sl_probe_input_count(f);
+        t->output_count = f->output_count;
         t->rows = c->checks[k].rows;
         memcpy(t->inputs, c->checks[k].inputs, sizeof t->inputs);
     }

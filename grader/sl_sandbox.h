@@ -100,7 +100,9 @@ void sl_sandbox_describe(const sl_sandbox *sandbox, char *out, size_t out_size);
 typedef struct sl_sandbox_spawn_desc {
     const char *runner;                     /* the executable */
     /* Where each lab's folder comes from: its shaders/ are what the runner may
-     * read (copied into the sandbox at SL_SANDBOX_NAMESPACES). */
+     * read (copied into the sandbox at SL_SANDBOX_NAMESPACES). [0]: the folder
+     * of the technique the runner's build adds (lab 0), itself, not a tree: its
+     * shaders/ become SL_TECHNIQUE_FOLDER/shaders of the sandbox's labs tree. */
     const char *lab_dirs[SL_LAB_COUNT + 1];
     /* One labs tree holding every lab's folder, read in place below
      * SL_SANDBOX_NAMESPACES (for --isolate, a tree of links). */

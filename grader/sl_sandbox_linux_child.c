@@ -31,6 +31,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "sl_protocol.h" /* SL_TECHNIQUE_FOLDER */
 #include "sl_mount_point.h"
 #include "sl_sandbox_linux_filters.h"
 
@@ -287,6 +288,15 @@ static void _sl_enter_view(const sl_sandbox *sb, const sl_sandbox_spawn_desc *d,
         _sl_path(path, sizeof path, sub, "shaders");
         int shaders = _sl_open_shaders(d->lab_dirs[lab], sl_lab_folder(lab));
         if (shaders >= 0) _sl_copy_tree(shaders, path, 0, &budget);
+    }
+    if (d->lab_dirs[0]) { /* the technique a build adds: its own folder's shaders/ */
+        _sl_path(path, sizeof path, root, "labs/" SL_TECHNIQUE_FOLDER);
+        _sl_mkdir(path, 0755);
+        _sl_path(sub, sizeof sub, path, "shaders");
+        int top = open(d->lab_dirs[0], O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        int shaders = top >= 0 ? openat(top, "shaders", O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC) : -1;
+        if (top >= 0) close(top);
+        if (shaders >= 0) _sl_copy_tree(shaders, sub, 0, &budget);
     }
     char source[1100];
     _sl_path(source, sizeof source, d->framework_dir, "shaders");

@@ -108,16 +108,16 @@ static void _check_key_listed(void) {
     _check(status == 0 && toy_key && common_key, "the viewer lists its key as lab 0's, beside the common keys");
 }
 
-/* The probe pass runs the toy's probe, found through the table. */
+/* The probe pass runs the toy's probe, found by its name through the table, as the runner finds a
+ * case's probe (sl_probe_pass_run). */
 static void _check_probe(float expected, char *err, size_t n) {
     const sl_technique_probe *probe = sl_technique_probe_of(0, "toy_visibility");
     _check(probe && probe->described, "the table holds the toy's probe");
     if (!probe || !probe->described) return;
-    sl_probe_table table = {.function = -1, .rows = 1};
+    sl_probe_table table = {.function = "toy_visibility", .output_count = 1, .rows = 1};
     double outputs[SL_PROBE_MAX_OUTPUTS] = {0};
     bool not_implemented = false;
-    bool ran = sl_probe_pass_run_function(probe->described, &table, sl_build_labs_dir, sl_framework_dir(), outputs,
-                                          &not_implemented, err, n);
+    bool ran = sl_probe_pass_run(&table, sl_build_labs_dir, sl_framework_dir(), outputs, &not_implemented, err, n);
     printf("toy: probe toy_visibility() = %.3f\n", outputs[0]);
     _check(ran && !not_implemented && fabs(outputs[0] - expected) < 1e-6, "its probe returns the expected visibility");
 }

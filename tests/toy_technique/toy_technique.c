@@ -2,8 +2,10 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include "sl_probe.h"
+#include "sl_protocol.h"
 #include "sl_renderer.h"
 #include "sl_shader.h"
 
@@ -31,8 +33,16 @@ static _toy_state *_toy_program(sl_renderer *r) {
     _toy_state *s = r->technique_state[0];
     if (!s && !(s = r->technique_state[0] = calloc(1, sizeof *s))) return NULL;
     if (!s->built && !s->failed) {
-        sl_shader_desc desc = {.vertex_path = TOY_TECHNIQUE_DIR "/shaders/toy.vert",
-                               .fragment_path = TOY_TECHNIQUE_DIR "/shaders/toy.frag"};
+        /* Its files: in the grader's sandbox, where the grader copied them (its --technique-dir, as
+         * SL_TECHNIQUE_FOLDER of the job's labs tree); elsewhere, where its build put them. */
+        char vertex[SL_PATH_MAX + 64], fragment[SL_PATH_MAX + 64];
+        snprintf(vertex, sizeof vertex, "%s/" SL_TECHNIQUE_FOLDER "/shaders/toy.vert", r->labs_dir);
+        snprintf(fragment, sizeof fragment, "%s/" SL_TECHNIQUE_FOLDER "/shaders/toy.frag", r->labs_dir);
+        if (access(vertex, R_OK) != 0) {
+            snprintf(vertex, sizeof vertex, "%s", TOY_TECHNIQUE_DIR "/shaders/toy.vert");
+            snprintf(fragment, sizeof fragment, "%s", TOY_TECHNIQUE_DIR "/shaders/toy.frag");
+        }
+        sl_shader_desc desc = {.vertex_path = vertex, .fragment_path = fragment};
         s->built = sl_program_build(&s->program, &desc, r->shader_errors[0], sizeof r->shader_errors[0]);
         s->failed = !s->built;
     }
