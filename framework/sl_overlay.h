@@ -26,21 +26,8 @@
 #include <cglm/cglm.h>
 
 #include "sl_gl.h"
+#include "sl_overlay_types.h"
 
-typedef enum sl_overlay_corner {
-    SL_OVERLAY_TOP_LEFT,
-    SL_OVERLAY_TOP_RIGHT,
-    SL_OVERLAY_BOTTOM_LEFT,
-    SL_OVERLAY_BOTTOM_RIGHT,
-    SL_OVERLAY_CORNER_COUNT
-} sl_overlay_corner;
-
-/* The font's cell in font pixels (a 5x8 glyph with spacing); on screen each
- * font pixel is `scale` pixels wide and high. */
-#define SL_OVERLAY_CELL_W 6
-#define SL_OVERLAY_CELL_H 10
-
-typedef struct sl_overlay sl_overlay;
 
 /* Builds the font texture and the two programs (framework/shaders/overlay_*);
  * needs a current GL context. NULL with a message in err on failure. */
