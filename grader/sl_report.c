@@ -85,6 +85,9 @@ static void _sl_print_message(FILE *out, const char *message) {
     if (*p) fprintf(out, "          ...\n");
 }
 
+/* Lab 0 is the technique the runners' build adds (docs/adding-a-technique.md): every report lists it. */
+static const char *_sl_report_lab_title(int lab) { return lab ? sl_lab_title(lab) : "the build's added technique"; }
+
 void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
     const char *red = color ? "\033[31m" : "", *green = color ? "\033[32m" : "", *bold = color ? "\033[1m" : "",
                *reset = color ? "\033[0m" : "";
@@ -98,7 +101,7 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
             const sl_graded_case *g = &rep->cases[i];
             if (g->c->lab != lab) continue;
             if (!any)
-                fprintf(out, "%sLab %d: %s%s\n", bold, lab, lab ? sl_lab_title(lab) : "the build's added technique", reset);
+                fprintf(out, "%sLab %d: %s%s\n", bold, lab, _sl_report_lab_title(lab), reset);
             any = true;
             for (int k = 0; k < g->c->check_count; k++) {
                 const sl_check_result *cr = &g->checks[k];
@@ -274,7 +277,7 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
     if (!sl_atomic_open(&file, path, err, err_size)) return false;
     FILE *f = file.f;
     fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadowlab\">\n", f);
-    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+    for (int lab = 0; lab <= SL_LAB_MAX; lab++) {
         int tests = 0, failures = 0;
         for (int i = 0; i < rep->case_count; i++)
             if (rep->cases[i].c->lab == lab)
@@ -283,7 +286,8 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
                     failures += !rep->cases[i].checks[k].passed;
                 }
         if (!tests) continue;
-        fprintf(f, "  <testsuite name=\"lab%d %s\" tests=\"%d\" failures=\"%d\">\n", lab, sl_lab_title(lab), tests, failures);
+        fprintf(f, "  <testsuite name=\"lab%d %s\" tests=\"%d\" failures=\"%d\">\n", lab, _sl_report_lab_title(lab), tests,
+                failures);
         for (int i = 0; i < rep->case_count; i++) {
             const sl_graded_case *g = &rep->cases[i];
             if (g->c->lab != lab) continue;
@@ -392,7 +396,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
         cJSON_AddItemToObject(root, "submission", cJSON_Duplicate(rep->submission_summary, true));
     }
     cJSON *labs = cJSON_AddArrayToObject(root, "lab_scores");
-    for (int lab = 1; lab <= SL_LAB_MAX; lab++) {
+    for (int lab = 0; lab <= SL_LAB_MAX; lab++) {
         double s = 0, m = 0, b = 0;
         bool any = false;
         for (int i = 0; i < rep->case_count; i++)
@@ -410,7 +414,7 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
         if (!any) continue;
         cJSON *l = cJSON_CreateObject();
         cJSON_AddNumberToObject(l, "lab", lab);
-        cJSON_AddStringToObject(l, "title", sl_lab_title(lab));
+        cJSON_AddStringToObject(l, "title", _sl_report_lab_title(lab));
         cJSON_AddNumberToObject(l, "score", s);
         cJSON_AddNumberToObject(l, "max_score", m);
         cJSON_AddNumberToObject(l, "bonus", b);

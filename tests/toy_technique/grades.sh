@@ -13,12 +13,19 @@ fail() { echo "toy grades: FAIL: $*"; exit 1; }
 
 "$grader" --update-references --runners "$correct" "${common[@]}" > "$out/update.txt" 2>&1 ||
   { cat "$out/update.txt"; fail "the correct build did not render the references"; }
-"$grader" --runners "$correct" "${common[@]}" --report "$out/correct" > "$out/correct.txt" 2>&1
+"$grader" --runners "$correct" "${common[@]}" --report "$out/correct" --junit "$out/correct.xml" > "$out/correct.txt" 2>&1
 status=$?
 cat "$out/correct.txt"
 [ $status -eq 0 ] || fail "the correct build exits $status, not 0 (full marks)"
 grep -qE '^Score: 2/2' "$out/correct.txt" || fail "the correct build does not score 2/2"
-echo "toy grades: ok: the correct build gets full marks"
+python3 - "$out/correct/results.json" <<'PY' || fail "results.json does not list lab 0's score"
+import json, sys
+labs = json.load(open(sys.argv[1]))["lab_scores"]
+assert any(l["lab"] == 0 and l["score"] == 2 and l["max_score"] == 2 for l in labs), labs
+PY
+grep -q '<testsuite name="lab0 the build.s added technique" tests="2" failures="0">' "$out/correct.xml" ||
+  fail "the JUnit report has no lab 0 suite"
+echo "toy grades: ok: the correct build gets full marks, in the text, JSON and JUnit reports"
 
 "$grader" --runners "$wrong" "${common[@]}" > "$out/wrong.txt" 2>&1
 status=$?
