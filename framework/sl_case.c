@@ -146,18 +146,6 @@ bool sl_case_name_valid(const char *name) {
     return true;
 }
 
-static bool _sl_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path,
-                       char *err, size_t n) {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (!v) return true;
-    if (!cJSON_IsNumber(v) || v->valuedouble < lo || v->valuedouble > hi) {
-        snprintf(err, n, "%s: \"%s\" must be a number in [%g, %g]", path, key, lo, hi);
-        return false;
-    }
-    *out = v->valuedouble;
-    return true;
-}
-
 static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     sl_render_params_defaults(&c->params);
     c->params.lab = c->lab;
@@ -177,18 +165,18 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     double radius = f->grid_radius, poisson = f->poisson_radius;
     sl_vsm_settings *v = &c->params.vsm;
     double blur = v->blur_radius, min_variance = v->min_variance, bleeding = v->bleeding;
-    if (!_sl_number(json, "shadow_map_size", &size, 16, 4096, c->path, err, n) ||
-        !_sl_number(json, "depth_bias", &constant, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "slope_bias", &slope, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "max_bias", &max_bias, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "polygon_offset_factor", &factor, -100, 100, c->path, err, n) ||
-        !_sl_number(json, "polygon_offset_units", &units, -10000, 10000, c->path, err, n) ||
-        !_sl_number(json, "normal_offset", &offset, 0, 100, c->path, err, n) ||
-        !_sl_number(json, "grid_radius", &radius, 0, 16, c->path, err, n) ||
-        !_sl_number(json, "poisson_radius", &poisson, 0, 256, c->path, err, n) ||
-        !_sl_number(json, "blur_radius", &blur, 0, 32, c->path, err, n) ||
-        !_sl_number(json, "min_variance", &min_variance, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "bleeding", &bleeding, 0, 0.99, c->path, err, n))
+    if (!sl_json_number(json, "shadow_map_size", &size, 16, 4096, c->path, err, n) ||
+        !sl_json_number(json, "depth_bias", &constant, 0, 1, c->path, err, n) ||
+        !sl_json_number(json, "slope_bias", &slope, 0, 1, c->path, err, n) ||
+        !sl_json_number(json, "max_bias", &max_bias, 0, 1, c->path, err, n) ||
+        !sl_json_number(json, "polygon_offset_factor", &factor, -100, 100, c->path, err, n) ||
+        !sl_json_number(json, "polygon_offset_units", &units, -10000, 10000, c->path, err, n) ||
+        !sl_json_number(json, "normal_offset", &offset, 0, 100, c->path, err, n) ||
+        !sl_json_number(json, "grid_radius", &radius, 0, 16, c->path, err, n) ||
+        !sl_json_number(json, "poisson_radius", &poisson, 0, 256, c->path, err, n) ||
+        !sl_json_number(json, "blur_radius", &blur, 0, 32, c->path, err, n) ||
+        !sl_json_number(json, "min_variance", &min_variance, 0, 1, c->path, err, n) ||
+        !sl_json_number(json, "bleeding", &bleeding, 0, 0.99, c->path, err, n))
         return false;
     v->blur_radius = (int)blur;
     v->min_variance = (float)min_variance;
@@ -220,11 +208,12 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
         sl_cascade_params *cp = &c->params.cascades;
         double count = cp->count, lambda = cp->lambda, max_distance = cp->max_distance, margin = cp->caster_margin;
         double band = cp->blend_band;
-        if (!cJSON_IsObject(cascades) || !_sl_number(cascades, "count", &count, 1, SL_MAX_CASCADES, c->path, err, n) ||
-            !_sl_number(cascades, "lambda", &lambda, 0, 1, c->path, err, n) ||
-            !_sl_number(cascades, "max_distance", &max_distance, 0, 1e6, c->path, err, n) ||
-            !_sl_number(cascades, "caster_margin", &margin, 0, 1e6, c->path, err, n) ||
-            !_sl_number(cascades, "blend_band", &band, 0, 1, c->path, err, n)) {
+        if (!cJSON_IsObject(cascades) ||
+            !sl_json_number(cascades, "count", &count, 1, SL_MAX_CASCADES, c->path, err, n) ||
+            !sl_json_number(cascades, "lambda", &lambda, 0, 1, c->path, err, n) ||
+            !sl_json_number(cascades, "max_distance", &max_distance, 0, 1e6, c->path, err, n) ||
+            !sl_json_number(cascades, "caster_margin", &margin, 0, 1e6, c->path, err, n) ||
+            !sl_json_number(cascades, "blend_band", &band, 0, 1, c->path, err, n)) {
             if (!cJSON_IsObject(cascades)) snprintf(err, n, "%s: \"cascades\" must be an object", c->path);
             return false;
         }
@@ -237,9 +226,9 @@ static bool _sl_params(sl_case *c, const cJSON *json, char *err, size_t n) {
     /* lab 7 */
     sl_cube_settings *cube = &c->params.cube;
     double cube_size = cube->map_size, cube_bias = cube->bias, soft_radius = cube->soft_radius;
-    if (!_sl_number(json, "cube_map_size", &cube_size, 16, 2048, c->path, err, n) ||
-        !_sl_number(json, "cube_bias", &cube_bias, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "soft_radius", &soft_radius, 0, 100, c->path, err, n))
+    if (!sl_json_number(json, "cube_map_size", &cube_size, 16, 2048, c->path, err, n) ||
+        !sl_json_number(json, "cube_bias", &cube_bias, 0, 1, c->path, err, n) ||
+        !sl_json_number(json, "soft_radius", &soft_radius, 0, 100, c->path, err, n))
         return false;
     cube->map_size = (int)cube_size;
     cube->bias = (float)cube_bias;
@@ -299,12 +288,12 @@ static bool _sl_check(sl_case *c, sl_check *k, const cJSON *json, int index, cha
     if (!_sl_hint_when(c, k, json, err, n)) return false;
     k->points = -1;
     double percent = k->fail_fraction * 100;
-    if (!_sl_number(json, "points", &k->points, 0, 1000, c->path, err, n) ||
-        !_sl_number(json, "threshold", &k->threshold, 0, 1e9, c->path, err, n) ||
-        !_sl_number(json, "fail_percent", &percent, 0, 100, c->path, err, n) ||
-        !_sl_number(json, "epsilon", &k->epsilon, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "mean_tolerance", &k->mean_tolerance, 0, 1, c->path, err, n) ||
-        !_sl_number(json, "binarise", &k->binarise, 0, 1, c->path, err, n))
+    if (!sl_json_number(json, "points", &k->points, 0, 1000, c->path, err, n) ||
+        !sl_json_number(json, "threshold", &k->threshold, 0, 1e9, c->path, err, n) ||
+        !sl_json_number(json, "fail_percent", &percent, 0, 100, c->path, err, n) ||
+        !sl_json_number(json, "epsilon", &k->epsilon, 0, 1, c->path, err, n) ||
+        !sl_json_number(json, "mean_tolerance", &k->mean_tolerance, 0, 1, c->path, err, n) ||
+        !sl_json_number(json, "binarise", &k->binarise, 0, 1, c->path, err, n))
         return false;
     k->fail_fraction = percent / 100;
     if (k->points < 0) {
@@ -375,10 +364,10 @@ bool sl_case_load(sl_case *c, const char *path, char *err, size_t n) {
     } else if (!cJSON_IsArray(checks) || cJSON_GetArraySize(checks) < 1 ||
                cJSON_GetArraySize(checks) > SL_CASE_MAX_CHECKS) {
         snprintf(err, n, "%s: \"checks\" must be an array of 1..%d checks", path, SL_CASE_MAX_CHECKS);
-    } else if (_sl_number(json, "width", &width, 16, 2048, path, err, n) &&
-               _sl_number(json, "height", &height, 16, 2048, path, err, n) &&
-               _sl_number(json, "timeout", &timeout, 1, 3600, path, err, n) &&
-               _sl_number(json, "memory_mb", &memory, 256, 65536, path, err, n)) {
+    } else if (sl_json_number(json, "width", &width, 16, 2048, path, err, n) &&
+               sl_json_number(json, "height", &height, 16, 2048, path, err, n) &&
+               sl_json_number(json, "timeout", &timeout, 1, 3600, path, err, n) &&
+               sl_json_number(json, "memory_mb", &memory, 256, 65536, path, err, n)) {
         snprintf(c->name, sizeof c->name, "%s", name);
         snprintf(c->title, sizeof c->title, "%s", title ? title : name);
         c->lab = lab->valueint;

@@ -4,19 +4,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "sl_json.h"
 #include "sl_probe.h"
-
-static bool _sl_probe_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path,
-                             char *err, size_t n) {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (!v) return true;
-    if (!cJSON_IsNumber(v) || v->valuedouble < lo || v->valuedouble > hi) {
-        snprintf(err, n, "%s: \"%s\" must be a number in [%g, %g]", path, key, lo, hi);
-        return false;
-    }
-    *out = v->valuedouble;
-    return true;
-}
 
 /* One row of a probe table: a value for every parameter, by name, in the
  * parameter's order; map parameters name a synthetic map. */
@@ -275,8 +264,8 @@ bool sl_case_probe_check(const sl_case *c, sl_check *k, const cJSON *json, char 
     k->function = sl_probe_index(f);
     k->tolerance = 1e-4;
     k->relative = 1e-3;
-    if (!_sl_probe_number(json, "tolerance", &k->tolerance, 0, 1e9, c->path, err, n) ||
-        !_sl_probe_number(json, "relative", &k->relative, 0, 1, c->path, err, n))
+    if (!sl_json_number(json, "tolerance", &k->tolerance, 0, 1e9, c->path, err, n) ||
+        !sl_json_number(json, "relative", &k->relative, 0, 1, c->path, err, n))
         return false;
     const cJSON *rows = cJSON_GetObjectItemCaseSensitive(json, "rows"), *row;
     if (!cJSON_IsArray(rows) || cJSON_GetArraySize(rows) < 1 || cJSON_GetArraySize(rows) > SL_PROBE_MAX_ROWS) {

@@ -34,3 +34,15 @@ cJSON *sl_json_load_file(const char *path, const char *what, char *err, size_t e
     free(text);
     return json;
 }
+
+bool sl_json_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path, char *err,
+                    size_t n) {
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!v) return true;
+    if (!cJSON_IsNumber(v) || v->valuedouble < lo || v->valuedouble > hi) {
+        snprintf(err, n, "%s: \"%s\" must be a number in [%g, %g]", path, key, lo, hi);
+        return false;
+    }
+    *out = v->valuedouble;
+    return true;
+}

@@ -3,6 +3,7 @@
 #ifndef SL_JSON_H
 #define SL_JSON_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include <cjson/cJSON.h>
@@ -10,5 +11,9 @@
 /* The parsed file, or NULL with "PATH: cannot read WHAT file" or
  * "PATH:LINE: invalid JSON" in err. Free with cJSON_Delete. */
 cJSON *sl_json_load_file(const char *path, const char *what, char *err, size_t err_size);
+/* obj's number `key` into *out where it is there (absent: true, *out untouched); false with
+ * "PATH: "KEY" must be a number in [LO, HI]" in err where it is no number or out of range. */
+bool sl_json_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path, char *err,
+                    size_t n);
 
 #endif
