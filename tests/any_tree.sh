@@ -94,6 +94,14 @@ while IFS= read -r line; do
   problem "a test script takes the working labs/ as the stubs: $line"
 done < <(grep -nE '\$\{?(src|source|root)\}?/labs\b' "$tree"/tests/*.sh | grep -v 'SHADOWLAB_STUBS' |
          grep -vE 'any_tree\.sh|handout\.sh:|attack\.sh:.*find|make_attack\.sh:.*stubs=')
+# ... and every script that lays an attack over the stubs names them (make_attack.sh's
+# fourth argument; without it, it takes the working labs/)
+while IFS= read -r line; do
+  problem "a test script makes an attack's tree from the working labs/: $line"
+done < <(grep -nE 'make_attack\.sh"? +"[^"]+" +"[^"]+" +"[^"]+" *(\||$|;|&)' "$tree"/tests/*.sh)
+# ... and a stubs' grade in a tree a test builds itself runs the committed stubs' runner
+grep -q -- '--labs-dir "$tree/stubs/labs" --runners "$tree/bin/stubs"' "$tree/tests/no_headless.sh" ||
+  problem "no_headless.sh grades its tree's labs/ as the stubs"
 
 # 5. make-handout.sh packs the committed stubs, and refuses a changed labs/ unless told
 if out=$("$tree/scripts/make-handout.sh" "$work/dist-refused" 2>&1); then

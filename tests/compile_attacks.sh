@@ -16,6 +16,9 @@ rm -rf "$work"
 mkdir -p "$work/submission/labs"
 fail=0
 problem() { echo "compile_attacks: $*" >&2; fail=1; }
+# the handout's stubs as committed (the build's copy, from git), never labs/ as it is now
+stubs=${SHADOWLAB_STUBS:-$build/stubs/labs}
+[ -d "$stubs" ] || { echo "compile_attacks: no committed stubs at $stubs" >&2; exit 1; }
 fence=$("$build/bin/shadowlab-fence" --probe)
 case "$fence" in
   namespaces|uid) ;;
@@ -25,7 +28,7 @@ esac
 attacked=""
 for attack in "$src"/tests/attacks/compile_*/; do
   name=$(basename "$attack")
-  bash "$src/tests/make_attack.sh" "$attack" "$src" "$work/trees/$name" || exit 1
+  bash "$src/tests/make_attack.sh" "$attack" "$src" "$work/trees/$name" "$stubs" || exit 1
   for lab in "$attack"lab*/; do
     folder=$(basename "$lab")
     [ ! -e "$work/submission/labs/$folder" ] || { problem "two attacks on $folder: give each its own lab"; continue; }
