@@ -29,6 +29,9 @@
 #include "sl_run.h"
 #include "sl_sandbox.h"
 
+/* What the grader was doing, for the message of a fault of its own. */
+static const char *volatile _sl_phase = "starting";
+
 static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_root[64], sl_hidden *hidden) {
     _sl_options o = {
         .jobs = (int)sysconf(_SC_NPROCESSORS_ONLN),
@@ -453,8 +456,10 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             printf("shadowlab-grade: SELF-CHECK: rendered in hidden windows with this computer's OpenGL, not the "
                    "course's renderer. It tells you what to fix; your grade comes from the course's own grader.\n");
         fflush(stdout);
+        _sl_phase = "writing the reports";
         bool reports_ok = _sl_write_reports(&o, &rep);
         sl_report_print(&rep, stdout, isatty(1));
+        _sl_phase = "freeing the grade, after the reports were written";
         if (reference_problem || rep.problem_count || !reports_ok || rep.interrupted) status = SL_EXIT_ERROR;
         else if (!sl_report_full_marks(&rep)) status = rep.no_lab_file ? SL_EXIT_NO_LAB_FILE : SL_EXIT_FAILED;
         for (int i = 0; i < count; i++)
@@ -471,18 +476,56 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     return status;
 }
 
+static void _sl_say_fault(const char *text) {
+    for (size_t n = strlen(text); n > 0;) {
+        ssize_t w = write(STDERR_FILENO, text, n);
+        if (w <= 0) return;
+        text += w;
+        n -= (size_t)w;
+    }
+}
+
+/* A crash of the grader's own (its code, or a library it loads, as in
+ * teardown) is the staff's problem: said with its cause, exit 2, never a
+ * status a script does not know (128 + the signal). Only async-signal-safe
+ * calls here. */
+static void _sl_on_fault(int sig) {
+    const char *name = sig == SIGSEGV ? "SIGSEGV (a bad memory access)" : sig == SIGBUS ? "SIGBUS (a bad memory access)"
+                     : sig == SIGABRT ? "SIGABRT (an abort)" : sig == SIGFPE ? "SIGFPE (an arithmetic fault)"
+                     : sig == SIGILL ? "SIGILL (an illegal instruction)" : sig == SIGSYS ? "SIGSYS (a bad system call)"
+                     : "SIGTRAP (a trap)";
+    _sl_say_fault("\nshadowlab-grade: internal error: ");
+    _sl_say_fault(name);
+    _sl_say_fault(" while ");
+    _sl_say_fault(_sl_phase);
+    _sl_say_fault(" (a problem on the staff's side, not the submission's: grade again; if it stays, report it with "
+                  "this line)\n");
+    _exit(SL_EXIT_ERROR);
+}
+
 int sl_grader_main(int argc, char **argv) {
     struct sigaction sa = {.sa_handler = _sl_on_signal};
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGHUP, &sa, NULL);
+    struct sigaction fault = {.sa_handler = _sl_on_fault, .sa_flags = SA_RESETHAND};
+    sigemptyset(&fault.sa_mask);
+    static const int faults[] = {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGSYS, SIGTRAP};
+    for (size_t i = 0; i < sizeof faults / sizeof faults[0]; i++) sigaction(faults[i], &fault, NULL);
     sl_sandbox sandbox = {0};
     char isolation_root[64] = "";
     sl_hidden hidden = {0};
+    _sl_phase = "grading";
     int status = _sl_grade(argc, argv, &sandbox, isolation_root, &hidden);
+    _sl_phase = "closing the sandbox and removing its folders";
     sl_sandbox_close(&sandbox);
     _sl_remove_isolation_trees(isolation_root);
     sl_hidden_close(&hidden);
-    return status;
+    /* Out without the libraries' exit handlers (the image module's C++
+     * destructors): what they would free goes with the process anyway, and a
+     * fault of theirs must not turn a finished grade's status into another. */
+    _sl_phase = "exiting, after the reports were written";
+    fflush(NULL);
+    _exit(status);
 }

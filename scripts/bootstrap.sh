@@ -3,8 +3,10 @@
 # grades the labs headless.
 #   ./scripts/bootstrap.sh                    the student labs (labs/)
 #   SL_LABS=solutions ./scripts/bootstrap.sh  the solutions (course staff)
-# Exits 0 when grading ran, whatever the score; the grader's own exit status
-# (0 full marks, 1 checks failed, 2 could not grade) is ./build/bin/shadowlab-grade's.
+# Exits 0 when grading ran, whatever the score (the grader's own exit status,
+# 0 full marks, 1 checks failed, is ./build/bin/shadowlab-grade's), 2 when the
+# grader could not grade, and the failing step's status when installing or
+# building failed (said by that step).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
@@ -22,5 +24,5 @@ set -e
 case $status in
   0) echo "bootstrap: built and graded: full marks." ;;
   1) echo "bootstrap: built and graded. Checks fail until the labs are done: see the messages above." ;;
-  *) echo "bootstrap: the grader could not grade (exit status $status): see the messages above." >&2; exit "$status" ;;
+  *) echo "bootstrap: the grader could not grade (exit status $status): see the messages above." >&2; exit 2 ;;
 esac

@@ -50,8 +50,8 @@ grep -qE "lab7_cube_faces / face_px: [1-9][0-9.]*% of pixels differ.*not impleme
 out=$("$solutions" --headless --case lab5_moments --check visibility 2>&1)
 grep -q "has no check with a picture named visibility (it has: moments, moments_blurred)" <<<"$out" ||
   { echo "$out"; problem "an unknown --check is not explained with the case's checks"; }
-if command -v xvfb-run >/dev/null; then
-  xvfb-run -a -s "-screen 0 1600x900x24" "$solutions" --case lab1_depth_boxes --frames 3 --screenshot "$work/window.png" ||
+if command -v Xvfb >/dev/null; then
+  bash "$(dirname "$0")/with_display.sh" -s "-screen 0 1600x900x24" "$solutions" --case lab1_depth_boxes --frames 3 --screenshot "$work/window.png" ||
     problem "the window view failed"
   [ -s "$work/window.png" ] || problem "no window screenshot"
 fi

@@ -171,8 +171,8 @@ grep -qE "key A\b|^ +A +[a-z]" "$work/help" && problem "--help still names A for
 
 # In a window the key panel lists the lab's own keys and what they set now: K colours the cascades, U
 # switches to the solutions' code (where the build has them), and the panel says so.
-if command -v xvfb-run >/dev/null; then
-  xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --lab 6 --scene cascade_field --size 640x400 --frames 2 --overlay \
+if command -v Xvfb >/dev/null; then
+  bash "$(dirname "$0")/with_display.sh" -s "-screen 0 800x600x24" "$viewer" --lab 6 --scene cascade_field --size 640x400 --frames 2 --overlay \
     --keys KU --screenshot "$work/keys-window.png" >"$work/log" 2>&1 || { cat "$work/log"; problem "the viewer failed in a window"; }
   for line in "\[bottom left\] keys, lab 6" "\[bottom left\] K +cascade colours: on" "\[bottom left\] , \. +lambda: 0\.80" \
               "\[bottom left\] .*W A S D Q E fly" "\[bottom left\] .*G frustum: off"; do
@@ -182,7 +182,7 @@ if command -v xvfb-run >/dev/null; then
   check_image label "$work/keys-window.png" 8 330 120 60 || problem "no key panel in the lower left corner"
   # At 800x450 with lab 6's layers shown (M), the key panel moves up above them: layer 0 (112 px square at
   # 326,330; its number in the corner) is the same with the overlay as without.
-  xvfb-run -a -s "-screen 0 800x600x24" bash -c 'for o in --overlay --no-overlay; do
+  bash "$(dirname "$0")/with_display.sh" -s "-screen 0 800x600x24" bash -c 'for o in --overlay --no-overlay; do
       "$1" --lab 6 --scene cascade_field --size 800x450 --frames 2 --show-map $o --screenshot "$2/layers$o.png" || exit
     done' layers "$solutions" "$work" >"$work/log-layers" 2>&1 || { cat "$work/log-layers"; problem "the viewer failed in a window"; }
   check_image text "$work/layers--overlay.png" "$work/layers--no-overlay.png" 326 350 112 90 >"$work/layers.txt"
