@@ -10,6 +10,7 @@
 #include "sl_files.h"
 #include "sl_json.h"
 #include "sl_params.h"
+#include "sl_roster.h"
 
 #define _SL_MAX_SUBMISSIONS 20000
 #define _SL_NOTE_MAX 400
@@ -169,7 +170,15 @@ static void _sl_number(FILE *f, bool have, double v) {
     _sl_field(f, text, false);
 }
 
+static bool _sl_roster_rows(const char *dir, _sl_row *rows, int *count, const sl_gradebook_roster *lms, char *err,
+                            size_t n);
+
 bool sl_gradebook_write(const char *dir, const char *csv_path, char *err, size_t n) {
+    return sl_gradebook_write_roster(dir, csv_path, NULL, err, n);
+}
+
+bool sl_gradebook_write_roster(const char *dir, const char *csv_path, const sl_gradebook_roster *lms, char *err,
+                               size_t n) {
     DIR *d = opendir(dir);
     if (!d) {
         snprintf(err, n, "%s: cannot open the batch folder", dir);
@@ -200,6 +209,10 @@ bool sl_gradebook_write(const char *dir, const char *csv_path, char *err, size_t
             labs[lab] |= rows[i].have_lab[lab];
             any |= rows[i].have_lab[lab];
         }
+    }
+    if (lms && !_sl_roster_rows(dir, rows, &count, lms, err, n)) {
+        free(rows);
+        return false;
     }
     for (int lab = 1; !any && lab <= SL_LAB_COUNT; lab++) labs[lab] = sl_lab_folder(lab) != NULL;
 
@@ -245,4 +258,73 @@ bool sl_gradebook_write(const char *dir, const char *csv_path, char *err, size_t
     }
     free(rows);
     return sl_atomic_commit(&file, err, n);
+}
+
+/* ---- with the LMS's roster (--roster): its names and ids, and a row for each student without a submission ---- */
+
+/* The LMS a submission came from, as grade-batch wrote it in student.json ("Canvas (...)", "Moodle (...)"). */
+static bool _sl_from_lms(const char *dir, const char *submission, const char *lms) {
+    char path[1400], err[1200];
+    snprintf(path, sizeof path, "%s/%s/student.json", dir, submission);
+    if (!_sl_exists(path)) return false;
+    cJSON *json = sl_json_load_file(path, "student", err, sizeof err);
+    const char *from = json ? cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "from")) : NULL;
+    bool same = from && strncmp(from, lms, strlen(lms)) == 0;
+    cJSON_Delete(json);
+    return same;
+}
+
+/* Matched by the LMS id a bulk download carried, never by a name; a submission whose
+ * id is not on the roster keeps its row, with a note that says so. */
+static bool _sl_roster_rows(const char *dir, _sl_row *rows, int *count, const sl_gradebook_roster *lms, char *err,
+                            size_t n) {
+    const sl_roster *roster = lms->roster;
+    int students = sl_roster_count(roster), submissions = *count, strays = 0;
+    bool *seen = calloc((size_t)students + 1, sizeof *seen);
+    if (!seen) {
+        snprintf(err, n, "out of memory");
+        return false;
+    }
+    const char *kind = sl_roster_kind_name(sl_roster_kind_of(roster));
+    for (int i = 0; i < submissions; i++) {
+        _sl_row *r = &rows[i];
+        int s = r->student_id[0] && _sl_from_lms(dir, r->name, kind) ? sl_roster_find(roster, r->student_id) : -1;
+        if (s < 0) {
+            char note[_SL_NOTE_MAX];
+            snprintf(note, sizeof note, "%s", r->note);
+            snprintf(r->note, sizeof r->note, "%s (%s id '%s')%s%s", SL_ROSTER_NOT_ON_ROSTER, kind, r->student_id,
+                     note[0] ? ": " : "", note);
+            fprintf(stderr, "shadowlab-grade: %s is not on the roster (%s id '%s'): its row is kept\n", r->name, kind,
+                    r->student_id);
+            strays++;
+            continue;
+        }
+        seen[s] = true;
+        snprintf(r->student, sizeof r->student, "%s", sl_roster_name(roster, s));
+        if (lms->have_due) {
+            int late = sl_roster_late(roster, s, lms->due, err, n);
+            if (late < 0) {
+                free(seen);
+                return false;
+            }
+            r->late = late;
+        }
+    }
+    for (int s = 0; s < students; s++) {
+        if (seen[s]) continue;
+        if (*count >= _SL_MAX_SUBMISSIONS) {
+            snprintf(err, n, "more than %d rows", _SL_MAX_SUBMISSIONS);
+            free(seen);
+            return false;
+        }
+        _sl_row *r = &rows[(*count)++];
+        memset(r, 0, sizeof *r);
+        snprintf(r->student, sizeof r->student, "%s", sl_roster_name(roster, s));
+        snprintf(r->student_id, sizeof r->student_id, "%s", sl_roster_id(roster, s));
+        snprintf(r->status, sizeof r->status, "no submission");
+    }
+    if (strays)
+        fprintf(stderr, "shadowlab-grade: %d submission(s) not on the roster: see the gradebook's notes\n", strays);
+    free(seen);
+    return true;
 }

@@ -18,4 +18,18 @@
 /* Writes `csv_path` (whole or not at all); false with the reason. */
 bool sl_gradebook_write(const char *batch_dir, const char *csv_path, char *err, size_t err_size);
 
+/* With the LMS's roster (sl_roster.h): each row's name from the roster,
+ * matched by the LMS id of the bulk download (student.json), a "no
+ * submission" row after the submissions for each roster student without one,
+ * and a submission whose id is not on the roster kept with a note saying so.
+ * With a due date (Moodle), late is the worksheet's Last modified
+ * (submission) after it. */
+typedef struct sl_gradebook_roster {
+    const struct sl_roster *roster;
+    bool have_due;
+    long long due; /* sl_roster_parse_due */
+} sl_gradebook_roster;
+bool sl_gradebook_write_roster(const char *batch_dir, const char *csv_path, const sl_gradebook_roster *roster,
+                               char *err, size_t err_size);
+
 #endif

@@ -21,6 +21,7 @@
 #include "sl_files.h"
 #include "sl_grade.h"
 #include "sl_gradebook.h"
+#include "sl_roster.h"
 #include "sl_grader_options.h"
 #include "sl_grader_steps.h"
 #include "sl_hidden.h"
@@ -32,6 +33,41 @@
 /* What the grader was doing, for the message of a fault of its own. */
 static const char *volatile _sl_phase = "starting";
 
+/* --gradebook DIR: the gradebook and the class report from a batch's reports; with
+ * --roster, the LMS's names and missing students, and --export its import file. */
+static int _sl_gradebook(const _sl_options *o) {
+    char csv[1200], gradebook_err[1500];
+    snprintf(csv, sizeof csv, "%s/gradebook.csv", o->gradebook);
+    sl_gradebook_roster lms = {0};
+    if ((o->due || o->export_format || o->assignment || o->missing_as_zero) && !o->roster) {
+        fprintf(stderr, "shadowlab-grade: --due, --export, --assignment and --missing-as-zero need --roster FILE\n");
+        return SL_EXIT_ERROR;
+    }
+    if (o->due && !(lms.have_due = sl_roster_parse_due(o->due, &lms.due))) {
+        fprintf(stderr, "shadowlab-grade: --due '%s': give \"YYYY-MM-DD HH:MM\"\n", o->due);
+        return SL_EXIT_ERROR;
+    }
+    sl_roster *roster = o->roster ? sl_roster_read(o->roster, gradebook_err, sizeof gradebook_err) : NULL;
+    bool ok = roster || !o->roster;
+    if (ok && roster && lms.have_due && sl_roster_kind_of(roster) != SL_ROSTER_MOODLE) {
+        snprintf(gradebook_err, sizeof gradebook_err,
+                 "--due: %s is Canvas's, whose downloads mark late submissions themselves (LATE_)", o->roster);
+        ok = false;
+    }
+    lms.roster = roster;
+    ok = ok && sl_gradebook_write_roster(o->gradebook, csv, roster ? &lms : NULL, gradebook_err, sizeof gradebook_err) &&
+         sl_class_report_write(o->gradebook, gradebook_err, sizeof gradebook_err);
+    if (ok) printf("shadowlab-grade: wrote %s, and the class report %s/class-report.html (and .csv)\n", csv, o->gradebook);
+    if (ok && o->export_format) {
+        sl_roster_export_desc desc = {o->export_format, o->export_path, o->assignment, o->missing_as_zero};
+        ok = sl_roster_export(roster, csv, &desc, gradebook_err, sizeof gradebook_err);
+        if (ok) printf("shadowlab-grade: wrote %s (%s import, read back and checked)\n", o->export_path, o->export_format);
+    }
+    sl_roster_free(roster);
+    if (!ok) fprintf(stderr, "shadowlab-grade: %s\n", gradebook_err);
+    return ok ? SL_EXIT_FULL : SL_EXIT_ERROR;
+}
+
 static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_root[64], sl_hidden *hidden) {
     _sl_options o = {
         .jobs = (int)sysconf(_SC_NPROCESSORS_ONLN),
@@ -40,16 +76,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     };
     int parsed = _sl_parse(argc, argv, &o);
     if (parsed) return parsed < 0 ? SL_EXIT_FULL : parsed;
-    if (o.gradebook) {
-        char csv[1200], gradebook_err[1500];
-        snprintf(csv, sizeof csv, "%s/gradebook.csv", o.gradebook);
-        if (!sl_gradebook_write(o.gradebook, csv, gradebook_err, sizeof gradebook_err) ||
-            !sl_class_report_write(o.gradebook, gradebook_err, sizeof gradebook_err)) {
-            fprintf(stderr, "shadowlab-grade: %s\n", gradebook_err);
-            return SL_EXIT_ERROR;
-        }
-        printf("shadowlab-grade: wrote %s, and the class report %s/class-report.html (and .csv)\n", csv, o.gradebook);
-        return SL_EXIT_FULL;
+    if (o.gradebook) return _sl_gradebook(&o);
+    if (o.roster || o.due || o.export_format || o.assignment || o.missing_as_zero) {
+        fprintf(stderr, "shadowlab-grade: --roster, --due, --export, --assignment and --missing-as-zero go with "
+                        "--gradebook DIR\n");
+        return SL_EXIT_ERROR;
     }
     static char default_cases[1100], default_refs[1100];
     snprintf(default_cases, sizeof default_cases, "%s/cases", sl_config_grader_dir);

@@ -75,6 +75,16 @@ static void _sl_usage(FILE *f) {
             "                       exits 3 (scripts/grade-submission)\n"
             "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
             "                       and the class report: DIR/class-report.html and .csv\n"
+            "  --roster FILE        with --gradebook: the LMS's roster as it exports it (Canvas: Grades >\n"
+            "                       Export CSV; Moodle: the grading worksheet): each row's name from it,\n"
+            "                       matched by the download's LMS id, a 'no submission' row for each\n"
+            "                       student without one, submissions not on it named\n"
+            "  --due \"YYYY-MM-DD HH:MM\"  with a Moodle worksheet: late is Last modified (submission)\n"
+            "                       after it, both in the worksheet's time zone\n"
+            "  --export canvas|moodle FILE  with --roster: the grades (each row's total, bonus included) in\n"
+            "                       the roster's format, ready to import; read back and checked\n"
+            "  --assignment \"NAME (ID)\"  the Canvas column --export fills (default: the only one)\n"
+            "  --missing-as-zero    --export gives a student without a submission 0, not an empty grade\n"
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "  --no-reference-cache decode every reference image from its file: no use of the build's\n"
             "                       cache of decoded references (cache/references beside bin/)\n"
@@ -119,8 +129,42 @@ static bool _sl_parse_labs(const char *text, uint32_t *mask, char *err, size_t n
     return true;
 }
 
+/* The gradebook's LMS options (--roster, --due, --export FORMAT FILE, --assignment,
+ * --missing-as-zero): 1 when argv[*i] was one (and *i is past its values), 0 when
+ * not, -1 on an error, said. */
+static int _sl_parse_lms(int argc, char **argv, int *i, _sl_options *o) {
+    const char *a = argv[*i];
+    int values = strcmp(a, "--export") == 0 ? 2
+                 : strcmp(a, "--roster") == 0 || strcmp(a, "--due") == 0 || strcmp(a, "--assignment") == 0 ? 1
+                 : strcmp(a, "--missing-as-zero") == 0 ? 0
+                                                        : -1;
+    if (values < 0) return 0;
+    if (*i + values >= argc) {
+        fprintf(stderr, "shadowlab-grade: %s needs %s\n", a, values == 2 ? "a format and a file" : "a value");
+        return -1;
+    }
+    const char *v = argv[*i + 1];
+    if (strcmp(a, "--roster") == 0) o->roster = v;
+    else if (strcmp(a, "--due") == 0) o->due = v;
+    else if (strcmp(a, "--assignment") == 0) o->assignment = v;
+    else if (strcmp(a, "--missing-as-zero") == 0) o->missing_as_zero = true;
+    else {
+        if (strcmp(v, "canvas") != 0 && strcmp(v, "moodle") != 0) {
+            fprintf(stderr, "shadowlab-grade: --export canvas FILE or --export moodle FILE, not '%s'\n", v);
+            return -1;
+        }
+        o->export_format = v;
+        o->export_path = argv[*i + 2];
+    }
+    *i += values;
+    return 1;
+}
+
 int _sl_parse(int argc, char **argv, _sl_options *o) {
     for (int i = 1; i < argc; i++) {
+        int lms = _sl_parse_lms(argc, argv, &i, o);
+        if (lms < 0) return SL_EXIT_ERROR;
+        if (lms) continue;
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         static const char *const with_value[] = {"--lab", "--case", "--exclude", "-j", "--jobs", "--report",
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",

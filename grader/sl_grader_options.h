@@ -25,6 +25,9 @@ typedef struct _sl_options {
     uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
     bool update, list, isolate, strict, hidden, progress, no_reference_cache;
     const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
+    /* with --gradebook: the LMS's roster, its due date (Moodle), and the grades written back in its format */
+    const char *roster, *due, *export_format, *export_path, *assignment;
+    bool missing_as_zero;
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
     int jobs;
