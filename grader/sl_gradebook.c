@@ -288,14 +288,16 @@ static bool _sl_roster_rows(const char *dir, _sl_row *rows, int *count, const sl
     const char *kind = sl_roster_kind_name(sl_roster_kind_of(roster));
     for (int i = 0; i < submissions; i++) {
         _sl_row *r = &rows[i];
-        int s = r->student_id[0] && _sl_from_lms(dir, r->name, kind) ? sl_roster_find(roster, r->student_id) : -1;
+        bool same_lms = r->student_id[0] && _sl_from_lms(dir, r->name, kind);
+        int s = same_lms ? sl_roster_find(roster, r->student_id) : -1;
         if (s < 0) {
-            char note[_SL_NOTE_MAX];
+            char note[_SL_NOTE_MAX], why[200];
+            if (!r->student_id[0]) snprintf(why, sizeof why, "no LMS id: not from a bulk download");
+            else if (!same_lms) snprintf(why, sizeof why, "id '%s', not from a %s download", r->student_id, kind);
+            else snprintf(why, sizeof why, "%s id '%s'", kind, r->student_id);
             snprintf(note, sizeof note, "%s", r->note);
-            snprintf(r->note, sizeof r->note, "%s (%s id '%s')%s%s", SL_ROSTER_NOT_ON_ROSTER, kind, r->student_id,
-                     note[0] ? ": " : "", note);
-            fprintf(stderr, "shadowlab-grade: %s is not on the roster (%s id '%s'): its row is kept\n", r->name, kind,
-                    r->student_id);
+            snprintf(r->note, sizeof r->note, "%s (%s)%s%s", SL_ROSTER_NOT_ON_ROSTER, why, note[0] ? ": " : "", note);
+            fprintf(stderr, "shadowlab-grade: %s is not on the roster (%s): its row is kept\n", r->name, why);
             strays++;
             continue;
         }

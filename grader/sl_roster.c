@@ -467,7 +467,11 @@ static bool _sl_moodle_date(const char *text, long long *minutes) {
 }
 
 int sl_roster_late(const sl_roster *r, int student, long long due, char *err, size_t n) {
-    if (r->kind != SL_ROSTER_MOODLE || r->col_submitted < 0) return 0;
+    if (r->kind != SL_ROSTER_MOODLE) return 0;
+    if (r->col_submitted < 0) {
+        snprintf(err, n, "%s:1: --due: no column Last modified (submission)", r->path);
+        return -1;
+    }
     const _sl_record *rec = &r->csv.records[r->students[student].record];
     const char *when = rec->cell[r->col_submitted];
     long long at;
@@ -728,7 +732,11 @@ bool sl_roster_export(const sl_roster *r, const char *gradebook_csv, const sl_ro
     _sl_buf b = {0}, expected = {0};
     bool ok = rows && out;
     if (!ok) snprintf(err, n, "out of memory");
-    ok = ok && book.count > 0 && _sl_join(r, &book, gradebook_csv, rows, err, n) &&
+    if (ok && book.count == 0) {
+        snprintf(err, n, "%s: empty: write the gradebook first", gradebook_csv);
+        ok = false;
+    }
+    ok = ok && _sl_join(r, &book, gradebook_csv, rows, err, n) &&
          _sl_grades(r, rows, points, have_points, desc, out, err, n);
     if (ok) {
         if (r->kind == SL_ROSTER_CANVAS) _sl_canvas_rows(r, column, out, &b, &expected);

@@ -199,7 +199,7 @@ want(by_id["123458"][0]["late"] == "late", "12:05 AM on the 5th is after the due
 sam = [r for r in by_id["123459"] if r["status"] == "no submission"]
 want(len(sam) == 1 and sam[0]["student"] == "Sam Roe", "a 'no submission' row for Sam Roe")
 other = [r for r in by_id["123459"] if r["submission"] == "samroe_123459"]
-want(len(other) == 1 and other[0]["note"].startswith("not on the roster (Moodle id"), "a Canvas submission is not a Moodle participant's")
+want(len(other) == 1 and other[0]["note"].startswith("not on the roster (id '123459', not from a Moodle download)"), "a Canvas submission is not a Moodle participant's")
 want(by_id["555555"][0]["note"].startswith("not on the roster"), "555555 is not on the roster")
 for b in bad: print("moodle gradebook:", b, file=sys.stderr)
 sys.exit(1 if bad else 0)
