@@ -549,8 +549,15 @@ static bool _sl_grades(const sl_roster *r, const _sl_grade_row *rows, double poi
         _sl_out *o = &out[s];
         double points = points_possible, total, max;
         bool have = have_points;
-        if (r->kind == SL_ROSTER_MOODLE && r->col_max >= 0)
-            have = _sl_number(r->csv.records[r->students[s].record].cell[r->col_max], &points);
+        if (r->kind == SL_ROSTER_MOODLE && r->col_max >= 0) {
+            const _sl_record *rec = &r->csv.records[r->students[s].record];
+            if (!(have = _sl_number(rec->cell[r->col_max], &points))) {
+                /* a scale's grades are words, which a score is not */
+                snprintf(err, n, "%s:%d: Maximum Grade '%s' is not a number: the assignment is graded with a scale",
+                         r->path, rec->line, rec->cell[r->col_max]);
+                return false;
+            }
+        }
         if (!row->status || !row->submission[0]) { /* no submission */
             if (desc->missing_as_zero) {
                 snprintf(o->grade, sizeof o->grade, "0");
@@ -721,8 +728,8 @@ bool sl_roster_export(const sl_roster *r, const char *gradebook_csv, const sl_ro
             if (rec->count > column && strcmp(who, "Points Possible") == 0)
                 have_points = _sl_number(rec->cell[column], &points);
         }
-    } else if (r->col_grade < 0) {
-        snprintf(err, n, "%s: no Grade column", r->path);
+    } else if (desc->assignment) {
+        snprintf(err, n, "--assignment picks a Canvas column; %s is a Moodle worksheet, of one assignment", r->path);
         return false;
     }
     _sl_csv book;

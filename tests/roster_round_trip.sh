@@ -248,6 +248,15 @@ else
   problem "--export moodle failed"
 fi
 
+run "$work/moodle-assignment.log" --gradebook "$moodle" --roster "$work/moodle-worksheet.csv" --export moodle "$work/x.csv" \
+  --assignment "Lab 1 (1)" && problem "--assignment was taken with a Moodle worksheet"
+# an assignment graded with a scale has no numeric maximum: refused, not guessed
+sed 's/,14\.00,/,-,/' "$work/moodle-worksheet.csv" >"$work/scale.csv"
+run "$work/scale.log" --gradebook "$moodle" --roster "$work/scale.csv" --export moodle "$work/scale-import.csv" &&
+  problem "a worksheet of a scale was exported"
+grep -q "scale.csv:2: Maximum Grade '-' is not a number" "$work/scale.log" || problem "the scale is not named"
+[ ! -e "$work/scale-import.csv" ] && [ ! -e "$work/x.csv" ] || problem "a refused Moodle export left a file"
+
 # ---- rosters that cannot be read: named by file and line ----
 { head -n 3 "$work/moodle-worksheet.csv"; printf '"Participant 9,Broken,-\n'; } >"$work/broken.csv"
 run "$work/broken.log" --gradebook "$moodle" --roster "$work/broken.csv" && problem "a roster with an open quote was read"
