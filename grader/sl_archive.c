@@ -19,6 +19,10 @@ struct sl_archive {
     char last_entry[SL_ARCHIVE_PATH_MAX]; /* for messages: where a corrupt archive stopped */
     char error[1600];
     bool at_end;
+    /* sl_archive_read looks one byte past its cap to say whether the data
+     * goes on: that byte is the first of the next read of the same entry. */
+    unsigned char ahead;
+    bool has_ahead;
 };
 
 const char *sl_archive_kind_name(sl_archive_kind kind) {
@@ -125,6 +129,7 @@ static void _sl_cut_copy(char *dst, size_t n, const char *src) {
 
 int sl_archive_next(sl_archive *a, sl_archive_entry *e) {
     if (a->at_end) return 0;
+    a->has_ahead = false; /* a byte looked at belongs to the entry left */
     struct archive_entry *ae;
     int r = archive_read_next_header(a->a, &ae);
     if (r == ARCHIVE_EOF) {
@@ -179,16 +184,23 @@ int sl_archive_next(sl_archive *a, sl_archive_entry *e) {
 long long sl_archive_read(sl_archive *a, void *buf, size_t cap, bool *more) {
     size_t got = 0;
     *more = false;
+    if (a->has_ahead && cap > 0) {
+        ((unsigned char *)buf)[got++] = a->ahead;
+        a->has_ahead = false;
+    }
     while (got < cap) {
         la_ssize_t n = archive_read_data(a->a, (char *)buf + got, cap - got);
         if (n < 0) goto failed;
         if (n == 0) return (long long)got;
         got += (size_t)n;
     }
-    char extra[1];
-    la_ssize_t n = archive_read_data(a->a, extra, 1);
+    if (a->has_ahead) {
+        *more = true; /* cap 0, a byte already looked at */
+        return 0;
+    }
+    la_ssize_t n = archive_read_data(a->a, &a->ahead, 1);
     if (n < 0) goto failed;
-    *more = n > 0;
+    a->has_ahead = *more = n > 0;
     return (long long)got;
 failed:;
     const char *why = archive_error_string(a->a);

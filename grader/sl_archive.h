@@ -55,7 +55,9 @@ sl_archive *sl_archive_open(int fd, const char *name, char *err, size_t err_size
  * sl_archive_error then names the archive and the last good entry. */
 int sl_archive_next(sl_archive *a, sl_archive_entry *entry);
 /* The current entry's data, at most cap bytes into buf; *more says whether
- * the data went on past cap. -1 on an error (sl_archive_error). */
+ * the data went on past cap, and the next call goes on from the byte after
+ * the last one given (reads in a loop give the whole data, nothing dropped).
+ * -1 on an error (sl_archive_error). */
 long long sl_archive_read(sl_archive *a, void *buf, size_t cap, bool *more);
 /* Bytes unpacked from the archive so far (the decompressed stream): bounds an
  * archive that unpacks to far more than it weighs. */
