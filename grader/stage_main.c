@@ -12,6 +12,7 @@
 
 #include "sl_archive.h"
 #include "sl_stage.h"
+#include "sl_zip_records.h"
 
 static void _sl_usage(FILE *f) {
     fprintf(f,
@@ -40,7 +41,8 @@ static void _sl_usage(FILE *f) {
             "  --max-unpacked N     bytes an archive may unpack to (default 536870912)\n"
             "  --timeout SECONDS    for reading the submission (default 120)\n"
             "  --list ARCHIVE       print each entry: kind, size the header claims (-1: none), path, and\n"
-            "                       why it would be refused\n"
+            "                       why it would be refused; a zip's central directory is checked against\n"
+            "                       its local headers\n"
             "  --extract ARCHIVE FOLDER  extract the files and folders only (nothing through a link, nothing\n"
             "                       outside FOLDER, no name replaced); refused entries are named on stderr\n"
             "Each lab file staged from an archive, and each file --extract writes (read back from the disk),\n"
@@ -88,10 +90,19 @@ static int _sl_list(const char *path) {
         printf("\n");
     }
     if (r < 0) fprintf(stderr, "shadowlab-stage: %s\n", sl_archive_error(a));
+    if (r == 0 && sl_archive_is_zip(a)) {
+        /* a zip whose records contradict each other is damaged, however libarchive listed it */
+        sl_zip_records *records = sl_zip_records_read(fd, 1 << 20, err, sizeof err);
+        if (!records) {
+            fprintf(stderr, "shadowlab-stage: %s: a damaged zip: %s\n", path, err);
+            r = -1;
+        }
+        sl_zip_records_free(records);
+    }
     free(e);
     sl_archive_close(a);
     close(fd);
-    return r < 0 ? 1 : 0;
+    return r < 0 ? SL_STAGE_DAMAGED : SL_STAGE_TAKEN;
 }
 
 static void _sl_say_refused(void *context, const char *path, const char *why) {

@@ -162,6 +162,11 @@ damaged)
   said "records.zip: a damaged zip: the central directory records labs/${targets[2]} with CRC-32 " \
     "a zip whose central directory and local header disagree"
   [ -z "$(ls -A "$work/records.out" 2>/dev/null)" ] || problem "a zip contradicting itself had files extracted"
+  run "list, records disagree" "$stager" --list "$work/records.zip"
+  expect_status 1 "--list of a zip whose records disagree"
+  said "records.zip: a damaged zip: the central directory records" "--list of a zip whose records disagree"
+  run "list, sound" "$stager" --list "$work/sizes.zip"
+  expect_status 0 "--list of the sound zip"
   cp -R "$stubs" "$work/records.stage"
   run "stage, records disagree" "$stager" "$work/records.zip" "$work/records.stage"
   expect_status 3 "staging a zip whose records disagree"
