@@ -238,7 +238,7 @@ sl_zip_records *sl_zip_records_read(int fd, int max_records, char *err, size_t n
         unsigned mode = (unsigned)(_sl_u32(c + 38) >> 16);
         bool unix_kind = (made_by >> 8) == 3 && (mode & 0170000) != 0;
         r->is_file = !(name_len && name[name_len - 1] == '/') && (!unix_kind || (mode & 0170000) == 0100000);
-        if (local > (unsigned long long)file_size) {
+        if (local > (unsigned long long)file_size || r->packed_size > (unsigned long long)file_size) {
             snprintf(err, n, "the central directory puts %s past the end of the zip", r->path ? r->path : "an entry");
             ok = false;
             break;
