@@ -331,7 +331,8 @@ static void _sl_seen(_sl_extracted *x, const char *path) {
 static int _sl_path_order(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
 static bool _sl_was_seen(const _sl_extracted *x, const char *path) {
-    return path && bsearch(&path, x->seen, (size_t)x->seen_count, sizeof *x->seen, _sl_path_order) != NULL;
+    return path && x->seen_count &&
+           bsearch(&path, x->seen, (size_t)x->seen_count, sizeof *x->seen, _sl_path_order) != NULL;
 }
 
 
@@ -488,7 +489,7 @@ sl_archive_outcome sl_archive_extract(int fd, const char *name, int dir_fd, cons
     }
     if (outcome == SL_ARCHIVE_EXTRACTED && records) {
         /* every file the zip records was read: none was lost on the way */
-        qsort(x.seen, (size_t)x.seen_count, sizeof *x.seen, _sl_path_order);
+        if (x.seen_count) qsort(x.seen, (size_t)x.seen_count, sizeof *x.seen, _sl_path_order);
         for (int i = 0; i < sl_zip_records_count(records); i++) {
             const sl_zip_record *rec = sl_zip_records_at(records, i);
             if (!rec->is_file || !rec->path || _sl_was_seen(&x, rec->path) || _sl_was_seen(&x, rec->unicode_path))
