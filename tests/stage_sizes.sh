@@ -165,6 +165,13 @@ damaged)
   run "list, records disagree" "$stager" --list "$work/records.zip"
   expect_status 1 "--list of a zip whose records disagree"
   said "records.zip: a damaged zip: the central directory records" "--list of a zip whose records disagree"
+  # the same in a zip with no data descriptor (as Python writes them): the local header disagrees
+  "$fixtures" zip-flip "$source/tests/fuzz/archive_seeds/python.zip" "$work/local.zip" cd-crc
+  run "local header disagrees" "$stager" --extract "$work/local.zip" "$work/local.out"
+  expect_status 1 "a zip whose central directory and local header disagree"
+  said "a damaged zip: the central directory records Shadowlab/lab1.c as 24 bytes, CRC-32 " \
+    "a zip whose central directory and local header disagree"
+  said "its local header as 24 bytes, CRC-32 " "a zip whose central directory and local header disagree"
   run "list, sound" "$stager" --list "$work/sizes.zip"
   expect_status 0 "--list of the sound zip"
   cp -R "$stubs" "$work/records.stage"
