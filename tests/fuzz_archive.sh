@@ -14,13 +14,29 @@ if [ -z "$fuzzer" ]; then
 fi
 rm -rf "$work"
 mkdir -p "$work/corpus"
-# new inputs go to the first folder (the work's): the committed seeds stay as they are
-"$fuzzer" -seed=1 -runs="$runs" -max_len=65536 -timeout=30 -rss_limit_mb=2048 -print_final_stats=1 \
-  -artifact_prefix="$work/" "$work/corpus" "$fuzz_dir/archive_seeds"
+# The fuzzer learns from the values its target compares, addresses included:
+# two runs from one seed differ unless the process is laid out the same way.
+# So: no random layout (setarch -R, where the system lets it), and the same
+# program path, arguments and environment on every machine (a copy of the
+# fuzzer and the seeds in the work folder, named relative to it).
+cp "$fuzzer" "$work/fuzz_archive"
+cp -R "$fuzz_dir/archive_seeds" "$work/seeds"
+mkdir -p "$work/regressions"
+cp "$fuzz_dir"/archive_regressions/* "$work/regressions/" 2>/dev/null || true
+same=(env -i PATH=/usr/bin:/bin)
+if command -v setarch >/dev/null && setarch "$(uname -m)" -R true 2>/dev/null; then
+  same+=(setarch "$(uname -m)" -R)
+else
+  echo "fuzz.archive: no setarch -R here: this run's inputs may differ from another machine's"
+fi
+cd "$work"
+# new inputs go to the first folder (corpus/): the committed seeds stay as they are
+"${same[@]}" ./fuzz_archive -seed=1 -runs="$runs" -reload=0 -max_len=65536 -timeout=30 -rss_limit_mb=2048 \
+  -print_final_stats=1 -artifact_prefix=./ corpus seeds
 shopt -s nullglob
-regressions=("$fuzz_dir"/archive_regressions/*)
+regressions=(regressions/*)
 if [ ${#regressions[@]} -gt 0 ]; then
   echo "fuzz.archive: replaying ${#regressions[@]} inputs that once crashed it"
-  "$fuzzer" -timeout=30 -rss_limit_mb=2048 "${regressions[@]}"
+  "${same[@]}" ./fuzz_archive -timeout=30 -rss_limit_mb=2048 "${regressions[@]}"
 fi
 echo "fuzz.archive: $runs runs from seed 1, ${#regressions[@]} regressions replayed: no crash, no leak"
