@@ -87,6 +87,7 @@ typedef struct _sl_result {
     bool layout_said, ended;
     _sl_items taken, ignored, refused, found, errors, staff, normalised, text_problems;
     long long taken_bytes;
+    bool mismatch; /* a staff problem of its own: the stager read a file wrong */
 } _sl_result;
 
 /* A target the stage may receive: LAB/labN.c or LAB/shaders/NAME[/NAME...] (three folders at most). */
@@ -256,6 +257,10 @@ static bool _sl_receive(const sl_stage_desc *d, const _sl_labs *labs, int stage_
         case _SL_R_REFUSED: _sl_list_add(&res->refused, a, la, b, lb); break;
         case _SL_R_ERROR: _sl_list_add(&res->errors, a, la, NULL, 0); break;
         case _SL_R_STAFF: _sl_list_add(&res->staff, a, la, NULL, 0); break;
+        case _SL_R_MISMATCH:
+            res->mismatch = true;
+            _sl_list_add(&res->staff, a, la, NULL, 0);
+            break;
         case _SL_R_FILE: _sl_take_file(d, labs, stage_fd, res, buf[0], buf[1], lb, buf[2], h.len[2]); break;
         case _SL_R_END: ok = true; break;
         default: break;
@@ -416,7 +421,10 @@ static int _sl_finish(const sl_stage_desc *d, const _sl_labs *labs, _sl_result *
     cJSON *notes = _sl_notes(labs, res, no_lab_file);
     if (no_lab_file) _sl_say(d, "%s", cJSON_GetArrayItem(notes, 0)->valuestring);
 
-    int status = staff ? SL_STAGE_PROBLEM : no_lab_file ? SL_STAGE_NO_LAB_FILE : SL_STAGE_TAKEN;
+    int status = res->mismatch ? SL_STAGE_MISMATCH
+                 : staff       ? SL_STAGE_PROBLEM
+                 : no_lab_file ? SL_STAGE_NO_LAB_FILE
+                               : SL_STAGE_TAKEN;
     if (d->summary) {
         cJSON *root = cJSON_CreateObject();
         cJSON_AddStringToObject(root, "submission", d->submission);

@@ -14,13 +14,16 @@
  * symbolic links, hard links (a file with several names may be another
  * file's content: copy submissions with cp -R, unzip or tar, which make
  * none), devices, FIFOs, sockets and archive paths that leave the archive.
- * It sends the lab files it chose over a pipe. The parent, which reads no
- * file the submission names, checks every name it is sent against the
- * handout's (a lab's labN.c, files under a lab's shaders/), applies the
- * limits again, normalises the text (sl_text: byte-order mark, CRLF, CR),
- * names bytes that are not text, writes the files over the stubs in the
- * stage, and writes a summary (JSON) that shadowlab-grade --submission-summary
- * turns into notes in every report. */
+ * A lab file read from an archive is checked against the archive's records
+ * (sl_archive_matches_records: a zip's CRC-32 and size, a tar header's size);
+ * one that does not match is left out and said as the tool's fault
+ * (SL_STAGE_MISMATCH). It sends the lab files it chose over a pipe. The
+ * parent, which reads no file the submission names, checks every name it is
+ * sent against the handout's (a lab's labN.c, files under a lab's shaders/),
+ * applies the limits again, normalises the text (sl_text: byte-order mark,
+ * CRLF, CR), names bytes that are not text, writes the files over the stubs
+ * in the stage, and writes a summary (JSON) that shadowlab-grade
+ * --submission-summary turns into notes in every report. */
 #ifndef SL_STAGE_H
 #define SL_STAGE_H
 

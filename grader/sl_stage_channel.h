@@ -23,6 +23,7 @@ enum {
     _SL_R_REFUSED = 'R', /* path, reason */
     _SL_R_ERROR = 'E',   /* the submission's fault: a corrupt archive, a limit */
     _SL_R_STAFF = 'X',   /* not the submission's fault: unreadable files, a fence that failed */
+    _SL_R_MISMATCH = 'M', /* not the submission's fault: a file read is not what the archive records */
     _SL_R_FILE = 'F',    /* target, content, source path */
     _SL_R_END = 'Z',
 };

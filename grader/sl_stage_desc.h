@@ -8,9 +8,12 @@
 
 /* Exit statuses of shadowlab-stage (and sl_stage_run's results). */
 enum {
-    SL_STAGE_TAKEN = 0,       /* lab files were staged */
+    SL_STAGE_TAKEN = 0,       /* lab files were staged (--list, --extract: done) */
+    SL_STAGE_DAMAGED = 1,     /* --list, --extract: the archive is corrupt, cut short, past a limit or contradicts itself */
     SL_STAGE_PROBLEM = 2,     /* could not stage: a staff-side problem (arguments, the stage, unreadable files) */
     SL_STAGE_NO_LAB_FILE = 3, /* no lab file in the submission: the stage holds the stubs only */
+    SL_STAGE_MISMATCH = 4,    /* a file extracted or staged is not what the archive records, though the archive
+                                 passed its own checks: a fault of shadowlab-stage (staff-side), never the student's */
 };
 
 /* Zero means the default for every number. */

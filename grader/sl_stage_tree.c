@@ -27,8 +27,10 @@
 #endif
 
 #include "sl_archive.h"
+#include "sl_crc32.h"
 #include "sl_stage_channel.h"
 #include "sl_text.h"
+#include "sl_zip_records.h"
 
 /* ---- the child: the submission as a tree, listed as it is needed ---- */
 
@@ -299,8 +301,23 @@ void _sl_archive_read_wanted(_sl_child *c) {
     char *buf = malloc((size_t)c->d->max_file_bytes);
     int left = 0;
     for (int i = 0; i < c->want_count; i++) left += c->wants[i].node->data == NULL;
+    sl_zip_records *records = NULL;
+    bool first = true;
     int r;
     while (left > 0 && (r = sl_archive_next(a, e)) > 0) {
+        if (first && sl_archive_is_zip(a)) {
+            /* the zip's own records, to check each file read against */
+            records = sl_zip_records_read(c->archive_fd, c->d->max_entries, err, sizeof err);
+            if (!records) {
+                char text[1800];
+                snprintf(text, sizeof text, "%s: a damaged zip: %s", c->archive_name, err);
+                _sl_send_record(_SL_R_ERROR, text, NULL);
+                for (int i = 0; i < c->want_count; i++)
+                    if (!c->wants[i].node->data) c->wants[i].node->why_ignored = "in a damaged zip (see the error)";
+                break;
+            }
+        }
+        first = false;
         if (e->unsafe || e->kind != SL_ARCHIVE_FILE) continue;
         for (int i = 0; i < c->want_count; i++) {
             _sl_node *n = c->wants[i].node;
@@ -308,12 +325,19 @@ void _sl_archive_read_wanted(_sl_child *c) {
             bool more = false;
             long long got = sl_archive_read(a, buf, (size_t)c->d->max_file_bytes, &more);
             left--;
+            char what[800];
             if (got < 0) {
                 _sl_send_record(_SL_R_ERROR, sl_archive_error(a), NULL);
                 n->why_ignored = "its data cannot be read (a corrupt archive)";
             } else if (more) {
                 snprintf(n->why_buffer, sizeof n->why_buffer, "more than %lld KiB", c->d->max_file_bytes >> 10);
                 n->why_ignored = n->why_buffer;
+            } else if (!sl_archive_matches_records(records, e->path, records ? -1 : e->size, got,
+                                                   sl_crc32(0, buf, (size_t)got), what, sizeof what)) {
+                char text[_SL_TEXT_MAX];
+                snprintf(text, sizeof text, "%s: %s was read as %s", c->archive_name, n->path, what);
+                _sl_send_record(_SL_R_MISMATCH, text, NULL);
+                n->why_ignored = "not staged: it was read wrong (a fault of shadowlab-stage, said above)";
             } else {
                 n->data = malloc((size_t)got + 1);
                 memcpy(n->data, buf, (size_t)got);
@@ -322,6 +346,7 @@ void _sl_archive_read_wanted(_sl_child *c) {
             break; /* this entry's data is read */
         }
     }
+    sl_zip_records_free(records);
     free(buf);
     free(e);
     sl_archive_close(a);

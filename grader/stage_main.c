@@ -12,6 +12,7 @@
 
 #include "sl_archive.h"
 #include "sl_stage.h"
+#include "sl_zip_records.h"
 
 static void _sl_usage(FILE *f) {
     fprintf(f,
@@ -40,12 +41,23 @@ static void _sl_usage(FILE *f) {
             "  --max-unpacked N     bytes an archive may unpack to (default 536870912)\n"
             "  --timeout SECONDS    for reading the submission (default 120)\n"
             "  --list ARCHIVE       print each entry: kind, size the header claims (-1: none), path, and\n"
-            "                       why it would be refused; exit 1 if the archive is corrupt\n"
+            "                       why it would be refused; a zip's central directory is checked against\n"
+            "                       its local headers\n"
             "  --extract ARCHIVE FOLDER  extract the files and folders only (nothing through a link, nothing\n"
             "                       outside FOLDER, no name replaced); refused entries are named on stderr\n"
-            "Exit status: 0 lab files staged, 3 no lab file found (STAGE holds the stubs; the summary says what\n"
-            "was found), 2 could not stage (a problem on the staff's side: arguments, STAGE, or files the\n"
-            "reading user cannot read: make submissions readable to all, chmod -R a+rX).\n");
+            "Each lab file staged from an archive, and each file --extract writes (read back from the disk),\n"
+            "is checked against the archive's own records: its size and CRC-32 in a zip's central directory\n"
+            "(read apart from the extraction), its size in a tar header.\n"
+            "Exit status:\n"
+            "  0  lab files staged (--list, --extract: done, every file as the archive records it)\n"
+            "  1  --list, --extract: the archive is damaged (corrupt, cut short, its data failing its own\n"
+            "     CRC, its records contradicting each other) or past a limit: the upload's problem\n"
+            "  2  could not stage or extract (the staff's side: arguments, STAGE or FOLDER, a full disk, files\n"
+            "     the reading user cannot read: make submissions readable to all, chmod -R a+rX)\n"
+            "  3  no lab file found (STAGE holds the stubs; the summary says what was found)\n"
+            "  4  a file extracted or staged does not match the archive's records though the archive passed\n"
+            "     its own checks: a fault of shadowlab-stage (the staff's side, never the student's); each\n"
+            "     such file is named with both sizes and CRC-32s\n");
 }
 
 static int _sl_open_archive(const char *path) {
@@ -78,15 +90,29 @@ static int _sl_list(const char *path) {
         printf("\n");
     }
     if (r < 0) fprintf(stderr, "shadowlab-stage: %s\n", sl_archive_error(a));
+    if (r == 0 && sl_archive_is_zip(a)) {
+        /* a zip whose records contradict each other is damaged, however libarchive listed it */
+        sl_zip_records *records = sl_zip_records_read(fd, 1 << 20, err, sizeof err);
+        if (!records) {
+            fprintf(stderr, "shadowlab-stage: %s: a damaged zip: %s\n", path, err);
+            r = -1;
+        }
+        sl_zip_records_free(records);
+    }
     free(e);
     sl_archive_close(a);
     close(fd);
-    return r < 0 ? 1 : 0;
+    return r < 0 ? SL_STAGE_DAMAGED : SL_STAGE_TAKEN;
 }
 
 static void _sl_say_refused(void *context, const char *path, const char *why) {
     (void)context;
     fprintf(stderr, "shadowlab-stage: refused %s: %s\n", path, why);
+}
+
+static void _sl_say_mismatch(void *context, const char *path, const char *why) {
+    fprintf(stderr, "shadowlab-stage: PROBLEM (not the submission's fault) %s: %s %s\n", (const char *)context, path,
+            why);
 }
 
 static int _sl_extract(const char *path, const char *folder) {
@@ -100,11 +126,17 @@ static int _sl_extract(const char *path, const char *folder) {
         return 2;
     }
     char err[1600];
-    bool ok = sl_archive_extract(fd, path, dir, NULL, _sl_say_refused, NULL, err, sizeof err);
-    if (!ok) fprintf(stderr, "shadowlab-stage: %s\n", err);
+    sl_archive_outcome outcome =
+        sl_archive_extract(fd, path, dir, NULL, _sl_say_refused, _sl_say_mismatch, (void *)path, err, sizeof err);
+    if (outcome != SL_ARCHIVE_EXTRACTED) fprintf(stderr, "shadowlab-stage: %s\n", err);
     close(dir);
     close(fd);
-    return ok ? 0 : 1;
+    switch (outcome) {
+    case SL_ARCHIVE_EXTRACTED: return SL_STAGE_TAKEN;
+    case SL_ARCHIVE_DAMAGED: return SL_STAGE_DAMAGED;
+    case SL_ARCHIVE_MISMATCH: return SL_STAGE_MISMATCH;
+    default: return SL_STAGE_PROBLEM;
+    }
 }
 
 static bool _sl_number(const char *text, long long *out) {

@@ -25,6 +25,8 @@ packages=(
   xvfb xauth            # the viewer's tests run in a virtual X display
   libglx-mesa0          # llvmpipe behind GLX: the viewer under Xvfb
   python3               # the handout test's scan for lab answers (tests/handout_answers.sh)
+  clang libclang-rt-dev # the archive fuzzer (clang -fsanitize=fuzzer,address): Debian's default clang and its
+                        # runtime, clang-14 and libclang-rt-14-dev on 12, -19 on 13, the newest on testing
 )
 
 say() { echo "install-deps: $*"; }

@@ -3,14 +3,21 @@
  * an ordinary archiver would refuse to: '..' and absolute paths, links,
  * devices, backslash separators.
  *
- *   stage_fixtures archive OUT zip|tar|tgz SPEC...
+ *   stage_fixtures archive OUT zip|zip-stored|tar|tgz|tbz2|txz|tzst SPEC...
  *     file:PATH=TEXT      a file holding TEXT
  *     copy:PATH=FILE      a file holding FILE's bytes
  *     tree:PREFIX=DIR     every regular file under DIR, as PREFIX/<its path>
  *     zeros:PATH=N        a file of N zero bytes
  *     dir:PATH            a folder
  *     symlink:PATH=TARGET, hardlink:PATH=TARGET, chardev:PATH, fifo:PATH
- *   stage_fixtures socket PATH   a Unix socket bound at PATH (left behind) */
+ *   stage_fixtures socket PATH   a Unix socket bound at PATH (left behind)
+ *   stage_fixtures text OUT N SEED   N bytes of text that never repeats (letters
+ *     and digits from a generator seeded by SEED, a newline every 61st byte):
+ *     a byte lost or added shifts all that follows, and staging (which
+ *     normalises line ends) leaves it as it is
+ *   stage_fixtures zip-flip IN OUT cd-crc|data   IN with one bit changed: the
+ *     first entry's CRC-32 in the central directory only (the zip contradicts
+ *     itself), or its first byte of data (the data fails its own CRC) */
 #define _GNU_SOURCE
 #include <dirent.h>
 #include <fcntl.h>
@@ -96,9 +103,19 @@ static void _sl_tree(struct archive *a, const char *prefix, const char *dir) {
 static int _sl_archive(int argc, char **argv) {
     const char *out = argv[2], *format = argv[3];
     struct archive *a = archive_write_new();
-    if (strcmp(format, "zip") == 0) archive_write_set_format_zip(a);
-    else archive_write_set_format_pax_restricted(a);
-    if (strcmp(format, "tgz") == 0) archive_write_add_filter_gzip(a);
+    if (strncmp(format, "zip", 3) == 0) {
+        archive_write_set_format_zip(a);
+        if (strcmp(format, "zip-stored") == 0 && archive_write_set_format_option(a, "zip", "compression", "store") != ARCHIVE_OK)
+            _sl_die("zip-stored", a);
+    } else {
+        archive_write_set_format_pax_restricted(a);
+    }
+    int filter = ARCHIVE_OK;
+    if (strcmp(format, "tgz") == 0) filter = archive_write_add_filter_gzip(a);
+    else if (strcmp(format, "tbz2") == 0) filter = archive_write_add_filter_bzip2(a);
+    else if (strcmp(format, "txz") == 0) filter = archive_write_add_filter_xz(a);
+    else if (strcmp(format, "tzst") == 0) filter = archive_write_add_filter_zstd(a);
+    if (filter != ARCHIVE_OK) _sl_die(format, a);
     if (archive_write_open_filename(a, out) != ARCHIVE_OK) _sl_die(out, a);
     for (int i = 4; i < argc; i++) {
         char *spec = strdup(argv[i]), *colon = strchr(spec, ':');
@@ -132,6 +149,41 @@ static int _sl_archive(int argc, char **argv) {
     return 0;
 }
 
+static int _sl_text(const char *out, long long n, unsigned long long seed) {
+    static const char letters[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789 ";
+    FILE *f = fopen(out, "wb");
+    if (!f) _sl_die(out, NULL);
+    unsigned long long x = seed * 0x9E3779B97F4A7C15ull + 1;
+    for (long long i = 0; i < n; i++) {
+        x ^= x << 13; /* xorshift64: no period a test file could reach */
+        x ^= x >> 7;
+        x ^= x << 17;
+        fputc(i % 61 == 60 ? '\n' : letters[(x >> 32) % (sizeof letters - 1)], f);
+    }
+    if (fclose(f) != 0) _sl_die(out, NULL);
+    return 0;
+}
+
+static unsigned _sl_le16(const unsigned char *p) { return (unsigned)p[0] | (unsigned)p[1] << 8; }
+
+static int _sl_zip_flip(const char *in, const char *out, const char *what) {
+    size_t len;
+    unsigned char *z = (unsigned char *)_sl_read(in, &len);
+    size_t at = len;
+    if (strcmp(what, "cd-crc") == 0) {
+        for (size_t i = 0; i + 46 <= len && at == len; i++)
+            if (memcmp(z + i, "PK\1\2", 4) == 0) at = i + 16;
+    } else if (strcmp(what, "data") == 0 && len > 30 && memcmp(z, "PK\3\4", 4) == 0) {
+        at = 30 + _sl_le16(z + 26) + _sl_le16(z + 28);
+    }
+    if (at >= len) _sl_die("zip-flip: nothing to change", NULL);
+    z[at] ^= 1;
+    FILE *f = fopen(out, "wb");
+    if (!f || fwrite(z, 1, len, f) != len || fclose(f) != 0) _sl_die(out, NULL);
+    free(z);
+    return 0;
+}
+
 int main(int argc, char **argv) {
     setlocale(LC_CTYPE, "C.UTF-8");
     if (argc >= 4 && strcmp(argv[1], "archive") == 0) return _sl_archive(argc, argv);
@@ -142,6 +194,9 @@ int main(int argc, char **argv) {
         if (fd < 0 || bind(fd, (struct sockaddr *)&addr, sizeof addr) != 0) _sl_die(argv[2], NULL);
         return 0;
     }
-    fprintf(stderr, "usage: stage_fixtures archive OUT zip|tar|tgz SPEC... | socket PATH\n");
+    if (argc == 5 && strcmp(argv[1], "text") == 0) return _sl_text(argv[2], atoll(argv[3]), strtoull(argv[4], NULL, 10));
+    if (argc == 5 && strcmp(argv[1], "zip-flip") == 0) return _sl_zip_flip(argv[2], argv[3], argv[4]);
+    fprintf(stderr, "usage: stage_fixtures archive OUT FORMAT SPEC... | socket PATH | text OUT N SEED | "
+                    "zip-flip IN OUT cd-crc|data\n");
     return 2;
 }
