@@ -2,7 +2,8 @@
 # grade-batch on a class as Canvas and Moodle really export it (tests/make_lms_class.sh):
 #   1. each download, given exactly as downloaded, is split as the same files unzipped
 #      by hand are: the same students, files and content hashes; a file a student
-#      named like another student's never reaches that student;
+#      named like another student's never reaches that student; GitHub Classroom's
+#      folders are one submission per user;
 #   2. graded (lab 1, one case), every student gets the grade their files deserve, one
 #      row each; names that reduce to '..', '.split' or the batch's own files neither
 #      stop the batch nor touch its files; an empty upload and an unchanged stub are
@@ -44,6 +45,11 @@ amy=$(grep $'^Amy_Adams_2001\t' "$work/moodle.zip.list") || problem "no Amy Adam
 grep -q $'^Jay_Jones_2010\t.*Amy Adams_2001_assignsubmission_file_lab1.c' "$work/moodle.zip.list" ||
   problem "the file Jay Jones named like Amy Adams' is not his"
 grep -q $'^2011\t\.\.\t2011\t' "$work/moodle.zip.list" || problem "the student whose name is '..' is not listed"
+"${batch[@]}" --list "$downloads/classroom" >"$work/classroom.list" 2>"$work/classroom.log"
+cat "$work/classroom.log" "$work/classroom.list"
+grep -q "classroom: a GitHub Classroom download (shadowlab)" "$work/classroom.log" &&
+  grep -q $'^alice\talice\talice\t' "$work/classroom.list" && grep -q $'^bob-smith\tbob-smith\tbob-smith\t' "$work/classroom.list" ||
+  problem "the GitHub Classroom folders are not one submission per user"
 [ $fail = 0 ] && echo "lms_class: each download is split as the same files unzipped by hand"
 exit $fail
 fi

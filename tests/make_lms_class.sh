@@ -28,6 +28,8 @@
 #     Gus Garcia 2007     online text only
 #     ".." 2011           (a full name of dots) the handout's lab1.c, unchanged
 #     gradebook.csv 2013  (a full name like the batch's own file) an empty zip
+#   classroom/      GitHub Classroom's folders "<assignment>-<username>/": shadowlab-alice
+#                   (labs/), shadowlab-bob-smith (lab1.c loose)
 #   by-hand/        a folder of submissions named "_..", "_.split", "gradebook.csv", "grader-options"
 #                   (the stubs, or nothing): names that reduce to the batch's own
 #
@@ -117,3 +119,9 @@ mkdir -p "$b/_.." "$b/_.split" "$b/gradebook.csv" "$b/grader-options"
 cp "$stubs/$lab1/lab1.c" "$b/_.split/lab1.c"
 cp "$stubs/$lab1/lab1.c" "$b/gradebook.csv/lab1.c"
 printf 'notes\n' >"$b/grader-options/notes.txt"
+
+# ---- GitHub Classroom ----
+g="$out/classroom"
+mkdir -p "$g/shadowlab-alice/labs" "$g/shadowlab-bob-smith"
+cp -R "$sol" "$g/shadowlab-alice/labs/"
+cp "$sol/lab1.c" "$g/shadowlab-bob-smith/"
