@@ -91,7 +91,7 @@ expect jonesjay_110 graded 0
 expect kingkim_111 "no lab file" 0 "report\.pdf"
 expect leelou_112 "no lab file" 0
 expect Amy_Adams_2001 graded full
-expect Ben_Brown_2002 graded lost
+expect Ben_Brown_2002 graded 0
 expect Jay_Jones_2010 graded full
 expect Gus_Garcia_2007 "no lab file" 0
 expect 2011 graded 0
@@ -109,7 +109,7 @@ grep -q '^clarkcat_103,clarkcat,103,late,' "$gradebook" || problem "clarkcat's l
 [ -f "$out/.batch/grader-options" ] && [ -f "$gradebook" ] && [ -s "$out/class-report.html" ] ||
   problem "the batch's own files are not where they belong"
 # nothing to build: neither built nor run
-for name in garciagus_107 jonesjay_110 split; do
+for name in garciagus_107 jonesjay_110 split Ben_Brown_2002; do
   grep -q "nothing to build or run" "$out/$name/grade.log" || problem "$name was built (its files are the stubs or none)"
 done
 # every row keeps what it was graded from

@@ -22,7 +22,7 @@
 #   moodle.zip      Moodle "Download all submissions" (not in folders): files
 #                   "<Full Name>_<id>_assignsubmission_file_<file name>", six students:
 #     Amy Adams 2001      complete: shadowlab.zip holding labs/
-#     Ben Brown 2002      one mistake, loose
+#     Ben Brown 2002      the handout's labs/, unchanged, in labs.zip
 #     Jay Jones 2010      lab 1 loose, and a file he named "Amy Adams_2001_assignsubmission_file_lab1.c"
 #                         (an #error): it is his, never Amy's
 #     Gus Garcia 2007     online text only
@@ -98,11 +98,12 @@ zip_of "$out/canvas-v2.zip" "$c"
 
 # ---- Moodle, not in folders ----
 m="$work/moodle"
-mkdir -p "$m" "$work/amy/labs"
+mkdir -p "$m" "$work/amy/labs" "$work/ben/labs"
+cp -R "$stubs/." "$work/ben/labs/"
+zip_of "$m/Ben Brown_2002_assignsubmission_file_labs.zip" "$work/ben"
 cp -R "$source/solutions/." "$work/amy/labs/"
 zip_of "$m/Amy Adams_2001_assignsubmission_file_shadowlab.zip" "$work/amy"
 for f in lab1.c shaders/depth.vert shaders/depth.frag; do
-  cp "$mistake/$f" "$m/Ben Brown_2002_assignsubmission_file_$(basename "$f")"
   cp "$sol/$f" "$m/Jay Jones_2010_assignsubmission_file_$(basename "$f")"
 done
 cp "$stubs/$lab1/lab1.c" "$m/.._2011_assignsubmission_file_lab1.c"
