@@ -42,6 +42,8 @@ typedef struct _sl_class {
     int check_count, check_cap;
     int students;          /* counted */
     int did_not_build, no_lab_file, problems, unfinished;
+    /* the staff problems, named (the first _SL_NAMED of them): not the students' mistakes */
+    char problem_names[32][128], problem_causes[32][240];
     int bins[SL_LAB_MAX + 1][_SL_BINS], total_bins[_SL_BINS];
     bool lab_seen[SL_LAB_MAX + 1];
     double lab_max[SL_LAB_MAX + 1], lab_sum[SL_LAB_MAX + 1], total_sum, total_max;
@@ -208,6 +210,29 @@ static bool _sl_submission_name(const char *name) {
     return true;
 }
 
+/* A grade that stopped on the staff's side: named with its cause (the batch's
+ * DIR/<submission>/problem, else the report's first problem), never counted
+ * among the class's mistakes. */
+static void _sl_staff_problem(_sl_class *k, const char *dir, const char *name, const cJSON *json) {
+    int i = k->problems++;
+    if (i >= 32) return;
+    snprintf(k->problem_names[i], sizeof k->problem_names[i], "%s", name);
+    char path[1400];
+    snprintf(path, sizeof path, "%s/%s/problem", dir, name);
+    k->problem_causes[i][0] = '\0';
+    FILE *f = fopen(path, "r");
+    if (f) {
+        if (fgets(k->problem_causes[i], sizeof k->problem_causes[i], f))
+            k->problem_causes[i][strcspn(k->problem_causes[i], "\r\n")] = '\0';
+        fclose(f);
+    }
+    const char *first = cJSON_GetStringValue(cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(json, "problems"), 0));
+    if (!k->problem_causes[i][0] && first) snprintf(k->problem_causes[i], sizeof k->problem_causes[i], "%s", first);
+    else if (!k->problem_causes[i][0])
+        snprintf(k->problem_causes[i], sizeof k->problem_causes[i], "%s: see %.100s/grade.log",
+                 json ? "the grade stopped" : "no report", name);
+}
+
 /* Reads every finished submission of the batch. */
 static bool _sl_gather(const char *dir, _sl_class *k, char *err, size_t n) {
     DIR *d = opendir(dir);
@@ -227,18 +252,27 @@ static bool _sl_gather(const char *dir, _sl_class *k, char *err, size_t n) {
             k->unfinished++;
             continue;
         }
+        char status[16] = "";
+        FILE *sf = fopen(path, "r");
+        if (sf) {
+            if (!fgets(status, sizeof status, sf)) status[0] = '\0';
+            status[strcspn(status, "\r\n")] = '\0';
+            fclose(sf);
+        }
+        /* 0, 1, 3: the student's grade; any other status the staff's */
+        bool staff = strcmp(status, "0") != 0 && strcmp(status, "1") != 0 && strcmp(status, "3") != 0;
         snprintf(path, sizeof path, "%s/%s/report/results.json", dir, e->d_name);
         char json_err[1200];
         cJSON *json = stat(path, &st) == 0 ? sl_json_load_file(path, "results", json_err, sizeof json_err) : NULL;
-        if (!json) {
-            k->problems++;
+        if (!json || staff || cJSON_GetArraySize(cJSON_GetObjectItemCaseSensitive(json, "problems")) > 0) {
+            _sl_staff_problem(k, dir, e->d_name, json);
+            cJSON_Delete(json);
             continue;
         }
         if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "built"))) k->did_not_build++;
         else if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "no_lab_file"))) k->no_lab_file++;
-        else if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "complete")) ||
-                 cJSON_GetArraySize(cJSON_GetObjectItemCaseSensitive(json, "problems")) > 0)
-            k->problems++;
+        else if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "complete")))
+            _sl_staff_problem(k, dir, e->d_name, json);
         else
             _sl_count_report(k, student++, json);
         cJSON_Delete(json);
@@ -323,9 +357,23 @@ static bool _sl_write_html(const _sl_class *k, const _sl_diagnosis *sorted, cons
         const char *sep = "";
         if (k->did_not_build) fprintf(f, "%s%d did not build", sep, k->did_not_build), sep = ", ";
         if (k->no_lab_file) fprintf(f, "%s%d held no lab file", sep, k->no_lab_file), sep = ", ";
-        if (k->problems) fprintf(f, "%s%d could not be graded", sep, k->problems), sep = ", ";
+        if (k->problems) fprintf(f, "%s%d staff problem%s", sep, k->problems, k->problems == 1 ? "" : "s"), sep = ", ";
         if (k->unfinished) fprintf(f, "%s%d not graded yet", sep, k->unfinished);
         fputs(" (see the gradebook). ", f);
+    }
+    if (k->problems) {
+        fputs("</p>\n<h2>Staff problems</h2>\n<p>Not the students' doing, and not counted in what they got wrong: "
+              "fix each and grade it again.</p>\n<table>\n<tr><th>submission</th><th>cause</th></tr>\n",
+              f);
+        for (int i = 0; i < k->problems && i < 32; i++) {
+            fputs("<tr><td>", f);
+            sl_html_text(f, k->problem_names[i]);
+            fputs("</td><td>", f);
+            sl_html_text(f, k->problem_causes[i]);
+            fputs("</td></tr>\n", f);
+        }
+        if (k->problems > 32) fprintf(f, "<tr><td colspan=\"2\">and %d more (see the gradebook)</td></tr>\n", k->problems - 32);
+        fputs("</table>\n<p>", f);
     }
     if (k->option_sets > 1) fputs("<b>The reports were made with different grader options</b>: see the gradebook's options column. ", f);
     else if (k->options[0]) {
@@ -428,6 +476,11 @@ static bool _sl_write_csv(const _sl_class *k, const _sl_diagnosis *sorted, const
         _sl_csv(f, "check", true), _sl_csv(f, lab, false), _sl_csv(f, c->name, false);
         _sl_csv(f, top >= 0 ? k->diagnoses[c->diagnosis[top]].text : "", false);
         _sl_csv(f, count, false), _sl_csv(f, graded, false);
+        fputc('\n', f);
+    }
+    for (int i = 0; i < k->problems && i < 32; i++) {
+        _sl_csv(f, "staff problem", true), _sl_csv(f, "", false), _sl_csv(f, k->problem_names[i], false);
+        _sl_csv(f, k->problem_causes[i], false), _sl_csv(f, "", false), _sl_csv(f, "", false);
         fputc('\n', f);
     }
     for (int l = 1; l <= SL_LAB_MAX + 1; l++) {

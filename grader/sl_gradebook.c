@@ -14,10 +14,11 @@
 
 #define _SL_MAX_SUBMISSIONS 20000
 #define _SL_NOTE_MAX 400
-/* A grade that stopped on the staff's side (no process, memory or disk for it,
- * a bad reference, ...): no score of the student's, whatever the report holds
- * so far, so no partial total is taken for a grade. */
-#define _SL_STAFF_FAULT "not graded (staff fault)"
+/* A grade that stopped on the staff's side (staging, extraction, the compile
+ * fence, no process, memory or disk for it, a bad reference, ...): no score of
+ * the student's, whatever the report holds so far, so no partial total is
+ * taken for a grade, and never "not implemented" or "no lab file". */
+#define _SL_STAFF_PROBLEM "staff problem"
 
 typedef struct _sl_row {
     char name[128];
@@ -29,6 +30,8 @@ typedef struct _sl_row {
     double lab[SL_LAB_MAX + 1];
     bool have_totals;
     double bonus, total, max;
+    char content[72];                  /* the sha256 of what was graded (content.sha256) */
+    char student_note[_SL_NOTE_MAX];   /* what the batch says of it (a renamed submission, an older upload left out) */
     char note[_SL_NOTE_MAX];
 } _sl_row;
 
@@ -71,12 +74,25 @@ static void _sl_read_student(const char *dir, _sl_row *row) {
     snprintf(row->student, sizeof row->student, "%s", name ? name : "");
     snprintf(row->student_id, sizeof row->student_id, "%s", id ? id : "");
     row->late = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "late"));
+    const char *note = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "note"));
+    snprintf(row->student_note, sizeof row->student_note, "%s", note ? note : "");
     cJSON_Delete(json);
+}
+
+/* A staff problem's note: the cause the batch found (DIR/<submission>/problem), else `otherwise`. */
+static void _sl_staff_problem(const char *dir, _sl_row *row, const char *otherwise) {
+    char path[1400];
+    snprintf(row->status, sizeof row->status, "%s", _SL_STAFF_PROBLEM);
+    snprintf(path, sizeof path, "%s/%s/problem", dir, row->name);
+    _sl_first_line(path, row->note, sizeof row->note);
+    if (!row->note[0]) snprintf(row->note, sizeof row->note, "%s", otherwise);
 }
 
 static void _sl_read_row(const char *dir, _sl_row *row) {
     char path[1400], status_text[32];
     _sl_read_student(dir, row);
+    snprintf(path, sizeof path, "%s/%s/content.sha256", dir, row->name);
+    _sl_first_line(path, row->content, sizeof row->content);
     snprintf(path, sizeof path, "%s/%s/status", dir, row->name);
     if (!_sl_exists(path)) {
         snprintf(row->status, sizeof row->status, "not finished");
@@ -87,12 +103,15 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
     snprintf(path, sizeof path, "%s/%s/report/results.json", dir, row->name);
     char err[1200];
     cJSON *json = _sl_exists(path) ? sl_json_load_file(path, "results", err, sizeof err) : NULL;
+    char otherwise[300];
     if (!json) {
-        snprintf(row->status, sizeof row->status, "%s", _SL_STAFF_FAULT);
-        snprintf(row->note, sizeof row->note, "no report (grade exit status %s): see %s/grade.log",
+        snprintf(otherwise, sizeof otherwise, "no report (grade exit status %s): see %s/grade.log",
                  status_text[0] ? status_text : "?", row->name);
+        _sl_staff_problem(dir, row, otherwise);
         return;
     }
+    /* 0 full marks, 1 checks failed, 3 no lab file: the student's grade; anything else the staff's */
+    bool staff = strcmp(status_text, "0") != 0 && strcmp(status_text, "1") != 0 && strcmp(status_text, "3") != 0;
     const char *options = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "options"));
     const char *seed = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "seed"));
     snprintf(row->options, sizeof row->options, "%s", options ? options : "");
@@ -117,31 +136,29 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
     }
     const cJSON *problems = cJSON_GetObjectItemCaseSensitive(json, "problems");
     const char *build_error = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "build_error"));
-    if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "built"))) {
+    if (staff || cJSON_GetArraySize(problems) > 0) {
+        const char *first = cJSON_GetStringValue(cJSON_GetArrayItem(problems, 0));
+        if (first) snprintf(otherwise, sizeof otherwise, "%s", first);
+        else snprintf(otherwise, sizeof otherwise, "grade exit status %s: see %s/grade.log", status_text, row->name);
+        _sl_staff_problem(dir, row, otherwise);
+    } else if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "built"))) {
         snprintf(row->status, sizeof row->status, "did not build");
         snprintf(row->note, sizeof row->note, "%s", build_error ? build_error : "");
     } else if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "complete"))) {
         snprintf(row->status, sizeof row->status, "incomplete");
         snprintf(row->note, sizeof row->note, "the grader was stopped before it finished");
-    } else if (cJSON_GetArraySize(problems) > 0) {
-        snprintf(row->status, sizeof row->status, "%s", _SL_STAFF_FAULT);
-        const char *first = cJSON_GetStringValue(cJSON_GetArrayItem(problems, 0));
-        snprintf(row->note, sizeof row->note, "%s", first ? first : "");
     } else if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "no_lab_file")) || strcmp(status_text, "3") == 0) {
         /* an empty upload, a text entry, only links: graded as the stubs, and said so */
         const char *first = cJSON_GetStringValue(
             cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(json, "submission_notes"), 0));
         snprintf(row->status, sizeof row->status, "no lab file");
         snprintf(row->note, sizeof row->note, "%s", first ? first : "no lab file in the submission: see its report");
-    } else if (strcmp(status_text, "0") != 0 && strcmp(status_text, "1") != 0) {
-        snprintf(row->status, sizeof row->status, "%s", _SL_STAFF_FAULT);
-        snprintf(row->note, sizeof row->note, "grade exit status %s: see %s/grade.log", status_text, row->name);
     } else {
         snprintf(row->status, sizeof row->status, "graded");
         /* graded per lab: a lab that did not build is named, the others have their grades */
         if (build_error) snprintf(row->note, sizeof row->note, "%s", build_error);
     }
-    if (strcmp(row->status, _SL_STAFF_FAULT) == 0) {
+    if (strcmp(row->status, _SL_STAFF_PROBLEM) == 0) {
         memset(row->have_lab, 0, sizeof row->have_lab);
         row->have_totals = false;
     }
@@ -172,6 +189,37 @@ static void _sl_number(FILE *f, bool have, double v) {
 
 static bool _sl_roster_rows(const char *dir, _sl_row *rows, int *count, const sl_gradebook_roster *lms, char *err,
                             size_t n);
+/* DIR/gradebook.json: the rows' count and the staff problems, each with its
+ * cause, for a script to act on (grade again, or tell the staff). */
+static bool _sl_write_json(const char *dir, const _sl_row *rows, int count, char *err, size_t n) {
+    cJSON *root = cJSON_CreateObject(), *problems = cJSON_CreateArray();
+    cJSON_AddNumberToObject(root, "rows", count);
+    for (int i = 0; i < count; i++) {
+        if (strcmp(rows[i].status, _SL_STAFF_PROBLEM) != 0) continue;
+        cJSON *p = cJSON_CreateObject();
+        cJSON_AddStringToObject(p, "submission", rows[i].name);
+        cJSON_AddStringToObject(p, "student", rows[i].student);
+        cJSON_AddStringToObject(p, "student_id", rows[i].student_id);
+        cJSON_AddStringToObject(p, "cause", rows[i].note);
+        cJSON_AddItemToArray(problems, p);
+    }
+    cJSON_AddItemToObject(root, "staff_problems", problems);
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    char path[1200];
+    snprintf(path, sizeof path, "%s/gradebook.json", dir);
+    sl_atomic_file file;
+    bool ok = text && sl_atomic_open(&file, path, err, n);
+    if (ok) {
+        fputs(text, file.f);
+        fputc('\n', file.f);
+        ok = sl_atomic_commit(&file, err, n);
+    } else if (!text) {
+        snprintf(err, n, "out of memory");
+    }
+    free(text);
+    return ok;
+}
 
 bool sl_gradebook_write(const char *dir, const char *csv_path, char *err, size_t n) {
     return sl_gradebook_write_roster(dir, csv_path, NULL, err, n);
@@ -237,6 +285,7 @@ bool sl_gradebook_write_roster(const char *dir, const char *csv_path, const sl_g
     _sl_field(f, "max", false);
     _sl_field(f, "seed", false);
     _sl_field(f, "options", false);
+    _sl_field(f, "content", false);
     _sl_field(f, "note", false);
     fputc('\n', f);
     for (int i = 0; i < count; i++) {
@@ -253,11 +302,16 @@ bool sl_gradebook_write_roster(const char *dir, const char *csv_path, const sl_g
         _sl_number(f, r->have_totals, r->max);
         _sl_field(f, r->seed, false);
         _sl_field(f, r->options, false);
-        _sl_field(f, r->note, false);
+        _sl_field(f, r->content, false);
+        char note[2 * _SL_NOTE_MAX + 4];
+        snprintf(note, sizeof note, "%s%s%s", r->student_note, r->student_note[0] && r->note[0] ? "; " : "", r->note);
+        _sl_field(f, note, false);
         fputc('\n', f);
     }
+    bool ok = sl_atomic_commit(&file, err, n);
+    if (ok) ok = _sl_write_json(dir, rows, count, err, n);
     free(rows);
-    return sl_atomic_commit(&file, err, n);
+    return ok;
 }
 
 /* ---- with the LMS's roster (--roster): its names and ids, and a row for each student without a submission ---- */

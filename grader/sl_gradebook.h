@@ -4,7 +4,7 @@
  * DIR holds one folder per submission; a finished one has a `status` file
  * (the grade's exit status) and `report/results.json`. The gradebook has one
  * row per folder, in name order: submission, status (graded, did not build,
- * incomplete, no lab file, not graded (staff fault), not finished), one
+ * incomplete, no lab file, staff problem, not finished), one
  * column per lab, bonus, total (with the bonus), max, and a note (the
  * compiler's first error, or the grader's problem). A grade that stopped on
  * the staff's side has no scores: what its report holds is not the student's. It is made from the reports alone, so it can be

@@ -227,7 +227,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             fprintf(stderr, "shadowlab-grade: %s grades lab %d, which this build does not have\n", cases[i].path, lab);
             return SL_EXIT_ERROR;
         }
-        if (_sl_is_executable(s->runner)) {
+        if (_sl_stub_lab(&o, lab)) {
+            continue; /* the handout's stubs: not built, not run */
+        } else if (_sl_is_executable(s->runner)) {
             runnable++;
         } else if (o.isolate && o.build_logs) {
             if (!rep.lab_not_built[lab]) {
@@ -255,7 +257,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     /* The sandbox, before any lab code runs. */
     const char *probe_runner = run.setups[0].runner;
     for (int i = 0; i < count && !probe_runner; i++)
-        if (!rep.lab_not_built[cases[i].lab]) probe_runner = run.setups[cases[i].lab].runner;
+        if (!rep.lab_not_built[cases[i].lab] && !_sl_stub_lab(&o, cases[i].lab)) probe_runner = run.setups[cases[i].lab].runner;
     if (!sl_sandbox_open(sandbox, o.sandbox_level, probe_runner, err, sizeof err)) {
         fprintf(stderr, "shadowlab-grade: %s\n", err);
         return SL_EXIT_ERROR;
@@ -365,15 +367,16 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     bool complete = true;
     for (int first = 0; first < count && complete;) {
         int end = first;
-        if (rep.lab_not_built[cases[first].lab]) {
+        if (rep.lab_not_built[cases[first].lab] || _sl_stub_lab(&o, cases[first].lab)) {
             first++;
             continue;
         }
-        while (end < count && !rep.lab_not_built[cases[end].lab]) end++;
+        while (end < count && !rep.lab_not_built[cases[end].lab] && !_sl_stub_lab(&o, cases[end].lab)) end++;
         complete = sl_run_cases(cases + first, end - first, &run, results + first, &_sl_stop);
         first = end;
         /* stopped: the cases not started are interrupted too */
-        for (int i = end; !complete && i < count; i++) results[i].interrupted = !rep.lab_not_built[cases[i].lab];
+        for (int i = end; !complete && i < count; i++)
+            results[i].interrupted = !rep.lab_not_built[cases[i].lab] && !_sl_stub_lab(&o, cases[i].lab);
     }
     if (progress.terminal) fputs("\r\033[K", stderr); /* the report follows on stdout */
     /* A case the machine could not run grades nothing: the staff hear why (exit 2). */
@@ -404,6 +407,12 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             for (int k = 0; k < cases[i].check_count; k++) {
                 if (cases[i].checks[k].kind != SL_CHECK_PROBE) continue;
                 sl_check_result *cr = &graded[i].checks[k];
+                if (_sl_stub_lab(&o, cases[i].lab)) {
+                    _sl_grade_stub(&cases[i].checks[k], cases[i].lab, cr);
+                    probes_failed |= cases[i].checks[k].function >= 0 && cases[i].checks[k].function < 64
+                                         ? 1ull << cases[i].checks[k].function : 0;
+                    continue;
+                }
                 if (rep.lab_not_built[cases[i].lab]) {
                     sl_build_failure_grade_lab(&cases[i].checks[k], cases[i].lab, rep.lab_not_built[cases[i].lab], cr);
                     continue;
@@ -437,7 +446,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                 if (cases[i].lab != lab) continue;
                 for (int k = 0; k < cases[i].check_count; k++) {
                     sl_check_result *cr = &graded[i].checks[k];
-                    if (rep.lab_not_built[lab]) {
+                    if (_sl_stub_lab(&o, lab)) {
+                        _sl_grade_stub(&cases[i].checks[k], lab, cr);
+                    } else if (rep.lab_not_built[lab]) {
                         sl_build_failure_grade_lab(&cases[i].checks[k], lab, rep.lab_not_built[lab], cr);
                     } else if (cases[i].checks[k].kind != SL_CHECK_PROBE) {
                         sl_grade_context context = {.earlier = graded[i].checks, .earlier_count = k,

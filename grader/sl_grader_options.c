@@ -69,6 +69,9 @@ static void _sl_usage(FILE *f) {
             "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
             "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
             "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
+            "  --stub-labs LABS     these labs are the handout's stubs, unchanged (2, 1-3, 1,3-4): their checks\n"
+            "                       fail as not implemented, scoring what the stubs score, and they are\n"
+            "                       neither built nor run (scripts/grade-submission)\n"
             "  --submission-summary FILE  what staging the submission found (shadowlab-stage --summary): its\n"
             "                       notes lead every report (no lab file found, refused links, normalised\n"
             "                       line ends, bytes that are not text), and a submission without a lab file\n"
@@ -170,7 +173,8 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
                                                  "--sandbox", "--memory", "--seed", "--not-built", "--gradebook",
-                                                 "--build-logs", "--submission-summary", "--technique-dir"};
+                                                 "--build-logs", "--submission-summary", "--technique-dir",
+                                                 "--stub-labs"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -184,6 +188,12 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
             char lab_err[200];
             if (!_sl_parse_labs(v, &o->only_labs, lab_err, sizeof lab_err)) {
                 fprintf(stderr, "shadowlab-grade: %s\n", lab_err);
+                return SL_EXIT_ERROR;
+            }
+        } else if (strcmp(a, "--stub-labs") == 0) {
+            char lab_err[200];
+            if (!_sl_parse_labs(v, &o->stub_labs, lab_err, sizeof lab_err)) {
+                fprintf(stderr, "shadowlab-grade: --stub-labs: %s\n", lab_err);
                 return SL_EXIT_ERROR;
             }
         } else if (strcmp(a, "--case") == 0 || strcmp(a, "--exclude") == 0) {

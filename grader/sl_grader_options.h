@@ -23,6 +23,7 @@ typedef struct _sl_options {
     int pattern_count, exclude_count;
     const char *report_dir, *gradescope, *prairielearn, *junit;
     uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
+    uint32_t stub_labs; /* 1 << lab of each --stub-labs: the handout's stubs, unchanged, neither built nor run */
     bool update, list, isolate, strict, hidden, progress, no_reference_cache;
     const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
     /* with --gradebook: the LMS's roster, its due date (Moodle), and the grades written back in its format */
@@ -33,6 +34,11 @@ typedef struct _sl_options {
     int jobs;
     sl_backend backend;
 } _sl_options;
+
+/* A lab --stub-labs names: its checks fail as not implemented, and no runner of it starts. */
+static inline bool _sl_stub_lab(const _sl_options *o, int lab) {
+    return lab > 0 && lab < 32 && ((o->stub_labs >> lab) & 1u);
+}
 
 /* 0: go on; otherwise the exit status. */
 int _sl_parse(int argc, char **argv, _sl_options *o);

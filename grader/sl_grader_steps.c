@@ -348,6 +348,21 @@ bool _sl_write_reports(const _sl_options *o, const sl_grade_report *rep) {
     return ok;
 }
 
+void _sl_grade_stub(const sl_check *k, int lab, sl_check_result *out) {
+    memset(out, 0, sizeof *out);
+    out->max_points = k->points;
+    out->bonus = k->bonus;
+    out->stub = true;
+    out->settled = true;
+    snprintf(out->message, sizeof out->message,
+             "not implemented: lab %d's files are the handout's stubs, unchanged (so it was neither built nor run)",
+             lab);
+    snprintf(out->summary, sizeof out->summary, "lab %d: the handout's stubs, not implemented", lab);
+    /* one diagnosis per lab for every student who left it as handed out */
+    snprintf(out->diagnosis, sizeof out->diagnosis, "not-implemented-lab%d-stubs", lab);
+    snprintf(out->diagnosis_text, sizeof out->diagnosis_text, "lab %d: the handout's stubs, not implemented", lab);
+}
+
 int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, sl_grade_report *rep) {
     static char first_error[SL_BUILD_ERROR_MAX + 8];
     char err[1500];
@@ -364,7 +379,9 @@ int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, s
     static sl_graded_case graded[_SL_MAX_CASES];
     rep->cases = graded;
     rep->case_count = rep->cases_finished = count;
-    rep->not_built = first_error;
+    /* every lab the stubs as handed out: nothing failed to build */
+    bool built = !o->not_built && !first_error[0];
+    rep->not_built = built ? NULL : first_error;
     snprintf(rep->sandbox, sizeof rep->sandbox, "none (no lab code ran)");
     for (int i = 0; i < count; i++) {
         graded[i].c = &cases[i];
@@ -372,13 +389,16 @@ int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, s
         graded[i].references = no_references;
         const char *lab_error = rep->lab_not_built[cases[i].lab];
         for (int k = 0; k < cases[i].check_count; k++) {
-            if (lab_error)
+            if (_sl_stub_lab(o, cases[i].lab))
+                _sl_grade_stub(&cases[i].checks[k], cases[i].lab, &graded[i].checks[k]);
+            else if (lab_error)
                 sl_build_failure_grade_lab(&cases[i].checks[k], cases[i].lab, lab_error, &graded[i].checks[k]);
             else sl_build_failure_grade(&cases[i].checks[k], first_error, &graded[i].checks[k]);
         }
     }
     printf("shadowlab-grade: %s labs (%s), %d cases\n", rep->labs_kind, rep->labs_dir, count);
-    printf("shadowlab-grade: the submission did not build: %s\n", first_error);
+    if (built) printf("shadowlab-grade: every lab graded is the handout's stubs: not built, not run\n");
+    else printf("shadowlab-grade: the submission did not build: %s\n", first_error);
     fflush(stdout);
     bool reports_ok = _sl_write_reports(o, rep);
     sl_report_print(rep, stdout, isatty(1));

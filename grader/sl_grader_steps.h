@@ -98,7 +98,11 @@ int _sl_update_references(const _sl_options *o, sl_case *cases, int count, sl_ca
 /* Writes every report asked for; false (with each reason printed) if one failed. */
 bool _sl_write_reports(const _sl_options *o, const sl_grade_report *rep);
 
-/* --not-built: no runner starts; every check fails with the compiler's first error. */
+/* A check of a lab --stub-labs names: no points, not implemented, and nothing run. */
+void _sl_grade_stub(const sl_check *k, int lab, sl_check_result *out);
+
+/* --not-built, or no lab with a runner to run: no runner starts; every check fails with
+ * the compiler's first error, or as not implemented in a lab --stub-labs names. */
 int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, sl_grade_report *rep);
 
 /* The build's cache of decoded references (sl_reference_cache.h), where no

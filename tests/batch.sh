@@ -78,7 +78,7 @@ grep -q "layout: a labs/ folder" "$out/lab3_slope_sin/grade.log" || problem "the
 gradebook="$out/gradebook.csv"
 cat "$gradebook"
 header=$(head -n 1 "$gradebook")
-[ "$header" = "submission,student,student_id,late,status,lab2,lab3,bonus,total,max,seed,options,note" ] ||
+[ "$header" = "submission,student,student_id,late,status,lab2,lab3,bonus,total,max,seed,options,content,note" ] ||
   problem "the gradebook's columns: $header"
 # every column before the note is a name, a status, a number or options without a comma
 column() { tr ',' '\n' <<<"$header" | grep -nx "$1" | cut -d: -f1; }

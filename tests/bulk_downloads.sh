@@ -33,7 +33,7 @@ expect_listed() { # NAME STUDENT ID LATE FILES
   [ "$files" = "$5" ] || problem "$1's files: '$files', expected '$5'"
 }
 expect_listed smithbob_1002 smithbob 1002 late "shadowlab.zip"
-expect_listed leeann_1003 leeann 1003 "" "depth.frag depth.vert lab1.c lab1.c.earlier-0"
+expect_listed leeann_1003 leeann 1003 "" "depth.frag depth.vert lab1.c"
 expect_listed nguyenan_1004 nguyenan 1004 "" "text.html"
 expect_listed Jane_Doe_2001 "Jane Doe" 2001 "" \
   "labs/lab1_depth_fbo/lab1.c labs/lab1_depth_fbo/shaders/depth.frag labs/lab1_depth_fbo/shaders/depth.vert onlinetext.html"

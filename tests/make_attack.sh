@@ -8,7 +8,7 @@
 # attacks' shared helpers (tests/attack_util.h) are copied beside the file that
 # includes them: the compile fence shows the compiler a lab's own folder only.
 set -euo pipefail
-attack=$1 src=$2 out=$3 stubs=${4:-$2/labs}
+attack=${1%/} src=$2 out=$3 stubs=${4:-$2/labs} # (a folder given as dir/ is the same folder)
 rm -rf "$out.tmp"
 mkdir -p "$(dirname "$out")"
 cp -R "$stubs" "$out.tmp"
