@@ -21,6 +21,7 @@
 #include "sl_gradebook.h"
 #include "sl_hidden.h"
 #include "sl_manifest.h"
+#include "sl_utf8.h"
 
 volatile int _sl_stop;
 void _sl_on_signal(int sig) {
@@ -378,7 +379,9 @@ int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, s
         }
     }
     printf("shadowlab-grade: %s labs (%s), %d cases\n", rep->labs_kind, rep->labs_dir, count);
-    printf("shadowlab-grade: the submission did not build: %s\n", first_error);
+    fputs("shadowlab-grade: the submission did not build: ", stdout);
+    sl_utf8_write(stdout, first_error, strlen(first_error), 0); /* the compiler's words, on this one line */
+    fputc('\n', stdout);
     fflush(stdout);
     bool reports_ok = _sl_write_reports(o, rep);
     sl_report_print(rep, stdout, isatty(1));
