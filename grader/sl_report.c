@@ -74,9 +74,10 @@ bool sl_report_full_marks(const sl_grade_report *rep) {
     return true;
 }
 
-/* A message under its check, every line of it indented, so that no line of
- * it (a runner's error quotes lab code's text) can pass for one of the
- * report's own; the text is cleaned here too, whatever its way in. */
+/* A message under its check, indented, and each line after its first marked
+ * "| " as well, so that no line of it (a runner's error quotes what lab code
+ * sent: "\nScore: 16/16") can pass for one of the report's own; the text is
+ * cleaned here too, whatever its way in. */
 static void _sl_print_message(FILE *out, const char *message) {
     int lines = 0;
     const char *p = message;
@@ -84,7 +85,7 @@ static void _sl_print_message(FILE *out, const char *message) {
         const char *end = strchr(p, '\n');
         size_t len = end ? (size_t)(end - p) : strlen(p);
         if (len > 0) {
-            fputs("          ", out);
+            fputs(lines ? "          | " : "          ", out);
             sl_utf8_write(out, p, len, SL_UTF8_KEEP_TAB);
             fputc('\n', out);
         }
