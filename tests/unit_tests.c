@@ -15,6 +15,7 @@
 
 #include <signal.h>
 
+#include "sl_build_failure.h"
 #include "sl_case.h"
 #include "sl_compare.h"
 #include "sl_grade.h"
@@ -757,6 +758,28 @@ static void test_channel_rejects_lies(void) {
     CHECK(!r.finished && !r.protocol_error[0] && strcmp(r.crashed_in, "lab2_light_view") == 0);
 }
 
+/* A compiler's first error, read from its log, is one line of valid UTF-8
+ * whatever the lab file held (a #error with raw bytes, colour codes), and its
+ * cut to SL_BUILD_ERROR_MAX falls between characters. */
+static void test_build_error_text(void) {
+    char log[512], first[SL_BUILD_ERROR_MAX + 8], err[256] = "";
+    snprintf(log, sizeof log, "%s/build.log", tmp_dir);
+    FILE *f = fopen(log, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    fputs("[1/2] Building C object\n", f);
+    fputs("lab1.c:3:2: \033[01;31merror: \033[m#error bad \xff\xfe bytes \xc0\xaf \x01 cr\r ", f);
+    for (int i = 0; i < 400; i++) fputs("\xc3\xa9", f);
+    fputs("\nlab1.c:4:2: error: a second error\n", f);
+    fclose(f);
+    CHECK(sl_build_failure_first_error(log, NULL, first, sizeof first, err, sizeof err));
+    size_t n = strlen(first);
+    const char *want = "lab1.c:3:2: error: #error bad \xef\xbf\xbd bytes \xef\xbf\xbd  cr \xc3\xa9";
+    CHECK(strncmp(first, want, strlen(want)) == 0);
+    CHECK(sl_utf8_is_clean(first, n, 0) && n <= SL_BUILD_ERROR_MAX && n >= SL_BUILD_ERROR_MAX - 4);
+    CHECK(n > 5 && strcmp(first + n - 5, "\xc3\xa9...") == 0);
+}
+
 /* Text from outside the grader: bytes that are not UTF-8 become U+FFFD (a
  * run of them one), controls '?', newlines stay only where asked; a copy or
  * a cut never splits a character. */
@@ -1248,6 +1271,7 @@ int main(int argc, char **argv) {
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},
         {"utf8_clean_and_cut", test_utf8_clean_and_cut},
+        {"build_error_text", test_build_error_text},
         {"channel_cleans_text", test_channel_cleans_text},
         {"sha256_known_answers", test_sha256_known_answers},
         {"text_normalise_and_check", test_text_normalise_and_check},
