@@ -456,7 +456,7 @@ bool sl_probe_failure_of(const sl_case *c, const sl_check *k, const sl_check_res
  * diagnosis reads the same for every student. */
 static void _sl_without_numbers(const char *text, char *out, size_t n) {
     size_t used = 0;
-    for (const char *p = text; *p;) {
+    for (const char *p = text; *p && used + 4 < n;) { /* room for a character of 4 bytes and the NUL */
         bool starts_number = (*p >= '0' && *p <= '9') || ((*p == '-' || *p == '+') && p[1] >= '0' && p[1] <= '9');
         bool in_name = p > text && (isalnum((unsigned char)p[-1]) || p[-1] == '_' || p[-1] == '.' || p[-1] == '^');
         /* "lab 2", "labs 1-3": which lab, not a measure */
@@ -469,14 +469,12 @@ static void _sl_without_numbers(const char *text, char *out, size_t n) {
             while ((*p >= '0' && *p <= '9') || (*p == '.' && p[1] >= '0' && p[1] <= '9')) p++;
             if ((*p == 'e' || *p == 'E') && (isdigit((unsigned char)p[1]) || ((p[1] == '-' || p[1] == '+') && isdigit((unsigned char)p[2]))))
                 for (p += 2; isdigit((unsigned char)*p); p++) {}
-            if (used + 3 >= n) break;
             memcpy(out + used, "\xe2\x80\xa6", 3); /* … */
             used += 3;
             continue;
         }
-        size_t len = sl_utf8_sequence(p, strlen(p), NULL); /* a character whole, or one byte that is none */
+        size_t len = sl_utf8_sequence(p, strnlen(p, 4), NULL); /* a character whole, or one byte that is none */
         len = len ? len : 1;
-        if (used + len >= n) break;
         memcpy(out + used, p, len);
         used += len;
         p += len;
@@ -527,8 +525,8 @@ static void _sl_clean_in_place(char *text, size_t size) {
     free(clean);
 }
 
-static void _sl_grade_and_name(const sl_case *c, const sl_check *k, const sl_case_result *r,
-                                  const sl_reference *ref, const sl_grade_context *context, sl_check_result *out);
+static void _sl_grade_and_name(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                               const sl_grade_context *context, sl_check_result *out);
 
 void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                     const sl_grade_context *context, sl_check_result *out) {
@@ -538,8 +536,8 @@ void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r
     _sl_clean_in_place(out->diagnosis_text, sizeof out->diagnosis_text);
 }
 
-static void _sl_grade_and_name(const sl_case *c, const sl_check *k, const sl_case_result *r,
-                                  const sl_reference *ref, const sl_grade_context *context, sl_check_result *out) {
+static void _sl_grade_and_name(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                               const sl_grade_context *context, sl_check_result *out) {
     _sl_grade_check(c, k, r, ref, context, out);
     if (out->passed) return;
     /* led by an earlier failure ("needs lab 2 first: ... Here: ..."): that lead is the diagnosis */
