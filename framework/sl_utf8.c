@@ -1,4 +1,3 @@
-#define _POSIX_C_SOURCE 200809L /* strnlen */
 #include "sl_utf8.h"
 
 #include <string.h>
@@ -88,7 +87,8 @@ bool sl_utf8_is_clean(const char *s, size_t n, unsigned keep) {
 static bool _sl_continuation(char c) { return ((unsigned char)c & 0xC0) == 0x80; }
 
 size_t sl_utf8_cut(const char *s, size_t max) {
-    size_t len = strnlen(s, max + 1);
+    size_t len = 0;
+    while (len <= max && s[len]) len++;
     if (len <= max) return len;
     size_t cut = max;
     /* a character is at most 4 bytes: step back over at most 3 continuation bytes */
