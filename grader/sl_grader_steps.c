@@ -250,7 +250,7 @@ int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report *rep) {
                 ok = false;
             }
         if (!ok) {
-            if (rep->problem_count < 32) snprintf(rep->problems[rep->problem_count++], sizeof rep->problems[0], "%s", err);
+            if (rep->problem_count < 32) sl_utf8_copy(rep->problems[rep->problem_count++], sizeof rep->problems[0], err);
             continue;
         }
         if (o->only_labs && !((o->only_labs >> c->lab) & 1u)) continue;
