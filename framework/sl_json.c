@@ -2,6 +2,9 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include "sl_utf8.h"
 
 static char *_sl_read_text(const char *path) {
     FILE *f = fopen(path, "rb");
@@ -45,4 +48,26 @@ bool sl_json_number(const cJSON *obj, const char *key, double *out, double lo, d
     }
     *out = v->valuedouble;
     return true;
+}
+
+/* A string of the tree made clean, replaced where it is not. */
+static bool _sl_clean_string(char **text) {
+    size_t len = strlen(*text);
+    if (sl_utf8_is_clean(*text, len, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB)) return true;
+    size_t size = 3 * len + 1; /* at most U+FFFD for every byte */
+    char *clean = cJSON_malloc(size);
+    if (!clean) return false;
+    sl_utf8_clean(clean, size, *text, len, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
+    cJSON_free(*text);
+    *text = clean;
+    return true;
+}
+
+bool sl_json_clean_strings(cJSON *item) {
+    if (!item) return true;
+    bool ok = true;
+    if (item->string && !(item->type & cJSON_StringIsConst)) ok = _sl_clean_string(&item->string);
+    if (cJSON_IsString(item) && item->valuestring) ok = _sl_clean_string(&item->valuestring) && ok;
+    for (cJSON *child = item->child; child; child = child->next) ok = sl_json_clean_strings(child) && ok;
+    return ok;
 }

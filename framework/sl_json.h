@@ -16,4 +16,10 @@ cJSON *sl_json_load_file(const char *path, const char *what, char *err, size_t e
 bool sl_json_number(const cJSON *obj, const char *key, double *out, double lo, double hi, const char *path, char *err,
                     size_t n);
 
+/* Makes every string of the tree (values and keys, of item and every item
+ * below it) valid UTF-8 of printable characters, newlines and tabs, as
+ * sl_utf8_clean does, before it is written: a JSON reader refuses a whole file
+ * for one string that is not UTF-8. False where memory ran out (a string then stays as it was). */
+bool sl_json_clean_strings(cJSON *item);
+
 #endif

@@ -3,6 +3,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "sl_utf8.h"
+
 size_t sl_text_normalize(char *text, size_t len, sl_text_fix *fix) {
     sl_text_fix local = {0};
     size_t in = 0, out = 0;
@@ -42,27 +44,6 @@ void sl_text_fix_describe(const sl_text_fix *fix, char *out, size_t n) {
                  fix->lone_cr == 1 ? "" : "s");
 }
 
-/* The length of the valid UTF-8 sequence at s (at most left bytes), or 0 (RFC 3629, section 4). */
-static size_t _sl_utf8_sequence(const unsigned char *s, size_t left) {
-    unsigned char c = s[0];
-    if (c < 0x80) return 1;
-    size_t n;
-    unsigned char lo = 0x80, hi = 0xBF; /* the allowed range of the second byte */
-    if (c >= 0xC2 && c <= 0xDF) n = 2;
-    else if (c == 0xE0) n = 3, lo = 0xA0;
-    else if (c >= 0xE1 && c <= 0xEC) n = 3;
-    else if (c == 0xED) n = 3, hi = 0x9F; /* no surrogates */
-    else if (c >= 0xEE && c <= 0xEF) n = 3;
-    else if (c == 0xF0) n = 4, lo = 0x90;
-    else if (c >= 0xF1 && c <= 0xF3) n = 4;
-    else if (c == 0xF4) n = 4, hi = 0x8F; /* nothing past U+10FFFF */
-    else return 0;
-    if (left < n || s[1] < lo || s[1] > hi) return 0;
-    for (size_t i = 2; i < n; i++)
-        if (s[i] < 0x80 || s[i] > 0xBF) return 0;
-    return n;
-}
-
 bool sl_text_check(const char *text, size_t len, sl_text_problems *p) {
     *p = (sl_text_problems){.nul_offset = -1, .invalid_offset = -1};
     const unsigned char *s = (const unsigned char *)text;
@@ -77,7 +58,7 @@ bool sl_text_check(const char *text, size_t len, sl_text_problems *p) {
             p->nul_offset = (long long)i;
             p->nul_line = line;
         }
-        size_t n = _sl_utf8_sequence(s + i, len - i);
+        size_t n = sl_utf8_sequence(text + i, len - i, NULL);
         if (n == 0) {
             if (p->invalid_offset < 0) {
                 p->invalid_offset = (long long)i;

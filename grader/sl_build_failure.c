@@ -6,11 +6,20 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sl_utf8.h"
+
 #define _SL_LOG_MAX (8 << 20) /* a build log is read this far at most */
 #define _SL_LINE_MAX 4096
 
-/* Keeps printable characters; drops colour codes (ESC [ ... letter) and other controls. */
+/* Keeps printable characters; drops colour codes (ESC [ ... letter) and other
+ * controls; bytes that are not UTF-8 (a lab file's, quoted by the compiler)
+ * become U+FFFD (sl_utf8_clean), so every report can hold the line. */
 static void _sl_clean(const char *in, char *out, size_t n) {
+    char *plain = malloc(n);
+    if (!plain) {
+        if (n) out[0] = '\0';
+        return;
+    }
     size_t used = 0;
     for (const unsigned char *p = (const unsigned char *)in; *p && used + 1 < n; p++) {
         if (*p == 0x1b) {
@@ -21,10 +30,11 @@ static void _sl_clean(const char *in, char *out, size_t n) {
             }
             continue;
         }
-        if (*p == '\t') out[used++] = ' ';
-        else if (*p >= 0x20 && *p != 0x7f) out[used++] = (char)*p;
+        if (*p == '\t') plain[used++] = ' ';
+        else if (*p >= 0x20 && *p != 0x7f) plain[used++] = (char)*p;
     }
-    out[used] = '\0';
+    sl_utf8_clean(out, n, plain, used, 0);
+    free(plain);
 }
 
 /* Removes every occurrence of `prefix` + '/' from `line`, in place. */
@@ -80,7 +90,7 @@ bool sl_build_failure_first_error(const char *log_path, const char *labs_dir, ch
     if (labs_dir && realpath(labs_dir, resolved)) _sl_drop_prefix(best, resolved);
     if (labs_dir) _sl_drop_prefix(best, labs_dir);
     size_t limit = n < SL_BUILD_ERROR_MAX + 1 ? n : SL_BUILD_ERROR_MAX + 1;
-    if (strlen(best) >= limit && limit > 4) snprintf(out, n, "%.*s...", (int)(limit - 4), best);
+    if (strlen(best) >= limit && limit > 4) snprintf(out, n, "%.*s...", (int)sl_utf8_cut(best, limit - 4), best);
     else snprintf(out, n, "%s", best);
     return true;
 }

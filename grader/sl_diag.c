@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "sl_gl.h"
+#include "sl_utf8.h"
 
 /* The TODO tags a stub's message points to. */
 static const struct { const char *function, *todo, *file; } _sl_stubs[] = {
@@ -32,6 +33,7 @@ void sl_diag_say(sl_check_result *out, const char *fmt, ...) {
     va_start(args, fmt);
     vsnprintf(out->message, sizeof out->message, fmt, args);
     va_end(args);
+    sl_utf8_trim(out->message); /* a long text cut between characters */
 }
 
 void sl_diag_append(sl_check_result *out, const char *fmt, ...) {
@@ -40,6 +42,7 @@ void sl_diag_append(sl_check_result *out, const char *fmt, ...) {
     va_start(args, fmt);
     vsnprintf(out->message + used, sizeof out->message - used, fmt, args);
     va_end(args);
+    sl_utf8_trim(out->message);
 }
 
 void sl_diag_cause(sl_check_result *out, const char *fmt, ...) {
@@ -47,6 +50,7 @@ void sl_diag_cause(sl_check_result *out, const char *fmt, ...) {
     va_start(args, fmt);
     vsnprintf(out->cause, sizeof out->cause, fmt, args);
     va_end(args);
+    sl_utf8_trim(out->cause);
 }
 
 void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fmt, ...) {
@@ -54,6 +58,7 @@ void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fm
     va_start(args, fmt);
     vsnprintf(out->cause, sizeof out->cause, fmt, args);
     va_end(args);
+    sl_utf8_trim(out->cause);
     /* "pcf_grid()", "shadow_compare_manual() (lab 2)": the name alone */
     snprintf(out->blamed, sizeof out->blamed, "%.*s", (int)strcspn(function, "( "), function);
 }

@@ -18,6 +18,7 @@
 #include "sl_files.h"
 #include "sl_json.h"
 #include "sl_probe.h"
+#include "sl_utf8.h"
 
 /* Frames taking this many times the solutions' CPU time (and this many
  * seconds more) run a loop that does not end: far beyond what another
@@ -60,7 +61,8 @@ static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *ou
         while (end > r->output_tail && end[-1] == '\n') end--;
         const char *start = end;
         while (start > r->output_tail && start[-1] != '\n') start--;
-        if (end > start) sl_diag_append(out, "; its output ended with: %.*s", (int)(end - start > 300 ? 300 : end - start), start);
+        size_t len = end - start > 300 ? sl_utf8_cut(start, 300) : (size_t)(end - start);
+        if (end > start) sl_diag_append(out, "; its output ended with: %.*s", (int)len, start);
     }
 }
 
@@ -404,7 +406,7 @@ static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_resul
         out->cause[0] = '\0';
     }
     if (root) {
-        snprintf(out->message, sizeof out->message, "%s. Here: %s", lead, symptom);
+        snprintf(out->message, sizeof out->message, "%s. Here: %s", lead, symptom); /* cuts: trimmed below */
     } else if (out->cause[0]) {
         snprintf(out->message, sizeof out->message, "%s: %s", symptom, out->cause);
     } else if (!out->settled && k->kind != SL_CHECK_PROBE && k->kind != SL_CHECK_FBO && k->kind != SL_CHECK_MATRICES) {
@@ -416,7 +418,8 @@ static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_resul
             snprintf(out->message, sizeof out->message, "%s%s %s", symptom, ends_sentence ? "" : ".", candidates);
         }
     }
-    if (!out->summary[0]) snprintf(out->summary, sizeof out->summary, "%s", out->cause[0] ? out->cause : symptom);
+    sl_utf8_trim(out->message);
+    if (!out->summary[0]) sl_utf8_copy(out->summary, sizeof out->summary, out->cause[0] ? out->cause : symptom);
     /* A hint is a guess: never over a known cause, and only for its own symptoms
      * (without "hint_when": only when nothing more specific was found). */
     bool hint_fits = k->hint_when ? (k->hint_when & out->symptoms) != 0 : !out->cause[0];
@@ -429,7 +432,7 @@ bool sl_probe_failure_of(const sl_case *c, const sl_check *k, const sl_check_res
     memset(out, 0, sizeof *out);
     out->function = k->function;
     snprintf(out->where, sizeof out->where, "%s / %s", c->name, k->name);
-    snprintf(out->summary, sizeof out->summary, "%s", result->summary[0] ? result->summary : result->message);
+    sl_utf8_copy(out->summary, sizeof out->summary, result->summary[0] ? result->summary : result->message);
     out->stub = result->stub;
     out->check = k;
     out->failing_rows = result->failing_rows;
@@ -453,7 +456,7 @@ bool sl_probe_failure_of(const sl_case *c, const sl_check *k, const sl_check_res
  * diagnosis reads the same for every student. */
 static void _sl_without_numbers(const char *text, char *out, size_t n) {
     size_t used = 0;
-    for (const char *p = text; *p && used + 4 < n;) {
+    for (const char *p = text; *p && used + 4 < n;) { /* room for a character of 4 bytes and the NUL */
         bool starts_number = (*p >= '0' && *p <= '9') || ((*p == '-' || *p == '+') && p[1] >= '0' && p[1] <= '9');
         bool in_name = p > text && (isalnum((unsigned char)p[-1]) || p[-1] == '_' || p[-1] == '.' || p[-1] == '^');
         /* "lab 2", "labs 1-3": which lab, not a measure */
@@ -470,7 +473,11 @@ static void _sl_without_numbers(const char *text, char *out, size_t n) {
             used += 3;
             continue;
         }
-        out[used++] = *p++;
+        size_t len = sl_utf8_sequence(p, strnlen(p, 4), NULL); /* a character whole, or one byte that is none */
+        len = len ? len : 1;
+        memcpy(out + used, p, len);
+        used += len;
+        p += len;
     }
     out[used] = '\0';
 }
@@ -503,8 +510,34 @@ static void _sl_name_diagnosis(sl_check_result *out, const char *text, bool foll
 static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                             const sl_grade_context *context, sl_check_result *out);
 
+/* A text of a check's result made valid and printable, newlines kept (sl_utf8_clean), in place: what came
+ * in was cleaned where it came in, and cuts fall between characters, so this is a last guard for every report. */
+static void _sl_clean_in_place(char *text, size_t size) {
+    size_t len = strlen(text);
+    if (sl_utf8_is_clean(text, len, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB)) return;
+    char *clean = malloc(3 * len + 1);
+    if (!clean) {
+        text[0] = '\0';
+        return;
+    }
+    sl_utf8_clean(clean, 3 * len + 1, text, len, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
+    sl_utf8_copy(text, size, clean);
+    free(clean);
+}
+
+static void _sl_grade_and_name(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                               const sl_grade_context *context, sl_check_result *out);
+
 void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                     const sl_grade_context *context, sl_check_result *out) {
+    _sl_grade_and_name(c, k, r, ref, context, out);
+    _sl_clean_in_place(out->message, sizeof out->message);
+    _sl_clean_in_place(out->summary, sizeof out->summary);
+    _sl_clean_in_place(out->diagnosis_text, sizeof out->diagnosis_text);
+}
+
+static void _sl_grade_and_name(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
+                               const sl_grade_context *context, sl_check_result *out) {
     _sl_grade_check(c, k, r, ref, context, out);
     if (out->passed) return;
     /* led by an earlier failure ("needs lab 2 first: ... Here: ..."): that lead is the diagnosis */
@@ -539,7 +572,7 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
     if (!r->finished && !(r->capture_count > 0 && !r->signal && !r->timed_out && !r->error[0] && !r->staff_error[0])) {
         _sl_explain_run_failure(r, out);
         out->reference_problem = r->staff_error[0] != '\0'; /* the staff's to solve, as a reference's */
-        snprintf(out->summary, sizeof out->summary, "%s", out->message);
+        sl_utf8_copy(out->summary, sizeof out->summary, out->message);
         return;
     }
     /* The software renderer cuts endless shader loops short, so such a case
@@ -558,7 +591,7 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
      * (A probe calls one function alone: only its own stub matters there.) */
     for (int i = 0; k->kind != SL_CHECK_PROBE && i < r->not_implemented_count; i++)
         if (sl_diag_function_lab(r->not_implemented[i]) <= c->lab && sl_diag_explain_missing(c, r, out)) {
-            snprintf(out->summary, sizeof out->summary, "%s", out->message);
+            sl_utf8_copy(out->summary, sizeof out->summary, out->message);
             return;
         }
     sl_check_diagnosis_fn lab_diagnosis = sl_check_diagnosis_of(k->kind); /* a lab's own check kind */

@@ -29,6 +29,7 @@
 #include "sl_report.h"
 #include "sl_run.h"
 #include "sl_sandbox.h"
+#include "sl_utf8.h"
 
 /* What the grader was doing, for the message of a fault of its own. */
 static const char *volatile _sl_phase = "starting";
@@ -246,7 +247,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         }
     }
     for (int lab = 1; lab <= SL_LAB_MAX; lab++)
-        if (rep.lab_not_built[lab]) printf("shadowlab-grade: lab %d did not build: %s\n", lab, rep.lab_not_built[lab]);
+        if (rep.lab_not_built[lab]) {
+            printf("shadowlab-grade: lab %d did not build: ", lab);
+            sl_utf8_write(stdout, rep.lab_not_built[lab], strlen(rep.lab_not_built[lab]), 0);
+            fputc('\n', stdout);
+        }
     if (runnable == 0) return _sl_grade_not_built(&o, cases, count, &rep);
     if (o.hidden && !_sl_is_executable(sl_config_solutions_runner)) {
         fprintf(stderr, "shadowlab-grade: the solutions' runner %s is missing (build it: cmake --build build)\n",
@@ -476,7 +481,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                         *lf = (sl_lab_failure){.failed = true, .lab = lab, .c = &cases[i], .k = ck,
                                                .symptoms = cr->symptoms};
                         snprintf(lf->where, sizeof lf->where, "%s / %s", cases[i].name, ck->name);
-                        snprintf(lf->summary, sizeof lf->summary, "%s", cr->summary[0] ? cr->summary : cr->message);
+                        sl_utf8_copy(lf->summary, sizeof lf->summary, cr->summary[0] ? cr->summary : cr->message);
                     }
         }
         rep.seconds = _sl_monotonic_now() - start;
@@ -492,8 +497,13 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         if (o.hidden)
             printf("shadowlab-grade: hidden cases: variants of the public ones drawn from seed %s; references rendered "
                    "from the solutions for this run\n", o.seed);
-        printf("shadowlab-grade: rendered with %s: %s\n", rep.backend[0] ? rep.backend : "(no runner started)",
-               rep.renderer[0] ? rep.renderer : "-");
+        /* what a runner said it rendered with: its text, on this one line */
+        const char *backend = rep.backend[0] ? rep.backend : "(no runner started)", *renderer = rep.renderer[0] ? rep.renderer : "-";
+        fputs("shadowlab-grade: rendered with ", stdout);
+        sl_utf8_write(stdout, backend, strlen(backend), 0);
+        fputs(": ", stdout);
+        sl_utf8_write(stdout, renderer, strlen(renderer), 0);
+        fputc('\n', stdout);
         if (o.backend == SL_BACKEND_WINDOW)
             printf("shadowlab-grade: SELF-CHECK: rendered in hidden windows with this computer's OpenGL, not the "
                    "course's renderer. It tells you what to fix; your grade comes from the course's own grader.\n");

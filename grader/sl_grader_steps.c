@@ -21,6 +21,7 @@
 #include "sl_gradebook.h"
 #include "sl_hidden.h"
 #include "sl_manifest.h"
+#include "sl_utf8.h"
 
 volatile int _sl_stop;
 void _sl_on_signal(int sig) {
@@ -249,7 +250,7 @@ int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report *rep) {
                 ok = false;
             }
         if (!ok) {
-            if (rep->problem_count < 32) snprintf(rep->problems[rep->problem_count++], sizeof rep->problems[0], "%s", err);
+            if (rep->problem_count < 32) sl_utf8_copy(rep->problems[rep->problem_count++], sizeof rep->problems[0], err);
             continue;
         }
         if (o->only_labs && !((o->only_labs >> c->lab) & 1u)) continue;
@@ -397,8 +398,15 @@ int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, s
         }
     }
     printf("shadowlab-grade: %s labs (%s), %d cases\n", rep->labs_kind, rep->labs_dir, count);
-    if (built) printf("shadowlab-grade: every lab graded is the handout's stubs: not built, not run\n");
-    else printf("shadowlab-grade: the submission did not build: %s\n", first_error);
+    if (built) {
+        printf("shadowlab-grade: every lab graded is the handout's stubs: not built, not run
+");
+    } else {
+        fputs("shadowlab-grade: the submission did not build: ", stdout);
+        sl_utf8_write(stdout, first_error, strlen(first_error), 0); /* the compiler's words, on this one line */
+        fputc('
+', stdout);
+    }
     fflush(stdout);
     bool reports_ok = _sl_write_reports(o, rep);
     sl_report_print(rep, stdout, isatty(1));

@@ -13,6 +13,7 @@
 #include "sl_html.h"
 #include "sl_json.h"
 #include "sl_params.h"
+#include "sl_utf8.h"
 
 bool sl_report_load_submission(sl_grade_report *rep, const char *path, char *err, size_t err_size) {
     cJSON *root = sl_json_load_file(path, "submission summary", err, err_size);
@@ -28,8 +29,9 @@ bool sl_report_load_submission(sl_grade_report *rep, const char *path, char *err
     rep->submission_note_count = 0;
     cJSON_ArrayForEach(note, notes) {
         if (!cJSON_IsString(note) || rep->submission_note_count >= SL_SUBMISSION_NOTES_MAX) continue;
-        snprintf(rep->submission_notes[rep->submission_note_count++], sizeof rep->submission_notes[0], "%s",
-                 note->valuestring);
+        /* a note is one line of the text report: staged from what a submission named */
+        sl_utf8_clean(rep->submission_notes[rep->submission_note_count++], sizeof rep->submission_notes[0],
+                      note->valuestring, strlen(note->valuestring), SL_UTF8_KEEP_TAB);
     }
     cJSON_Delete(rep->submission_summary);
     rep->submission_summary = root;
@@ -72,13 +74,21 @@ bool sl_report_full_marks(const sl_grade_report *rep) {
     return true;
 }
 
+/* A message under its check, indented, and each line after its first marked
+ * "| " as well, so that no line of it (a runner's error quotes what lab code
+ * sent: "\nScore: 16/16") can pass for one of the report's own; the text is
+ * cleaned here too, whatever its way in. */
 static void _sl_print_message(FILE *out, const char *message) {
     int lines = 0;
     const char *p = message;
     while (*p && lines < 10) {
         const char *end = strchr(p, '\n');
-        int len = end ? (int)(end - p) : (int)strlen(p);
-        if (len > 0) fprintf(out, "          %.*s\n", len, p);
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        if (len > 0) {
+            fputs(lines ? "          | " : "          ", out);
+            sl_utf8_write(out, p, len, SL_UTF8_KEEP_TAB);
+            fputc('\n', out);
+        }
         lines += len > 0;
         p = end ? end + 1 : p + len;
     }
@@ -92,8 +102,11 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
     const char *red = color ? "\033[31m" : "", *green = color ? "\033[32m" : "", *bold = color ? "\033[1m" : "",
                *reset = color ? "\033[0m" : "";
     if (rep->self_check) fprintf(out, "%sSelf-check:%s %s\n", bold, reset, rep->self_check);
-    for (int i = 0; i < rep->submission_note_count; i++)
-        fprintf(out, "%sSubmission:%s %s\n", i == 0 && rep->no_lab_file ? red : bold, reset, rep->submission_notes[i]);
+    for (int i = 0; i < rep->submission_note_count; i++) {
+        fprintf(out, "%sSubmission:%s ", i == 0 && rep->no_lab_file ? red : bold, reset);
+        sl_utf8_write(out, rep->submission_notes[i], strlen(rep->submission_notes[i]), SL_UTF8_KEEP_TAB);
+        fputc('\n', out);
+    }
     for (int lab = 0; lab <= SL_LAB_MAX; lab++) { /* 0: the technique the runners' build adds */
         double score = 0, max = 0, bonus = 0;
         bool any = false;
@@ -121,7 +134,11 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
         if (any && bonus > 0) fprintf(out, "  Lab %d: %g/%g (+%g bonus)\n", lab, score, max, bonus);
         else if (any) fprintf(out, "  Lab %d: %g/%g\n", lab, score, max);
     }
-    for (int i = 0; i < rep->problem_count; i++) fprintf(out, "%sPROBLEM%s %s\n", red, reset, rep->problems[i]);
+    for (int i = 0; i < rep->problem_count; i++) {
+        fprintf(out, "%sPROBLEM%s ", red, reset);
+        sl_utf8_write(out, rep->problems[i], strlen(rep->problems[i]), SL_UTF8_KEEP_TAB);
+        fputc('\n', out);
+    }
     fprintf(out, "Time: %.2f s (%d cases, %d at a time)\n", rep->seconds, rep->case_count, rep->jobs);
     char line[256];
     sl_report_score_line(rep, line, sizeof line);
@@ -129,7 +146,8 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
 }
 
 static bool _sl_write_json(cJSON *json, const char *path, char *err, size_t err_size) {
-    char *text = cJSON_Print(json);
+    /* whatever a string holds, the file is JSON: a reader refuses the whole file for one byte that is not UTF-8 */
+    char *text = sl_json_clean_strings(json) ? cJSON_Print(json) : NULL;
     if (!text) {
         snprintf(err, err_size, "%s: out of memory", path);
         return false;
@@ -208,8 +226,9 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
             score, max);
     fputs("<h1>", f);
     sl_html_text(f, line);
-    fprintf(f, "</h1>\n<p>%s labs, %d cases, %.2f s; rendered with %s (", rep->labs_kind, rep->case_count, rep->seconds,
-            rep->backend[0] ? rep->backend : "?");
+    fprintf(f, "</h1>\n<p>%s labs, %d cases, %.2f s; rendered with ", rep->labs_kind, rep->case_count, rep->seconds);
+    sl_html_text(f, rep->backend[0] ? rep->backend : "?"); /* the runner's word, as the renderer's */
+    fputs(" (", f);
     sl_html_text(f, rep->renderer);
     fputs("); sandbox: ", f);
     sl_html_text(f, rep->sandbox);
@@ -286,8 +305,9 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
                     failures += !rep->cases[i].checks[k].passed;
                 }
         if (!tests) continue;
-        fprintf(f, "  <testsuite name=\"lab%d %s\" tests=\"%d\" failures=\"%d\">\n", lab, _sl_report_lab_title(lab), tests,
-                failures);
+        fprintf(f, "  <testsuite name=\"lab%d ", lab);
+        sl_html_text(f, _sl_report_lab_title(lab));
+        fprintf(f, "\" tests=\"%d\" failures=\"%d\">\n", tests, failures);
         for (int i = 0; i < rep->case_count; i++) {
             const sl_graded_case *g = &rep->cases[i];
             if (g->c->lab != lab) continue;
@@ -323,6 +343,7 @@ static void _sl_add_labs_not_built(const sl_grade_report *rep, cJSON *root) {
             if (!rep->not_built) {
                 char text[SL_BUILD_ERROR_MAX + 64];
                 snprintf(text, sizeof text, "lab %d did not build: %s", lab, rep->lab_not_built[lab]);
+                sl_utf8_trim(text);
                 cJSON_AddStringToObject(root, "build_error", text);
             }
         }
@@ -359,6 +380,7 @@ static void _sl_platform_text(const sl_grade_report *rep, char *text, size_t n) 
                     "%g).\n", bonus, max);
     }
 #undef _SL_SAY
+    sl_utf8_trim(text);
 }
 
 bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err, size_t err_size) {
@@ -546,6 +568,7 @@ bool sl_report_write_prairielearn(const sl_grade_report *rep, const char *path, 
     if (rep->not_built) {
         char text[512];
         snprintf(text, sizeof text, "The submission did not build: %s", rep->not_built);
+        sl_utf8_trim(text);
         cJSON_AddItemToArray(format_errors, cJSON_CreateString(text));
     }
     /* PrairieLearn takes a fraction in [0, 1]: the bonus fills what was lost, and is said in words */

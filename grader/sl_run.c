@@ -18,6 +18,7 @@
 #include "sl_backend.h"
 #include "sl_protocol.h"
 #include "sl_run_stream.h"
+#include "sl_utf8.h"
 #ifdef SL_STAFF_LIGHT_CAMERA
 #include "sl_light_camera.h" /* staff builds: solutions/framework/ */
 #endif
@@ -297,9 +298,18 @@ static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
         sl_case_result_free(r);
         r->not_implemented_count = 0;
     }
-    job->output[job->output_len] = '\0';
-    _sl_clean_text(r->output_tail, sizeof r->output_tail, job->output, job->output_len);
-    r->output_dropped = job->output_total - (long long)job->output_len;
+    /* The tail kept: where output was dropped its first character may be cut (not lab code's doing), and
+     * cleaning may lengthen the text (U+FFFD for a byte): the end is what it printed last, so the end is kept. */
+    size_t skip = 0;
+    while (job->output_total > (long long)job->output_len && skip < 3 && skip < job->output_len &&
+           ((unsigned char)job->output[skip] & 0xC0) == 0x80) /* a continuation byte */
+        skip++;
+    char clean[3 * _SL_OUTPUT_KEEP + 1];
+    size_t len = sl_utf8_clean(clean, sizeof clean, job->output + skip, job->output_len - skip,
+                               SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
+    size_t start = sl_utf8_tail(clean, len, sizeof r->output_tail - 1);
+    memcpy(r->output_tail, clean + start, len - start + 1);
+    r->output_dropped = job->output_total - (long long)(job->output_len - skip);
     job->proc.pid = 0;
 }
 

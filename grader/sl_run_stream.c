@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "sl_protocol.h"
+#include "sl_utf8.h"
 
 /* ---- the stream from a runner, taken apart as it arrives ---- */
 
@@ -25,15 +26,6 @@ void _sl_protocol_error(_sl_stream *s, const char *fmt, ...) {
     va_start(args, fmt);
     vsnprintf(s->r->protocol_error, sizeof s->r->protocol_error, fmt, args);
     va_end(args);
-}
-
-void _sl_clean_text(char *out, size_t out_size, const char *in, size_t n) {
-    size_t j = 0;
-    for (size_t i = 0; i < n && j + 1 < out_size; i++) {
-        unsigned char ch = (unsigned char)in[i];
-        out[j++] = (ch < 32 && ch != '\n' && ch != '\t') || ch == 127 ? '?' : (char)ch;
-    }
-    out[j] = '\0';
 }
 
 static bool _sl_valid_name(const char *name, size_t n) {
@@ -147,13 +139,12 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
     snprintf(name, sizeof name, "%.*s", (int)h->name_length, name_raw);
     int capture = sl_capture_parse(name);
     switch ((sl_message_type)h->type) {
-    case SL_MSG_HELLO: {
-        char text[256];
-        _sl_clean_text(text, sizeof text, payload, (size_t)h->payload_length);
-        char *nl = strchr(text, '\n');
-        if (nl) *nl = '\0';
-        snprintf(r->backend, sizeof r->backend, "%s", text);
-        snprintf(r->renderer, sizeof r->renderer, "%s", nl ? nl + 1 : "");
+    case SL_MSG_HELLO: { /* "backend\nrenderer": each printed on the report's header line, so one line each */
+        size_t n = (size_t)h->payload_length;
+        const char *nl = memchr(payload, '\n', n);
+        size_t first = nl ? (size_t)(nl - payload) : n;
+        sl_utf8_clean(r->backend, sizeof r->backend, payload, first, 0);
+        sl_utf8_clean(r->renderer, sizeof r->renderer, nl ? nl + 1 : "", nl ? n - first - 1 : 0, 0);
         break;
     }
     case SL_MSG_STAGE: snprintf(s->stage, sizeof s->stage, "%s", name); break;
@@ -167,11 +158,16 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
             snprintf(r->not_implemented[r->not_implemented_count++], sizeof r->not_implemented[0], "%s", name);
         break;
     case SL_MSG_FAILED: snprintf(r->failed, sizeof r->failed, "%s", name); break;
-    case SL_MSG_ERROR: _sl_clean_text(r->error, sizeof r->error, payload, (size_t)h->payload_length); break;
+    /* text lab code may have written: made valid UTF-8 without controls here, where it comes in */
+    case SL_MSG_ERROR:
+        sl_utf8_clean(r->error, sizeof r->error, payload, (size_t)h->payload_length,
+                      SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
+        break;
     case SL_MSG_CAPTURE_ERROR: {
         char text[400];
-        _sl_clean_text(text, sizeof text, payload, (size_t)h->payload_length);
+        sl_utf8_clean(text, sizeof text, payload, (size_t)h->payload_length, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
         snprintf(r->capture_error, sizeof r->capture_error, "%s: %s", name, text);
+        sl_utf8_trim(r->capture_error);
         s->received |= 1u << capture;
         break;
     }

@@ -28,10 +28,6 @@ typedef struct _sl_stream {
 /* The first break of the rules is the case's protocol error (later ones add nothing). */
 void _sl_protocol_error(_sl_stream *s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
-/* Text from the runner, made safe to print: control characters (terminal
- * escapes, carriage returns) become '?', tabs and newlines stay. */
-void _sl_clean_text(char *out, size_t out_size, const char *in, size_t n);
-
 /* The captures case c's checks ask for (sl_check_captures). */
 uint32_t _sl_wanted_captures(const sl_case *c);
 

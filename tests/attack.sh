@@ -2,7 +2,8 @@
 # attack.sh NAME MODE GRADER SOURCE_DIR WORK_DIR [GRADER ARGS...] [--beside HONEST GRADER ARGS...]
 # Grades one attack's labs tree and checks that the attack got nothing and
 # left nothing: the score is the stubs' 0 (exit 1, one Score line, reports
-# agree), no line of a solution shows in the output or the reports, no file of
+# agree), every report reads with a strict reader and no line of the text report
+# is lab code's (check_reports.py), no line of a solution shows in the output or the reports, no file of
 # the project, the build or the reports changed after the grader finished, no
 # process the attack started is alive, and no marker file it tried to leave exists.
 #   MODE plain, isolate   in the namespaces sandbox (skipped where there is none), plainly or with --isolate
@@ -103,7 +104,7 @@ before=$(snapshot)
 markers | xargs -r rm -f
 out="$work/out.txt" honest_out="$work/honest.txt"
 run_grader timeout -k 10 600 "$grader" "${args[@]}" --report "$work/report" --gradescope "$work/gradescope.json" \
-  >"$out" 2>&1 &
+  --prairielearn "$work/prairielearn.json" --junit "$work/junit.xml" >"$out" 2>&1 &
 attack_pid=$!
 honest_status=""
 if [ ${#honest[@]} -gt 0 ]; then
@@ -147,6 +148,11 @@ fi
 tail -n 1 "$out" | grep -qE '^Score: 0/[0-9.]+$' || problem "the score is not 0: $(tail -n 1 "$out")"
 grep -qE '"score":[[:space:]]*0([,.}[:space:]]|$)' "$work/report/results.json" || problem "results.json's score is not 0"
 grep -qE '"score":[[:space:]]*0([,.}[:space:]]|$)' "$work/gradescope.json" || problem "gradescope.json's score is not 0"
+# Whatever lab code printed or sent: every report parses, and no line of the text is one it drew.
+python3 "$src/tests/check_reports.py" --text "$out" --json "$work/report/results.json" --json "$work/gradescope.json" \
+  --json "$work/prairielearn.json" --junit "$work/junit.xml" --html "$work/report/report.html" \
+  --forged "every check passed" --forged "  PASS" --forged "shadowlab-grade: the submission did not build" ||
+  problem "a report a strict reader refuses, or a line lab code wrote (above)"
 if [ -n "$honest_status" ]; then
   # what an attack on its neighbours says it got (its output, kept in the report): where
   # its marker files cannot tell (at `uid`, what a runner's uid left in /tmp is removed)

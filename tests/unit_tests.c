@@ -15,6 +15,7 @@
 
 #include <signal.h>
 
+#include "sl_build_failure.h"
 #include "sl_case.h"
 #include "sl_compare.h"
 #include "sl_grade.h"
@@ -27,6 +28,7 @@
 #include "sl_sha256.h"
 #include "sl_shader.h"
 #include "sl_text.h"
+#include "sl_utf8.h"
 
 static int failures;
 #define CHECK(cond)                                                                \
@@ -756,6 +758,131 @@ static void test_channel_rejects_lies(void) {
     CHECK(!r.finished && !r.protocol_error[0] && strcmp(r.crashed_in, "lab2_light_view") == 0);
 }
 
+/* A compiler's first error, read from its log, is one line of valid UTF-8
+ * whatever the lab file held (a #error with raw bytes, colour codes), and its
+ * cut to SL_BUILD_ERROR_MAX falls between characters. */
+static void test_build_error_text(void) {
+    char log[512], first[SL_BUILD_ERROR_MAX + 8], err[256] = "";
+    snprintf(log, sizeof log, "%s/build.log", tmp_dir);
+    FILE *f = fopen(log, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    fputs("[1/2] Building C object\n", f);
+    fputs("lab1.c:3:2: \033[01;31merror: \033[m#error bad \xff\xfe bytes \xc0\xaf \x01 cr\r ", f);
+    for (int i = 0; i < 400; i++) fputs("\xc3\xa9", f);
+    fputs("\nlab1.c:4:2: error: a second error\n", f);
+    fclose(f);
+    CHECK(sl_build_failure_first_error(log, NULL, first, sizeof first, err, sizeof err));
+    size_t n = strlen(first);
+    const char *want = "lab1.c:3:2: error: #error bad \xef\xbf\xbd bytes \xef\xbf\xbd  cr \xc3\xa9";
+    CHECK(strncmp(first, want, strlen(want)) == 0);
+    CHECK(sl_utf8_is_clean(first, n, 0) && n <= SL_BUILD_ERROR_MAX && n >= SL_BUILD_ERROR_MAX - 4);
+    CHECK(n > 5 && strcmp(first + n - 5, "\xc3\xa9...") == 0);
+}
+
+/* Text from outside the grader: bytes that are not UTF-8 become U+FFFD (a
+ * run of them one), controls '?', newlines stay only where asked; a copy or
+ * a cut never splits a character. */
+static void test_utf8_clean_and_cut(void) {
+    uint32_t cp = 0;
+    CHECK(sl_utf8_sequence("\xc3\xa9", 2, &cp) == 2 && cp == 0xE9);
+    CHECK(sl_utf8_sequence("\xf0\x9f\x98\x80", 4, &cp) == 4 && cp == 0x1F600);
+    CHECK(sl_utf8_sequence("\xf0\x9f\x98", 3, &cp) == 0); /* cut short */
+    CHECK(sl_utf8_sequence("\xc0\xaf", 2, NULL) == 0);     /* overlong '/' */
+    CHECK(sl_utf8_sequence("\xe0\x80\xaf", 3, NULL) == 0); /* overlong, three bytes */
+    CHECK(sl_utf8_sequence("\xed\xb0\x80", 3, NULL) == 0); /* a lone low surrogate */
+    char out[256];
+    static const struct {
+        const char *in;
+        size_t len;
+        unsigned keep;
+        const char *want;
+    } cases[] = {
+        {"caf\xc3\xa9 \xe6\x97\xa5", 9, 0, "caf\xc3\xa9 \xe6\x97\xa5"},               /* valid text as it is */
+        {"a\xff\xfe" "b", 4, 0, "a\xef\xbf\xbd" "b"},                                  /* a run of bad bytes: one U+FFFD */
+        {"a\x80" "b\xc0\xaf" "c", 6, 0, "a\xef\xbf\xbd" "b\xef\xbf\xbd" "c"},          /* lone continuation, overlong */
+        {"x\xe2\x82", 3, 0, "x\xef\xbf\xbd"},                                           /* cut short at the end */
+        {"a\0b", 3, 0, "a?b"},                                                           /* NUL */
+        {"\033[2J\rScore: 16/16", 17, 0, "?[2J?Score: 16/16"},                           /* ESC, CR */
+        {"one\ntwo\tx", 9, 0, "one?two?x"},                                              /* one line */
+        {"one\ntwo\tx", 9, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB, "one\ntwo\tx"},     /* a block */
+        {"\xc2\x9b" "31m \xef\xbf\xbe \x7f", 11, 0, "?31m ? ?"},                        /* C1 CSI, U+FFFE, DEL */
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        size_t n = sl_utf8_clean(out, sizeof out, cases[i].in, cases[i].len, cases[i].keep);
+        CHECK(n == strlen(cases[i].want) && strcmp(out, cases[i].want) == 0);
+        CHECK(sl_utf8_is_clean(out, n, cases[i].keep));
+        CHECK(sl_utf8_is_clean(cases[i].in, cases[i].len, cases[i].keep) == (strcmp(cases[i].in, cases[i].want) == 0 &&
+                                                                             cases[i].len == strlen(cases[i].want)));
+    }
+    /* a full buffer stops between characters: "é" is 2 bytes, 5 fit before the NUL */
+    CHECK(sl_utf8_clean(out, 6, "\xc3\xa9\xc3\xa9\xc3\xa9", 6, 0) == 4 && strcmp(out, "\xc3\xa9\xc3\xa9") == 0);
+    CHECK(sl_utf8_clean(out, 3, "a\xff", 2, 0) == 1 && strcmp(out, "a") == 0); /* no room for U+FFFD */
+    /* cuts */
+    const char *accented = "d\xc3\xa9j\xc3\xa0 \xe2\x82\xac\xf0\x9f\x98\x80"; /* d é j à space € 😀 */
+    CHECK(sl_utf8_cut(accented, 2) == 1 && sl_utf8_cut(accented, 3) == 3 && sl_utf8_cut(accented, 100) == strlen(accented));
+    CHECK(sl_utf8_cut(accented, 8) == 7 && sl_utf8_cut(accented, 10) == 10 && sl_utf8_cut(accented, 13) == 10);
+    size_t len = strlen(accented);
+    CHECK(sl_utf8_tail(accented, len, 4) == len - 4 && sl_utf8_tail(accented, len, 5) == len - 4);
+    CHECK(sl_utf8_tail(accented, len, 3) == len && sl_utf8_tail(accented, len, 100) == 0);
+    sl_utf8_copy(out, 9, accented);
+    CHECK(strcmp(out, "d\xc3\xa9j\xc3\xa0 ") == 0);
+    char cut[13];
+    snprintf(cut, sizeof cut, "%s", accented); /* snprintf keeps 12 bytes: the emoji's first 2 */
+    sl_utf8_trim(cut);
+    CHECK(strcmp(cut, "d\xc3\xa9j\xc3\xa0 \xe2\x82\xac") == 0);
+    sl_utf8_trim(cut); /* nothing split: nothing dropped */
+    CHECK(strcmp(cut, "d\xc3\xa9j\xc3\xa0 \xe2\x82\xac") == 0);
+}
+
+/* What comes over the channel is clean where it comes in: the header's
+ * backend and renderer are one line each, an error and a capture error are
+ * valid UTF-8 without controls, and a long accented error, cut to the
+ * result's size and again to a check's message, is cut between characters. */
+static void test_channel_cleans_text(void) {
+    sl_case c = grade_case(2, SL_CHECK_VISIBILITY);
+    c.width = c.height = 16;
+    sl_case_result r;
+    static stream s;
+    s.size = 0;
+    static const char hello[] = "osmesa\xff\nllvmpipe\nScore: 16/16\r\033[1A\xc0\xaf";
+    put(&s, SL_MSG_HELLO, NULL, hello, sizeof hello - 1, sizeof hello - 1);
+    static char error[SL_MSG_TEXT_MAX];
+    static const char start[] = "shader error:\n\033[31m\xff\xfe\0bad\r\nScore: 16/16\n";
+    memcpy(error, start, sizeof start - 1);
+    size_t n = sizeof start - 1;
+    while (n + 2 <= sizeof error) { /* "é" to the end: every cut lands in the middle of text */
+        memcpy(error + n, "\xc3\xa9", 2);
+        n += 2;
+    }
+    put(&s, SL_MSG_ERROR, NULL, error, n, n);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strcmp(r.backend, "osmesa\xef\xbf\xbd") == 0);
+    CHECK(strcmp(r.renderer, "llvmpipe?Score: 16/16??[1A\xef\xbf\xbd") == 0);
+    const char *want = "shader error:\n?[31m\xef\xbf\xbd?bad?\nScore: 16/16\n\xc3\xa9";
+    CHECK(strncmp(r.error, want, strlen(want)) == 0);
+    size_t e = strlen(r.error);
+    CHECK(sl_utf8_is_clean(r.error, e, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB));
+    CHECK(e >= sizeof r.error - 3 && strcmp(r.error + e - 2, "\xc3\xa9") == 0);
+    /* graded: the error leads the message, cut to its size between characters */
+    sl_reference ref = {.needed = true, .loaded = true};
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
+    size_t m = strlen(out.message);
+    CHECK(m >= sizeof out.message - 3 && sl_utf8_is_clean(out.message, m, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB));
+    CHECK(strstr(out.message, "\xef\xbf\xbd\xc3\xa9") == NULL && strcmp(out.message + m - 2, "\xc3\xa9") == 0);
+    CHECK(sl_utf8_is_clean(out.summary, strlen(out.summary), SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB) &&
+          strcmp(out.summary + strlen(out.summary) - 2, "\xc3\xa9") == 0);
+    CHECK(sl_utf8_is_clean(out.diagnosis_text, strlen(out.diagnosis_text), SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB));
+    sl_case_result_free(&r);
+    /* a capture error */
+    s.size = 0;
+    put(&s, SL_MSG_CAPTURE_ERROR, "visibility", "no\xff\n\033]0;x\a", 10, 10);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(strcmp(r.capture_error, "visibility: no\xef\xbf\xbd\n?]0;x?") == 0);
+    sl_case_result_free(&r);
+}
+
 static void test_sha256_known_answers(void) {
     /* FIPS 180-4 examples */
     sl_sha256 h;
@@ -1143,6 +1270,9 @@ int main(int argc, char **argv) {
         {"grade_run_failures", test_grade_run_failures},
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},
+        {"utf8_clean_and_cut", test_utf8_clean_and_cut},
+        {"build_error_text", test_build_error_text},
+        {"channel_cleans_text", test_channel_cleans_text},
         {"sha256_known_answers", test_sha256_known_answers},
         {"text_normalise_and_check", test_text_normalise_and_check},
         {"reference_cache_trust", test_reference_cache_trust},

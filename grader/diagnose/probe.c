@@ -15,6 +15,7 @@
 #include "sl_json.h"
 #include "sl_probe.h"
 #include "sl_verdict.h"
+#include "sl_utf8.h"
 
 /* A number as a message shows it: a GL enum by its name where the output is one. */
 static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
@@ -173,7 +174,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     for (int i = 0; i < r->not_implemented_count; i++)
         if (strcmp(r->not_implemented[i], f->name) == 0) {
             sl_diag_say(out, "not implemented: %s() still returns SL_NOT_IMPLEMENTED (%s in %s)", f->name, todo, file);
-            snprintf(out->summary, sizeof out->summary, "%s", out->message);
+            sl_utf8_copy(out->summary, sizeof out->summary, out->message);
             out->settled = out->stub = true;
             return;
         }
@@ -184,7 +185,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
             sl_diag_say(out, "%s() could not be called:%s", f->name, r->capture_error + len + 1);
         else
             sl_diag_say(out, "%s() was not called: the case ended before its probe", f->name);
-        snprintf(out->summary, sizeof out->summary, "%s", out->message);
+        sl_utf8_copy(out->summary, sizeof out->summary, out->message);
         out->settled = true;
         return;
     }
@@ -232,7 +233,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         _sl_inputs(f, k->inputs[shown], inputs, sizeof inputs);
         sl_diag_say(out, "%s(): %s. For example %s(%s)%s%s", f->name, verdict[0] ? verdict : "its contract is broken",
                     f->name, inputs, k->about[shown][0] ? " — " : "", k->about[shown]);
-        snprintf(out->summary, sizeof out->summary, "%s", verdict);
+        sl_utf8_copy(out->summary, sizeof out->summary, verdict);
         sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
         return;
     }
@@ -251,7 +252,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         if (f->stub_param >= 0) snprintf(stub, sizeof stub, "its parameter %s unchanged", f->params[f->stub_param].name);
         else snprintf(stub, sizeof stub, "the stub's %g", f->stub_value);
         sl_diag_say(out, "not implemented: %s() still returns %s (%s in %s)", f->name, stub, todo, file);
-        snprintf(out->summary, sizeof out->summary, "%s", out->message);
+        sl_utf8_copy(out->summary, sizeof out->summary, out->message);
         out->settled = out->stub = true;
         return;
     }
@@ -270,13 +271,13 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
                      evidence, sizeof evidence);
     if (verdict[0]) {
         sl_diag_say(out, "%s(): %s. For example %s", f->name, verdict, evidence);
-        snprintf(out->summary, sizeof out->summary, "%s", verdict);
+        sl_utf8_copy(out->summary, sizeof out->summary, verdict);
     } else {
         sl_diag_say(out, "%s", evidence);
         /* for other checks to quote: what differs and what the row tests, without the inputs */
         const char *equals = strstr(evidence, ") = "), *gives = strstr(evidence, ") gives ");
         if (equals) snprintf(out->summary, sizeof out->summary, "gives %s", equals + 4);
-        else snprintf(out->summary, sizeof out->summary, "%s", gives ? gives + 2 : evidence);
+        else sl_utf8_copy(out->summary, sizeof out->summary, gives ? gives + 2 : evidence);
     }
     sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
 }
