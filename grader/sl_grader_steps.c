@@ -399,13 +399,11 @@ int _sl_grade_not_built(const _sl_options *o, const sl_case *cases, int count, s
     }
     printf("shadowlab-grade: %s labs (%s), %d cases\n", rep->labs_kind, rep->labs_dir, count);
     if (built) {
-        printf("shadowlab-grade: every lab graded is the handout's stubs: not built, not run
-");
+        printf("shadowlab-grade: every lab graded is the handout's stubs: not built, not run\n");
     } else {
         fputs("shadowlab-grade: the submission did not build: ", stdout);
         sl_utf8_write(stdout, first_error, strlen(first_error), 0); /* the compiler's words, on this one line */
-        fputc('
-', stdout);
+        fputc('\n', stdout);
     }
     fflush(stdout);
     bool reports_ok = _sl_write_reports(o, rep);
