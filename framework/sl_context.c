@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "sl_gl.h"
+#include "sl_platform.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -326,7 +327,18 @@ static void _sl_glfw_error(int code, const char *description) {
  * context: the picture is then the offscreen framebuffer's. */
 static bool _sl_create_glfw(sl_context *ctx, const sl_context_desc *desc, bool hidden, char *err, size_t n) {
     glfwSetErrorCallback(_sl_glfw_error);
-    if (!glfwInit()) {
+    /* A hidden window's display may refuse a connection for a moment (a
+     * virtual X server resets itself when its last client leaves, and a busy
+     * machine makes that moment long): a few tries, about 6 s in all, before
+     * saying so. With no display named at all, no try would help. */
+    bool up = glfwInit();
+    const char *x11 = getenv("DISPLAY"), *wayland = getenv("WAYLAND_DISPLAY");
+    bool named = (x11 && x11[0]) || (wayland && wayland[0]);
+    for (double wait = 0.1; !up && hidden && named && wait < 4; wait *= 2) {
+        sl_platform_sleep(wait);
+        up = glfwInit();
+    }
+    if (!up) {
         if (err && n)
             snprintf(err, n, hidden ? "cannot open even a hidden window (%s): --backend window needs a desktop "
                                       "session or a display (xvfb-run on Linux)"

@@ -162,6 +162,15 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
     case SL_MSG_ERROR:
         sl_utf8_clean(r->error, sizeof r->error, payload, (size_t)h->payload_length,
                       SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
+        /* Before its hello the runner has no GL context yet: it could not make
+         * one (no display, no headless GL, out of memory), a fault of this
+         * machine, never the submission's: the staff's to solve, as a missing
+         * reference, and the case is graded again when it is fixed. */
+        if (!r->backend[0]) {
+            snprintf(r->staff_error, sizeof r->staff_error,
+                     "the runner could not make its OpenGL context on this machine: %.*s",
+                     (int)sl_utf8_cut(r->error, 400), r->error);
+        }
         break;
     case SL_MSG_CAPTURE_ERROR: {
         char text[400];

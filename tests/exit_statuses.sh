@@ -46,6 +46,14 @@ expect "a library crashing in the grader's teardown" $? 1 "$work/teardown.log" "
 # the preloaded crash is real: it ends a program that exits through libc
 crashed=$(bash -c 'LD_PRELOAD="$0" bash -c "exit 0"; echo $?' "$fault_library" 2>/dev/null)
 [ "$crashed" = 139 ] || { say "FAIL: the teardown fault does not fire (the test would prove nothing)"; fail=1; }
+# A runner that cannot make its GL context (here: a hidden window with no display) is the
+# machine's fault: not graded, exit 2, and no check failed as if the submission were wrong.
+env -u DISPLAY -u WAYLAND_DISPLAY "$grader" -j 1 --backend window --labs-dir "$stubs" --lab 1 --case lab1_probes \
+  >"$work/no-context.log" 2>&1
+expect "a runner without a GL context" $? 2 "$work/no-context.log" \
+  "^PROBLEM could not grade lab1_probes: the runner could not make its OpenGL context on this machine"
+! grep -A1 "^  FAIL " "$work/no-context.log" | grep -vE "^  FAIL |^--|not graded: .*the grading machine's fault" ||
+  { say "FAIL: a check was failed as the submission's for want of a GL context"; fail=1; }
 # every status the grader's --help documents, and no other
 "$grader" --help >"$work/help.log" 2>&1
 grep -q "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly" "$work/help.log" ||
