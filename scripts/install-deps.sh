@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages shadowlab needs to build, run and test, as the
 # running release offers them (Debian 12 bookworm, 13 trixie, testing).
+# --tests adds what only the project's own test suite uses (the archive
+# fuzzer's clang): scripts/run-tests.sh passes it; a student's set-up does not.
 # Idempotent: packages already present are left alone, and nothing is fetched
 # when all are there. Run as root (or with sudo).
 set -euo pipefail
@@ -25,9 +27,13 @@ packages=(
   xvfb xauth            # the viewer's tests run in a virtual X display
   libglx-mesa0          # llvmpipe behind GLX: the viewer under Xvfb
   python3               # the handout test's scan for lab answers (tests/handout_answers.sh)
-  clang libclang-rt-dev # the archive fuzzer (clang -fsanitize=fuzzer,address): Debian's default clang and its
-                        # runtime, clang-14 and libclang-rt-14-dev on 12, -19 on 13, the newest on testing
 )
+if [ "${1:-}" = --tests ]; then
+  packages+=(
+    clang libclang-rt-dev # the archive fuzzer (clang -fsanitize=fuzzer,address): Debian's default clang and its
+                          # runtime, clang-14 and libclang-rt-14-dev on 12, -19 on 13, the newest on testing
+  )
+fi
 
 say() { echo "install-deps: $*"; }
 

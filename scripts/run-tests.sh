@@ -8,7 +8,7 @@
 # from git), so this passes whatever labs/ holds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./scripts/install-deps.sh
+./scripts/install-deps.sh --tests # and the suite's own tools (the fuzzer's clang)
 # The lecture decks' tools (pandoc, WeasyPrint, KaTeX and node, pdftoppm, Chromium), so the slides' tests
 # run here and in CI; SL_SLIDES=0 leaves them out (those tests are then skipped).
 [ "${SL_SLIDES:-1}" = 0 ] || ./scripts/install-slides-deps.sh
