@@ -9,7 +9,7 @@ set -euo pipefail
 fuzzer=$1 fuzz_dir=$2 work=$3 runs=${4:-4000}
 if [ -z "$fuzzer" ]; then
   echo "fuzz.archive: skipped: this build has no libFuzzer target (it needs clang and its fuzzer runtime:" \
-    "scripts/install-deps.sh installs clang and libclang-rt-dev; then configure again)"
+    "scripts/install-deps.sh --tests installs clang and libclang-rt-dev; then configure again)"
   exit 77
 fi
 rm -rf "$work"
