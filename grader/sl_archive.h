@@ -22,10 +22,11 @@
 #define SL_ARCHIVE_H
 
 #include <stdbool.h>
+
+#include "sl_archive_path.h"
 #include <stddef.h>
 #include <stdint.h>
 
-#define SL_ARCHIVE_PATH_MAX 1024
 
 typedef enum sl_archive_kind {
     SL_ARCHIVE_FILE,
@@ -72,7 +73,6 @@ const char *sl_archive_kind_name(sl_archive_kind kind); /* "file", "folder", "sy
 bool sl_archive_name_is_archive(const char *name);
 /* Cleans a path as sl_archive_next does: false (with *why) when it must not
  * be used; true with an empty out for the archive's own folder ("./"). */
-bool sl_archive_clean_path(const char *raw, char *out, size_t out_size, const char **why);
 
 /* Limits for sl_archive_extract; zero means the default. */
 typedef struct sl_archive_limits {

@@ -213,7 +213,7 @@ static bool _sl_submission_name(const char *name) {
 /* A grade that stopped on the staff's side: named with its cause (the batch's
  * DIR/<submission>/problem, else the report's first problem), never counted
  * among the class's mistakes. */
-static void _sl_staff_problem(_sl_class *k, const char *dir, const char *name, const cJSON *json) {
+static void _sl_class_staff_problem(_sl_class *k, const char *dir, const char *name, const cJSON *json) {
     int i = k->problems++;
     if (i >= 32) return;
     snprintf(k->problem_names[i], sizeof k->problem_names[i], "%s", name);
@@ -265,14 +265,14 @@ static bool _sl_gather(const char *dir, _sl_class *k, char *err, size_t n) {
         char json_err[1200];
         cJSON *json = stat(path, &st) == 0 ? sl_json_load_file(path, "results", json_err, sizeof json_err) : NULL;
         if (!json || staff || cJSON_GetArraySize(cJSON_GetObjectItemCaseSensitive(json, "problems")) > 0) {
-            _sl_staff_problem(k, dir, e->d_name, json);
+            _sl_class_staff_problem(k, dir, e->d_name, json);
             cJSON_Delete(json);
             continue;
         }
         if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "built"))) k->did_not_build++;
         else if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(json, "no_lab_file"))) k->no_lab_file++;
         else if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "complete")))
-            _sl_staff_problem(k, dir, e->d_name, json);
+            _sl_class_staff_problem(k, dir, e->d_name, json);
         else
             _sl_count_report(k, student++, json);
         cJSON_Delete(json);

@@ -80,7 +80,7 @@ static void _sl_read_student(const char *dir, _sl_row *row) {
 }
 
 /* A staff problem's note: the cause the batch found (DIR/<submission>/problem), else `otherwise`. */
-static void _sl_staff_problem(const char *dir, _sl_row *row, const char *otherwise) {
+static void _sl_row_staff_problem(const char *dir, _sl_row *row, const char *otherwise) {
     char path[1400];
     snprintf(row->status, sizeof row->status, "%s", _SL_STAFF_PROBLEM);
     snprintf(path, sizeof path, "%s/%s/problem", dir, row->name);
@@ -107,7 +107,7 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
     if (!json) {
         snprintf(otherwise, sizeof otherwise, "no report (grade exit status %s): see %s/grade.log",
                  status_text[0] ? status_text : "?", row->name);
-        _sl_staff_problem(dir, row, otherwise);
+        _sl_row_staff_problem(dir, row, otherwise);
         return;
     }
     /* 0 full marks, 1 checks failed, 3 no lab file: the student's grade; anything else the staff's */
@@ -140,7 +140,7 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
         const char *first = cJSON_GetStringValue(cJSON_GetArrayItem(problems, 0));
         if (first) snprintf(otherwise, sizeof otherwise, "%s", first);
         else snprintf(otherwise, sizeof otherwise, "grade exit status %s: see %s/grade.log", status_text, row->name);
-        _sl_staff_problem(dir, row, otherwise);
+        _sl_row_staff_problem(dir, row, otherwise);
     } else if (cJSON_IsFalse(cJSON_GetObjectItemCaseSensitive(json, "built"))) {
         snprintf(row->status, sizeof row->status, "did not build");
         snprintf(row->note, sizeof row->note, "%s", build_error ? build_error : "");

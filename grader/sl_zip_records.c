@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "sl_archive.h"
+#include "sl_archive_path.h"
 
 struct sl_zip_records {
     sl_zip_record *records;
