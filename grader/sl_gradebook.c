@@ -10,6 +10,7 @@
 #include "sl_files.h"
 #include "sl_json.h"
 #include "sl_params.h"
+#include "sl_report.h"
 #include "sl_roster.h"
 
 #define _SL_MAX_SUBMISSIONS 20000
@@ -131,8 +132,14 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
     row->have_totals = cJSON_IsNumber(score) && cJSON_IsNumber(max);
     if (row->have_totals) {
         row->bonus = cJSON_IsNumber(bonus) ? bonus->valuedouble : 0;
-        row->total = score->valuedouble + row->bonus;
         row->max = max->valuedouble;
+        /* the grade's own total (its --bonus policy), so the gradebook says what the student was told */
+        const cJSON *total = cJSON_GetObjectItemCaseSensitive(json, "total");
+        sl_bonus_policy policy = SL_BONUS_APART;
+        const char *policy_name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "bonus_policy"));
+        if (policy_name) sl_bonus_policy_parse(policy_name, &policy);
+        row->total = cJSON_IsNumber(total) ? total->valuedouble
+                                           : sl_bonus_total(policy, score->valuedouble, row->max, row->bonus);
     }
     const cJSON *problems = cJSON_GetObjectItemCaseSensitive(json, "problems");
     const char *build_error = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "build_error"));

@@ -204,6 +204,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     }
     /* what decides this grade, for its reports and the gradebook */
     rep.seed = o.hidden ? o.seed : NULL;
+    rep.bonus_policy = o.bonus_policy;
     _sl_describe_options(&o, default_cases, default_refs, rep.options, sizeof rep.options);
     if (o.not_built) return _sl_grade_not_built(&o, cases, count, &rep);
     /* --build-logs: a lab whose runner is missing did not build; the others are graded */

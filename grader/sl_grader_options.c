@@ -33,6 +33,11 @@ static void _sl_usage(FILE *f) {
             "  --junit FILE         write JUnit XML (one suite per lab, one test per check)\n"
             "  --gradescope FILE    write Gradescope's results.json\n"
             "  --prairielearn FILE  write PrairieLearn's results.json\n"
+            "  --bonus POLICY       how extension checks' bonus points count, the same in every report and\n"
+            "                       the gradebook: apart (default: the score counts the regular checks only,\n"
+            "                       the bonus is shown as its own number and never fills a lost point),\n"
+            "                       fill (it fills lost points, up to the maximum) or add (it is added,\n"
+            "                       past the maximum too: extra credit)\n"
             "  --timeout SECONDS    time limit per case (default: each case's own, 20 s)\n"
             "  --memory MB          address space per case (default: each case's own, 4096 MB)\n"
             "  --cases DIR          case files (default: this source tree's grader/cases)\n"
@@ -84,7 +89,7 @@ static void _sl_usage(FILE *f) {
             "                       student without one, submissions not on it named\n"
             "  --due \"YYYY-MM-DD HH:MM\"  with a Moodle worksheet: late is Last modified (submission)\n"
             "                       after it, both in the worksheet's time zone\n"
-            "  --export canvas|moodle FILE  with --roster: the grades (each row's total, bonus included) in\n"
+            "  --export canvas|moodle FILE  with --roster: the grades (each row's total, under its --bonus) in\n"
             "                       the roster's format, ready to import; read back and checked\n"
             "  --assignment \"NAME (ID)\"  the Canvas column --export fills (default: the only one)\n"
             "  --missing-as-zero    --export gives a student without a submission 0, not an empty grade\n"
@@ -174,7 +179,7 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
                                                  "--sandbox", "--memory", "--seed", "--not-built", "--gradebook",
                                                  "--build-logs", "--submission-summary", "--technique-dir",
-                                                 "--stub-labs"};
+                                                 "--stub-labs", "--bonus"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -233,6 +238,11 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
                 fprintf(stderr, "shadowlab-grade: --sandbox is namespaces, uid or basic\n");
                 return SL_EXIT_ERROR;
             }
+        } else if (strcmp(a, "--bonus") == 0) {
+            if (!sl_bonus_policy_parse(v, &o->bonus_policy)) {
+                fprintf(stderr, "shadowlab-grade: --bonus is apart, fill or add (shadowlab-grade --help)\n");
+                return SL_EXIT_ERROR;
+            }
         } else if (strcmp(a, "--strict") == 0) o->strict = true;
         else if (strcmp(a, "--progress") == 0) o->progress = true;
         else if (strcmp(a, "--update-references") == 0) o->update = true;
@@ -286,6 +296,7 @@ void _sl_describe_options(const _sl_options *o, const char *default_cases, const
     for (int i = 0; i < o->exclude_count; i++) _SL_ADD("--exclude %s", o->excludes[i]);
     if (o->isolate) _SL_ADD("--isolate");
     if (o->hidden) _SL_ADD("--hidden --seed %s", o->seed ? o->seed : "?");
+    if (o->bonus_policy != SL_BONUS_APART) _SL_ADD("--bonus %s", sl_bonus_policy_name(o->bonus_policy));
     if (o->timeout > 0) _SL_ADD("--timeout %g", o->timeout);
     if (o->memory_mb > 0) _SL_ADD("--memory %g", o->memory_mb);
     if (o->cases_dir && strcmp(o->cases_dir, default_cases) != 0) _SL_ADD("--cases %s", o->cases_dir);

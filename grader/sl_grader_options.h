@@ -9,6 +9,7 @@
 #include <stdio.h>
 
 #include "sl_backend.h"
+#include "sl_report.h"
 #include "sl_sandbox.h"
 
 /* 3: graded, but the submission held no lab file (--submission-summary says so): a status of its own
@@ -29,6 +30,7 @@ typedef struct _sl_options {
     /* with --gradebook: the LMS's roster, its due date (Moodle), and the grades written back in its format */
     const char *roster, *due, *export_format, *export_path, *assignment;
     bool missing_as_zero;
+    sl_bonus_policy bonus_policy; /* --bonus: how the bonus counts in every report */
     sl_sandbox_level sandbox_level;
     double timeout, memory_mb;
     int jobs;

@@ -57,11 +57,47 @@ void sl_report_totals(const sl_grade_report *rep, double *score, double *max_sco
         }
 }
 
+static const char *const _sl_bonus_names[] = {"apart", "fill", "add"};
+
+const char *sl_bonus_policy_name(sl_bonus_policy policy) {
+    return (unsigned)policy < sizeof _sl_bonus_names / sizeof _sl_bonus_names[0] ? _sl_bonus_names[policy] : "?";
+}
+
+bool sl_bonus_policy_parse(const char *name, sl_bonus_policy *policy) {
+    for (size_t i = 0; i < sizeof _sl_bonus_names / sizeof _sl_bonus_names[0]; i++)
+        if (strcmp(name, _sl_bonus_names[i]) == 0) {
+            *policy = (sl_bonus_policy)i;
+            return true;
+        }
+    return false;
+}
+
+double sl_bonus_total(sl_bonus_policy policy, double score, double max, double bonus) {
+    switch (policy) {
+    case SL_BONUS_FILL: return score + bonus > max ? (score > max ? score : max) : score + bonus;
+    case SL_BONUS_ADD: return score + bonus;
+    default: return score;
+    }
+}
+
+double sl_report_total(const sl_grade_report *rep) {
+    double score, max, bonus;
+    sl_report_totals(rep, &score, &max, &bonus);
+    return sl_bonus_total(rep->bonus_policy, score, max, bonus);
+}
+
 void sl_report_score_line(const sl_grade_report *rep, char *out, size_t n) {
     double score, max, bonus;
     sl_report_totals(rep, &score, &max, &bonus);
-    int used = snprintf(out, n, "Score: %g/%g", score, max);
-    if (bonus > 0 && used > 0 && (size_t)used < n) used += snprintf(out + used, n - (size_t)used, " (+%g bonus)", bonus);
+    double total = sl_bonus_total(rep->bonus_policy, score, max, bonus);
+    int used;
+    if (bonus > 0 && rep->bonus_policy != SL_BONUS_APART)
+        used = snprintf(out, n, "Score: %g/%g (%g + %g bonus%s)", total, max, score, bonus,
+                        total < score + bonus ? ", up to the maximum" : "");
+    else if (bonus > 0)
+        used = snprintf(out, n, "Score: %g/%g (+%g bonus)", score, max, bonus);
+    else
+        used = snprintf(out, n, "Score: %g/%g", score, max);
     if (rep->interrupted && used > 0 && (size_t)used < n)
         snprintf(out + used, n - (size_t)used, " (incomplete: the grader was stopped; %d of %d cases graded)",
                  rep->cases_finished, rep->case_count);
@@ -217,13 +253,14 @@ static bool _sl_write_html(const sl_grade_report *rep, const cJSON *root, const 
     sl_report_totals(rep, &score, &max, &bonus);
     char line[256];
     sl_report_score_line(rep, line, sizeof line);
+    double total = sl_bonus_total(rep->bonus_policy, score, max, bonus);
     fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>shadowlab grade: %g/%g</title>\n"
                "<style>body{font-family:sans-serif;margin:2em}td,th{padding:.2em .6em;text-align:left;vertical-align:top}"
                ".pass{color:#070}.fail{color:#b00}img{width:256px;image-rendering:pixelated;border:1px solid #ccc}"
                "figure{display:inline-block;margin:.3em}.legend{margin:.2em .3em;font-size:90%%;color:#333}"
                ".swatch{display:inline-block;width:1em;height:1em;border:1px solid #888;vertical-align:middle;"
                "margin-right:.3em}</style></head><body>\n",
-            score, max);
+            total, max);
     fputs("<h1>", f);
     sl_html_text(f, line);
     fprintf(f, "</h1>\n<p>%s labs, %d cases, %.2f s; rendered with ", rep->labs_kind, rep->case_count, rep->seconds);
@@ -297,17 +334,28 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
     FILE *f = file.f;
     fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadowlab\">\n", f);
     for (int lab = 0; lab <= SL_LAB_MAX; lab++) {
-        int tests = 0, failures = 0;
+        int tests = 0, failures = 0, skipped = 0;
+        double score = 0, max = 0, bonus = 0;
         for (int i = 0; i < rep->case_count; i++)
             if (rep->cases[i].c->lab == lab)
                 for (int k = 0; k < rep->cases[i].c->check_count; k++) {
+                    const sl_check_result *cr = &rep->cases[i].checks[k];
                     tests++;
-                    failures += !rep->cases[i].checks[k].passed;
+                    /* a bonus not earned costs nothing: skipped, not failed */
+                    failures += !cr->passed && !cr->bonus;
+                    skipped += !cr->passed && cr->bonus;
+                    if (cr->bonus) bonus += cr->points;
+                    else score += cr->points, max += cr->max_points;
                 }
         if (!tests) continue;
         fprintf(f, "  <testsuite name=\"lab%d ", lab);
         sl_html_text(f, _sl_report_lab_title(lab));
-        fprintf(f, "\" tests=\"%d\" failures=\"%d\">\n", tests, failures);
+        fprintf(f, "\" tests=\"%d\" failures=\"%d\" skipped=\"%d\">\n", tests, failures, skipped);
+        fprintf(f, "    <properties><property name=\"score\" value=\"%g\"/><property name=\"max_score\" value=\"%g\"/>"
+                   "<property name=\"bonus\" value=\"%g\"/><property name=\"total\" value=\"%g\"/>"
+                   "<property name=\"bonus_policy\" value=\"%s\"/></properties>\n",
+                score, max, bonus, sl_bonus_total(rep->bonus_policy, score, max, bonus),
+                sl_bonus_policy_name(rep->bonus_policy));
         for (int i = 0; i < rep->case_count; i++) {
             const sl_graded_case *g = &rep->cases[i];
             if (g->c->lab != lab) continue;
@@ -319,9 +367,11 @@ bool sl_report_write_junit(const sl_grade_report *rep, const char *path, char *e
                 sl_html_text(f, g->c->checks[k].name);
                 fprintf(f, "\" time=\"%.3f\">", g->result->seconds);
                 if (!cr->passed) {
-                    fprintf(f, "<failure message=\"%g/%g points\">", cr->points, cr->max_points);
+                    const char *element = cr->bonus ? "skipped" : "failure";
+                    fprintf(f, "<%s message=\"%g/%g points%s\">", element, cr->points, cr->max_points,
+                            cr->bonus ? ", a bonus not earned" : "");
                     sl_html_text(f, cr->message);
-                    fputs("</failure>", f);
+                    fprintf(f, "</%s>", element);
                 }
                 fputs("</testcase>\n", f);
             }
@@ -356,13 +406,36 @@ static void _sl_add_labs_not_built(const sl_grade_report *rep, cJSON *root) {
 
 /* What the course platforms show above the tests: what did not build, what
  * stopped, and the bonus in words (their scores stop at the maximum). */
-static void _sl_platform_text(const sl_grade_report *rep, char *text, size_t n) {
+/* The stager's no-lab-file note ends by saying how every lab is graded; an upload
+ * PrairieLearn is told is not gradable was not graded at all, so it says that instead. */
+static void _sl_note_for_platform(const char *note, bool graded, char *out, size_t n) {
+    static const char tail[] = " Every lab is graded as the handout's stub.";
+    size_t len = strlen(note), tail_len = sizeof tail - 1;
+    if (!graded && len >= tail_len && strcmp(note + len - tail_len, tail) == 0)
+        snprintf(out, n, "%.*s Nothing was graded: upload the lab files (this upload costs no attempt).",
+                 (int)(len - tail_len), note);
+    else
+        snprintf(out, n, "%s", note);
+}
+
+/* PrairieLearn's verdict: a submission that did not build or held no lab file is
+ * "not gradable" (it costs the student no attempt), as is a grade the staff must look at. */
+static bool _sl_prairielearn_gradable(const sl_grade_report *rep) {
+    return rep->problem_count == 0 && !rep->interrupted && !rep->not_built && !rep->no_lab_file;
+}
+
+static void _sl_platform_text(const sl_grade_report *rep, bool prairielearn, char *text, size_t n) {
     double score, max, bonus;
     sl_report_totals(rep, &score, &max, &bonus);
     size_t used = 0;
     text[0] = '\0';
 #define _SL_SAY(...) (used += used < n ? (size_t)snprintf(text + used, n - used, __VA_ARGS__) : 0)
-    for (int i = 0; i < rep->submission_note_count; i++) _SL_SAY("%s\n", rep->submission_notes[i]);
+    bool graded = !prairielearn || _sl_prairielearn_gradable(rep);
+    for (int i = 0; i < rep->submission_note_count; i++) {
+        char note[sizeof rep->submission_notes[0] + 100];
+        _sl_note_for_platform(rep->submission_notes[i], graded, note, sizeof note);
+        _SL_SAY("%s\n", note);
+    }
     if (rep->not_built) _SL_SAY("The submission did not build: %s\n", rep->not_built);
     for (int lab = 1; lab <= SL_LAB_MAX && !rep->not_built; lab++)
         if (rep->lab_not_built[lab])
@@ -371,13 +444,19 @@ static void _sl_platform_text(const sl_grade_report *rep, char *text, size_t n) 
     if (rep->interrupted) _SL_SAY("The grader was stopped before it finished: incomplete.\n");
     for (int i = 0; i < rep->problem_count; i++) _SL_SAY("%s\n", rep->problems[i]);
     if (bonus > 0) {
-        double counted = score + bonus > max ? max - score : bonus;
-        if (counted < bonus)
+        double total = sl_bonus_total(rep->bonus_policy, score, max, bonus);
+        if (rep->bonus_policy == SL_BONUS_APART)
+            _SL_SAY("Bonus: %g points earned on extension checks, kept apart from the score (%g/%g): the course "
+                    "counts them on its own.\n", bonus, score, max);
+        else if (total < score + bonus)
             _SL_SAY("Bonus: %g points earned on extension checks; %g of them counted, since the score stops at its "
-                    "maximum (%g).\n", bonus, counted, max);
+                    "maximum (%g).\n", bonus, total - score, max);
+        else if (prairielearn && total > max)
+            _SL_SAY("Bonus: %g points earned on extension checks, counted in the score (%g/%g); PrairieLearn's "
+                    "score stops at 100%%.\n", bonus, total, max);
         else
-            _SL_SAY("Bonus: %g points earned on extension checks, counted in the score (which stops at its maximum, "
-                    "%g).\n", bonus, max);
+            _SL_SAY("Bonus: %g points earned on extension checks, counted in the score (%g/%g).\n", bonus, total,
+                    max);
     }
 #undef _SL_SAY
     sl_utf8_trim(text);
@@ -396,6 +475,9 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
     cJSON_AddNumberToObject(root, "score", score);
     cJSON_AddNumberToObject(root, "max_score", max);
     cJSON_AddNumberToObject(root, "bonus", bonus);
+    /* the one number every other report and the gradebook show */
+    cJSON_AddStringToObject(root, "bonus_policy", sl_bonus_policy_name(rep->bonus_policy));
+    cJSON_AddNumberToObject(root, "total", sl_bonus_total(rep->bonus_policy, score, max, bonus));
     cJSON_AddBoolToObject(root, "complete", !rep->interrupted);
     cJSON_AddNumberToObject(root, "seconds", rep->seconds);
     cJSON_AddStringToObject(root, "labs", rep->labs_kind);
@@ -542,11 +624,11 @@ bool sl_report_write_gradescope(const sl_grade_report *rep, const char *path, ch
     double score, max, bonus;
     sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
-    /* the bonus fills what was lost, up to the maximum; the output says it in words */
-    cJSON_AddNumberToObject(root, "score", score + bonus > max ? max : score + bonus);
+    /* the total under the bonus policy (Gradescope shows one above the maximum as extra credit) */
+    cJSON_AddNumberToObject(root, "score", sl_bonus_total(rep->bonus_policy, score, max, bonus));
     cJSON_AddNumberToObject(root, "execution_time", rep->seconds);
     char text[4096 + SL_SUBMISSION_NOTES_MAX * 1600];
-    _sl_platform_text(rep, text, sizeof text);
+    _sl_platform_text(rep, false, text, sizeof text);
     if (text[0]) cJSON_AddStringToObject(root, "output", text);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), false);
     bool ok = _sl_write_json(root, path, err, err_size);
@@ -558,24 +640,25 @@ bool sl_report_write_prairielearn(const sl_grade_report *rep, const char *path, 
     double score, max, bonus;
     sl_report_totals(rep, &score, &max, &bonus);
     cJSON *root = cJSON_CreateObject();
-    /* A submission that does not build is "not gradable": it costs the student no attempt. */
-    /* So is one with no lab file: the upload was not what the assignment asks for. */
-    cJSON_AddBoolToObject(root, "gradable",
-                          rep->problem_count == 0 && !rep->interrupted && !rep->not_built && !rep->no_lab_file);
+    bool gradable = _sl_prairielearn_gradable(rep);
+    cJSON_AddBoolToObject(root, "gradable", gradable);
     cJSON *format_errors = rep->not_built || rep->no_lab_file ? cJSON_AddArrayToObject(root, "format_errors") : NULL;
-    if (rep->no_lab_file && rep->submission_note_count)
-        cJSON_AddItemToArray(format_errors, cJSON_CreateString(rep->submission_notes[0]));
+    if (rep->no_lab_file && rep->submission_note_count) {
+        char note[sizeof rep->submission_notes[0] + 100];
+        _sl_note_for_platform(rep->submission_notes[0], gradable, note, sizeof note);
+        cJSON_AddItemToArray(format_errors, cJSON_CreateString(note));
+    }
     if (rep->not_built) {
         char text[512];
         snprintf(text, sizeof text, "The submission did not build: %s", rep->not_built);
         sl_utf8_trim(text);
         cJSON_AddItemToArray(format_errors, cJSON_CreateString(text));
     }
-    /* PrairieLearn takes a fraction in [0, 1]: the bonus fills what was lost, and is said in words */
-    double fraction = max > 0 ? (score + bonus) / max : 0;
+    /* PrairieLearn takes a fraction in [0, 1]: the total under the bonus policy, said in words */
+    double fraction = max > 0 ? sl_bonus_total(rep->bonus_policy, score, max, bonus) / max : 0;
     cJSON_AddNumberToObject(root, "score", fraction > 1 ? 1 : fraction < 0 ? 0 : fraction);
     char text[4096 + SL_SUBMISSION_NOTES_MAX * 1600];
-    _sl_platform_text(rep, text, sizeof text);
+    _sl_platform_text(rep, true, text, sizeof text);
     if (text[0]) cJSON_AddStringToObject(root, "message", text);
     _sl_add_tests(rep, cJSON_AddArrayToObject(root, "tests"), true);
     bool ok = _sl_write_json(root, path, err, err_size);

@@ -22,6 +22,17 @@ typedef struct sl_graded_case {
     sl_check_result checks[SL_CASE_MAX_CHECKS];
 } sl_graded_case;
 
+/* How bonus points (extension checks) count, the same in every report a grade writes:
+ * apart: the score counts the regular checks only; the bonus is its own number and
+ *        never fills a lost point (a real mistake always shows in the score);
+ * fill:  the bonus fills lost points, up to the maximum;
+ * add:   the bonus is added, past the maximum if the student has it (extra credit). */
+typedef enum { SL_BONUS_APART, SL_BONUS_FILL, SL_BONUS_ADD } sl_bonus_policy;
+const char *sl_bonus_policy_name(sl_bonus_policy policy);
+bool sl_bonus_policy_parse(const char *name, sl_bonus_policy *policy);
+/* The one number a student gets under a policy: score and max leave bonus checks out. */
+double sl_bonus_total(sl_bonus_policy policy, double score, double max, double bonus);
+
 typedef struct sl_grade_report {
     sl_graded_case *cases;
     int case_count;
@@ -46,6 +57,7 @@ typedef struct sl_grade_report {
     char submission_notes[SL_SUBMISSION_NOTES_MAX][1600];
     int submission_note_count;
     bool no_lab_file;        /* the submission held no lab file: every lab is the handout's stub */
+    sl_bonus_policy bonus_policy; /* how the bonus counts in the total (--bonus) */
     struct cJSON *submission_summary;
 } sl_grade_report;
 
@@ -56,7 +68,10 @@ void sl_report_free_submission(sl_grade_report *report);
 
 /* score and max_score leave bonus checks out; bonus is what they earned. */
 void sl_report_totals(const sl_grade_report *report, double *score, double *max_score, double *bonus);
-/* "Score: 55/57 (+2 bonus)", or with "(incomplete: ...)" when interrupted. */
+/* The total under the report's bonus policy. */
+double sl_report_total(const sl_grade_report *report);
+/* "Score: 55/57 (+2 bonus)" (apart), "Score: 57/57 (55 + 2 bonus)" (add, fill), with
+ * "(incomplete: ...)" when interrupted. */
 void sl_report_score_line(const sl_grade_report *report, char *out, size_t out_size);
 /* Every check that is not a bonus passed. */
 bool sl_report_full_marks(const sl_grade_report *report);

@@ -86,9 +86,10 @@ field() { cut -d, -f"$2" <<<"$1"; }
 status_at=$(column status) total_at=$(column total) max_at=$(column max) note_at=$(column note)
 lab_at=$(column lab2)
 solutions_row=$(grep '^solutions,' "$gradebook")
-# (the total counts the bonus: lab 3's probes have a bonus check)
+# (the bonus is its own column, apart from the total: lab 3's probes have a bonus check)
 awk -v t="$(field "$solutions_row" "$total_at")" -v b="$(field "$solutions_row" "$(column bonus)")" \
-  -v m="$(field "$solutions_row" "$max_at")" 'BEGIN { exit !(t - b == m) }' || problem "the solutions' total is not the maximum"
+  -v m="$(field "$solutions_row" "$max_at")" 'BEGIN { exit !(t == m && b > 0) }' ||
+  problem "the solutions' total is not the maximum, with their bonus apart"
 grep -q -- "--case lab2_directional_manual --case lab3_probes" <<<"$solutions_row" ||
   problem "the solutions' row does not say its options"
 rows=0

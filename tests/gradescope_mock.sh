@@ -71,11 +71,11 @@ grep -Eq '^Score: ([0-9.]+)/\1 \(\+[0-9.]+ bonus\)$' "$work/full.log" ||
   problem "lab 3 alone did not get full marks and its bonus"
 grep -q 'each lab isolated' "$work/full.log" || problem "the submission was not graded per lab"
 ! grep -q 'Lab [1245-7] (' "$results" || problem "the assignment of lab 3 graded other labs"
-# the score stops at the maximum; the bonus is said in words
+# the score is the maximum (the bonus kept apart: the default --bonus policy); the bonus is said in words
 max=$(sed -nE 's/^Score: [0-9.]+\/([0-9.]+).*/\1/p' "$work/full.log")
 score=$(grep -Eo '"score":[[:space:]]*[0-9.]+' "$results" | head -n 1 | grep -Eo '[0-9.]+$')
 [ "$score" = "$max" ] || problem "Gradescope's score is $score, not the maximum $max"
-grep -q '"output":[[:space:]]*"Bonus: [0-9.]* points earned on extension checks; 0 of them counted' "$results" ||
+grep -q '"output":[[:space:]]*"Bonus: [0-9.]* points earned on extension checks, kept apart from the score' "$results" ||
   problem "Gradescope's output does not say the bonus in words"
 
 # ---- a submission that includes the solution's file ----
@@ -117,6 +117,23 @@ SHADOWLAB_AUTOGRADER="$ag" SHADOWLAB_GRADE="$work/grade" "$ag/source/run_prairie
   problem "run_prairielearn failed"
 grep -q '"gradable":[[:space:]]*false' "$pl_results" ||
   problem "PrairieLearn's results do not say the submission is not gradable"
+# an upload without a lab file: not gradable, and never also told how its labs were graded
+rm -rf "$work/grade/student" "$work/grade/results"
+mkdir -p "$work/grade/student"
+echo "see attached" >"$work/grade/student/notes.txt"
+SHADOWLAB_AUTOGRADER="$ag" SHADOWLAB_GRADE="$work/grade" "$ag/source/run_prairielearn" >"$work/prairielearn-empty.log" 2>&1 ||
+  problem "run_prairielearn failed on an upload without a lab file"
+python3 - "$pl_results" <<'PY' || problem "PrairieLearn's verdict on an upload without a lab file (above)"
+import json, sys
+r = json.load(open(sys.argv[1], encoding="utf-8"))
+said = " ".join([r.get("message", "")] + r.get("format_errors", []))
+bad = [w for w, ok in [("gradable is not false", r.get("gradable") is False),
+                       ("no format error names the missing lab file", any("No lab file found" in e for e in r.get("format_errors", []))),
+                       ("it is told its labs were graded", "graded as the handout's stub" not in said),
+                       ("it is not told nothing was graded", "Nothing was graded" in said)] if not ok]
+for b in bad: print("PrairieLearn:", b, file=sys.stderr)
+sys.exit(1 if bad else 0)
+PY
 # the solution's lab 3: a score of 1 (not above), the bonus in words
 rm -rf "$work/grade/student" "$work/grade/results"
 mkdir -p "$work/grade/student"

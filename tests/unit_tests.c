@@ -24,6 +24,7 @@
 #include "sl_scene.h"
 #include "sl_protocol.h"
 #include "sl_reference_cache.h"
+#include "sl_report.h"
 #include "sl_run.h"
 #include "sl_sha256.h"
 #include "sl_shader.h"
@@ -1247,6 +1248,23 @@ static void test_reference_cache_trust(void) {
     sl_image_free(&decoded);
 }
 
+/* The three --bonus policies on the totals where they differ: a bonus smaller
+ * and larger than what was lost, and a full score. */
+static void test_bonus_policies(void) {
+    CHECK(sl_bonus_total(SL_BONUS_APART, 8, 10, 3) == 8);
+    CHECK(sl_bonus_total(SL_BONUS_FILL, 8, 10, 1) == 9);
+    CHECK(sl_bonus_total(SL_BONUS_FILL, 8, 10, 3) == 10);
+    CHECK(sl_bonus_total(SL_BONUS_FILL, 10, 10, 3) == 10);
+    CHECK(sl_bonus_total(SL_BONUS_ADD, 8, 10, 3) == 11);
+    CHECK(sl_bonus_total(SL_BONUS_ADD, 10, 10, 3) == 13);
+    sl_bonus_policy p = SL_BONUS_APART;
+    CHECK(sl_bonus_policy_parse("fill", &p) && p == SL_BONUS_FILL);
+    CHECK(sl_bonus_policy_parse("add", &p) && p == SL_BONUS_ADD);
+    CHECK(sl_bonus_policy_parse("apart", &p) && p == SL_BONUS_APART);
+    CHECK(!sl_bonus_policy_parse("extra", &p) && !sl_bonus_policy_parse("", &p));
+    CHECK(strcmp(sl_bonus_policy_name(SL_BONUS_FILL), "fill") == 0);
+}
+
 int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
@@ -1276,6 +1294,7 @@ int main(int argc, char **argv) {
         {"sha256_known_answers", test_sha256_known_answers},
         {"text_normalise_and_check", test_text_normalise_and_check},
         {"reference_cache_trust", test_reference_cache_trust},
+        {"bonus_policies", test_bonus_policies},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
