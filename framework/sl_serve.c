@@ -74,6 +74,8 @@ void sl_serve_idle(sl_serve *serve) { (void)serve; }
 
 /* One page's connection. */
 typedef struct _sl_client {
+    bool counted;        /* in `clients`: only a connection that was established (lws may close one it
+                            refused with the same callback, and that must not change the count) */
     unsigned long sent;  /* the frame number it was last sent */
     bool greeted;        /* sent the hello (the key table) */
     char message[_SL_SERVE_MESSAGE_MAX];
@@ -157,11 +159,13 @@ static int _sl_serve_callback(struct lws *wsi, enum lws_callback_reasons reason,
         memset(c, 0, sizeof *c);
         pthread_mutex_lock(&s->lock);
         s->clients++;
-        c->sent = 0;
+        c->counted = true;
         pthread_mutex_unlock(&s->lock);
         lws_callback_on_writable(wsi);
         break;
     case LWS_CALLBACK_CLOSED:
+        if (!c || !c->counted) break; /* refused before it was established: never counted */
+        c->counted = false;
         pthread_mutex_lock(&s->lock);
         s->clients--;
         if (c->sent == s->frame_number && s->frame_number) s->clients_ready--;
