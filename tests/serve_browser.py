@@ -20,6 +20,7 @@ Only the standard library: WebDriver is JSON over HTTP."""
 import base64
 import json
 import os
+import re
 import shutil
 import signal
 import socket
@@ -30,6 +31,7 @@ import sys
 import tempfile
 import time
 import urllib.error
+import urllib.parse
 import urllib.request
 import zlib
 
@@ -214,10 +216,15 @@ class Server:
                 os.remove(os.path.join(work, old))
         self.process = subprocess.Popen([os.path.abspath(viewer), "--serve", str(self.port)] + args, stdout=self.log,
                                         stderr=subprocess.STDOUT, cwd=work)
-        self.url = f"http://127.0.0.1:{self.port}/"
-        wait_for("the viewer's URL line", lambda: self.url in open(self.log_path).read() or self._dead(), 60)
+        # The URL the viewer prints, its token included: the one way in.
+        self.base = f"http://127.0.0.1:{self.port}/"
+        printed = re.compile(r"serving the (?:viewer|case view) at (" + re.escape(self.base) + r"\S*)")
+        found = wait_for("the viewer's URL line",
+                         lambda: printed.search(open(self.log_path).read()) or self._dead(), 60)
         if self.process.poll() is not None:
             raise SystemExit("serve_browser: FAIL: shadowlab --serve stopped:\n" + open(self.log_path).read())
+        self.url = found.group(1)
+        self.token = urllib.parse.parse_qs(urllib.parse.urlsplit(self.url).query).get("token", [""])[0]
 
     def _dead(self):
         return self.process.poll() is not None
