@@ -211,9 +211,10 @@ class Server:
         self.port = free_port()
         self.log_path = os.path.join(work, "serve.log")
         self.log = open(self.log_path, "w")
-        for old in os.listdir(work):  # the X key's screenshots land here
-            if old.startswith("shadowlab-") and old.endswith(".png"):
-                os.remove(os.path.join(work, old))
+        for folder in (work, os.path.join(work, "shadowlab-screenshots")):  # the X key's screenshots
+            for old in os.listdir(folder) if os.path.isdir(folder) else []:
+                if old.startswith("shadowlab-") and old.endswith(".png"):
+                    os.remove(os.path.join(folder, old))
         self.process = subprocess.Popen([os.path.abspath(viewer), "--serve", str(self.port)] + args, stdout=self.log,
                                         stderr=subprocess.STDOUT, cwd=work)
         # The URL the viewer prints, its token included: the one way in.
@@ -302,8 +303,11 @@ def every_key(browser, viewer, work, check):
             acted = browser.js("return window.sl.header.keys_acted") - before
         check(f"lab {lab}: each of its {len(presses)} keys pressed in the browser is acted on", acted == len(presses),
               f"{acted} of {len(presses)}")
-    shots = [f for f in os.listdir(work) if f.startswith("shadowlab-") and f.endswith(".png")]
-    check("X on the page saves a screenshot where the viewer runs", len(shots) == 1, ", ".join(shots) or "none")
+    folder = os.path.join(work, "shadowlab-screenshots")
+    shots = [f for f in os.listdir(folder) if f.startswith("shadowlab-") and f.endswith(".png")]
+    stray = [f for f in os.listdir(work) if f.startswith("shadowlab-") and f.endswith(".png")]
+    check("X on the page saves a screenshot into shadowlab-screenshots/, none where the viewer runs",
+          len(shots) == 1 and not stray, ", ".join(shots + stray) or "none")
     frames_after(browser, 1)
     title = browser.js("return document.getElementById('keys-title').textContent")
     keys_text = browser.js("return document.getElementById('keys').textContent")
