@@ -63,17 +63,27 @@ void sl_serve_idle(sl_serve *serve) { (void)serve; }
 
 #else
 
+#include <arpa/inet.h>
 #include <cjson/cJSON.h>
+#include <fcntl.h>
 #include <libwebsockets.h>
 #include <pthread.h>
+#include <strings.h>
 #include <time.h>
+#include <unistd.h>
+#ifdef __linux__
+#include <sys/random.h>
+#endif
 
 #define _SL_SERVE_EVENTS 256
 #define _SL_SERVE_KEYS 512     /* GLFW key codes are below GLFW_KEY_LAST (348) */
 #define _SL_SERVE_MESSAGE_MAX 96 /* the longest input message the page sends */
+#define _SL_SERVE_TOKEN_BYTES 24   /* 192 bits; the URL carries them as 48 hex digits */
 
 /* One page's connection. */
 typedef struct _sl_client {
+    bool counted;        /* in `clients`: only a connection that was established (lws may close one it
+                            refused with the same callback, and that must not change the count) */
     unsigned long sent;  /* the frame number it was last sent */
     bool greeted;        /* sent the hello (the key table) */
     char message[_SL_SERVE_MESSAGE_MAX];
@@ -85,12 +95,13 @@ struct sl_serve {
     pthread_t thread;
     bool thread_started;
     volatile int stopping;
-    char url[160], page_dir[1100];
+    char url[220], page_dir[1100];
+    char token[2 * _SL_SERVE_TOKEN_BYTES + 1]; /* the URL's ?token=, hex */
+    char address[64];                          /* the address bound */
     unsigned char *hello; /* LWS_PRE bytes, then the hello's text; NULL: none */
     size_t hello_size;
     int jpeg_quality;
     struct lws_protocols protocols[3];
-    struct lws_http_mount mount;
 
     pthread_mutex_t lock; /* everything below */
     unsigned char *frame; /* LWS_PRE bytes, then the message */
@@ -138,13 +149,179 @@ static void _sl_serve_input(sl_serve *s, const char *message) {
     pthread_mutex_unlock(&s->lock);
 }
 
-/* The page's own host in its Origin: a WebSocket opened by another site is refused. */
-static bool _sl_serve_same_origin(struct lws *wsi) {
-    char origin[256] = "", host[256] = "";
-    if (lws_hdr_copy(wsi, origin, sizeof origin, WSI_TOKEN_ORIGIN) <= 0) return true; /* not a browser */
-    if (lws_hdr_copy(wsi, host, sizeof host, WSI_TOKEN_HOST) <= 0) return false;
-    const char *o = strstr(origin, "://");
-    return o && strcmp(o + 3, host) == 0;
+/* Who may connect. The server listens on this machine only, but a web page
+ * open in the instructor's browser can still reach 127.0.0.1, so a request
+ * must also:
+ *  - carry the token the viewer printed in its URL (the page passes it on to
+ *    its WebSocket): no other page can know it;
+ *  - name this machine in its Host header (localhost, a loopback address, or
+ *    the address given to --serve-address): a page on a name of its own that
+ *    it points at 127.0.0.1 (DNS rebinding) sends its own name there. The
+ *    port is not compared: a forwarded port (ssh -L 9000:127.0.0.1:8080) may
+ *    differ, and a rebinding page cannot choose the name;
+ *  - when it has an Origin, come from that same host (http://HOST): a
+ *    browser sends one with every WebSocket and with a fetch from another
+ *    page. A request without one is not a browser's script: a program here
+ *    that has the token (it read the printed URL) is let in as a page is. */
+
+/* The token: random bytes from the kernel, as hex. */
+static bool _sl_serve_make_token(char *token, size_t size) {
+    unsigned char bytes[_SL_SERVE_TOKEN_BYTES];
+    size_t got = 0;
+#ifdef __linux__
+    while (got < sizeof bytes) {
+        ssize_t n = getrandom(bytes + got, sizeof bytes - got, 0);
+        if (n <= 0) break;
+        got += (size_t)n;
+    }
+#endif
+    if (got < sizeof bytes) { /* no getrandom(): the same source through the file */
+        int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC);
+        got = 0;
+        while (fd >= 0 && got < sizeof bytes) {
+            ssize_t n = read(fd, bytes + got, sizeof bytes - got);
+            if (n <= 0) break;
+            got += (size_t)n;
+        }
+        if (fd >= 0) close(fd);
+    }
+    if (got < sizeof bytes || size < 2 * sizeof bytes + 1) return false;
+    for (size_t i = 0; i < sizeof bytes; i++) snprintf(token + 2 * i, 3, "%02x", bytes[i]);
+    return true;
+}
+
+/* Equal strings, in a time that does not depend on where they differ (the
+ * token's length is no secret: it is always the same). */
+static bool _sl_serve_same_secret(const char *given, const char *token) {
+    size_t n = strlen(token), m = strnlen(given, n + 1);
+    unsigned char diff = m != n;
+    for (size_t i = 0; i < n; i++) diff |= (unsigned char)(token[i] ^ (i < m ? given[i] : 0));
+    return diff == 0;
+}
+
+/* The request's ?token= is the server's. */
+static bool _sl_serve_token_ok(sl_serve *s, struct lws *wsi) {
+    char arg[160];
+    const char *given = lws_get_urlarg_by_name(wsi, "token=", arg, sizeof arg);
+    return given && _sl_serve_same_secret(given, s->token);
+}
+
+/* An IP address written out (v4, or v6 without its brackets). */
+static bool _sl_serve_is_address(const char *name, bool *loopback) {
+    unsigned char a[16];
+    if (inet_pton(AF_INET, name, a) == 1) {
+        *loopback = a[0] == 127;
+        return true;
+    }
+    if (inet_pton(AF_INET6, name, a) == 1) {
+        static const unsigned char one[16] = {[15] = 1};
+        *loopback = memcmp(a, one, 16) == 0;
+        return true;
+    }
+    return false;
+}
+
+/* The Host header names this machine as the text above says; `host` gets it. */
+static bool _sl_serve_host_ok(sl_serve *s, struct lws *wsi, char *host, size_t size) {
+    if (lws_hdr_copy(wsi, host, (int)size, WSI_TOKEN_HOST) <= 0) return false;
+    char name[256];
+    const char *port;
+    if (host[0] == '[') { /* [v6]:port */
+        const char *close = strchr(host, ']');
+        if (!close || (size_t)(close - host) >= sizeof name) return false;
+        snprintf(name, sizeof name, "%.*s", (int)(close - host - 1), host + 1);
+        port = close + 1;
+    } else {
+        size_t n = strcspn(host, ":");
+        if (n >= sizeof name) return false;
+        snprintf(name, sizeof name, "%.*s", (int)n, host);
+        port = host + n;
+    }
+    if (*port == ':') {
+        port++;
+        if (!*port || strspn(port, "0123456789") != strlen(port)) return false;
+    } else if (*port) {
+        return false;
+    }
+    bool loopback = false;
+    if (strcasecmp(name, "localhost") == 0) return true;
+    if (!_sl_serve_is_address(name, &loopback)) return false; /* a name: only localhost */
+    if (loopback) return true;
+    /* --serve-address: that address, or with 0.0.0.0 / :: any of this machine's (an address, never a name) */
+    return strcmp(s->address, "0.0.0.0") == 0 || strcmp(s->address, "::") == 0 || strcasecmp(s->address, name) == 0;
+}
+
+/* No Origin, or http://HOST itself. */
+static bool _sl_serve_origin_ok(struct lws *wsi, const char *host) {
+    char origin[300];
+    if (lws_hdr_total_length(wsi, WSI_TOKEN_ORIGIN) <= 0) return true;
+    if (lws_hdr_copy(wsi, origin, sizeof origin, WSI_TOKEN_ORIGIN) <= 0) return false;
+    return strncasecmp(origin, "http://", 7) == 0 && strcasecmp(origin + 7, host) == 0;
+}
+
+/* NULL: the request may go on; else why it is refused (the 403's text). */
+static const char *_sl_serve_refusal(sl_serve *s, struct lws *wsi) {
+    char host[300];
+    if (!_sl_serve_host_ok(s, wsi, host, sizeof host))
+        return "shadowlab --serve answers only at 127.0.0.1, [::1] or localhost (or the address given to "
+               "--serve-address): open the URL the viewer printed.\n";
+    if (!_sl_serve_origin_ok(wsi, host)) return "shadowlab --serve: another site's page may not connect.\n";
+    if (!_sl_serve_token_ok(s, wsi))
+        return "shadowlab --serve: the token is missing or wrong: open the URL the viewer printed "
+               "(http://127.0.0.1:PORT/?token=...).\n";
+    return NULL;
+}
+
+/* A 403 with `why` as plain text. Returns what the HTTP callback returns. */
+static int _sl_serve_refuse(struct lws *wsi, const char *why) {
+    unsigned char buf[LWS_PRE + 1024], *start = buf + LWS_PRE, *p = start, *end = buf + sizeof buf;
+    size_t n = strlen(why);
+    if (lws_add_http_common_headers(wsi, HTTP_STATUS_FORBIDDEN, "text/plain; charset=utf-8", n, &p, end) ||
+        lws_add_http_header_by_name(wsi, (const unsigned char *)"cache-control:", (const unsigned char *)"no-store",
+                                    8, &p, end) ||
+        lws_finalize_write_http_header(wsi, start, &p, end))
+        return -1;
+    unsigned char body[LWS_PRE + 400];
+    if (n > sizeof body - LWS_PRE) n = sizeof body - LWS_PRE;
+    memcpy(body + LWS_PRE, why, n);
+    if (lws_write(wsi, body + LWS_PRE, n, LWS_WRITE_HTTP_FINAL) < (int)n) return -1;
+    return lws_http_transaction_completed(wsi) ? -1 : 0;
+}
+
+/* The page (its one file), to a request that passes _sl_serve_refusal. */
+static int _sl_serve_http(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in, size_t len) {
+    sl_serve *s = _sl_the_serve;
+    switch (reason) {
+    case LWS_CALLBACK_HTTP: {
+        const char *why = _sl_serve_refusal(s, wsi);
+        if (why) return _sl_serve_refuse(wsi, why);
+        const char *uri = in;
+        if (strcmp(uri, "/") != 0 && strcmp(uri, "/index.html") != 0) {
+            lws_return_http_status(wsi, HTTP_STATUS_NOT_FOUND, NULL);
+            return lws_http_transaction_completed(wsi) ? -1 : 0;
+        }
+        char path[1200];
+        snprintf(path, sizeof path, "%s/index.html", s->page_dir);
+        /* the URL holds the token: not kept in caches nor sent on as a Referer */
+        unsigned char headers[256], *p = headers, *end = headers + sizeof headers;
+        if (lws_add_http_header_by_name(wsi, (const unsigned char *)"cache-control:", (const unsigned char *)"no-store",
+                                        8, &p, end) ||
+            lws_add_http_header_by_name(wsi, (const unsigned char *)"referrer-policy:",
+                                        (const unsigned char *)"no-referrer", 11, &p, end))
+            return -1;
+        int n = lws_serve_http_file(wsi, path, "text/html; charset=utf-8", (const char *)headers, (int)(p - headers));
+        if (n < 0 || (n > 0 && lws_http_transaction_completed(wsi))) return -1;
+        return 0;
+    }
+    case LWS_CALLBACK_HTTP_CONFIRM_UPGRADE: {
+        /* the WebSocket's request: refused with the page's 403 before it becomes a connection */
+        const char *why = _sl_serve_refusal(s, wsi);
+        if (!why) return 0;
+        return _sl_serve_refuse(wsi, why) < 0 ? -1 : 1;
+    }
+    default:
+        return lws_callback_http_dummy(wsi, reason, user, in, len);
+    }
 }
 
 static int _sl_serve_callback(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in, size_t len) {
@@ -152,16 +329,19 @@ static int _sl_serve_callback(struct lws *wsi, enum lws_callback_reasons reason,
     _sl_client *c = user;
     switch (reason) {
     case LWS_CALLBACK_FILTER_PROTOCOL_CONNECTION:
-        return _sl_serve_same_origin(wsi) ? 0 : -1;
+        /* checked already (LWS_CALLBACK_HTTP_CONFIRM_UPGRADE); again here, so no path to a connection skips it */
+        return _sl_serve_refusal(s, wsi) ? -1 : 0;
     case LWS_CALLBACK_ESTABLISHED:
         memset(c, 0, sizeof *c);
         pthread_mutex_lock(&s->lock);
         s->clients++;
-        c->sent = 0;
+        c->counted = true;
         pthread_mutex_unlock(&s->lock);
         lws_callback_on_writable(wsi);
         break;
     case LWS_CALLBACK_CLOSED:
+        if (!c || !c->counted) break; /* refused before it was established: never counted */
+        c->counted = false;
         pthread_mutex_lock(&s->lock);
         s->clients--;
         if (c->sent == s->frame_number && s->frame_number) s->clients_ready--;
@@ -257,22 +437,21 @@ sl_serve *sl_serve_start(const sl_serve_desc *desc, char *err, size_t err_size) 
         }
         memcpy(s->hello + LWS_PRE, desc->hello, s->hello_size + 1);
     }
-    /* The page: the folder's files; the frames and input: the "shadowlab" protocol. */
-    s->protocols[0] = (struct lws_protocols){"http", lws_callback_http_dummy, 0, 0, 0, NULL, 0};
+    if (!_sl_serve_make_token(s->token, sizeof s->token)) {
+        snprintf(err, err_size, "--serve: no random bytes for the URL's token (getrandom, /dev/urandom)");
+        free(s->hello);
+        free(s);
+        return NULL;
+    }
+    snprintf(s->address, sizeof s->address, "%s", address);
+    /* The page: index.html alone; the frames and input: the "shadowlab" protocol. */
+    s->protocols[0] = (struct lws_protocols){"http", _sl_serve_http, 0, 0, 0, NULL, 0};
     s->protocols[1] = (struct lws_protocols){"shadowlab", _sl_serve_callback, sizeof(_sl_client), 4096, 0, NULL, 0};
-    s->mount = (struct lws_http_mount){
-        .mountpoint = "/",
-        .origin = s->page_dir,
-        .def = "index.html",
-        .origin_protocol = LWSMPRO_FILE,
-        .mountpoint_len = 1,
-    };
     struct lws_context_creation_info info;
     memset(&info, 0, sizeof info);
     info.port = desc->port;
     info.iface = address;
     info.protocols = s->protocols;
-    info.mounts = &s->mount;
     info.gid = -1;
     info.uid = -1;
     if (!strchr(address, ':')) info.options |= LWS_SERVER_OPTION_DISABLE_IPV6;
@@ -288,8 +467,9 @@ sl_serve *sl_serve_start(const sl_serve_desc *desc, char *err, size_t err_size) 
         return NULL;
     }
     bool ipv6 = strchr(address, ':') != NULL;
-    snprintf(s->url, sizeof s->url, "http://%s%s%s:%d/", ipv6 ? "[" : "",
-             strcmp(address, "0.0.0.0") == 0 ? "127.0.0.1" : address, ipv6 ? "]" : "", desc->port);
+    snprintf(s->url, sizeof s->url, "http://%s%s%s:%d/?token=%s", ipv6 ? "[" : "",
+             strcmp(address, "0.0.0.0") == 0 ? "127.0.0.1" : strcmp(address, "::") == 0 ? "::1" : address,
+             ipv6 ? "]" : "", desc->port, s->token);
     if (pthread_create(&s->thread, NULL, _sl_serve_thread, s) != 0) {
         snprintf(err, err_size, "--serve: cannot start the server's thread");
         sl_serve_stop(s);

@@ -10,9 +10,12 @@
  * the page takes, and what it lists, come from the viewer's own key table,
  * sent to each page as it connects (sl_serve_desc.hello).
  *
- * Only localhost is bound unless an address is given. A WebSocket whose
- * Origin is not the page's own host is refused, so another site open in the
- * same browser cannot drive the viewer.
+ * Only localhost is bound unless an address is given, and only the URL the
+ * server prints gets in: it carries a random token (?token=, 192 bits),
+ * which the page and its WebSocket must present. A request must also name
+ * this machine in its Host header (not a name a web page has pointed at
+ * 127.0.0.1) and, with an Origin, come from that same host; anything else
+ * gets a 403 and is never counted as a page (sl_serve.c says why each).
  *
  * Built where libwebsockets was found (SL_HAVE_SERVE); elsewhere
  * sl_serve_start says it is not built in. One server per process; its calls
@@ -70,7 +73,7 @@ bool sl_serve_available(void);
 /* Starts serving; NULL with the reason in err (not built in, port taken). */
 sl_serve *sl_serve_start(const sl_serve_desc *desc, char *err, size_t err_size);
 void sl_serve_stop(sl_serve *serve);
-/* "http://127.0.0.1:8080/" */
+/* The URL to open, token included: "http://127.0.0.1:8080/?token=<48 hex digits>" */
 const char *sl_serve_url(const sl_serve *serve);
 
 /* Takes up to `max` events that arrived since the last call, oldest first. */

@@ -118,6 +118,12 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
     /* 0 would do too (the EGL backend binds its own for it); the name says what is meant. */
     GLuint target = sl_context_default_framebuffer(v.ctx);
 
+    if (v.screenshot_dir && !_sl_viewer_screenshot_dir_make(v.screenshot_dir)) {
+        sl_overlay_destroy(v.overlay);
+        sl_renderer_destroy(&v.renderer);
+        sl_context_destroy(v.ctx);
+        return 1;
+    }
     if (o.serve_port) {
         char *keys = _sl_viewer_keys_json();
         sl_serve_desc sd = {.port = o.serve_port, .address = o.serve_address, .hello = keys};
@@ -131,6 +137,7 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
             return 1;
         }
         printf("shadowlab: serving the viewer at %s (open it in a browser; Ctrl-C stops)\n", sl_serve_url(v.serve));
+        printf("shadowlab: X on the page saves screenshots into %s/\n", v.screenshot_dir);
         fflush(stdout);
     }
     GLFWwindow *window = sl_context_window(v.ctx);

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
+#include <sys/types.h>
 
 /* --screenshot FILE.gif: every frame goes into the animation. */
 bool _sl_viewer_is_gif(const char *path) {
@@ -110,11 +112,22 @@ bool _sl_viewer_save(GLuint target, int width, int height, const char *path) {
     return ok;
 }
 
-/* The S key: shadowlab-001.png, -002 ... in the current folder, never overwriting. */
+bool _sl_viewer_screenshot_dir_make(const char *dir) {
+    struct stat st;
+    if (mkdir(dir, 0777) != 0 && (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))) {
+        fprintf(stderr, "shadowlab: cannot make the screenshots' folder %s\n", dir);
+        return false;
+    }
+    return true;
+}
+
+/* The X key: shadowlab-001.png, -002 ... never overwriting. The names are the viewer's own: a
+ * --serve page asks for a screenshot with the key and nothing else. */
 void _sl_viewer_screenshot_key(_sl_viewer *v, GLuint target, int width, int height) {
-    char path[64];
+    char path[4200];
+    const char *dir = v->screenshot_dir;
     for (int tries = 0; tries < 1000; tries++) {
-        snprintf(path, sizeof path, "shadowlab-%03d.png", ++v->screenshot_count);
+        snprintf(path, sizeof path, "%s%sshadowlab-%03d.png", dir ? dir : "", dir ? "/" : "", ++v->screenshot_count);
         FILE *f = fopen(path, "r");
         if (!f) break;
         fclose(f);

@@ -15,7 +15,10 @@ bool _sl_viewer_mark_changes(_sl_viewer *v, GLuint target, int width, int height
 bool _sl_viewer_save_changes(_sl_viewer *v, const char *path, int frames, bool overlay, mat4 camera, GLuint target);
 /* The frame in `target` as a PNG at `path`. */
 bool _sl_viewer_save(GLuint target, int width, int height, const char *path);
-/* The X key: shadowlab-NNN.png in the current folder, never overwriting. */
+/* Makes the screenshots' folder (one level) unless it is there; false, said on stderr, if it
+ * cannot be made or is not a folder. */
+bool _sl_viewer_screenshot_dir_make(const char *dir);
+/* The X key: shadowlab-NNN.png in v->screenshot_dir (NULL: the current folder), never overwriting. */
 void _sl_viewer_screenshot_key(_sl_viewer *v, GLuint target, int width, int height);
 
 #endif

@@ -77,10 +77,13 @@ static void _sl_viewer_usage(FILE *f) {
             "                      the image module loads once); no other options with it. Around each\n"
             "                      run it prints 'shadowlab: batch line N' (stdout and stderr) and\n"
             "                      'shadowlab: batch line N: exit S' (stdout); exit 1 if any failed\n"
-            "  --serve PORT        render offscreen and show the viewer in a browser at\n"
-            "                      http://127.0.0.1:PORT/ (keys, drags and the wheel work there)\n"
+            "  --serve PORT        render offscreen and show the viewer in a browser at the URL it prints,\n"
+            "                      http://127.0.0.1:PORT/?token=... (keys, drags and the wheel work there);\n"
+            "                      only that URL connects (its random token), not another site's page\n"
             "  --serve-address A   the address --serve listens on; default 127.0.0.1 (this machine\n"
-            "                      only; 0.0.0.0: every network this machine is on)\n"
+            "                      only; 0.0.0.0: every network this machine is on, still with the token)\n"
+            "  --screenshot-dir DIR where X saves shadowlab-NNN.png (made if missing); default the current\n"
+            "                      folder, with --serve shadowlab-screenshots\n"
             "  --keys KEYS         press these keys before the first frame, e.g. --keys 'OG' (overlay,\n"
             "                      frustum) or --keys 'BB]' (letters, digits, [ ] - = , .; not Esc)\n"
             "  --frustum           draw the light's frustum in the scene\n"
@@ -122,6 +125,7 @@ int _sl_viewer_options_parse(int argc, char **argv, _sl_viewer *v, _sl_viewer_op
                            strcmp(a, "--cascades") == 0 || strcmp(a, "--lambda") == 0 || strcmp(a, "--blend-band") == 0 ||
                            strcmp(a, "--caption") == 0 || strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0 ||
                            strcmp(a, "--text-scale") == 0 || strcmp(a, "--serve") == 0 || strcmp(a, "--serve-address") == 0 ||
+                           strcmp(a, "--screenshot-dir") == 0 ||
                            strcmp(a, "--cube-pass") == 0 || strcmp(a, "--soft-radius") == 0 || strcmp(a, "--cube-bias") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
@@ -324,6 +328,8 @@ int _sl_viewer_options_parse(int argc, char **argv, _sl_viewer *v, _sl_viewer_op
             }
         } else if (strcmp(a, "--serve-address") == 0) {
             o->serve_address = next;
+        } else if (strcmp(a, "--screenshot-dir") == 0) {
+            v->screenshot_dir = next;
         } else if (strcmp(a, "--headless") == 0) {
             o->headless = true;
         } else if (strcmp(a, "--backend") == 0) {
@@ -352,6 +358,8 @@ int _sl_viewer_options_parse(int argc, char **argv, _sl_viewer *v, _sl_viewer_op
         return 2;
     }
     if (o->serve_port) o->headless = true; /* offscreen; the page shows it */
+    /* A page's X never writes into the folder the viewer runs in, only into one it names. */
+    if (o->serve_port && !v->screenshot_dir) v->screenshot_dir = "shadowlab-screenshots";
     if (o->headless && o->frames <= 0 && !o->serve_port) {
         fprintf(stderr, "shadowlab: --headless needs --frames K (and usually --screenshot FILE)\n");
         return 2;

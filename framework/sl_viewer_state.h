@@ -48,6 +48,7 @@ typedef struct _sl_viewer {
     bool labels;           /* --labels: the cascade legend, cube-face labels, the light's marker */
     int text_scale;        /* --text-scale: the overlay's font size; 0: from the frame's size */
     int screenshot_count;
+    const char *screenshot_dir; /* where X saves (--screenshot-dir; --serve: shadowlab-screenshots); NULL: here */
     double pass_ms[SL_MAX_PASSES], frame_ms; /* smoothed, for reading */
     const char *pass_names[SL_MAX_PASSES];
     int pass_count;

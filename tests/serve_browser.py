@@ -11,6 +11,13 @@ chromedriver (the W3C WebDriver protocol, over HTTP on this machine only).
       key of it, pressed in the browser in labs 4 to 7, is acted on; and
       --case in the browser: its labels and summary on the page, its keys
       (not Esc) taken from its own table, Tab changing the picture.
+  serve_browser.py security VIEWER WORK_DIR
+      only the URL the viewer printed connects: the page and the WebSocket
+      without the token or with a wrong one, with Host: evil.example (DNS
+      rebinding; in Chromium too, with evil.example resolved to this
+      machine), and from another site's page (a second server's port) are
+      refused, and the real page opened after them still receives frames;
+      X on the page saves into --screenshot-dir, nowhere else.
   serve_browser.py measure VIEWER WORK_DIR [SIZE]
       prints the frame rate the page receives at SIZE (default 960x540) and
       the latency from a key press to the first frame that shows it (median
@@ -19,7 +26,9 @@ chromedriver (the W3C WebDriver protocol, over HTTP on this machine only).
 Only the standard library: WebDriver is JSON over HTTP."""
 import base64
 import json
+import http.server
 import os
+import re
 import shutil
 import signal
 import socket
@@ -28,8 +37,10 @@ import struct
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import urllib.error
+import urllib.parse
 import urllib.request
 import zlib
 
@@ -53,7 +64,7 @@ def wait_for(what, condition, timeout=60.0, step=0.1):
 class WebDriver:
     """The few WebDriver commands the test needs."""
 
-    def __init__(self, work):
+    def __init__(self, work, extra_args=()):
         self.port = free_port()
         driver = shutil.which("chromedriver") or "/usr/bin/chromedriver"
         self.log = open(os.path.join(work, "chromedriver.log"), "w")
@@ -66,7 +77,7 @@ class WebDriver:
         args = ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
                 "--no-first-run", "--force-device-scale-factor=1", "--window-size=1000,800",
-                f"--user-data-dir={profile}"]
+                f"--user-data-dir={profile}"] + list(extra_args)
         caps = {"capabilities": {"alwaysMatch": {"browserName": "chrome",
                                                  "goog:chromeOptions": {"binary": browser, "args": args}}}}
         # Chromium that cannot start its renderer here (seen under a chroot: "unable to connect to
@@ -209,15 +220,21 @@ class Server:
         self.port = free_port()
         self.log_path = os.path.join(work, "serve.log")
         self.log = open(self.log_path, "w")
-        for old in os.listdir(work):  # the X key's screenshots land here
-            if old.startswith("shadowlab-") and old.endswith(".png"):
-                os.remove(os.path.join(work, old))
+        for folder in (work, os.path.join(work, "shadowlab-screenshots")):  # the X key's screenshots
+            for old in os.listdir(folder) if os.path.isdir(folder) else []:
+                if old.startswith("shadowlab-") and old.endswith(".png"):
+                    os.remove(os.path.join(folder, old))
         self.process = subprocess.Popen([os.path.abspath(viewer), "--serve", str(self.port)] + args, stdout=self.log,
                                         stderr=subprocess.STDOUT, cwd=work)
-        self.url = f"http://127.0.0.1:{self.port}/"
-        wait_for("the viewer's URL line", lambda: self.url in open(self.log_path).read() or self._dead(), 60)
+        # The URL the viewer prints, its token included: the one way in.
+        self.base = f"http://127.0.0.1:{self.port}/"
+        printed = re.compile(r"serving the (?:viewer|case view) at (" + re.escape(self.base) + r"\S*)")
+        found = wait_for("the viewer's URL line",
+                         lambda: printed.search(open(self.log_path).read()) or self._dead(), 60)
         if self.process.poll() is not None:
             raise SystemExit("serve_browser: FAIL: shadowlab --serve stopped:\n" + open(self.log_path).read())
+        self.url = found.group(1)
+        self.token = urllib.parse.parse_qs(urllib.parse.urlsplit(self.url).query).get("token", [""])[0]
 
     def _dead(self):
         return self.process.poll() is not None
@@ -295,8 +312,11 @@ def every_key(browser, viewer, work, check):
             acted = browser.js("return window.sl.header.keys_acted") - before
         check(f"lab {lab}: each of its {len(presses)} keys pressed in the browser is acted on", acted == len(presses),
               f"{acted} of {len(presses)}")
-    shots = [f for f in os.listdir(work) if f.startswith("shadowlab-") and f.endswith(".png")]
-    check("X on the page saves a screenshot where the viewer runs", len(shots) == 1, ", ".join(shots) or "none")
+    folder = os.path.join(work, "shadowlab-screenshots")
+    shots = [f for f in os.listdir(folder) if f.startswith("shadowlab-") and f.endswith(".png")]
+    stray = [f for f in os.listdir(work) if f.startswith("shadowlab-") and f.endswith(".png")]
+    check("X on the page saves a screenshot into shadowlab-screenshots/, none where the viewer runs",
+          len(shots) == 1 and not stray, ", ".join(shots + stray) or "none")
     frames_after(browser, 1)
     title = browser.js("return document.getElementById('keys-title').textContent")
     keys_text = browser.js("return document.getElementById('keys').textContent")
@@ -408,6 +428,173 @@ def test(viewer, compare, work):
     return 1 if failures else 0
 
 
+def raw_request(port, lines, timeout=5.0):
+    """Sends an HTTP request (its lines) to 127.0.0.1:port and reads the answer's head and what body
+    arrives within timeout: (status code or 0 if none, the text)."""
+    with socket.create_connection(("127.0.0.1", port), timeout=timeout) as s:
+        s.sendall(("\r\n".join(lines) + "\r\n\r\n").encode())
+        data, end = b"", time.time() + timeout
+        while time.time() < end:
+            try:
+                chunk = s.recv(65536)
+            except socket.timeout:
+                break
+            if not chunk:
+                break
+            data += chunk
+            head, _, body = data.partition(b"\r\n\r\n")
+            if _ and (head.startswith(b"HTTP/1.1 101") or b"content-length" not in head.lower()
+                      or len(body) >= int(re.search(rb"(?i)content-length:\s*(\d+)", head).group(1))):
+                break
+    text = data.decode("latin-1")
+    match = re.match(r"HTTP/1\.[01] (\d{3})", text)
+    return (int(match.group(1)) if match else 0), text
+
+
+def websocket_request(port, path, host, origin=None):
+    lines = [f"GET {path} HTTP/1.1", f"Host: {host}", "Upgrade: websocket", "Connection: Upgrade",
+             "Sec-WebSocket-Key: " + base64.b64encode(os.urandom(16)).decode(), "Sec-WebSocket-Version: 13",
+             "Sec-WebSocket-Protocol: shadowlab"]
+    return raw_request(port, lines + ([f"Origin: {origin}"] if origin else []))
+
+
+# Another site's page (served from a second port): it tries the viewer's page and its WebSocket, without
+# the token and with it (as if it had leaked), and records what it got.
+ATTACK_PAGE = """<!doctype html><meta charset="utf-8"><title>another site</title><script>
+window.result = {};
+const target = "127.0.0.1:PORT";
+fetch("http://" + target + "/").then((r) => r.text()).then((t) => { window.result.fetch = "read: " + t.slice(0, 40); },
+  () => { window.result.fetch = "blocked"; });
+function tryWs(name, url) {
+  let ws = new WebSocket(url, "shadowlab");
+  ws.binaryType = "arraybuffer";
+  ws.onmessage = () => { window.result[name] = "got a message"; ws.close(); };
+  ws.onerror = () => { if (!window.result[name]) window.result[name] = "refused"; };
+  ws.onclose = () => { if (!window.result[name]) window.result[name] = "closed"; };
+}
+tryWs("ws", "ws://" + target + "/");
+tryWs("ws_with_token", "ws://" + target + "/?token=TOKEN");
+</script>"""
+
+
+class OtherSite:
+    """A second HTTP server on this machine, on a port of its own: another origin."""
+
+    def __init__(self, page):
+        class Handler(http.server.BaseHTTPRequestHandler):
+            def do_GET(self):
+                body = page.encode()
+                self.send_response(200)
+                self.send_header("Content-Type", "text/html; charset=utf-8")
+                self.send_header("Content-Length", str(len(body)))
+                self.end_headers()
+                self.wfile.write(body)
+
+            def log_message(self, *args):
+                pass
+
+        self.httpd = http.server.HTTPServer(("127.0.0.1", 0), Handler)
+        self.port = self.httpd.server_address[1]
+        threading.Thread(target=self.httpd.serve_forever, daemon=True).start()
+
+    def stop(self):
+        self.httpd.shutdown()
+        self.httpd.server_close()
+
+
+def security(viewer, work):
+    """Only the URL the viewer printed connects: no token or a wrong one, a Host that is not this machine
+    (DNS rebinding), another site's page, all refused (403) and never counted as a page, so the real page
+    opened after them still receives frames; X from the page saves into the folder the viewer names."""
+    failures = []
+
+    def check(what, ok, detail=""):
+        print(f"serve_browser: {'ok' if ok else 'FAIL'}: {what}{': ' + detail if detail else ''}", flush=True)
+        if not ok:
+            failures.append(what)
+
+    for old in os.listdir(work):
+        if old.startswith("shadowlab-") and old.endswith(".png"):
+            os.remove(os.path.join(work, old))
+    shots = os.path.join(work, "shots")
+    shutil.rmtree(shots, ignore_errors=True)
+    server = Server(viewer, work, ["--lab", "4", "--scene", "boxes_on_floor", "--size", "320x180",
+                                   "--screenshot-dir", "shots"])
+    port, token = server.port, server.token
+    here = f"127.0.0.1:{port}"
+    other = OtherSite("")
+    browser = None
+    try:
+        check("the printed URL carries a token of 128 bits or more", len(token) >= 32, server.url)
+        wrong = ("0" if token[:1] != "0" else "1") + token[1:]
+        # The page over raw HTTP.
+        code, text = raw_request(port, ["GET / HTTP/1.1", f"Host: {here}"])
+        check("the page without the token: 403, saying to use the printed URL",
+              code == 403 and "URL the viewer printed" in text, text.splitlines()[0] if text else "no answer")
+        code, text = raw_request(port, [f"GET /?token={wrong} HTTP/1.1", f"Host: {here}"])
+        check("the page with a wrong token: 403", code == 403, text.splitlines()[0] if text else "no answer")
+        code, text = raw_request(port, [f"GET /?token={token} HTTP/1.1", f"Host: {here}"])
+        check("the page with the token: 200", code == 200 and "<html" in text, text.splitlines()[0] if text else "")
+        code, text = raw_request(port, [f"GET /?token={token} HTTP/1.1", f"Host: evil.example:{port}"])
+        check("the page with the token but Host: evil.example (DNS rebinding): 403", code == 403,
+              text.splitlines()[0] if text else "no answer")
+        # The WebSocket over raw sockets: refused before it is a connection.
+        for what, path, host, origin in [
+                ("no token", "/", here, f"http://{here}"),
+                ("a wrong token", f"/?token={wrong}", here, f"http://{here}"),
+                ("the token but Host: evil.example", f"/?token={token}", f"evil.example:{port}",
+                 f"http://evil.example:{port}"),
+                ("the token but another site's Origin", f"/?token={token}", here, f"http://127.0.0.1:{other.port}"),
+                ("no token and no Origin", "/", here, None)]:
+            code, text = websocket_request(port, path, host, origin)
+            check(f"a WebSocket with {what}: refused (403)", code == 403, text.splitlines()[0] if text else "no answer")
+        code, text = websocket_request(port, f"/?token={token}", here, None)
+        check("a WebSocket with the token and no Origin (not a browser's script): accepted", code == 101,
+              text.splitlines()[0] if text else "no answer")
+
+        # In Chromium: evil.example resolves to this machine, as a rebinding name would.
+        browser = WebDriver(work, ["--host-resolver-rules=MAP evil.example 127.0.0.1", "--no-proxy-server"])
+        other.stop()
+        other = OtherSite(ATTACK_PAGE.replace("PORT", str(port)).replace("TOKEN", token))
+        browser.go(f"http://127.0.0.1:{other.port}/")
+        result = wait_for("the other site's attempts",
+                          lambda: (lambda r: r if r and len(r) == 3 else None)(browser.js("return window.result")), 20)
+        check("another site's page cannot read the viewer's page", result["fetch"] == "blocked", result["fetch"])
+        check("another site's page gets no WebSocket, with or without the token",
+              result["ws"] != "got a message" and result["ws_with_token"] != "got a message", json.dumps(result))
+        browser.go(f"http://evil.example:{port}/?token={token}")
+        time.sleep(0.5)
+        body = browser.js("return document.body ? document.body.innerText : ''")
+        frames = browser.js("return window.sl ? window.sl.frames : -1")
+        check("the page at http://evil.example:PORT (a rebound name) is refused, even with the token",
+              frames == -1 and "answers only at" in body, body[:120])
+        # After every refused attempt, the real page.
+        browser.go(server.url)
+        wait_for("frames on the real page after the refused attempts",
+                 lambda: browser.js("return window.sl.frames") >= 3, 20)
+        check("the real page still receives frames after the refused attempts", True)
+        # A refused attempt while the page is open does not stop its frames either.
+        websocket_request(port, "/", here, f"http://127.0.0.1:{other.port}")
+        start = browser.js("return window.sl.frames")
+        time.sleep(1.0)
+        wait_for("frames after another refused attempt", lambda: browser.js("return window.sl.frames") >= start + 3, 20)
+        check("frames go on after a refused attempt during the page's connection", True)
+        browser.press("x")
+        wait_for("the screenshot", lambda: os.path.isdir(shots) and os.listdir(shots), 20)
+        stray = [f for f in os.listdir(work) if f.startswith("shadowlab-") and f.endswith(".png")]
+        check("X on the page saves into --screenshot-dir, with the viewer's own name, nothing where it runs",
+              os.listdir(shots) == ["shadowlab-001.png"] and not stray, ", ".join(os.listdir(shots) + stray))
+    except SystemExit as e:
+        check("the checks ran to the end", False, str(e))
+    finally:
+        if browser:
+            browser.close()
+        other.stop()
+        server.stop()
+    print("serve_browser: " + ("passed" if not failures else f"{len(failures)} failed"))
+    return 1 if failures else 0
+
+
 def measure(viewer, work, size):
     server = Server(viewer, work, ["--lab", "4", "--scene", "boxes_on_floor", "--size", size, "--no-overlay"])
     browser = None
@@ -438,6 +625,9 @@ def main(argv):
     if len(argv) >= 5 and argv[1] == "test":
         os.makedirs(argv[4], exist_ok=True)
         return test(argv[2], argv[3], argv[4])
+    if len(argv) >= 4 and argv[1] == "security":
+        os.makedirs(argv[3], exist_ok=True)
+        return security(argv[2], argv[3])
     if len(argv) >= 4 and argv[1] == "measure":
         os.makedirs(argv[3], exist_ok=True)
         return measure(argv[2], argv[3], argv[4] if len(argv) > 4 else "960x540")
