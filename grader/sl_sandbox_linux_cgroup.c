@@ -28,6 +28,7 @@
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <sys/syscall.h>
+#include <time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -156,10 +157,37 @@ bool _sl_find_pids_cgroup(sl_sandbox *sb) {
     return false;
 }
 
+/* A grader killed before it removed its runners' cgroups (SIGKILL, a crash) leaves
+ * them behind, empty. Empty ones older than ten minutes are swept: a cgroup with a
+ * process in it cannot be removed, and a live grader's empty one is minutes younger. */
+static void _sl_cgroup_sweep(const char *folder) {
+    DIR *d = opendir(folder);
+    if (!d) return;
+    struct dirent *e;
+    time_t now = time(NULL);
+    while ((e = readdir(d))) {
+        if (strncmp(e->d_name, "shadowlab-runner-", 17) != 0) continue;
+        char path[600];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", folder, e->d_name);
+        if (stat(path, &st) == 0 && S_ISDIR(st.st_mode) && now - st.st_mtime > 600) rmdir(path);
+    }
+    closedir(d);
+}
+
 bool _sl_cgroup_make(const sl_sandbox *sb, char *cgroup, size_t n, int limit, char *err, size_t err_size) {
     static unsigned sequence;
+    /* Graders in other PID namespaces (containers, chroots with their own /proc) share
+     * this hierarchy and can have this pid: the name carries random bits of its own. */
+    static uint64_t token;
+    if (!token) {
+        if (getrandom(&token, sizeof token, 0) != (ssize_t)sizeof token || !token)
+            token = ((uint64_t)time(NULL) << 20) ^ (uint64_t)getpid() ^ (uint64_t)(uintptr_t)&token;
+        _sl_cgroup_sweep(sb->pids_cgroup);
+    }
     char file[400], value[32];
-    snprintf(cgroup, n, "%s/shadowlab-runner-%d-%u", sb->pids_cgroup, (int)getpid(), sequence++);
+    snprintf(cgroup, n, "%s/shadowlab-runner-%d-%016llx-%u", sb->pids_cgroup, (int)getpid(),
+             (unsigned long long)token, sequence++);
     snprintf(file, sizeof file, "%s/pids.max", cgroup);
     snprintf(value, sizeof value, "%d", limit);
     char type[400];
