@@ -185,12 +185,20 @@ static const char *_sl_kind_words(const char *kind) {
     return kind;
 }
 
-static void _sl_count_check(_sl_class *k, _sl_check *c, int student, const cJSON *jk, bool probe) {
+static void _sl_count_check(_sl_class *k, _sl_check *c, int student, const cJSON *jk, bool probe,
+                            uint32_t labs_not_built) {
     c->graded++;
     if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(jk, "passed"))) return;
     c->failed++;
     const char *id = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "diagnosis"));
     const char *text = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "diagnosis_text"));
+    char built_id[32], built_text[64];
+    if ((!id || !id[0]) && c->lab >= 1 && c->lab <= SL_LAB_MAX && ((labs_not_built >> c->lab) & 1u)) {
+        /* a lab that did not compile in a submission graded per lab: its checks carry the compiler's error */
+        snprintf(built_id, sizeof built_id, "lab%d-did-not-compile", c->lab);
+        snprintf(built_text, sizeof built_text, "lab %d did not compile", c->lab);
+        id = built_id, text = built_text;
+    }
     if (!id || !id[0]) return; /* a report from before diagnoses had ids */
     /* the mistake: the function the evidence named and the kind of cause, else the diagnosis */
     const cJSON *cause = cJSON_GetObjectItemCaseSensitive(jk, "cause");
@@ -264,6 +272,12 @@ static void _sl_count_report(_sl_class *k, int student, const cJSON *json) {
     if (k->option_sets == 0) k->option_sets = 1;
     k->students++;
     const cJSON *lab;
+    uint32_t labs_not_built = 0;
+    cJSON_ArrayForEach(lab, cJSON_GetObjectItemCaseSensitive(json, "labs_not_built")) {
+        const cJSON *number = cJSON_GetObjectItemCaseSensitive(lab, "lab");
+        if (cJSON_IsNumber(number) && number->valueint >= 1 && number->valueint <= SL_LAB_MAX)
+            labs_not_built |= 1u << number->valueint;
+    }
     double total = 0, total_max = 0;
     cJSON_ArrayForEach(lab, cJSON_GetObjectItemCaseSensitive(json, "lab_scores")) {
         const cJSON *number = cJSON_GetObjectItemCaseSensitive(lab, "lab");
@@ -297,7 +311,7 @@ static void _sl_count_report(_sl_class *k, int student, const cJSON *json) {
             _sl_check *c = _sl_check_of(k, name, lab_number->valueint, cJSON_IsNumber(points) ? points->valuedouble : 0,
                                         cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(jk, "bonus")), &hint);
             const char *kind = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(jk, "kind"));
-            if (c) _sl_count_check(k, c, student, jk, kind && strcmp(kind, "probe") == 0);
+            if (c) _sl_count_check(k, c, student, jk, kind && strcmp(kind, "probe") == 0, labs_not_built);
         }
     }
 }
@@ -596,6 +610,7 @@ static bool _sl_write_html(const _sl_class *k, const _sl_mistake *sorted, const 
             _sl_share_bar(f, m->students, k->students);
             fprintf(f, "<td>%d</td><td>", m->lab);
             sl_html_text(f, shown ? shown->text : m->key);
+            if (shown && m->wording_count > 1) fprintf(f, " <span class=\"dim\">(%d)</span>", shown->students);
             if (m->function[0]) {
                 fputs("<br><span class=\"id\">cause: <code>", f);
                 sl_html_text(f, m->function);
@@ -607,10 +622,12 @@ static bool _sl_write_html(const _sl_class *k, const _sl_mistake *sorted, const 
                 sl_html_text(f, m->key);
                 fputs("</span>", f);
             }
+            /* the other wordings, each with its students: two verdicts on one function show apart here */
             for (int w = 0, other = 0; w < m->wording_count; w++) {
                 if (&m->wordings[w] == shown) continue;
                 fputs(other++ ? "; " : "<br><span class=\"dim\">also reported as: ", f);
                 sl_html_text(f, m->wordings[w].text);
+                fprintf(f, " (%d)", m->wordings[w].students);
                 if (other == m->wording_count - 1) fputs("</span>", f);
             }
             if (m->wording_more) fprintf(f, " <span class=\"dim\">and %d more wordings</span>", m->wording_more);

@@ -9,8 +9,8 @@
  *   verdict, a lead from it, a stub, a crash or a time cut in the function
  *   are one row each, whatever their wording; a check that names no function
  *   counts by its diagnosis id (not by the message's text, whose numbers
- *   differ per student). Failures that follow from an earlier lab's and name
- *   no function come apart, below;
+ *   differ per student); a lab that did not compile counts as one. Failures
+ *   that follow from an earlier lab's and name no function come apart, below;
  * - per check, how many students failed it, and the mistake most of them made;
  * - a histogram of each lab's scores, and of the totals.
  *
