@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # A class of generated submissions (tests/make_submissions.sh): two with the
-# same lab 3 mistake (sin where tan belongs), one whose lab3_depth_pass_state()
-# is still a stub (its probe and a picture fail, in other words), one with a
-# lab 2 mistake that lab 3 builds on, and the solutions; and two not counted:
-# one that holds no lab file, one whose labs do not compile.
+# same lab 3 mistake (lab3_depth_pass_state() still a stub: its probe and a
+# picture fail, each in its own words), one with a lab 2 mistake that lab 3
+# builds on, and the solutions; and two not counted: one that holds no lab
+# file, one whose labs do not compile.
 # grade-batch writes the class report: one row per mistake (the function the
 # evidence names plus the kind of cause) naming the students who made it
-# ("2 of 5: amy, ben", counted once however many checks it failed), the
+# ("2 of 4: amy, ben", counted once however many checks it failed), the
 # submissions not counted named, per check how many failed, each lab's score
 # histogram; class-mistakes.csv, a row per submission and a column per
 # mistake; the gradebook row says which options made it. Then the same folder again:
@@ -21,8 +21,8 @@ subs="$work/submissions" out="$work/grades"
 fail=0
 problem() { echo "class_report: $*" >&2; fail=1; }
 
-bash "$source/tests/make_submissions.sh" "$source" "$subs" amy=lab3_slope_sin ben=lab3_slope_sin \
-  cal=lab3_c_stub dan=lab2_inverted_compare eve=solutions
+bash "$source/tests/make_submissions.sh" "$source" "$subs" amy=lab3_c_stub ben=lab3_c_stub \
+  dan=lab2_inverted_compare eve=solutions
 mkdir -p "$subs/fay" "$subs/gus"
 echo "my lab report" >"$subs/fay/notes.txt"  # no lab file
 for lab in lab2_projective/lab2.c lab3_bias/lab3.c; do  # neither graded lab compiles
@@ -59,23 +59,22 @@ check(all(len(r) == 7 for r in rows), "a row without 7 fields")
 mistakes = [r for r in rows[1:] if r[0] in ("mistake", "follows")]
 by_name = {r[2]: r for r in mistakes}
 who = lambda r: r[4].split("; ") if r[4] else []
-# the same mistake through two students: one row, both named, 2 of the 5 counted
-sin = by_name.get("slope_scaled_bias: wrong")
-check(sin and sin[1] == "3" and "sin(theta) where tan(theta) belongs" in sin[3], "no row 'slope_scaled_bias: wrong'")
-check(sin and (sin[5], sin[6]) == ("2", "5") and who(sin) == ["amy", "ben"], "sin where tan: %s" % (sin,))
-# the same mistake through different checks (the probe's verdict, a picture's "not implemented"): one row
+# the same mistake made by two students, through different checks (the probe's verdict, a
+# picture's "not implemented"), each in its own words: one row, both named, 2 of the 4 counted
 stub = by_name.get("lab3_depth_pass_state: stub")
-check(stub and (stub[5], stub[6]) == ("1", "5") and who(stub) == ["cal"], "cal's stub: %s" % (stub,))
-with open(os.path.join(out, "cal", "report", "results.json"), encoding="utf-8") as f:
-    cal = json.load(f)
-failed = [(c["name"], k) for c in cal["cases"] for k in c["checks"] if not k["passed"]]
-ids = {k["diagnosis"] for _, k in failed}
-check(len({case for case, _ in failed}) >= 2 and len(ids) >= 2,
-      "cal's stub fails fewer than two cases under two diagnosis ids: %s" % ids)
-check(all(k.get("cause") == {"function": "lab3_depth_pass_state", "kind": "stub"} for _, k in failed),
-      "cal's failed checks do not all carry the cause lab3_depth_pass_state, stub")
-check([r[2] for r in mistakes if "cal" in who(r)] == ["lab3_depth_pass_state: stub"],
-      "cal is in more than one row: %s" % [r[2] for r in mistakes if "cal" in who(r)])
+check(stub and stub[1] == "3" and "not implemented" in stub[3], "no row 'lab3_depth_pass_state: stub'")
+check(stub and (stub[5], stub[6]) == ("2", "4") and who(stub) == ["amy", "ben"], "the stub's row: %s" % (stub,))
+for name in ("amy", "ben"):
+    with open(os.path.join(out, name, "report", "results.json"), encoding="utf-8") as f:
+        report = json.load(f)
+    failed = [(c["name"], k) for c in report["cases"] for k in c["checks"] if not k["passed"]]
+    ids = {k["diagnosis"] for _, k in failed}
+    check(len({case for case, _ in failed}) >= 2 and len(ids) >= 2,
+          "%s's stub fails fewer than two cases under two diagnosis ids: %s" % (name, ids))
+    check(all(k.get("cause") == {"function": "lab3_depth_pass_state", "kind": "stub"} for _, k in failed),
+          "%s's failed checks do not all carry the cause lab3_depth_pass_state, stub" % name)
+    check([r[2] for r in mistakes if name in who(r)] == ["lab3_depth_pass_state: stub"],
+          "%s is in more than one row: %s" % (name, [r[2] for r in mistakes if name in who(r)]))
 # dan's lab 2 mistake costs lab 2 only: never charged to lab 3 as a failure that follows from it
 check(not any(r[0] == "follows" for r in mistakes), "a failure that follows from an earlier lab's: %s" % mistakes)
 check(any(who(r) == ["dan"] and r[1] == "2" for r in mistakes), "no lab 2 row naming dan")
@@ -83,14 +82,14 @@ check(any(who(r) == ["dan"] and r[1] == "2" for r in mistakes), "no lab 2 row na
 check(["no lab file", "", "fay"] == next((r[:3] for r in rows if r[2] == "fay"), None), "fay is not named 'no lab file'")
 check(["did not build", "", "gus"] == next((r[:3] for r in rows if r[2] == "gus"), None), "gus is not named 'did not build'")
 check(not any(n in who(r) for r in mistakes for n in ("fay", "gus")), "fay or gus counted among the mistakes")
-check(all(r[6] == "5" for r in mistakes), "a mistake not counted of 5")
+check(all(r[6] == "4" for r in mistakes), "a mistake not counted of 4")
 checks = {r[2]: r for r in rows if r[0] == "check"}
-check((checks["lab3_probes / slope_scaled_bias"][5], checks["lab3_probes / slope_scaled_bias"][6]) == ("2", "5"),
-      "lab3_probes / slope_scaled_bias: %s" % checks["lab3_probes / slope_scaled_bias"])
+for name in ("lab3_probes / depth_pass_state", "lab3_polygon_offset / visibility"):
+    check((checks[name][5], checks[name][6]) == ("2", "4"), "%s: %s" % (name, checks[name]))
 check((checks["lab2_directional_manual / visibility"][5],) == ("1",), "lab2 visibility: %s" % checks["lab2_directional_manual / visibility"])
 for lab in ("2", "3", "total"):
     n = sum(int(r[5]) for r in rows if r[0] == "score" and r[1] == lab)
-    check(n == 5, "lab %s's histogram holds %d students, not 5" % (lab, n))
+    check(n == 4, "lab %s's histogram holds %d students, not 4" % (lab, n))
 full = [r[5] for r in rows if r[0] == "score" and r[1] == "total" and r[2] == "100%"]
 check(full == ["1"], "students with full marks in all: %s, expected 1 (the solutions)" % full)
 # class-mistakes.csv: a row per submission, a column per mistake, as the rows above say
@@ -98,7 +97,7 @@ with open(os.path.join(out, "class-mistakes.csv"), newline="", encoding="utf-8")
     grid = list(csv.reader(f))
 check(grid[0] == ["submission", "student", "status"] + [r[2] for r in mistakes],
       "class-mistakes.csv's columns are not the mistakes': %s" % grid[0])
-check([g[0] for g in grid[1:]] == ["amy", "ben", "cal", "dan", "eve", "fay", "gus"], "its rows: %s" % [g[0] for g in grid[1:]])
+check([g[0] for g in grid[1:]] == ["amy", "ben", "dan", "eve", "fay", "gus"], "its rows: %s" % [g[0] for g in grid[1:]])
 for g in grid[1:]:
     if g[0] in ("fay", "gus"):
         check(g[2] in ("no lab file", "did not build") and all(c == "" for c in g[3:]), "%s's row: %s" % (g[0], g))
@@ -110,10 +109,10 @@ if bad:
     print("\n".join("class_report: " + b for b in bad), file=sys.stderr)
     sys.exit(1)
 PY
-grep -qE '<td class="num">.*2 of 5</td><td>3</td><td>slope_scaled_bias\(\): sin\(theta\) where tan\(theta\) belongs' "$html" ||
-  problem "class-report.html does not say '2 of 5: slope_scaled_bias(): sin(theta) where tan(theta) belongs'"
+grep -qE '<td class="num">.*2 of 4</td><td>3</td><td>lab3_depth_pass_state\(\): not implemented' "$html" ||
+  problem "class-report.html does not say '2 of 4: lab3_depth_pass_state(): not implemented'"
 grep -q '<td class="who"><span title="amy">amy</span>, <span title="ben">ben</span></td>' "$html" ||
-  problem "class-report.html does not name amy and ben beside sin where tan"
+  problem "class-report.html does not name amy and ben beside the stub"
 grep -q '<b>1 held no lab file</b>: <span title="fay">fay</span>' "$html" || problem "the html header does not name fay (no lab file)"
 grep -q '<b>1 did not build</b>: <span title="gus">gus</span>' "$html" || problem "the html header does not name gus (did not build)"
 grep -q '<svg' "$html" || problem "class-report.html has no histogram"
@@ -153,7 +152,7 @@ status=$?
 set -e
 cat "$work/third.log"
 [ "$status" = 0 ] || problem "--regrade ben exited $status"
-grep -q "^grade-batch: 6 of 7 already graded" "$work/third.log" || problem "--regrade did not keep the other six"
+grep -q "^grade-batch: 5 of 6 already graded" "$work/third.log" || problem "--regrade did not keep the other five"
 for name in "${!before[@]}"; do
   now=$(stat -c '%i %Y' "$out/$name/report/results.json")
   if [ "$name" = ben ]; then [ "${before[$name]}" != "$now" ] || problem "ben was not graded again"
@@ -176,11 +175,11 @@ read = lambda name: list(csv.reader(open(os.path.join(out, name), newline="", en
 gradebook = {r[0]: r[1] for r in read("gradebook.csv")[1:]}
 ben = gradebook["ben"]
 assert ben == "'=HYPERLINK(\"x\"), Ben", ben
-sin = [r for r in read("class-report.csv") if r[2] == "slope_scaled_bias: wrong"][0]
-assert sin[4].split("; ") == ["Amy Example", ben[1:]], sin
+stub = [r for r in read("class-report.csv") if r[2] == "lab3_depth_pass_state: stub"][0]
+assert stub[4].split("; ") == ["Amy Example", ben[1:]], stub
 grid = read("class-mistakes.csv")
 rows = {g[0]: g for g in grid[1:]}
-assert rows["amy"][1] == "Amy Example" and rows["ben"][1] == ben and rows["cal"][1] == "cal", grid
+assert rows["amy"][1] == "Amy Example" and rows["ben"][1] == ben and rows["dan"][1] == "dan", grid
 raw = open(os.path.join(out, "class-mistakes.csv"), encoding="utf-8").read() + open(os.path.join(out, "class-report.csv"), encoding="utf-8").read()
 assert '"=' not in raw and ",=" not in raw, "a cell a spreadsheet would take for a formula"
 PY
