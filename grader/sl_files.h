@@ -28,8 +28,8 @@ bool sl_atomic_write_image(const char *path, const sl_image *image, char *err, s
 bool sl_csv_formula(const char *text);
 /* One CSV field (RFC 4180), preceded by a comma unless first: quoted when it
  * must be, control characters as spaces, and defused for spreadsheets (a
- * cell sl_csv_formula takes for a formula gets a leading '). Every CSV the
- * grader writes goes through it. */
+ * cell sl_csv_formula takes for a formula gets a leading '). The gradebook's
+ * and the class report's cells go through it. */
 void sl_csv_field(FILE *f, const char *text, bool first);
 
 /* mkdir -p */
