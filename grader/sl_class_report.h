@@ -2,21 +2,34 @@
  * (shadowlab-grade --gradebook DIR, written by scripts/grade-batch beside the
  * gradebook), for the instructor before the next lecture:
  *
- * - per diagnosis, how many students got it ("31 of 212: sin(theta) where
- *   tan(theta) belongs"), counted once per student whatever the number of
- *   checks it failed, by the diagnosis id each failed check carries in
- *   results.json (not by the message's text, whose numbers differ per student);
- *   failures that follow from an earlier lab's come apart, below;
- * - per check, how many students failed it, and the diagnosis most of them got;
+ * - one row per mistake, with the students who made it ("2 of 5: amy, ben"),
+ *   each counted once whatever the number of checks it failed. A mistake is
+ *   the lab function a failed check's evidence names plus the kind of cause
+ *   (results.json's "cause": wrong, stub, crash, timeout), so a probe's
+ *   verdict, a lead from it, a stub, a crash or a time cut in the function
+ *   are one row each, whatever their wording; a check that names no function
+ *   counts by its diagnosis id (not by the message's text, whose numbers
+ *   differ per student); a lab that did not compile counts as one. Failures
+ *   that follow from an earlier lab's and name no function come apart, below;
+ * - per check, how many students failed it, and the mistake most of them made;
  * - a histogram of each lab's scores, and of the totals.
  *
  * Counted are the submissions that were graded: those that did not build, held
- * no lab file or could not be graded are named in the header, not counted.
- * Written to DIR/class-report.html (a page with no script, no fetched file) and
- * DIR/class-report.csv: kind,lab,name,text,students,of — kind "diagnosis"
- * (name: its id), "check" (name: case / check; text: the most common
- * diagnosis), "score" (name: a range of the lab's score, "40-49%"; lab
- * "total" for the totals). */
+ * no lab file, are incomplete or could not be graded (staff problems, with
+ * their cause) are named in the header, not counted. Students are named as
+ * the gradebook names them (DIR/gradebook.json: a bulk download's or the
+ * roster's name), else by their submission. Written to
+ * DIR/class-report.html (a page with no script, no fetched file),
+ * DIR/class-report.csv: kind,lab,name,text,who,students,of — kind "mistake"
+ * (name: "function: kind" or the diagnosis id; who: the students, "; "
+ * between them), "follows" (the same, following from an earlier lab),
+ * "check" (name: case / check; text: the most common mistake), a status for
+ * each submission not counted ("did not build", "no lab file", "incomplete",
+ * "staff problem" with its cause as text, "not finished"; name: the
+ * submission), "score" (name: a range of the lab's score, "40-49%"; lab
+ * "total" for the totals); and DIR/class-mistakes.csv:
+ * submission,student,status, then a column per mistake named as in
+ * class-report.csv: 1 or 0, empty for a submission not counted. */
 #ifndef SL_CLASS_REPORT_H
 #define SL_CLASS_REPORT_H
 

@@ -63,6 +63,11 @@ void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fm
     snprintf(out->blamed, sizeof out->blamed, "%.*s", (int)strcspn(function, "( "), function);
 }
 
+void sl_diag_set_cause(sl_check_result *out, const char *function, const char *kind) {
+    snprintf(out->cause_function, sizeof out->cause_function, "%.*s", (int)strcspn(function, "( "), function);
+    out->cause_kind = out->cause_function[0] ? kind : NULL;
+}
+
 /* Adds a case's hint after the message. */
 void sl_diag_hint(sl_check_result *out, const char *hint) {
     if (!hint[0]) return;
@@ -116,6 +121,7 @@ bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check
                 sl_diag_say(out, "not implemented: %s() still returns SL_NOT_IMPLEMENTED (%s in %s)", fn, todo, file);
             else
                 sl_diag_say(out, "not implemented: needs lab %d first, and %s() still returns SL_NOT_IMPLEMENTED", lab, fn);
+            sl_diag_set_cause(out, fn, SL_CAUSE_STUB);
             out->cause[0] = '\0';
             out->settled = true;
             return true;
@@ -125,6 +131,7 @@ bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check
         sl_diag_say(out, "%s() returned SL_FAILED", r->failed);
         if (strcmp(r->failed, "lab1_create_shadow_map") == 0)
             sl_diag_append(out, " (is the framebuffer complete? glCheckFramebufferStatus tells why not)");
+        sl_diag_set_cause(out, r->failed, SL_CAUSE_WRONG);
         out->cause[0] = '\0';
         out->settled = true;
         return true;

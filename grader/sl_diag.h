@@ -55,7 +55,22 @@ typedef struct sl_check_result {
      * The class report counts students per id. */
     char diagnosis[72];
     char diagnosis_text[320];
+    /* The mistake behind a failed check, when the evidence names a lab
+     * function: that function and the kind of cause (SL_CAUSE_*). Checks that
+     * fail through one mistake carry the same pair whatever their wording (a
+     * probe's verdict, a lead, a crash in it), so the class report counts it
+     * once. Empty when nothing names a function. */
+    char cause_function[64];
+    const char *cause_kind;
 } sl_check_result;
+
+/* The kinds of cause a failed check names (results.json's "cause": {"function", "kind"}). */
+#define SL_CAUSE_WRONG "wrong"     /* the function gives wrong results (its probe, a lead, a blame on evidence) */
+#define SL_CAUSE_STUB "stub"       /* the function is not implemented */
+#define SL_CAUSE_CRASH "crash"     /* the runner died in the function */
+#define SL_CAUSE_TIMEOUT "timeout" /* the runner was stopped in the function */
+/* Sets out's cause: the function's name alone ("pcf_grid()" -> "pcf_grid"). */
+void sl_diag_set_cause(sl_check_result *out, const char *function, const char *kind);
 
 /* A function probe that failed. A check whose case runs the function leads
  * with it only on evidence (grader/diagnose/README.md): the case runs it on

@@ -93,3 +93,19 @@ bool sl_mkdirs(const char *path) {
     struct stat st;
     return mkdir(tmp, 0755) == 0 || (stat(tmp, &st) == 0 && S_ISDIR(st.st_mode));
 }
+
+bool sl_csv_formula(const char *text) { return text[0] && strchr("=+-@\t\r", text[0]) != NULL; }
+
+void sl_csv_field(FILE *f, const char *text, bool first) {
+    if (!first) fputc(',', f);
+    bool formula = sl_csv_formula(text);
+    bool quote = formula || strpbrk(text, ",\"\n\r") != NULL;
+    if (quote) fputc('"', f);
+    if (formula) fputc('\'', f);
+    for (const unsigned char *p = (const unsigned char *)text; *p; p++) {
+        if (*p < 0x20 || *p == 0x7f) fputc(' ', f);
+        else if (*p == '"') fputs("\"\"", f);
+        else fputc(*p, f);
+    }
+    if (quote) fputc('"', f);
+}

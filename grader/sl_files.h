@@ -24,6 +24,14 @@ void sl_atomic_abort(sl_atomic_file *file);
 /* An image (by extension, see sl_image_write), written the same way. */
 bool sl_atomic_write_image(const char *path, const sl_image *image, char *err, size_t err_size);
 
+/* Whether a spreadsheet would take a cell for a formula: it begins with = + - @, a tab or a CR. */
+bool sl_csv_formula(const char *text);
+/* One CSV field (RFC 4180), preceded by a comma unless first: quoted when it
+ * must be, control characters as spaces, and defused for spreadsheets (a
+ * cell sl_csv_formula takes for a formula gets a leading '). The gradebook's
+ * and the class report's cells go through it. */
+void sl_csv_field(FILE *f, const char *text, bool first);
+
 /* mkdir -p */
 bool sl_mkdirs(const char *path);
 

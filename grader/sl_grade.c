@@ -64,6 +64,10 @@ static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *ou
         size_t len = end - start > 300 ? sl_utf8_cut(start, 300) : (size_t)(end - start);
         if (end > start) sl_diag_append(out, "; its output ended with: %.*s", (int)len, start);
     }
+    /* a lab function the runner died or was stopped in (not a draw, whose shaders are several labs') */
+    bool students = !r->interrupted && !r->staff_error[0] && !r->protocol_error[0] && !r->error[0];
+    if (students && r->crashed_in[0] && !drawing_lab)
+        sl_diag_set_cause(out, r->crashed_in, r->timed_out ? SL_CAUSE_TIMEOUT : SL_CAUSE_CRASH);
 }
 
 /* ---- checks ---- */
@@ -254,7 +258,7 @@ static bool _sl_shares_failure(const sl_case *c, const sl_check *k, const sl_lab
  * framebuffer, the matrices), a failed probe of a function of this lab that
  * explains the symptoms. False when nothing is known. */
 static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_context *context, uint32_t symptoms,
-                           char *lead, size_t n) {
+                           char *lead, size_t n, sl_check_result *out) {
     if (!context || k->kind == SL_CHECK_PROBE || k->kind == SL_CHECK_FBO || k->kind == SL_CHECK_MATRICES) return false;
     for (int lab = 1; lab < c->lab && !context->isolated; lab++) {
         if (!sl_lab_shows(c->lab, lab)) continue;
@@ -262,6 +266,7 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
         if (f) {
             snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,
                      sl_probe_at(f->function)->name, f->where, f->summary);
+            sl_diag_set_cause(out, sl_probe_at(f->function)->name, f->stub ? SL_CAUSE_STUB : SL_CAUSE_WRONG);
             return true;
         }
         for (int i = 0; context->lab_failures && i < context->lab_failure_count; i++) {
@@ -275,6 +280,10 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
         const sl_check *e = &c->checks[i];
         const sl_check_result *er = &context->earlier[i];
         if (er->passed || er->reference_problem || er->bonus) continue;
+        /* the lead is that check's failure: so is its cause, when it named one */
+        if (er->cause_kind && (e->kind == SL_CHECK_MATRICES || e->kind == SL_CHECK_FBO ||
+                               (e->kind == SL_CHECK_CUBE_FACE && k->kind != SL_CHECK_CUBE_FACE)))
+            sl_diag_set_cause(out, er->cause_function, er->cause_kind);
         if (e->kind == SL_CHECK_MATRICES) {
             snprintf(lead, n, "the light's matrices are wrong (%s / %s: %s): fix the matrices first", c->name, e->name,
                      er->summary);
@@ -296,6 +305,7 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
     if (f->stub) snprintf(lead, n, "%s (%s)", f->summary, f->where);
     else snprintf(lead, n, "%s() is wrong on its own (%s: %s): fix it first", sl_probe_at(f->function)->name, f->where,
                   f->summary);
+    sl_diag_set_cause(out, sl_probe_at(f->function)->name, f->stub ? SL_CAUSE_STUB : SL_CAUSE_WRONG);
     return true;
 }
 
@@ -398,13 +408,15 @@ static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_resul
                         sl_check_result *out) {
     char symptom[sizeof out->message], lead[1200];
     snprintf(symptom, sizeof symptom, "%s", out->message);
-    bool root = !out->settled && _sl_root_cause(c, k, context, out->symptoms, lead, sizeof lead);
+    bool root = !out->settled && _sl_root_cause(c, k, context, out->symptoms, lead, sizeof lead, out);
     char dropped[64] = "";
     if (out->cause[0] && out->blamed[0] && !_sl_blame_allowed(c, k, context, out->blamed, out->symptoms)) {
         snprintf(dropped, sizeof dropped, "%s", sl_function_may_be_blamed(c, k, out->blamed, context && context->isolated)
                                                     ? out->blamed : "");
         out->cause[0] = '\0';
     }
+    /* a cause that names a function on evidence (sl_diag_cause_in), when no lead names one */
+    if (!root && out->cause[0] && out->blamed[0] && !out->cause_kind) sl_diag_set_cause(out, out->blamed, SL_CAUSE_WRONG);
     if (root) {
         snprintf(out->message, sizeof out->message, "%s. Here: %s", lead, symptom); /* cuts: trimmed below */
     } else if (out->cause[0]) {
@@ -598,7 +610,10 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
     switch (k->kind) {
     case SL_CHECK_VISIBILITY:
     case SL_CHECK_IMAGE: _sl_check_image(c, k, r, ref, out); break;
-    case SL_CHECK_PROBE: sl_diagnose_probe(c, k, r, ref, out); break;
+    case SL_CHECK_PROBE:
+        sl_diagnose_probe(c, k, r, ref, out);
+        if (!out->passed) sl_diag_set_cause(out, sl_probe_at(k->function)->name, out->stub ? SL_CAUSE_STUB : SL_CAUSE_WRONG);
+        break;
     default:
         if (lab_diagnosis) lab_diagnosis(c, k, r, ref, out);
         else sl_diag_say(out, "unknown check kind");

@@ -172,21 +172,8 @@ static void _sl_read_row(const char *dir, _sl_row *row) {
     cJSON_Delete(json);
 }
 
-/* One CSV field (RFC 4180), with no control characters, and defused for
- * spreadsheets: a cell starting with = + - @ is not taken for a formula. */
-static void _sl_field(FILE *f, const char *text, bool first) {
-    if (!first) fputc(',', f);
-    bool quote = strpbrk(text, ",\"") != NULL || strchr("=+-@", text[0]) != NULL;
-    if (text[0] == '\0') quote = false;
-    if (quote) fputc('"', f);
-    if (text[0] && strchr("=+-@", text[0])) fputc('\'', f);
-    for (const unsigned char *p = (const unsigned char *)text; *p; p++) {
-        if (*p < 0x20 || *p == 0x7f) fputc(' ', f);
-        else if (*p == '"') fputs("\"\"", f);
-        else fputc(*p, f);
-    }
-    if (quote) fputc('"', f);
-}
+/* One CSV field, defused for spreadsheets (sl_csv_field). */
+static void _sl_field(FILE *f, const char *text, bool first) { sl_csv_field(f, text, first); }
 
 static void _sl_number(FILE *f, bool have, double v) {
     char text[32] = "";
@@ -197,7 +184,8 @@ static void _sl_number(FILE *f, bool have, double v) {
 static bool _sl_roster_rows(const char *dir, _sl_row *rows, int *count, const sl_gradebook_roster *lms, char *err,
                             size_t n);
 /* DIR/gradebook.json: the rows' count and the staff problems, each with its
- * cause, for a script to act on (grade again, or tell the staff). */
+ * cause, for a script to act on (grade again, or tell the staff); and each
+ * row's submission, student and status. */
 static bool _sl_write_json(const char *dir, const _sl_row *rows, int count, char *err, size_t n) {
     cJSON *root = cJSON_CreateObject(), *problems = cJSON_CreateArray();
     cJSON_AddNumberToObject(root, "rows", count);
@@ -211,6 +199,16 @@ static bool _sl_write_json(const char *dir, const _sl_row *rows, int count, char
         cJSON_AddItemToArray(problems, p);
     }
     cJSON_AddItemToObject(root, "staff_problems", problems);
+    /* every row's student and status by submission: the class report names students as the gradebook does */
+    cJSON *students = cJSON_AddArrayToObject(root, "students");
+    for (int i = 0; i < count; i++) {
+        cJSON *s = cJSON_CreateObject();
+        cJSON_AddStringToObject(s, "submission", rows[i].name);
+        cJSON_AddStringToObject(s, "student", rows[i].student);
+        cJSON_AddStringToObject(s, "student_id", rows[i].student_id);
+        cJSON_AddStringToObject(s, "status", rows[i].status);
+        cJSON_AddItemToArray(students, s);
+    }
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     char path[1200];

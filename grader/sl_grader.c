@@ -58,7 +58,9 @@ static int _sl_gradebook(const _sl_options *o) {
     lms.roster = roster;
     ok = ok && sl_gradebook_write_roster(o->gradebook, csv, roster ? &lms : NULL, gradebook_err, sizeof gradebook_err) &&
          sl_class_report_write(o->gradebook, gradebook_err, sizeof gradebook_err);
-    if (ok) printf("shadowlab-grade: wrote %s, and the class report %s/class-report.html (and .csv)\n", csv, o->gradebook);
+    if (ok)
+        printf("shadowlab-grade: wrote %s, and the class report %s/class-report.html (and .csv, and class-mistakes.csv)\n",
+               csv, o->gradebook);
     if (ok && o->export_format) {
         sl_roster_export_desc desc = {o->export_format, o->export_path, o->assignment, o->missing_as_zero};
         ok = sl_roster_export(roster, csv, &desc, gradebook_err, sizeof gradebook_err);

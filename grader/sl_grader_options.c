@@ -82,7 +82,7 @@ static void _sl_usage(FILE *f) {
             "                       line ends, bytes that are not text), and a submission without a lab file\n"
             "                       exits 3 (scripts/grade-submission)\n"
             "  --gradebook DIR      write DIR/gradebook.csv from the reports of a batch (scripts/grade-batch)\n"
-            "                       and the class report: DIR/class-report.html and .csv\n"
+            "                       and the class report: DIR/class-report.html and .csv, DIR/class-mistakes.csv\n"
             "  --roster FILE        with --gradebook: the LMS's roster as it exports it (Canvas: Grades >\n"
             "                       Export CSV; Moodle: the grading worksheet): each row's name from it,\n"
             "                       matched by the download's LMS id, a 'no submission' row for each\n"

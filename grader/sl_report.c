@@ -552,6 +552,11 @@ bool sl_report_write_dir(const sl_grade_report *rep, const char *dir, char *err,
                 cJSON_AddStringToObject(j, "diagnosis", cr->diagnosis);
                 cJSON_AddStringToObject(j, "diagnosis_text", cr->diagnosis_text);
             }
+            if (!cr->passed && cr->cause_kind) { /* the function behind the mistake: the class report counts it once */
+                cJSON *cause = cJSON_AddObjectToObject(j, "cause");
+                cJSON_AddStringToObject(cause, "function", cr->cause_function);
+                cJSON_AddStringToObject(cause, "kind", cr->cause_kind);
+            }
             const sl_capture *cap = sl_result_capture(g->result, sl_check_capture_name(g->c, ck));
             if (!cr->passed && cap && cap->is_image) {
                 const sl_image *shown[3] = {&cap->image, &g->references[k].image, &cr->diff};

@@ -236,7 +236,7 @@ static void _sl_put_field(_sl_buf *b, const char *text) {
     _sl_buf_add(b, "\"", 1);
 }
 
-static bool _sl_formula(const char *text) { return text[0] && strchr("=+-@", text[0]); }
+static bool _sl_formula(const char *text) { return sl_csv_formula(text); }
 
 /* A name that a spreadsheet would take for a formula gets a leading ' (as the gradebook's cells do). */
 static char *_sl_defused(const char *text) {

@@ -36,12 +36,13 @@ row() { grep "^$1," "$csv"; }
   problem "the grade with no report is not 'staff problem' without scores"
 [[ "$(row honest)" == 'honest,,,,graded,9,0,9,14,'* ]] || problem "the honest grade lost its row"
 json="$work/gradebook.json"
-[ "$(grep -c '"submission":' "$json")" = 2 ] && grep -q '"submission":.*"cannot_fork"' "$json" &&
+[ "$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["staff_problems"]))' "$json")" = 2 ] &&
+  grep -q '"submission":.*"cannot_fork"' "$json" &&
   grep -q '"cause":.*"no report (grade exit status 1)' "$json" ||
   problem "gradebook.json does not list the two staff problems with their causes: $(cat "$json")"
 grep -q '^staff problem,,cannot_fork,could not grade lab1_depth_spot' "$work/class-report.csv" &&
   grep -q '^staff problem,,no_report,' "$work/class-report.csv" && grep -q '<h2>Staff problems</h2>' "$work/class-report.html" ||
   problem "the class report does not name the staff problems"
-! grep -q 'Resource temporarily' <(grep '^diagnosis' "$work/class-report.csv") ||
+! grep -q 'Resource temporarily' <(grep -E '^(mistake|follows),' "$work/class-report.csv") ||
   problem "a staff problem is counted among the class's mistakes"
 exit $fail

@@ -488,11 +488,14 @@ static void test_grade_leads_with_root_cause(void) {
     sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
     sl_check_result earlier[1] = {{.max_points = 2}};
     snprintf(earlier[0].summary, sizeof earlier[0].summary, "the shadow matrix multiplies Lv * Lp");
+    sl_diag_set_cause(&earlier[0], "lab2_shadow_matrix()", SL_CAUSE_WRONG);
     sl_grade_context context = {.earlier = earlier, .earlier_count = 1};
     sl_check_result out;
     sl_grade_check(&c, &c.checks[1], &r, &ref, &context, &out);
     CHECK(!out.passed);
     CHECK(strncmp(out.message, "the light's matrices are wrong (synthetic / ", 44) == 0);
+    /* the lead is the matrices check's failure: its cause too */
+    CHECK(strcmp(out.cause_function, "lab2_shadow_matrix") == 0 && out.cause_kind && strcmp(out.cause_kind, SL_CAUSE_WRONG) == 0);
     CHECK(strstr(out.message, "the shadow matrix multiplies Lv * Lp): fix the matrices first. Here: ") != NULL);
     CHECK(strstr(out.message, "Hint:") == NULL);
     sl_image_free(&out.diff);
@@ -598,8 +601,10 @@ static void test_grade_diagnosis_ids(void) {
     snprintf(sin_id, sizeof sin_id, "%s", out.diagnosis);
     grade_probe("slope_scaled_bias", 2, rows, constant, expected, &out);
     CHECK(strcmp(out.diagnosis, sin_id) != 0 && strncmp(out.diagnosis, "slope-scaled-bias-", 18) == 0);
+    /* either verdict: the same function, wrong (one row in the class report) */
+    CHECK(strcmp(out.cause_function, "slope_scaled_bias") == 0 && out.cause_kind && strcmp(out.cause_kind, SL_CAUSE_WRONG) == 0);
     grade_probe("slope_scaled_bias", 2, rows, expected, expected, &out);
-    CHECK(out.passed && !out.diagnosis[0]);
+    CHECK(out.passed && !out.diagnosis[0] && !out.cause_kind);
 }
 
 /* A vertical shadow edge whose soft ramp is `near` px wide in the top half and `far` px in the bottom. */
@@ -646,20 +651,26 @@ static void test_grade_run_failures(void) {
     snprintf(crashed.crashed_in, sizeof crashed.crashed_in, "lab2_light_view");
     sl_grade_check(&c, &c.checks[0], &crashed, &ref, NULL, &out);
     CHECK(strstr(out.message, "crashed (Segmentation fault) in lab2_light_view()") != NULL);
+    /* the class report's mistake: the function and the kind of cause */
+    CHECK(strcmp(out.cause_function, "lab2_light_view") == 0 && out.cause_kind && strcmp(out.cause_kind, SL_CAUSE_CRASH) == 0);
     sl_case_result hung = {.timed_out = true, .seconds = 20};
     snprintf(hung.crashed_in, sizeof hung.crashed_in, "lab2_shadow_matrix");
     sl_grade_check(&c, &c.checks[0], &hung, &ref, NULL, &out);
     CHECK(strstr(out.message, "timed out after 20 s in lab2_shadow_matrix()") != NULL);
+    CHECK(strcmp(out.cause_function, "lab2_shadow_matrix") == 0 && out.cause_kind &&
+          strcmp(out.cause_kind, SL_CAUSE_TIMEOUT) == 0);
     /* hung in a draw, no lab function running: the GPU is in a lab shader (Mesa 25+ does not cut loops short) */
     sl_case_result spinning = {.timed_out = true, .seconds = 20};
     snprintf(spinning.crashed_in, sizeof spinning.crashed_in, "drawing_lab2");
     sl_grade_check(&c, &c.checks[0], &spinning, &ref, NULL, &out);
     CHECK(strstr(out.message, "timed out after 20 s while drawing with the shaders of labs 1-2: a shader loop that "
                               "does not end?") != NULL);
+    CHECK(!out.cause_kind); /* several labs' shaders: no one function */
     sl_case_result stub = {.finished = true, .not_implemented_count = 1};
     snprintf(stub.not_implemented[0], 64, "lab2_light_view");
     sl_grade_check(&c, &c.checks[0], &stub, &ref, NULL, &out);
     CHECK(strstr(out.message, "not implemented: lab2_light_view() still returns SL_NOT_IMPLEMENTED (TODO(lab2.1)") != NULL);
+    CHECK(strcmp(out.cause_function, "lab2_light_view") == 0 && out.cause_kind && strcmp(out.cause_kind, SL_CAUSE_STUB) == 0);
     sl_reference missing = {.needed = true};
     snprintf(missing.error, sizeof missing.error, "reference missing: x/matrices.json");
     sl_grade_check(&c, &c.checks[0], &stub, &missing, NULL, &out);
