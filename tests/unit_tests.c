@@ -751,6 +751,23 @@ static void test_channel_rejects_lies(void) {
     put(&s, SL_MSG_NOT_IMPLEMENTED, "../x", NULL, 0, 0);
     sl_run_parse_stream(&c, s.data, s.size, &r);
     CHECK(strstr(r.protocol_error, "malformed name") != NULL);
+    /* The renderer is named once, first, before lab code runs: a second HELLO (lab code renaming the
+     * renderer so that slow frames are not compared) and a HELLO after other messages break the rules. */
+    s.size = 0;
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nllvmpipe", 15, 15);
+    put(&s, SL_MSG_STAGE, "lab2_light_view", NULL, 0, 0);
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nsoftpipe", 15, 15);
+    put_visibility(&s, 16, 16, 1);
+    put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(!r.finished && strstr(r.protocol_error, "a second HELLO") != NULL && r.capture_count == 0);
+    CHECK(strcmp(r.renderer, "llvmpipe") == 0); /* the first one stays */
+    s.size = 0;
+    put(&s, SL_MSG_STAGE, "lab2_light_view", NULL, 0, 0);
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nsoftpipe", 15, 15);
+    put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(!r.finished && strstr(r.protocol_error, "a HELLO after other messages") != NULL && !r.renderer[0]);
     /* a stream cut off mid-message: not finished, no error (a crash) */
     s.size = 0;
     put(&s, SL_MSG_STAGE, "lab2_light_view", NULL, 0, 0);
