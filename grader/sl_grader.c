@@ -347,7 +347,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         manifest = sl_manifest_load(o.refs_dir, false, manifest_error, sizeof manifest_error);
         reference_cache = _sl_reference_cache_open(&o, sandbox, reference_cache_state, sizeof reference_cache_state);
         for (int i = 0; i < count; i++) {
-            if (manifest) cases[i].reference_render_seconds = sl_manifest_render_seconds(manifest, cases[i].name);
+            if (manifest) cases[i].reference_cpu_seconds = sl_manifest_cpu_seconds(manifest, cases[i].name);
             if (manifest) snprintf(reference_renderer, sizeof reference_renderer, "%s", sl_manifest_renderer(manifest));
             for (int k = 0; k < cases[i].check_count; k++)
                 sl_reference_load_cached(&refs[i * SL_CASE_MAX_CHECKS + k], o.refs_dir, manifest, manifest_error,
@@ -436,8 +436,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             graded[i].result = &results[i];
             graded[i].references = &refs[i * SL_CASE_MAX_CHECKS];
             rep.cases_finished += !results[i].interrupted;
-            /* Frame times compare only on the renderer the references were made with. */
-            if (!_sl_same_renderer(results[i].renderer, reference_renderer)) cases[i].reference_render_seconds = 0;
+            /* CPU times compare only on the renderer the references were made with: the one the
+             * runner named in its first message, which it sends before any lab function runs. */
+            if (!_sl_same_renderer(results[i].renderer, reference_renderer)) cases[i].reference_cpu_seconds = 0;
             if (!rep.backend[0] && results[i].backend[0]) {
                 snprintf(rep.backend, sizeof rep.backend, "%s", results[i].backend);
                 snprintf(rep.renderer, sizeof rep.renderer, "%s", results[i].renderer);
