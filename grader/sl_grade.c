@@ -189,6 +189,12 @@ static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case
         const sl_capture *mask = sl_result_capture(r, "lit_mask");
         lost = sl_visibility_shadow_lost(s, t, mask ? &mask->image : NULL, &shadowed);
         passes = !(shadowed >= _SL_MIN_SHADOW_PIXELS && lost > _SL_MAX_SHADOW_LOST);
+        /* The mask is the runner's word: one of zeros would leave no shadow to lose. So the
+         * shadows are counted on the whole picture too (weaker, never forged). */
+        if (passes && mask) {
+            lost = sl_visibility_shadow_lost(s, t, NULL, &shadowed);
+            passes = !(shadowed >= _SL_MIN_SHADOW_PIXELS && lost > _SL_MAX_SHADOW_LOST);
+        }
     }
     if (passes) {
         out->passed = true;
@@ -617,4 +623,38 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
     }
     out->symptoms |= _sl_measured_symptoms(c, k, r, ref);
     _sl_compose(c, k, r, context, out);
+}
+
+/* ---- no point without evidence ---- */
+
+bool sl_check_is_state(const sl_check *k) { return k->kind == SL_CHECK_FBO; }
+
+void sl_grade_require_evidence(const sl_case *c, sl_check_result *results) {
+    for (int k = 0; k < c->check_count; k++) {
+        sl_check_result *out = &results[k];
+        if (!sl_check_is_state(&c->checks[k]) || !out->passed) continue;
+        /* the pictures that show the state at work: here, the depth map drawn through the framebuffer */
+        int unproved = -1, evidence = 0;
+        for (int e = 0; e < c->check_count; e++) {
+            if (e == k || sl_check_is_state(&c->checks[e]) || c->checks[e].bonus) continue;
+            evidence++;
+            if (!results[e].passed && unproved < 0) unproved = e;
+        }
+        if (evidence > 0 && unproved < 0) continue;
+        out->passed = false;
+        out->points = 0;
+        out->reference_problem = unproved >= 0 && results[unproved].reference_problem; /* not graded, as that one */
+        if (unproved >= 0)
+            sl_diag_say(out, "the %s's state looks right, but nothing shows it was used: %s / %s fails (%s), and the "
+                             "state alone earns no point", c->checks[k].name, c->name, c->checks[unproved].name,
+                        results[unproved].summary[0] ? results[unproved].summary : results[unproved].message);
+        else
+            sl_diag_say(out, "the %s's state looks right, but this case has no picture that shows it was used, and "
+                             "the state alone earns no point", c->checks[k].name);
+        snprintf(out->summary, sizeof out->summary, "the %s's state is not backed by its picture", c->checks[k].name);
+        _sl_name_diagnosis(out, out->summary, false);
+        _sl_clean_in_place(out->message, sizeof out->message);
+        _sl_clean_in_place(out->summary, sizeof out->summary);
+        _sl_clean_in_place(out->diagnosis_text, sizeof out->diagnosis_text);
+    }
 }

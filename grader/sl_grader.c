@@ -469,6 +469,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                     }
                     reference_problem |= cr->reference_problem;
                 }
+                if (!_sl_stub_lab(&o, lab) && !rep.lab_not_built[lab]) sl_grade_require_evidence(&cases[i], graded[i].checks);
             }
             /* the lab's failures: pictures' before probes' (they say what a later lab will see) */
             for (int probe = 0; probe < 2; probe++)
