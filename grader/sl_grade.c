@@ -645,9 +645,9 @@ void sl_grade_require_evidence(const sl_case *c, sl_check_result *results) {
         out->points = 0;
         out->reference_problem = unproved >= 0 && results[unproved].reference_problem; /* not graded, as that one */
         if (unproved >= 0)
-            sl_diag_say(out, "the %s's state looks right, but nothing shows it was used: %s / %s fails (%s), and the "
-                             "state alone earns no point", c->checks[k].name, c->name, c->checks[unproved].name,
-                        results[unproved].summary[0] ? results[unproved].summary : results[unproved].message);
+            sl_diag_say(out, "the %s's state looks right, but the picture that would show it used, %s / %s, fails "
+                             "(see there): the state alone earns no point", c->checks[k].name, c->name,
+                        c->checks[unproved].name);
         else
             sl_diag_say(out, "the %s's state looks right, but this case has no picture that shows it was used, and "
                              "the state alone earns no point", c->checks[k].name);

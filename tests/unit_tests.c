@@ -696,7 +696,7 @@ static void test_grade_state_needs_evidence(void) {
         sl_grade_require_evidence(&c, out);
         CHECK(out[0].passed == (honest == 1) && out[0].points == (honest ? 1 : 0));
         if (!honest)
-            CHECK(strstr(out[0].message, "nothing shows it was used: lab1_synthetic / depth fails") != NULL &&
+            CHECK(strstr(out[0].message, "would show it used, lab1_synthetic / depth, fails") != NULL &&
                   strstr(out[0].message, "the state alone earns no point") != NULL && out[0].diagnosis[0]);
         sl_case_result_free(&r);
     }
