@@ -362,6 +362,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         sl_reference_cache_close(reference_cache);
     }
 
+    /* CPU times compare on the references' renderer only. Which one the runners get, the grader learns
+     * from staff code where the build has it; else from each runner's first HELLO, sent before any lab
+     * function runs (lab C code that rewrites the channel could still rename it there). */
+    char runners_renderer[160] = "";
+    if (!o.update && reference_renderer[0]) _sl_probe_renderer(&run, &_sl_stop, runners_renderer, sizeof runners_renderer);
     _sl_progress progress = {.lines = o.progress, .terminal = !o.progress && isatty(2)};
     if (progress.lines || progress.terminal) {
         run.case_ended = _sl_case_ended;
@@ -436,9 +441,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             graded[i].result = &results[i];
             graded[i].references = &refs[i * SL_CASE_MAX_CHECKS];
             rep.cases_finished += !results[i].interrupted;
-            /* CPU times compare only on the renderer the references were made with: the one the
-             * runner named in its first message, which it sends before any lab function runs. */
-            if (!_sl_same_renderer(results[i].renderer, reference_renderer)) cases[i].reference_cpu_seconds = 0;
+            /* CPU times compare only on the renderer the references were made with (above) */
+            const char *renderer = runners_renderer[0] ? runners_renderer : results[i].renderer;
+            if (!_sl_same_renderer(renderer, reference_renderer)) cases[i].reference_cpu_seconds = 0;
             if (!rep.backend[0] && results[i].backend[0]) {
                 snprintf(rep.backend, sizeof rep.backend, "%s", results[i].backend);
                 snprintf(rep.renderer, sizeof rep.renderer, "%s", results[i].renderer);
