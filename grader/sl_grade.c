@@ -29,6 +29,11 @@
 #define _SL_SLOW_FACTOR 10.0
 #define _SL_SLOW_MARGIN 1.0
 
+bool sl_grade_too_slow(const sl_case *c, const sl_case_result *r) {
+    double usual = c->reference_cpu_seconds;
+    return usual > 0 && r->cpu_seconds > fmax(_SL_SLOW_FACTOR * usual, usual + _SL_SLOW_MARGIN);
+}
+
 static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *out) {
     int drawing_lab = 0; /* the runner stopped in a draw of the case's frames (sl_runner.c) */
     if (sscanf(r->crashed_in, "drawing_lab%d", &drawing_lab) != 1 || drawing_lab < 1 || drawing_lab > SL_LAB_MAX)
@@ -590,7 +595,7 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
      * (wait4's rusage), never a number the runner sends: lab code cannot
      * make it smaller. */
     double usual = c->reference_cpu_seconds;
-    if (usual > 0 && r->cpu_seconds > fmax(_SL_SLOW_FACTOR * usual, usual + _SL_SLOW_MARGIN)) {
+    if (sl_grade_too_slow(c, r)) {
         sl_diag_say(out, "the case took %.2f s of CPU time where the solutions' take %.2f s (%.0fx): a shader loop that "
                      "does not end? The software renderer stops long loops, so the picture may even look right; a GPU "
                      "would hang", r->cpu_seconds, usual, r->cpu_seconds / usual);

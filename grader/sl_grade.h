@@ -47,6 +47,9 @@ typedef struct sl_grade_context {
 /* Grades one check; context may be NULL (nothing known besides this check). */
 void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                     const sl_grade_context *context, sl_check_result *out);
+/* Whether the case's runner took far more CPU time than the solutions' (a shader loop that does not
+ * end): the grader's own measure, on the references' renderer (c->reference_cpu_seconds is 0 elsewhere). */
+bool sl_grade_too_slow(const sl_case *c, const sl_case_result *r);
 /* Whether a check is graded from numbers the runner sends alone, with no reference (the
  * framebuffer's state): lab code can send any number, so such a check explains, never earns. */
 bool sl_check_is_state(const sl_check *k);

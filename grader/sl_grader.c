@@ -362,11 +362,6 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         sl_reference_cache_close(reference_cache);
     }
 
-    /* CPU times compare on the references' renderer only. Which one the runners get, the grader learns
-     * from staff code where the build has it; else from each runner's first HELLO, sent before any lab
-     * function runs (lab C code that rewrites the channel could still rename it there). */
-    char runners_renderer[160] = "";
-    if (!o.update && reference_renderer[0]) _sl_probe_renderer(&run, &_sl_stop, runners_renderer, sizeof runners_renderer);
     _sl_progress progress = {.lines = o.progress, .terminal = !o.progress && isatty(2)};
     if (progress.lines || progress.terminal) {
         run.case_ended = _sl_case_ended;
@@ -390,6 +385,15 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             results[i].interrupted = !rep.lab_not_built[cases[i].lab] && !_sl_stub_lab(&o, cases[i].lab);
     }
     if (progress.terminal) fputs("\r\033[K", stderr); /* the report follows on stdout */
+    /* CPU times compare on the references' renderer only. Which one the runners get, the grader learns
+     * from staff code where the build has it, when a case is slow enough to ask; else from each runner's
+     * first HELLO, sent before any lab function runs (lab C code that rewrites the channel could still
+     * rename it there). */
+    char runners_renderer[160] = "";
+    bool any_slow = false;
+    for (int i = 0; i < count && !o.update; i++) any_slow |= sl_grade_too_slow(&cases[i], &results[i]);
+    if (any_slow && reference_renderer[0])
+        _sl_probe_renderer(&run, &_sl_stop, runners_renderer, sizeof runners_renderer);
     /* A case the machine could not run grades nothing: the staff hear why (exit 2). */
     int staff_faults = 0;
     for (int i = 0; i < count; i++)
