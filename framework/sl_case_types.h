@@ -119,7 +119,7 @@ typedef struct sl_case {
     int width, height;
     double timeout_seconds;
     double memory_mb;     /* the runner's address space (default 4096) */
-    double reference_render_seconds; /* the solutions' frames' CPU time (references' manifest); 0: unknown */
+    double reference_cpu_seconds; /* the solutions' runner's CPU time for the case (references' manifest); 0: unknown */
     sl_check checks[SL_CASE_MAX_CHECKS];
     int check_count;
 } sl_case;

@@ -42,7 +42,7 @@ typedef struct sl_case_result {
     int capture_count;
     double seconds;       /* wall clock, start to end */
     double cpu_seconds;   /* the runner's CPU time (user + system) */
-    double render_seconds; /* CPU time of one frame with every shader compiled, as the runner measured it */
+    double render_seconds; /* CPU time of one frame with every shader compiled, as the runner said: shown, never graded */
     char backend[32];     /* what the runner said it rendered with */
     char renderer[160];
     char output_tail[2048]; /* the end of what lab code printed, control characters removed */

@@ -20,11 +20,19 @@
 #include "sl_probe.h"
 #include "sl_utf8.h"
 
-/* Frames taking this many times the solutions' CPU time (and this many
- * seconds more) run a loop that does not end: far beyond what another
- * machine or a slower but correct implementation explains. */
-#define _SL_SLOW_FACTOR 50.0
-#define _SL_SLOW_MARGIN 0.1
+/* A runner taking this many times the CPU time of the solutions' for the
+ * case (and this many seconds more) runs a loop that does not end: far
+ * beyond what another machine or a slower but correct implementation
+ * explains. The whole run is measured (context, shader compiles, every
+ * frame), so the factor is smaller than a frame's would be: an endless loop
+ * in one shader makes the case's run about 25 times the solutions'. */
+#define _SL_SLOW_FACTOR 10.0
+#define _SL_SLOW_MARGIN 1.0
+
+bool sl_grade_too_slow(const sl_case *c, const sl_case_result *r) {
+    double usual = c->reference_cpu_seconds;
+    return usual > 0 && r->cpu_seconds > fmax(_SL_SLOW_FACTOR * usual, usual + _SL_SLOW_MARGIN);
+}
 
 static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *out) {
     int drawing_lab = 0; /* the runner stopped in a draw of the case's frames (sl_runner.c) */
@@ -190,6 +198,12 @@ static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case
         const sl_capture *mask = sl_result_capture(r, "lit_mask");
         lost = sl_visibility_shadow_lost(s, t, mask ? &mask->image : NULL, &shadowed);
         passes = !(shadowed >= _SL_MIN_SHADOW_PIXELS && lost > _SL_MAX_SHADOW_LOST);
+        /* The mask is the runner's word: one of zeros would leave no shadow to lose. So the
+         * shadows are counted on the whole picture too (weaker, never forged). */
+        if (passes && mask) {
+            lost = sl_visibility_shadow_lost(s, t, NULL, &shadowed);
+            passes = !(shadowed >= _SL_MIN_SHADOW_PIXELS && lost > _SL_MAX_SHADOW_LOST);
+        }
     }
     if (passes) {
         out->passed = true;
@@ -589,12 +603,14 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
     }
     /* The software renderer cuts endless shader loops short, so such a case
      * can end with a plausible picture, only many times slower (a GPU would
-     * hang instead). */
-    double usual = c->reference_render_seconds;
-    if (usual > 0 && r->render_seconds > fmax(_SL_SLOW_FACTOR * usual, usual + _SL_SLOW_MARGIN)) {
-        sl_diag_say(out, "a frame took %.2f s of CPU time where the solutions' takes %.3f s (%.0fx): a shader loop that "
+     * hang instead). The time is the grader's measure of the runner process
+     * (wait4's rusage), never a number the runner sends: lab code cannot
+     * make it smaller. */
+    double usual = c->reference_cpu_seconds;
+    if (sl_grade_too_slow(c, r)) {
+        sl_diag_say(out, "the case took %.2f s of CPU time where the solutions' take %.2f s (%.0fx): a shader loop that "
                      "does not end? The software renderer stops long loops, so the picture may even look right; a GPU "
-                     "would hang", r->render_seconds, usual, r->render_seconds / usual);
+                     "would hang", r->cpu_seconds, usual, r->cpu_seconds / usual);
         snprintf(out->summary, sizeof out->summary, "a shader loop that does not end");
         return;
     }
@@ -627,4 +643,38 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
     }
     out->symptoms |= _sl_measured_symptoms(c, k, r, ref);
     _sl_compose(c, k, r, context, out);
+}
+
+/* ---- no point without evidence ---- */
+
+bool sl_check_is_state(const sl_check *k) { return k->kind == SL_CHECK_FBO; }
+
+void sl_grade_require_evidence(const sl_case *c, sl_check_result *results) {
+    for (int k = 0; k < c->check_count; k++) {
+        sl_check_result *out = &results[k];
+        if (!sl_check_is_state(&c->checks[k]) || !out->passed) continue;
+        /* the pictures that show the state at work: here, the depth map drawn through the framebuffer */
+        int unproved = -1, evidence = 0;
+        for (int e = 0; e < c->check_count; e++) {
+            if (e == k || sl_check_is_state(&c->checks[e]) || c->checks[e].bonus) continue;
+            evidence++;
+            if (!results[e].passed && unproved < 0) unproved = e;
+        }
+        if (evidence > 0 && unproved < 0) continue;
+        out->passed = false;
+        out->points = 0;
+        out->reference_problem = unproved >= 0 && results[unproved].reference_problem; /* not graded, as that one */
+        if (unproved >= 0)
+            sl_diag_say(out, "the %s's state looks right, but the picture that would show it used, %s / %s, fails "
+                             "(see there): the state alone earns no point", c->checks[k].name, c->name,
+                        c->checks[unproved].name);
+        else
+            sl_diag_say(out, "the %s's state looks right, but this case has no picture that shows it was used, and "
+                             "the state alone earns no point", c->checks[k].name);
+        snprintf(out->summary, sizeof out->summary, "the %s's state is not backed by its picture", c->checks[k].name);
+        _sl_name_diagnosis(out, out->summary, false);
+        _sl_clean_in_place(out->message, sizeof out->message);
+        _sl_clean_in_place(out->summary, sizeof out->summary);
+        _sl_clean_in_place(out->diagnosis_text, sizeof out->diagnosis_text);
+    }
 }

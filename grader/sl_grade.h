@@ -47,6 +47,16 @@ typedef struct sl_grade_context {
 /* Grades one check; context may be NULL (nothing known besides this check). */
 void sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                     const sl_grade_context *context, sl_check_result *out);
+/* Whether the case's runner took far more CPU time than the solutions' (a shader loop that does not
+ * end): the grader's own measure, on the references' renderer (c->reference_cpu_seconds is 0 elsewhere). */
+bool sl_grade_too_slow(const sl_case *c, const sl_case_result *r);
+/* Whether a check is graded from numbers the runner sends alone, with no reference (the
+ * framebuffer's state): lab code can send any number, so such a check explains, never earns. */
+bool sl_check_is_state(const sl_check *k);
+/* After every check of case c is graded (results: one per check): a state check that passed keeps
+ * its points only when the case's pictures prove the state was used (every other regular check of
+ * the case passed); otherwise it fails, saying which picture does not back it. */
+void sl_grade_require_evidence(const sl_case *c, sl_check_result *results);
 /* A graded probe check's failure, for the context of later checks; false if it passed. */
 bool sl_probe_failure_of(const sl_case *c, const sl_check *k, const sl_check_result *result, sl_probe_failure *out);
 

@@ -349,7 +349,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         manifest = sl_manifest_load(o.refs_dir, false, manifest_error, sizeof manifest_error);
         reference_cache = _sl_reference_cache_open(&o, sandbox, reference_cache_state, sizeof reference_cache_state);
         for (int i = 0; i < count; i++) {
-            if (manifest) cases[i].reference_render_seconds = sl_manifest_render_seconds(manifest, cases[i].name);
+            if (manifest) cases[i].reference_cpu_seconds = sl_manifest_cpu_seconds(manifest, cases[i].name);
             if (manifest) snprintf(reference_renderer, sizeof reference_renderer, "%s", sl_manifest_renderer(manifest));
             for (int k = 0; k < cases[i].check_count; k++)
                 sl_reference_load_cached(&refs[i * SL_CASE_MAX_CHECKS + k], o.refs_dir, manifest, manifest_error,
@@ -387,6 +387,15 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             results[i].interrupted = !rep.lab_not_built[cases[i].lab] && !_sl_stub_lab(&o, cases[i].lab);
     }
     if (progress.terminal) fputs("\r\033[K", stderr); /* the report follows on stdout */
+    /* CPU times compare on the references' renderer only. Which one the runners get, the grader learns
+     * from staff code where the build has it, when a case is slow enough to ask; else from each runner's
+     * first HELLO, sent before any lab function runs (lab C code that rewrites the channel could still
+     * rename it there). */
+    char runners_renderer[160] = "";
+    bool any_slow = false;
+    for (int i = 0; i < count && !o.update; i++) any_slow |= sl_grade_too_slow(&cases[i], &results[i]);
+    if (any_slow && reference_renderer[0])
+        _sl_probe_renderer(&run, &_sl_stop, runners_renderer, sizeof runners_renderer);
     /* A case the machine could not run grades nothing: the staff hear why (exit 2). */
     int staff_faults = 0;
     for (int i = 0; i < count; i++)
@@ -438,8 +447,9 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             graded[i].result = &results[i];
             graded[i].references = &refs[i * SL_CASE_MAX_CHECKS];
             rep.cases_finished += !results[i].interrupted;
-            /* Frame times compare only on the renderer the references were made with. */
-            if (!_sl_same_renderer(results[i].renderer, reference_renderer)) cases[i].reference_render_seconds = 0;
+            /* CPU times compare only on the renderer the references were made with (above) */
+            const char *renderer = runners_renderer[0] ? runners_renderer : results[i].renderer;
+            if (!_sl_same_renderer(renderer, reference_renderer)) cases[i].reference_cpu_seconds = 0;
             if (!rep.backend[0] && results[i].backend[0]) {
                 snprintf(rep.backend, sizeof rep.backend, "%s", results[i].backend);
                 snprintf(rep.renderer, sizeof rep.renderer, "%s", results[i].renderer);
@@ -470,6 +480,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                     }
                     reference_problem |= cr->reference_problem;
                 }
+                if (!_sl_stub_lab(&o, lab) && !rep.lab_not_built[lab]) sl_grade_require_evidence(&cases[i], graded[i].checks);
             }
             /* the lab's failures: pictures' before probes' (they say what a later lab will see) */
             for (int probe = 0; probe < 2; probe++)

@@ -261,6 +261,31 @@ int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report *rep) {
     return count;
 }
 
+bool _sl_probe_renderer(const sl_run_options *run, volatile int *stop, char *out, size_t out_size) {
+    if (!_sl_is_executable(sl_config_solutions_runner) || !sl_config_solutions_dir[0]) return false;
+    static sl_case probe; /* no frame, no check: the runner makes its context, says HELLO and DONE */
+    memset(&probe, 0, sizeof probe);
+    snprintf(probe.name, sizeof probe.name, "renderer_probe");
+    snprintf(probe.title, sizeof probe.title, "the renderer the runners get");
+    probe.lab = 1;
+    probe.width = probe.height = 16;
+    probe.timeout_seconds = 60;
+    probe.memory_mb = 4096;
+    sl_run_options solutions = *run;
+    memset(solutions.setups, 0, sizeof solutions.setups);
+    solutions.setups[0].runner = sl_config_solutions_runner;
+    solutions.setups[0].labs_tree = sl_config_solutions_dir;
+    for (int lab = 1; lab <= SL_LAB_COUNT; lab++)
+        if (sl_lab_folder(lab)) solutions.setups[0].lab_dirs[lab] = sl_config_solutions_dir;
+    solutions.case_ended = NULL;
+    solutions.jobs = 1;
+    static sl_case_result r;
+    bool ok = sl_run_cases(&probe, 1, &solutions, &r, stop) && r.finished && r.renderer[0];
+    if (ok) snprintf(out, out_size, "%s", r.renderer);
+    sl_case_result_free(&r);
+    return ok;
+}
+
 bool _sl_same_renderer(const char *a, const char *b) {
     size_t n = strcspn(a, " ");
     if (n == 0 || n != strcspn(b, " ") || strncmp(a, b, n) != 0) return false;

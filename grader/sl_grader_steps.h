@@ -83,6 +83,11 @@ void _sl_case_ended(const sl_case *c, const sl_case_result *r, int ended, int to
 /* Reads the case files (in name order), keeps those the options select. */
 int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report *rep);
 
+/* The renderer the runners get, named by the solutions' runner (staff code: no lab code can speak for
+ * it) started as a case's runner, in the same sandbox and environment, with a job that only makes its
+ * GL context. False (out untouched) where the build has no solutions' runner or it did not finish. */
+bool _sl_probe_renderer(const sl_run_options *run, volatile int *stop, char *out, size_t out_size);
+
 /* Whether frame times of two renderers compare: the same family (the first
  * word: "llvmpipe", "softpipe", a GPU's maker) and, for llvmpipe, the same
  * vector width ("256 bits"): without AVX, or with SSE switched off, the same

@@ -79,8 +79,8 @@ bool sl_manifest_verify(const sl_manifest *m, const char *case_name, const char 
     return true;
 }
 
-double sl_manifest_render_seconds(const sl_manifest *m, const char *case_name) {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(_sl_case_entry(m, case_name), "render_seconds");
+double sl_manifest_cpu_seconds(const sl_manifest *m, const char *case_name) {
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(_sl_case_entry(m, case_name), "cpu_seconds");
     return cJSON_IsNumber(v) && v->valuedouble > 0 ? v->valuedouble : 0;
 }
 
@@ -89,7 +89,7 @@ void sl_manifest_forget_case(sl_manifest *m, const char *case_name) {
 }
 
 bool sl_manifest_record(sl_manifest *m, const char *case_name, const char *file, const char *path,
-                        double render_seconds, char *err, size_t n) {
+                        double cpu_seconds, char *err, size_t n) {
     char hash[65];
     if (!sl_sha256_file(path, hash)) {
         snprintf(err, n, "%s: cannot read it back (%s)", path, strerror(errno));
@@ -98,9 +98,10 @@ bool sl_manifest_record(sl_manifest *m, const char *case_name, const char *file,
     cJSON *cases = cJSON_GetObjectItemCaseSensitive(m->root, "cases");
     cJSON *entry = cJSON_GetObjectItemCaseSensitive(cases, case_name);
     if (!entry) entry = cJSON_AddObjectToObject(cases, case_name);
-    cJSON_DeleteItemFromObjectCaseSensitive(entry, "render_seconds");
+    cJSON_DeleteItemFromObjectCaseSensitive(entry, "render_seconds"); /* a frame's time as the runner said it, once */
+    cJSON_DeleteItemFromObjectCaseSensitive(entry, "cpu_seconds");
     /* rounded up to a millisecond: noise below it does not matter */
-    cJSON_AddNumberToObject(entry, "render_seconds", ceil(render_seconds * 1000) / 1000);
+    cJSON_AddNumberToObject(entry, "cpu_seconds", ceil(cpu_seconds * 1000) / 1000);
     cJSON *files = cJSON_GetObjectItemCaseSensitive(entry, "files");
     if (!files) files = cJSON_AddObjectToObject(entry, "files");
     cJSON_DeleteItemFromObjectCaseSensitive(files, file);

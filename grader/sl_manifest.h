@@ -23,13 +23,14 @@ bool sl_manifest_verify(const sl_manifest *m, const char *case_name, const char 
                         size_t why_size);
 /* The SHA-256 recorded for a case's reference `file` (64 hex digits), NULL if none. */
 const char *sl_manifest_hash(const sl_manifest *m, const char *case_name, const char *file);
-/* The CPU seconds one of the solutions' frames took for the case, 0 when not recorded. */
-double sl_manifest_render_seconds(const sl_manifest *m, const char *case_name);
+/* The CPU seconds the solutions' runner took for the whole case, as the grader measured it (its
+ * rusage), 0 when not recorded. */
+double sl_manifest_cpu_seconds(const sl_manifest *m, const char *case_name);
 /* Forgets what a case had: its references are about to be written anew. */
 void sl_manifest_forget_case(sl_manifest *m, const char *case_name);
-/* Records a freshly written reference (and the case's render time). */
+/* Records a freshly written reference (and the CPU time of the case's run). */
 bool sl_manifest_record(sl_manifest *m, const char *case_name, const char *file, const char *path,
-                        double render_seconds, char *err, size_t err_size);
+                        double cpu_seconds, char *err, size_t err_size);
 /* The renderer the references were made with ("llvmpipe (LLVM 15.0.6, 256 bits)"), "" if unknown. */
 const char *sl_manifest_renderer(const sl_manifest *m);
 void sl_manifest_set_renderer(sl_manifest *m, const char *renderer);

@@ -156,5 +156,5 @@ bool sl_reference_write(const char *dir, sl_manifest *manifest, const sl_case *c
     } else {
         ok = sl_atomic_write_image(path, &cap->image, err, err_size);
     }
-    return ok && sl_manifest_record(manifest, c->name, file, path, r->render_seconds, err, err_size);
+    return ok && sl_manifest_record(manifest, c->name, file, path, r->cpu_seconds, err, err_size);
 }

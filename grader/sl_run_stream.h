@@ -22,6 +22,7 @@ typedef struct _sl_stream {
     size_t len, cap;
     uint64_t total;           /* bytes received in all */
     bool done;                /* DONE parsed */
+    uint64_t messages;        /* messages taken so far: a HELLO must be the first */
     char stage[64];           /* the lab function running, per the last STAGE */
 } _sl_stream;
 

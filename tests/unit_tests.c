@@ -18,6 +18,7 @@
 #include "sl_build_failure.h"
 #include "sl_case.h"
 #include "sl_compare.h"
+#include "sl_gl.h"
 #include "sl_grade.h"
 #include "sl_hidden.h"
 #include "sl_mesh.h"
@@ -677,6 +678,47 @@ static void test_grade_run_failures(void) {
     CHECK(out.reference_problem && strstr(out.message, "reference missing") != NULL);
 }
 
+/* Numbers about state (lab 1's framebuffer) are the runner's word: they pass
+ * only with the picture that shows the state used, never alone. */
+static void test_grade_state_needs_evidence(void) {
+    sl_case c = grade_case(1, SL_CHECK_FBO);
+    snprintf(c.name, sizeof c.name, "lab1_synthetic");
+    snprintf(c.checks[0].name, sizeof c.checks[0].name, "framebuffer");
+    c.checks[1] = c.checks[0];
+    c.checks[1].kind = SL_CHECK_DEPTH_MAP;
+    snprintf(c.checks[1].name, sizeof c.checks[1].name, "depth");
+    c.check_count = 2;
+    int size = c.params.shadow_map_size;
+    sl_image want = square(size, size, 1, 0.4f, size / 4, size / 4, size / 2, size / 2);
+    sl_reference refs[2] = {{0}, image_reference(want)};
+    for (int honest = 0; honest < 2; honest++) {
+        sl_case_result r = {.finished = true};
+        sl_capture *fbo = &r.captures[r.capture_count++];
+        snprintf(fbo->name, sizeof fbo->name, "fbo");
+        double v[SL_FBO_NUMBERS] = {GL_FRAMEBUFFER_COMPLETE, GL_TEXTURE, 1, 24, size, size, GL_NONE, GL_NONE, GL_NONE, size};
+        memcpy(fbo->numbers, v, sizeof v);
+        fbo->number_count = SL_FBO_NUMBERS;
+        /* forged: a depth map of zeros; honest: the reference's */
+        add_capture(&r, "depth_map", honest ? square(size, size, 1, 0.4f, size / 4, size / 4, size / 2, size / 2)
+                                            : sl_image_alloc(size, size, 1));
+        sl_check_result out[2];
+        for (int k = 0; k < 2; k++) sl_grade_check(&c, &c.checks[k], &r, &refs[k], NULL, &out[k]);
+        CHECK(out[0].passed && out[1].passed == (honest == 1)); /* the state alone looks right */
+        sl_grade_require_evidence(&c, out);
+        CHECK(out[0].passed == (honest == 1) && out[0].points == (honest ? 1 : 0));
+        if (!honest)
+            CHECK(strstr(out[0].message, "would show it used, lab1_synthetic / depth, fails") != NULL &&
+                  strstr(out[0].message, "the state alone earns no point") != NULL && out[0].diagnosis[0]);
+        sl_case_result_free(&r);
+    }
+    /* a case with the state and no picture: nothing backs it */
+    c.check_count = 1;
+    sl_check_result alone = {.passed = true, .points = 1, .max_points = 1};
+    sl_grade_require_evidence(&c, &alone);
+    CHECK(!alone.passed && alone.points == 0 && strstr(alone.message, "no picture") != NULL);
+    sl_image_free(&want);
+}
+
 /* A stream as a runner (or lab code posing as one) would write it. */
 typedef struct stream {
     char data[1 << 16];
@@ -762,6 +804,23 @@ static void test_channel_rejects_lies(void) {
     put(&s, SL_MSG_NOT_IMPLEMENTED, "../x", NULL, 0, 0);
     sl_run_parse_stream(&c, s.data, s.size, &r);
     CHECK(strstr(r.protocol_error, "malformed name") != NULL);
+    /* The renderer is named once, first, before lab code runs: a second HELLO (lab code renaming the
+     * renderer so that slow frames are not compared) and a HELLO after other messages break the rules. */
+    s.size = 0;
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nllvmpipe", 15, 15);
+    put(&s, SL_MSG_STAGE, "lab2_light_view", NULL, 0, 0);
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nsoftpipe", 15, 15);
+    put_visibility(&s, 16, 16, 1);
+    put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(!r.finished && strstr(r.protocol_error, "a second HELLO") != NULL && r.capture_count == 0);
+    CHECK(strcmp(r.renderer, "llvmpipe") == 0); /* the first one stays */
+    s.size = 0;
+    put(&s, SL_MSG_STAGE, "lab2_light_view", NULL, 0, 0);
+    put(&s, SL_MSG_HELLO, NULL, "osmesa\nsoftpipe", 15, 15);
+    put(&s, SL_MSG_DONE, NULL, NULL, 0, 0);
+    sl_run_parse_stream(&c, s.data, s.size, &r);
+    CHECK(!r.finished && strstr(r.protocol_error, "a HELLO after other messages") != NULL && !r.renderer[0]);
     /* a stream cut off mid-message: not finished, no error (a crash) */
     s.size = 0;
     put(&s, SL_MSG_STAGE, "lab2_light_view", NULL, 0, 0);
@@ -1297,6 +1356,7 @@ int main(int argc, char **argv) {
         {"grade_blames_on_evidence", test_grade_blames_on_evidence},
         {"hidden_varies_probe_inputs", test_hidden_varies_probe_inputs},
         {"grade_run_failures", test_grade_run_failures},
+        {"grade_state_needs_evidence", test_grade_state_needs_evidence},
         {"shader_include_stays_inside", test_shader_include_stays_inside},
         {"channel_rejects_lies", test_channel_rejects_lies},
         {"utf8_clean_and_cut", test_utf8_clean_and_cut},
