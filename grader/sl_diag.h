@@ -95,7 +95,8 @@ bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const c
 /* A check that measures a difference (`what`: "flicker", "light bleeding")
  * and found none may be looking at a picture that is dark everywhere: says
  * so and returns true when the student's picture lost too much of the
- * reference's light (sl_visibility_lit_lost; frames stacked, a mask of one). */
+ * reference's light (sl_visibility_lit_lost; frames stacked, a mask of one). Called only where
+ * the difference itself was met: a failed one keeps its own message. */
 bool sl_diag_lit_lost(const sl_image *student, const sl_image *reference, const sl_image *mask, const char *what,
                       sl_check_result *out);
 /* The TODO tag and file of a lab function ("TODO(lab3.2)", "labs/lab3_bias/shaders/bias.glsl"). */

@@ -180,7 +180,7 @@ void sl_diagnose_penumbra(const sl_case *c, const sl_check *k, const sl_case_res
         return;
     }
     if (sl_diag_explain_missing(c, r, out)) return;
-    if (!light_ok && sl_diag_lit_lost(s, t, m, "penumbra", out)) return;
+    if (ok && sl_diag_lit_lost(s, t, m, "penumbra", out)) return;
     int last = k->probe_count - 1;
     float most = 0, least = 1e9f;
     for (int i = 0; i < k->probe_count; i++) {

@@ -336,12 +336,13 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
      * has no bleeding to measure: nothing to lose. */
     /* an umbra without light is also a picture without light: it must be lit where the reference is */
     bool light_ok = !sl_visibility_lit_lost(&on->image, t, m).failed;
-    if ((umbra < 100 || with <= fmax(0.5 * without, 0.01)) && light_ok) {
+    bool measured_ok = umbra < 100 || with <= fmax(0.5 * without, 0.01);
+    if (measured_ok && light_ok) {
         out->passed = true;
         return;
     }
     if (sl_diag_explain_missing(c, r, out)) return;
-    if (!light_ok && sl_diag_lit_lost(&on->image, t, m, "light bleeding", out)) return;
+    if (measured_ok && sl_diag_lit_lost(&on->image, t, m, "light bleeding", out)) return;
     if (sl_diagnose_lab5_format(r, out)) return;
     if (with > 0.9 && without > 0.9) {
         /* the whole umbra lit either way: the reduction has nothing to act on, the lookup is what is wrong */
