@@ -126,6 +126,30 @@ double sl_visibility_shadow_lost(const sl_image *student, const sl_image *refere
     return *shadowed ? (double)lost / (double)*shadowed : 0;
 }
 
+sl_lit_lost sl_visibility_lit_lost(const sl_image *student, const sl_image *reference, const sl_image *lit_mask) {
+    sl_lit_lost l = {0};
+    if (!student->data || !reference->data || student->width != reference->width ||
+        student->height != reference->height)
+        return l;
+    long n = (long)reference->width * reference->height, frame = n;
+    if (lit_mask) {
+        frame = (long)lit_mask->width * lit_mask->height;
+        /* a mask of another width, or whose frames do not tile the reference, is no mask of it */
+        if (!lit_mask->data || lit_mask->width != reference->width || frame == 0 || n % frame) lit_mask = NULL;
+    }
+    for (long i = 0; i < n; i++) {
+        if (!(reference->data[i * reference->channels] >= 0.5f)) continue;
+        if (lit_mask && lit_mask->data[(i % frame) * lit_mask->channels] < 0.5f) continue;
+        l.lit++;
+        float v = student->data[i * student->channels];
+        if (isnan(v)) l.nan++;
+        else if (v < 0.5f) l.dark++;
+    }
+    l.fraction = l.lit ? (double)(l.dark + l.nan) / (double)l.lit : 0;
+    l.failed = l.lit >= SL_LIT_MIN_PIXELS && l.fraction > SL_LIT_MAX_LOST;
+    return l;
+}
+
 double sl_fraction_equal(const sl_image *image, float value, float tolerance) {
     long n = (long)image->width * image->height, count = 0;
     if (!image->data || n == 0) return 0;

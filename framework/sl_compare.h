@@ -58,6 +58,25 @@ sl_visibility_stats sl_visibility_compare(const sl_image *student, const sl_imag
 double sl_visibility_shadow_lost(const sl_image *student, const sl_image *reference, const sl_image *lit_mask,
                                  long *shadowed);
 
+/* A check that measures a difference (the flicker between frames, the bleeding
+ * with and without a reduction, penumbra widths) is met by a picture that is
+ * dark everywhere: it has none. Each such check also fails when more than
+ * SL_LIT_MAX_LOST of the surfaces the reference shows lit (at least
+ * SL_LIT_MIN_PIXELS of them) are dark or NaN in the student's. */
+#define SL_LIT_MAX_LOST 0.05
+#define SL_LIT_MIN_PIXELS 100
+
+typedef struct sl_lit_lost {
+    long lit;        /* the reference's lit pixels (0.5 and above) where the mask is lit */
+    long dark, nan;  /* of those, the student's below 0.5, and NaN */
+    double fraction; /* (dark + nan) / lit */
+    bool failed;     /* at least SL_LIT_MIN_PIXELS lit, more than SL_LIT_MAX_LOST of them lost */
+} sl_lit_lost;
+
+/* `reference` may be frames stacked top to bottom (lab 6's flicker), with a
+ * `lit_mask` (may be NULL) of one frame's size: the mask then applies to each. */
+sl_lit_lost sl_visibility_lit_lost(const sl_image *student, const sl_image *reference, const sl_image *lit_mask);
+
 /* Depth maps: the fraction of texels at (about) `value`, and whether all
  * texels different from `clear` lie inside the lower-left w x h rectangle
  * (GL's origin; images are stored top row first). */

@@ -86,6 +86,22 @@ bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const c
     return pixels_ok && mean_ok;
 }
 
+bool sl_diag_lit_lost(const sl_image *student, const sl_image *reference, const sl_image *mask, const char *what,
+                      sl_check_result *out) {
+    sl_lit_lost l = sl_visibility_lit_lost(student, reference, mask);
+    if (!l.failed) return false;
+    if (l.nan * 2 > l.dark + l.nan)
+        sl_diag_say(out, "the visibility is NaN on %.0f%% of the surfaces the reference shows lit", 100.0 * l.nan / l.lit);
+    else if (l.fraction > 0.9)
+        sl_diag_say(out, "everything is in shadow: %.0f%% of the surfaces the reference shows lit are dark here", 100 * l.fraction);
+    else
+        sl_diag_say(out, "too much is in shadow: %.1f%% of the surfaces the reference shows lit are dark here (allowed %.0f%%)",
+                    100 * l.fraction, 100 * SL_LIT_MAX_LOST);
+    sl_diag_append(out, "; a picture without its light shows no %s either, so it earns nothing here", what);
+    sl_diag_cause(out, "does the shadow lookup return a constant, or NaN? The lab's probes name the function");
+    return true;
+}
+
 bool sl_diag_stub_location(const char *function, const char **todo, const char **file) {
     static char todos[64][48], files[64][160];
     for (size_t s = 0; s < sizeof _sl_stubs / sizeof _sl_stubs[0]; s++)

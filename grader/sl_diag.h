@@ -107,6 +107,13 @@ bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check
  * NaN, and a mean difference within the check's mean tolerance. When only
  * the mean is off, says so (a small error everywhere) and returns false. */
 bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const char *what, sl_check_result *out);
+/* A check that measures a difference (`what`: "flicker", "light bleeding")
+ * and found none may be looking at a picture that is dark everywhere: says
+ * so and returns true when the student's picture lost too much of the
+ * reference's light (sl_visibility_lit_lost; frames stacked, a mask of one). Called only where
+ * the difference itself was met: a failed one keeps its own message. */
+bool sl_diag_lit_lost(const sl_image *student, const sl_image *reference, const sl_image *mask, const char *what,
+                      sl_check_result *out);
 /* The TODO tag and file of a lab function ("TODO(lab3.2)", "labs/lab3_bias/shaders/bias.glsl"). */
 bool sl_diag_stub_location(const char *function, const char **todo, const char **file);
 

@@ -171,11 +171,16 @@ void sl_diagnose_penumbra(const sl_case *c, const sl_check *k, const sl_case_res
         snprintf(widths + strlen(widths), sizeof widths - strlen(widths), "%s%s %.0f px (reference %.0f)",
                  i ? ", " : "", k->probes[i].name, ws[i], wt[i]);
     }
-    if (ok) {
+    /* widths are measured on the student's own picture: it must also be lit where the reference is */
+    const sl_capture *mask = sl_result_capture(r, "lit_mask");
+    const sl_image *m = mask ? &mask->image : NULL;
+    bool light_ok = !sl_visibility_lit_lost(s, t, m).failed;
+    if (ok && light_ok) {
         out->passed = true;
         return;
     }
     if (sl_diag_explain_missing(c, r, out)) return;
+    if (ok && sl_diag_lit_lost(s, t, m, "penumbra", out)) return;
     int last = k->probe_count - 1;
     float most = 0, least = 1e9f;
     for (int i = 0; i < k->probe_count; i++) {

@@ -334,11 +334,15 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
     double with = _sl_bleed(&on->image, t, m, &umbra), without = _sl_bleed(&off->image, t, m, &umbra);
     /* A scene (or a hidden variant of it) whose reference has next to no umbra
      * has no bleeding to measure: nothing to lose. */
-    if (umbra < 100 || with <= fmax(0.5 * without, 0.01)) {
+    /* an umbra without light is also a picture without light: it must be lit where the reference is */
+    bool light_ok = !sl_visibility_lit_lost(&on->image, t, m).failed;
+    bool measured_ok = umbra < 100 || with <= fmax(0.5 * without, 0.01);
+    if (measured_ok && light_ok) {
         out->passed = true;
         return;
     }
     if (sl_diag_explain_missing(c, r, out)) return;
+    if (measured_ok && sl_diag_lit_lost(&on->image, t, m, "light bleeding", out)) return;
     if (sl_diagnose_lab5_format(r, out)) return;
     if (with > 0.9 && without > 0.9) {
         /* the whole umbra lit either way: the reduction has nothing to act on, the lookup is what is wrong */

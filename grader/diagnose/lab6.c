@@ -137,11 +137,15 @@ void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_resu
     }
     _sl_flicker got = _sl_measure_flicker(s, m, c->frame_count), want = _sl_measure_flicker(t, m, c->frame_count);
     bool shadows_ok = want.shadowed < 0.005 || got.shadowed >= 0.5 * want.shadowed;
-    if (got.score <= k->threshold && shadows_ok) {
+    /* frames that never change pass the score: they must also be lit where the reference's are */
+    bool light_ok = !sl_visibility_lit_lost(s, t, m).failed;
+    bool measured_ok = got.score <= k->threshold && shadows_ok;
+    if (measured_ok && light_ok) {
         out->passed = true;
         return;
     }
     if (sl_diag_explain_missing(c, r, out)) return;
+    if (measured_ok && sl_diag_lit_lost(s, t, m, "flicker", out)) return;
     if (!shadows_ok) {
         sl_diag_say(out, "along the camera path only %.1f%% of the receivers are in shadow, the reference %.1f%%: a "
                          "still picture without its shadows does not count as stable",
