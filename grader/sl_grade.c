@@ -664,14 +664,21 @@ void sl_grade_require_evidence(const sl_case *c, sl_check_result *results) {
         out->passed = false;
         out->points = 0;
         out->reference_problem = unproved >= 0 && results[unproved].reference_problem; /* not graded, as that one */
-        if (unproved >= 0)
+        if (out->reference_problem)
+            sl_diag_say(out, "not graded: the picture that would show the %s used, %s / %s, has a reference problem "
+                             "(see there); staff: repair that reference and grade again", c->checks[k].name, c->name,
+                        c->checks[unproved].name);
+        else if (unproved >= 0)
             sl_diag_say(out, "the %s's state looks right, but the picture that would show it used, %s / %s, fails "
                              "(see there): the state alone earns no point", c->checks[k].name, c->name,
                         c->checks[unproved].name);
         else
             sl_diag_say(out, "the %s's state looks right, but this case has no picture that shows it was used, and "
                              "the state alone earns no point", c->checks[k].name);
-        snprintf(out->summary, sizeof out->summary, "the %s's state is not backed by its picture", c->checks[k].name);
+        if (out->reference_problem)
+            snprintf(out->summary, sizeof out->summary, "not graded: its picture's reference is broken");
+        else
+            snprintf(out->summary, sizeof out->summary, "the %s's state is not backed by its picture", c->checks[k].name);
         _sl_name_diagnosis(out, out->summary, false);
         _sl_clean_in_place(out->message, sizeof out->message);
         _sl_clean_in_place(out->summary, sizeof out->summary);
