@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # A small class as the platforms really export it, made from the solutions,
-# the handout's stubs and one known mistake (lab1_no_viewport):
+# the handout's stubs and one known mistake (lab1_no_draw_buffer_none: only the
+# framebuffer check fails, so some points of lab1_depth_boxes are lost):
 #
 #   canvas-v1.zip   Canvas "Download Submissions": flat files
 #                   <name>[_LATE]_<user id>_<attachment id>_<file name>, twelve students:
 #     adamsamy 101   complete: shadowlab.zip holding labs/ (every lab of the solutions)
 #     brownben 102   partial: lab1.zip holding labs/lab1_depth_fbo only
-#     clarkcat 103   late, one mistake: lab 1's files loose, the viewport left out
+#     clarkcat 103   late, one mistake: lab 1's files loose, glDrawBuffer(GL_NONE) left out
 #     davisdan 104   a Finder zip: shadowlab/lab1_depth_fbo/..., __MACOSX/, ._ files, .DS_Store
 #     evanseve 105   Windows: files loose with a BOM and CRLF, Thumbs.db, desktop.ini; lab1.c
 #                    uploaded twice (the first the stub, the second "lab1-1.c", a later attachment)
@@ -47,9 +48,9 @@ zip_of() { # zip_of ARCHIVE DIR: DIR's entries at the archive's root
 }
 lab1=lab1_depth_fbo
 sol="$source/solutions/$lab1"
-bash "$source/tests/make_variant.sh" "$source/tests/variants/lab1_no_viewport.variant" "$source/solutions" \
-  "$work/no_viewport" >/dev/null
-mistake="$work/no_viewport/$lab1"
+bash "$source/tests/make_variant.sh" "$source/tests/variants/lab1_no_draw_buffer_none.variant" "$source/solutions" \
+  "$work/no_draw_buffer" >/dev/null
+mistake="$work/no_draw_buffer/$lab1"
 windows() { { printf '\xef\xbb\xbf'; sed 's/$/\r/' "$1"; } >"$2"; } # a Windows editor: BOM and CRLF
 
 # ---- Canvas ----
