@@ -20,6 +20,9 @@ typedef struct sl_reference {
     char path[1100];
     char error[600];
     sl_image image;
+    /* The surfaces facing the light, as the solutions drew them (lit_mask.exr), for the checks that
+     * measure only there; no data for the others. The runner's own mask is its word: never used. */
+    sl_image lit_mask;
     double numbers[SL_RUN_MAX_NUMBERS]; /* matrices (48), or a probe's rows x outputs */
     int number_count;
 } sl_reference;

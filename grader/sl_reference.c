@@ -46,9 +46,66 @@ static void _sl_reference_corrupt(sl_reference *ref, const char *err, const sl_m
         snprintf(ref->error, sizeof ref->error, "reference corrupt: %s", err);
 }
 
+static void _sl_reference_load_main(sl_reference *ref, const char *dir, const sl_manifest *manifest,
+                                    const char *manifest_error, sl_reference_cache *cache, const sl_case *c,
+                                    const sl_check *k);
+
+bool sl_check_uses_lit_mask(const sl_case *c, const sl_check *k) {
+    return (sl_check_captures(c, k) & (1u << SL_CAPTURE_LIT_MASK)) != 0;
+}
+
+/* The case's lit surfaces (one frame, camera size, one channel), verified as any reference is. */
+static void _sl_reference_load_lit_mask(sl_reference *ref, const char *dir, const sl_manifest *manifest,
+                                        sl_reference_cache *cache, const sl_case *c) {
+    char path[1200], err[512], why[1500];
+    snprintf(path, sizeof path, "%s/%s/%s", dir, c->name, SL_LIT_MASK_FILE);
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        snprintf(ref->error, sizeof ref->error,
+                 "reference missing: %s (staff: run shadowlab-grade --update-references on a solutions build)", path);
+        ref->loaded = false;
+        return;
+    }
+    const char *recorded = cache ? sl_manifest_hash(manifest, c->name, SL_LIT_MASK_FILE) : NULL;
+    bool read = recorded && sl_reference_cache_read(cache, path, recorded, &ref->lit_mask);
+    if (!read) {
+        if (!sl_image_read(path, &ref->lit_mask, err, sizeof err)) {
+            if (!sl_manifest_verify(manifest, c->name, SL_LIT_MASK_FILE, path, why, sizeof why))
+                snprintf(ref->error, sizeof ref->error, "reference corrupt: %s; %s", err, why);
+            else
+                snprintf(ref->error, sizeof ref->error, "reference corrupt: %s", err);
+            ref->loaded = false;
+            return;
+        }
+        if (!sl_manifest_verify(manifest, c->name, SL_LIT_MASK_FILE, path, why, sizeof why)) {
+            snprintf(ref->error, sizeof ref->error, "%s", why);
+            sl_image_free(&ref->lit_mask);
+            ref->loaded = false;
+            return;
+        }
+    }
+    const sl_image *m = &ref->lit_mask;
+    if (m->width != c->width || m->height != c->height || m->channels != 1) {
+        snprintf(ref->error, sizeof ref->error, "reference does not fit its case: %s is %dx%dx%d, the case makes %dx%dx1",
+                 path, m->width, m->height, m->channels, c->width, c->height);
+        sl_image_free(&ref->lit_mask);
+        ref->loaded = false;
+    }
+}
+
 void sl_reference_load_cached(sl_reference *ref, const char *dir, const sl_manifest *manifest,
                               const char *manifest_error, sl_reference_cache *cache, const sl_case *c,
                               const sl_check *k) {
+    _sl_reference_load_main(ref, dir, manifest, manifest_error, cache, c, k);
+    if (ref->loaded && sl_check_uses_lit_mask(c, k)) {
+        _sl_reference_load_lit_mask(ref, dir, manifest, cache, c);
+        if (!ref->loaded) sl_image_free(&ref->image);
+    }
+}
+
+static void _sl_reference_load_main(sl_reference *ref, const char *dir, const sl_manifest *manifest,
+                                    const char *manifest_error, sl_reference_cache *cache, const sl_case *c,
+                                    const sl_check *k) {
     memset(ref, 0, sizeof *ref);
     char file[200];
     if (!sl_check_reference_file(k, file, sizeof file)) return;
@@ -115,7 +172,10 @@ void sl_reference_load_cached(sl_reference *ref, const char *dir, const sl_manif
     ref->loaded = true;
 }
 
-void sl_reference_free(sl_reference *ref) { sl_image_free(&ref->image); }
+void sl_reference_free(sl_reference *ref) {
+    sl_image_free(&ref->image);
+    sl_image_free(&ref->lit_mask);
+}
 
 bool sl_reference_write(const char *dir, sl_manifest *manifest, const sl_case *c, const sl_check *k,
                         const sl_case_result *r, char *err, size_t err_size) {
@@ -156,5 +216,16 @@ bool sl_reference_write(const char *dir, sl_manifest *manifest, const sl_case *c
     } else {
         ok = sl_atomic_write_image(path, &cap->image, err, err_size);
     }
-    return ok && sl_manifest_record(manifest, c->name, file, path, r->cpu_seconds, err, err_size);
+    if (!ok || !sl_manifest_record(manifest, c->name, file, path, r->cpu_seconds, err, err_size)) return false;
+    if (!sl_check_uses_lit_mask(c, k)) return true;
+    /* the lit surfaces this check measures on: the grader's own, never the runner's */
+    const sl_capture *mask = sl_result_capture(r, "lit_mask");
+    if (!mask || !mask->is_image) {
+        snprintf(err, err_size, "%s: the solutions captured no lit_mask (%s)", c->name,
+                 r->capture_error[0] ? r->capture_error : r->error[0] ? r->error : "see the case");
+        return false;
+    }
+    snprintf(path, sizeof path, "%s/%s", folder, SL_LIT_MASK_FILE);
+    return sl_atomic_write_image(path, &mask->image, err, err_size) &&
+           sl_manifest_record(manifest, c->name, SL_LIT_MASK_FILE, path, r->cpu_seconds, err, err_size);
 }

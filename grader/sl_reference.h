@@ -25,8 +25,13 @@ void sl_reference_load_cached(sl_reference *ref, const char *references_dir, con
                               const char *manifest_error, sl_reference_cache *cache, const sl_case *c,
                               const sl_check *k);
 void sl_reference_free(sl_reference *ref);
+/* The file, beside a case's other references, of the surfaces facing the light (the solutions' drawing):
+ * the checks that measure only on lit surfaces read it (ref->lit_mask), never the runner's capture. */
+#define SL_LIT_MASK_FILE "lit_mask.exr"
+bool sl_check_uses_lit_mask(const sl_case *c, const sl_check *k);
 /* Writes the capture a check needs as its reference (from the solutions'
- * runner) and records it in the manifest. */
+ * runner), and its case's lit surfaces where it uses them, and records them
+ * in the manifest. */
 bool sl_reference_write(const char *references_dir, sl_manifest *manifest, const sl_case *c, const sl_check *k,
                         const sl_case_result *r, char *err, size_t err_size);
 

@@ -346,8 +346,8 @@ static void test_grade_names_acne(void) {
     sl_image acne = square(64, 64, 0, 1, 20, 20, 40, 40);
     for (int i = 0; i < 64 * 64; i += 3) acne.data[i] = 0; /* speckles of self-shadowing */
     add_capture(&r, "visibility", acne);
-    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
     sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
+    ref.lit_mask = square(64, 64, 1, 1, 0, 0, 0, 0); /* the solutions' lit surfaces */
     sl_check_result out;
     sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(!out.passed && out.points == 0);
@@ -370,8 +370,8 @@ static void test_grade_names_peter_panning(void) {
     for (int y = 10; y < 50; y++)
         for (int x = 4; x < 10; x++) reference.data[y * 64 + x] = 0;
     add_capture(&r, "visibility", detached);
-    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
     sl_reference ref = image_reference(reference);
+    ref.lit_mask = square(64, 64, 1, 1, 0, 0, 0, 0); /* the solutions' lit surfaces */
     sl_check_result out;
     sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
     CHECK(!out.passed);
@@ -462,8 +462,8 @@ static void test_grade_names_vsm_mistakes(void) {
                 }
         add_capture(&r, "visibility", with);
         add_capture(&r, "visibility_unreduced", without);
-        add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
         sl_reference ref = image_reference(square(64, 64, 0, 1, 10, 10, 54, 54));
+        ref.lit_mask = square(64, 64, 1, 1, 0, 0, 0, 0); /* the solutions' lit surfaces */
         sl_check_result out;
         sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
         CHECK(swapped ? !out.passed : out.passed);
@@ -485,8 +485,8 @@ static void test_grade_leads_with_root_cause(void) {
     c.checks[1].hint_when = 1u << SL_SYMPTOM_MISSING_SHADOW;
     sl_case_result r = {.finished = true};
     add_capture(&r, "visibility", square(64, 64, 0, 1, 20, 20, 30, 30)); /* half the reference's shadow */
-    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
     sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
+    ref.lit_mask = square(64, 64, 1, 1, 0, 0, 0, 0); /* the solutions' lit surfaces */
     sl_check_result earlier[1] = {{.max_points = 2}};
     snprintf(earlier[0].summary, sizeof earlier[0].summary, "the shadow matrix multiplies Lv * Lp");
     sl_diag_set_cause(&earlier[0], "lab2_shadow_matrix()", SL_CAUSE_WRONG);
@@ -572,8 +572,8 @@ static void test_grade_diagnosis_ids(void) {
         sl_image acne = square(64, 64, 0, 1, 20, 20, 40, 40);
         for (int i = 0; i < 64 * 64; i += 3 + 2 * student) acne.data[i] = 0; /* more or less acne */
         add_capture(&r, "visibility", acne);
-        add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
         sl_reference ref = image_reference(square(64, 64, 0, 1, 20, 20, 40, 40));
+        ref.lit_mask = square(64, 64, 1, 1, 0, 0, 0, 0); /* the solutions' lit surfaces */
         sl_check_result out;
         sl_grade_check(&c, &c.checks[0], &r, &ref, NULL, &out);
         CHECK(!out.passed && out.diagnosis[0]);
@@ -1089,8 +1089,8 @@ static void test_grade_blames_on_evidence(void) {
     memcpy(student.data, darker.data, sizeof(float) * 64 * 64);
     memcpy(ref_copy.data, reference.data, sizeof(float) * 64 * 64);
     add_capture(&r, "visibility", student);
-    add_capture(&r, "lit_mask", square(64, 64, 1, 1, 0, 0, 0, 0));
     sl_reference ref = image_reference(ref_copy);
+    ref.lit_mask = square(64, 64, 1, 1, 0, 0, 0, 0); /* the solutions' lit surfaces */
     sl_grade_context passed = {.probes_passed = 1ull << sl_probe_index(sl_probe_find("pcf_grid"))};
     sl_check_result out;
     sl_grade_check(&c, &c.checks[0], &r, &ref, &passed, &out);

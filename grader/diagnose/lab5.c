@@ -314,7 +314,6 @@ static double _sl_bleed(const sl_image *v, const sl_image *t, const sl_image *ma
 void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                           sl_check_result *out) {
     const sl_capture *on = sl_result_capture(r, "visibility"), *off = sl_result_capture(r, "visibility_unreduced");
-    const sl_capture *mask = sl_result_capture(r, "lit_mask");
     if (!on || !off) {
         if (!sl_diag_explain_missing(c, r, out)) sl_diag_say(out, "no visibility was captured");
         out->settled = true;
@@ -329,7 +328,10 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
         return;
     }
     long umbra = 0;
-    const sl_image *m = mask && mask->image.width == t->width && mask->image.height == t->height ? &mask->image : NULL;
+    /* the lit surfaces as the solutions drew them (the runner's mask would be its own word) */
+    const sl_image *m = ref->lit_mask.data && ref->lit_mask.width == t->width && ref->lit_mask.height == t->height
+                            ? &ref->lit_mask
+                            : NULL;
     (void)k;
     double with = _sl_bleed(&on->image, t, m, &umbra), without = _sl_bleed(&off->image, t, m, &umbra);
     /* A scene (or a hidden variant of it) whose reference has next to no umbra
