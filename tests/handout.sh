@@ -41,6 +41,11 @@ done <<<"$answers"
 while IFS= read -r f; do
   [ -e "$root/$f" ] || problem "$f is not in the handout"
 done < <(git -C "$src" ls-files -- grader/cases grader/references)
+# Its test command installs only what its own tests use: no slide tools, no browser, no fuzzer's clang.
+plan=$("$root/scripts/run-tests.sh" --plan 2>&1)
+grep -q "a student's tree" <<<"$plan" || problem "run-tests.sh does not say it runs a student's tests: $plan"
+[ "$(grep '^run-tests: would run' <<<"$plan")" = "run-tests: would run scripts/install-deps.sh" ] ||
+  problem "run-tests.sh in the handout would install more than its tests use: $plan"
 gen=(); ! command -v ninja >/dev/null || gen=(-G Ninja) # as bootstrap.sh makes a new build folder
 cmake "${gen[@]}" -S "$root" -B "$root/build" >"$work/configure.log" 2>&1 || { cat "$work/configure.log"; exit 1; }
 # the grader (with its runner) and the viewer: all the handout's default build holds
