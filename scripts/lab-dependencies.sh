@@ -8,7 +8,8 @@
 # results show in lab N's pictures, which the grader names: "needs lab K first").
 #
 # --check: each labs/labN_*/README.md must hold its sentence word for word, on
-# a line of its own; exit 1 naming every README that does not.
+# a line of its own, and the top README.md its list line for each lab
+# ("- **Lab N:** ..."); exit 1 naming every README that does not.
 set -u
 here=$(cd "$(dirname "$0")/.." && pwd)
 check=false
@@ -57,7 +58,16 @@ sentence() {
   echo "$out."
 }
 
+# The top README's line for lab N: the same facts, in its list of labs.
+list_line() {
+  local s
+  s=$(sentence "$1")
+  s=${s#"**Earlier labs it runs:** "}
+  echo "- **Lab $1:** $s"
+}
+
 fail=0
+top=$here/README.md
 for readme in "$here"/labs/lab[0-9]*_*/README.md; do
   folder=$(basename "$(dirname "$readme")")
   n=${folder#lab}; n=${n%%_*}
@@ -65,8 +75,11 @@ for readme in "$here"/labs/lab[0-9]*_*/README.md; do
   if $check; then
     grep -qxF -- "$s" "$readme" ||
       { echo "lab-dependencies: labs/$folder/README.md does not say, on a line of its own: $s" >&2; fail=1; }
+    [ "$n" = 0 ] || grep -qxF -- "$(list_line "$n")" "$top" ||
+      { echo "lab-dependencies: README.md does not say, on a line of its own: $(list_line "$n")" >&2; fail=1; }
   else
     printf 'lab %s: %s\n' "$n" "$s"
+    [ "$n" = 0 ] || printf '  README.md: %s\n' "$(list_line "$n")"
   fi
 done
 $check && [ $fail = 0 ] && echo "lab-dependencies: every lab README states what $(basename "$declaration") declares"
