@@ -384,7 +384,7 @@ static void _sl_candidates(const sl_case *c, const sl_check *k, const sl_case_re
         used += (size_t)snprintf(out + used, n - used, "Candidates: %s%s%s", failing, failing[0] && others[0] ? ", " : "",
                                  others);
     if (used < n && ruled[0])
-        used += (size_t)snprintf(out + used, n - used, "%sruled out: %s%s (%s)", failing[0] || others[0] ? "; " : "Ruled out: ",
+        used += (size_t)snprintf(out + used, n - used, "%s: %s%s (%s)", failing[0] || others[0] ? "; ruled out" : "Ruled out",
                                  ruled, ruled_count > 6 ? " and more" : "", ruled_count > 1 ? "their probes pass" : "its probe passes");
     if (used > 0 && used < n && out[used - 1] != ' ') snprintf(out + used, n - used, ".");
 }

@@ -1105,6 +1105,25 @@ static void test_grade_blames_on_evidence(void) {
     sl_image_free(&darker);
 }
 
+/* A picture wrong while every function its check runs passes its probe: the message rules them out
+ * once ("Ruled out: ..."), with no candidate left to name. */
+static void test_grade_rules_out_once(void) {
+    sl_case c = grade_case(6, SL_CHECK_CASCADE_INDEX);
+    sl_case_result r = {.finished = true};
+    add_capture(&r, sl_check_capture_name(&c, &c.checks[0]), square(64, 64, 0, 0, 0, 0, 0, 0));
+    sl_reference ref = image_reference(square(64, 64, 1, 0, 0, 0, 32, 64)); /* cascade 1 on the left half */
+    sl_grade_context passed = {.probes_passed = ~0ull};
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[0], &r, &ref, &passed, &out);
+    printf("  %s\n", out.message);
+    CHECK(!out.passed && strstr(out.message, "Ruled out: ") != NULL);
+    CHECK(strcasestr(out.message, "ruled out: ruled out") == NULL);
+    CHECK(strstr(out.message, "Candidates") == NULL);
+    sl_image_free(&out.diff);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+}
+
 /* Under --hidden --seed a probe's rows move as its "vary" says: one draw per
  * check and group, so rows keep their relations; kept parameters stay; two
  * seeds give two tables. */
@@ -1354,6 +1373,7 @@ int main(int argc, char **argv) {
         {"grade_leads_with_root_cause", test_grade_leads_with_root_cause},
         {"grade_probe_verdicts", test_grade_probe_verdicts},
         {"grade_blames_on_evidence", test_grade_blames_on_evidence},
+        {"grade_rules_out_once", test_grade_rules_out_once},
         {"hidden_varies_probe_inputs", test_hidden_varies_probe_inputs},
         {"grade_run_failures", test_grade_run_failures},
         {"grade_state_needs_evidence", test_grade_state_needs_evidence},
