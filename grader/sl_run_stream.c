@@ -179,10 +179,15 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
         }
         break;
     case SL_MSG_CAPTURE_ERROR: {
-        char text[400];
+        char text[2048];
         sl_utf8_clean(text, sizeof text, payload, (size_t)h->payload_length, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
         snprintf(r->capture_error, sizeof r->capture_error, "%s: %s", name, text);
         sl_utf8_trim(r->capture_error);
+        if (capture >= SL_CAPTURE_PROBE && capture < SL_CAPTURE_END) {
+            char *own = r->probe_errors[capture - SL_CAPTURE_PROBE];
+            snprintf(own, sizeof r->probe_errors[0], "%s", text);
+            sl_utf8_trim(own);
+        }
         s->received |= 1u << capture;
         break;
     }
