@@ -218,42 +218,50 @@ bool sl_diag_compile_error(sl_check_result *out, const char *error) {
     char file[sizeof out->not_compiled];
     snprintf(file, sizeof file, "%.*s", (int)main_len, main_file);
     /* The compiler's lines; a line that only continues the one before (Mesa's candidate list: the
-     * same location, then the text indented) goes on that line, so a list is one line, not twenty. */
-    char lines[sizeof out->message] = "", last[300] = "";
-    size_t used = 0, last_len = 0;
-    int continued = 0, more = 0; /* a line's continuations said, and left out */
+     * same location, then the text indented) goes on that line, so a list is one line, not twenty.
+     * Each line goes whole into the message, or is counted among those left out. */
+    char lines[sizeof out->message] = "", pending[1024] = "", last[300] = "";
+    size_t used = 0, last_len = 0, room = sizeof out->message - strlen(file) - 80;
+    int continued = 0, more = 0, dropped = 0; /* a line's continuations said and left out; lines left out */
     bool file_found = false;
-    for (const char *line = nl ? nl + 1 : NULL; line && *line && used + 1 < sizeof lines;) {
-        const char *end = strchr(line, '\n');
-        size_t len = end ? (size_t)(end - line) : strlen(line), file_len = 0;
-        bool is_error = false;
-        size_t at = _sl_compiler_location(line, len, &file_len, &is_error);
+    /* a text as long as the shortest buffer it came through (a probe's error) may end in a cut line */
+    bool cut = strlen(error) >= sizeof ((sl_case_result *)0)->probe_errors[0] - 8;
+    for (const char *line = nl ? nl + 1 : NULL;;) {
+        const char *end = line ? strchr(line, '\n') : NULL;
+        size_t len = !line ? 0 : end ? (size_t)(end - line) : strlen(line), file_len = 0;
+        bool is_error = false, whole = line && *line && (end || !cut);
+        size_t at = whole ? _sl_compiler_location(line, len, &file_len, &is_error) : 0;
         if (at && is_error && !file_found) {
             file_found = true;
             if (file_len > 5 && strncmp(line, "labs/", 5) == 0) snprintf(file, sizeof file, "%.*s", (int)file_len, line);
         }
-        bool continues = at && last_len == at && strncmp(line, last, at) == 0 && len > at + 2 &&
+        bool continues = whole && at && last_len == at && strncmp(line, last, at) == 0 && len > at + 2 &&
                          line[at] == ' ' && line[at + 1] == ' ';
+        size_t p = strlen(pending);
         if (continues && ++continued > _SL_CONTINUED_MAX) {
             more++;
         } else if (continues) {
             const char *rest = line + at;
             while (*rest == ' ') rest++;
-            bool after_colon = used > 0 && lines[used - 1] == ':';
-            used += (size_t)snprintf(lines + used, sizeof lines - used, "%s%.*s", after_colon ? " " : ", ",
-                                     (int)(len - (size_t)(rest - line)), rest);
-        } else if (len > 0) {
-            if (more > 0) used += (size_t)snprintf(lines + used, sizeof lines - used, " and %d more", more);
-            if (used >= sizeof lines) used = sizeof lines - 1;
+            snprintf(pending + p, sizeof pending - p, "%s%.*s", p > 0 && pending[p - 1] == ':' ? " " : ", ",
+                     (int)(len - (size_t)(rest - line)), rest);
+        } else if ((whole && len > 0) || !line || !*line || !whole) {
+            /* the line before is complete: into the message, whole, or left out */
+            if (more > 0) snprintf(pending + p, sizeof pending - p, " and %d more", more);
+            if (pending[0] && used + strlen(pending) + 1 < room)
+                used += (size_t)snprintf(lines + used, sizeof lines - used, "%s%s", used ? "\n" : "", pending);
+            else if (pending[0])
+                dropped++;
+            pending[0] = '\0';
             continued = more = 0;
-            used += (size_t)snprintf(lines + used, sizeof lines - used, "%s%.*s", used ? "\n" : "", (int)len, line);
+            if (!whole || !line || !*line) break;
+            snprintf(pending, sizeof pending, "%.*s", (int)len, line);
             last_len = at < sizeof last ? at : 0;
             snprintf(last, sizeof last, "%.*s", (int)last_len, line);
         }
-        if (used >= sizeof lines) used = sizeof lines - 1;
         line = end ? end + 1 : NULL;
     }
-    if (more > 0 && used + 1 < sizeof lines) snprintf(lines + used, sizeof lines - used, " and %d more", more);
+    if (dropped > 0) snprintf(lines + used, sizeof lines - used, "%s(and %d more lines)", used ? "\n" : "", dropped);
     sl_diag_say(out, "not reached: %s did not compile%s%s", file, lines[0] ? ":\n" : "", lines);
     snprintf(out->summary, sizeof out->summary, "not reached: %s did not compile", file);
     sl_utf8_trim(out->summary);

@@ -1124,6 +1124,54 @@ static void test_grade_rules_out_once(void) {
     sl_reference_free(&ref);
 }
 
+/* A GLSL compile error: "not reached", the lab file named as the handout names it, a candidate list on
+ * one line, whole lines only (more than fit are counted, a line the text's cut ends in is left out),
+ * and a report's later checks stopped by the same file point back to the first. */
+static void test_grade_compile_error_once(void) {
+    static char error[8192];
+    int n = snprintf(error, sizeof error, "GLSL compile error in framework/shaders/scene_bias.frag:\n"
+                     "labs/lab3_bias/shaders/bias.glsl:9:9: error: no matching function for call to `min(float)'; "
+                     "candidates are:\n");
+    for (int i = 0; i < 21; i++)
+        n += snprintf(error + n, sizeof error - (size_t)n, "labs/lab3_bias/shaders/bias.glsl:9:9: error:    vec%d min(vec%d, float)\n",
+                      i, i);
+    for (int i = 0; i < 40; i++)
+        n += snprintf(error + n, sizeof error - (size_t)n,
+                      "labs/lab3_bias/shaders/bias.glsl:%d:2: error: `x%d' undeclared, and a long explanation after it\n",
+                      20 + i, i);
+    memset(error + n, 'x', 2100); /* a line cut where the text was */
+    error[n + 2100] = '\0';
+    sl_check_result first = {0}, second = {0}, other = {0};
+    CHECK(!sl_diag_compile_error(&first, "the runner could not make its context"));
+    CHECK(sl_diag_compile_error(&first, error) && first.settled);
+    CHECK(strcmp(first.not_compiled, "labs/lab3_bias/shaders/bias.glsl") == 0);
+    CHECK(strncmp(first.message, "not reached: labs/lab3_bias/shaders/bias.glsl did not compile:\n", 63) == 0);
+    CHECK(strstr(first.message, "candidates are: vec0 min(vec0, float), vec1 min(vec1, float), vec2 min(vec2, float), "
+                                "vec3 min(vec3, float) and 17 more\n") != NULL);
+    CHECK(strstr(first.message, "error:    ") == NULL && strstr(first.message, "xxxx") == NULL);
+    const char *tail = strrchr(first.message, '\n');
+    CHECK(tail && strncmp(tail, "\n(and ", 6) == 0 && strstr(tail, " more lines)") != NULL);
+    char copy[sizeof first.message];
+    snprintf(copy, sizeof copy, "%s", first.message);
+    for (char *line = strtok(copy, "\n"); line; line = strtok(NULL, "\n")) { /* whole lines only */
+        size_t len = strlen(line);
+        CHECK(strncmp(line, "labs/", 5) != 0 || (len > 8 && (strcmp(line + len - 8, "after it") == 0 ||
+                                                           strcmp(line + len - 7, "17 more") == 0)));
+    }
+    CHECK(sl_diag_compile_error(&second, error));
+    CHECK(sl_diag_compile_error(&other, "GLSL compile error in framework/shaders/scene.vert:\n"
+                                        "framework/shaders/scene.vert:21:22: error: no function with name 'shadow_coord'\n"));
+    CHECK(strcmp(other.not_compiled, "framework/shaders/scene.vert") == 0); /* no lab file in error: the program */
+    sl_compile_errors_said said = {0};
+    sl_diag_compile_error_once(&first, &said);
+    sl_diag_compile_error_once(&second, &said);
+    sl_diag_compile_error_once(&other, &said);
+    CHECK(strstr(first.message, "candidates are") != NULL);
+    CHECK(strcmp(second.message, "not reached: labs/lab3_bias/shaders/bias.glsl did not compile (see above)") == 0);
+    CHECK(strstr(other.message, "no function with name 'shadow_coord'") != NULL);
+    printf("  %.200s ... %s\n", first.message, strrchr(first.message, '\n') ? strrchr(first.message, '\n') : "");
+}
+
 /* Under --hidden --seed a probe's rows move as its "vary" says: one draw per
  * check and group, so rows keep their relations; kept parameters stay; two
  * seeds give two tables. */
@@ -1374,6 +1422,7 @@ int main(int argc, char **argv) {
         {"grade_probe_verdicts", test_grade_probe_verdicts},
         {"grade_blames_on_evidence", test_grade_blames_on_evidence},
         {"grade_rules_out_once", test_grade_rules_out_once},
+        {"grade_compile_error_once", test_grade_compile_error_once},
         {"hidden_varies_probe_inputs", test_hidden_varies_probe_inputs},
         {"grade_run_failures", test_grade_run_failures},
         {"grade_state_needs_evidence", test_grade_state_needs_evidence},
