@@ -36,7 +36,7 @@ typedef struct sl_case_result {
     char protocol_error[256]; /* the runner's stream broke the rules: the case fails */
     char capture_error[512];  /* a capture that could not be taken, and why (the last one said) */
     /* each probe's own, since one shader error stops every probe of its file: probe k's why, or "" */
-    char probe_errors[SL_JOB_MAX_PROBES][2048];
+    char probe_errors[SL_JOB_MAX_PROBES][4096];
     char crashed_in[64];  /* lab function running when the runner died */
     char not_implemented[16][64];
     int not_implemented_count;

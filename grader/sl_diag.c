@@ -224,12 +224,10 @@ bool sl_diag_compile_error(sl_check_result *out, const char *error) {
     size_t used = 0, last_len = 0, room = sizeof out->message - strlen(file) - 80;
     int continued = 0, more = 0, dropped = 0; /* a line's continuations said and left out; lines left out */
     bool file_found = false;
-    /* a text as long as the shortest buffer it came through (a probe's error) may end in a cut line */
-    bool cut = strlen(error) >= sizeof ((sl_case_result *)0)->probe_errors[0] - 8;
     for (const char *line = nl ? nl + 1 : NULL;;) {
         const char *end = line ? strchr(line, '\n') : NULL;
         size_t len = !line ? 0 : end ? (size_t)(end - line) : strlen(line), file_len = 0;
-        bool is_error = false, whole = line && *line && (end || !cut);
+        bool is_error = false, whole = line && *line;
         size_t at = whole ? _sl_compiler_location(line, len, &file_len, &is_error) : 0;
         if (at && is_error && !file_found) {
             file_found = true;
@@ -245,7 +243,7 @@ bool sl_diag_compile_error(sl_check_result *out, const char *error) {
             while (*rest == ' ') rest++;
             snprintf(pending + p, sizeof pending - p, "%s%.*s", p > 0 && pending[p - 1] == ':' ? " " : ", ",
                      (int)(len - (size_t)(rest - line)), rest);
-        } else if ((whole && len > 0) || !line || !*line || !whole) {
+        } else if (len > 0 || !whole) {
             /* the line before is complete: into the message, whole, or left out */
             if (more > 0) snprintf(pending + p, sizeof pending - p, " and %d more", more);
             if (pending[0] && used + strlen(pending) + 1 < room)
@@ -254,7 +252,7 @@ bool sl_diag_compile_error(sl_check_result *out, const char *error) {
                 dropped++;
             pending[0] = '\0';
             continued = more = 0;
-            if (!whole || !line || !*line) break;
+            if (!whole) break;
             snprintf(pending, sizeof pending, "%.*s", (int)len, line);
             last_len = at < sizeof last ? at : 0;
             snprintf(last, sizeof last, "%.*s", (int)last_len, line);

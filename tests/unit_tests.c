@@ -1125,8 +1125,9 @@ static void test_grade_rules_out_once(void) {
 }
 
 /* A GLSL compile error: "not reached", the lab file named as the handout names it, a candidate list on
- * one line, whole lines only (more than fit are counted, a line the text's cut ends in is left out),
- * and a report's later checks stopped by the same file point back to the first. */
+ * one line, whole lines only (more than fit are counted), and a report's later checks stopped by the
+ * same file point back to the first. A compiler's text cut where the channel's buffer ends loses its
+ * last, cut line there. */
 static void test_grade_compile_error_once(void) {
     static char error[8192];
     int n = snprintf(error, sizeof error, "GLSL compile error in framework/shaders/scene_bias.frag:\n"
@@ -1139,8 +1140,6 @@ static void test_grade_compile_error_once(void) {
         n += snprintf(error + n, sizeof error - (size_t)n,
                       "labs/lab3_bias/shaders/bias.glsl:%d:2: error: `x%d' undeclared, and a long explanation after it\n",
                       20 + i, i);
-    memset(error + n, 'x', 2100); /* a line cut where the text was */
-    error[n + 2100] = '\0';
     sl_check_result first = {0}, second = {0}, other = {0};
     CHECK(!sl_diag_compile_error(&first, "the runner could not make its context"));
     CHECK(sl_diag_compile_error(&first, error) && first.settled);
@@ -1169,6 +1168,19 @@ static void test_grade_compile_error_once(void) {
     CHECK(strstr(first.message, "candidates are") != NULL);
     CHECK(strcmp(second.message, "not reached: labs/lab3_bias/shaders/bias.glsl did not compile (see above)") == 0);
     CHECK(strstr(other.message, "no function with name 'shadow_coord'") != NULL);
+    /* from the channel: a probe's compile error longer than its buffer, cut to whole lines */
+    sl_case c = grade_case(3, SL_CHECK_PROBE);
+    static stream st;
+    st.size = 0;
+    put(&st, SL_MSG_HELLO, NULL, "osmesa\nllvmpipe", 15, 15);
+    size_t length = strlen(error);
+    memset(error + length, 'x', 3000);
+    put(&st, SL_MSG_CAPTURE_ERROR, "probe_0", error, length + 3000, length + 3000);
+    sl_case_result r;
+    sl_run_parse_stream(&c, st.data, st.size, &r);
+    size_t kept = strlen(r.probe_errors[0]);
+    CHECK(kept > 0 && r.probe_errors[0][kept - 1] == '\n' && strstr(r.probe_errors[0], "xxx") == NULL);
+    sl_case_result_free(&r);
     printf("  %.200s ... %s\n", first.message, strrchr(first.message, '\n') ? strrchr(first.message, '\n') : "");
 }
 
