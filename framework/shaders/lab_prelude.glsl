@@ -1,9 +1,10 @@
-// What a lab's GLSL file may call of the framework's (framework code). Every
-// program that includes a lab file includes this first: the camera passes
-// (through shading.glsl), the vertex and moments and blur passes, and the
-// grader's probe of each function; so a lab file that compiles in the viewer
-// compiles, with the same functions, where the grader calls its functions one
-// by one. Included once per program.
+// What a lab's GLSL file may call of the framework's (framework code): the
+// light (its type, position, direction, near and far planes), the direction
+// towards it, lab 5's linear depth. Every program that includes a lab file
+// includes this first: the camera passes (through shading.glsl), the vertex,
+// moments and blur passes, and the grader's probe of each function; so a lab
+// file that compiles in the viewer compiles, with the same functions, where
+// the grader calls its functions one by one. Included once per program.
 
 // The light's type (0 directional, 1 spot, 2 point) is compiled in: the
 // framework builds the camera pass per type (#define SL_LIGHT_TYPE), so a
@@ -20,3 +21,7 @@ uniform vec3 u_light_direction;
 vec3 sl_direction_to_light(vec3 world_position) {
     return sl_light_type == 0 ? -u_light_direction : normalize(u_light_position - world_position);
 }
+
+// The light's near and far planes (u_light_near, u_light_far), and lab 5's
+// linear depth from them (sl_vsm_depth).
+#include "vsm_depth.glsl"
