@@ -57,12 +57,13 @@ typedef struct _sl_maps {
     bool used[SL_PROBE_MAP_COUNT];
 } _sl_maps;
 
-/* The probe's fragment shader: the lab's file, then a main() that reads row
- * gl_FragCoord.y's inputs from u_inputs and writes the function's result. */
+/* The probe's fragment shader: the lab files' prelude (the framework functions a lab file may call, as
+ * in every program that includes one), the lab's file, then a main() that reads row gl_FragCoord.y's
+ * inputs from u_inputs and writes the function's result. */
 static char *_sl_probe_source(const sl_probe_function *f, const _sl_maps *maps, int map_params) {
     _sl_text t = {0};
     static const char *const result_types[] = {"", "float", "vec2", "vec3", "vec4"};
-    _sl_add(&t, "#version 330 core\n#include \"%s\"\n", f->file);
+    _sl_add(&t, "#version 330 core\n#include \"lab_prelude.glsl\"\n#include \"%s\"\n", f->file);
     _sl_add(&t, "uniform sampler2D u_inputs;\nout vec4 o_result;\n");
     for (int m = 0; m < map_params; m++)
         for (int k = 0; k < SL_PROBE_MAP_COUNT; k++)

@@ -8,6 +8,7 @@
 
 #include "sl_case.h"
 #include "sl_image.h"
+#include "sl_protocol.h"
 
 #define SL_RUN_MAX_CAPTURES 16
 #define SL_RUN_MAX_NUMBERS (SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS)
@@ -33,7 +34,9 @@ typedef struct sl_case_result {
     int exit_code;
     char error[8192];     /* set-up or shader compile error, with file:line */
     char protocol_error[256]; /* the runner's stream broke the rules: the case fails */
-    char capture_error[512];  /* a capture that could not be taken, and why */
+    char capture_error[512];  /* a capture that could not be taken, and why (the last one said) */
+    /* each probe's own, since one shader error stops every probe of its file: probe k's why, or "" */
+    char probe_errors[SL_JOB_MAX_PROBES][4096];
     char crashed_in[64];  /* lab function running when the runner died */
     char not_implemented[16][64];
     int not_implemented_count;

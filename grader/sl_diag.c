@@ -1,5 +1,6 @@
 #include "sl_diag.h"
 
+#include <ctype.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -172,4 +173,108 @@ const char *sl_diag_enum_name(unsigned value) {
     case GL_TEXTURE_CUBE_MAP_NEGATIVE_Z: return "GL_TEXTURE_CUBE_MAP_NEGATIVE_Z";
     default: return sl_gl_enum_name((GLenum)value);
     }
+}
+
+/* ---- GLSL compile errors ---- */
+
+#define _SL_COMPILE_ERROR "GLSL compile error in "
+/* A list (of candidate functions) shows this many items, then how many more: the first say what the
+ * compiler wanted; twenty overloads of min() say nothing more. */
+#define _SL_CONTINUED_MAX 4
+
+/* The length of a compiler line's location and kind ("labs/x.glsl:9:9: error:"), 0 if it has none;
+ * *file_len: the length of its file name. */
+static size_t _sl_compiler_location(const char *line, size_t len, size_t *file_len, bool *error) {
+    const char *end = line + len, *colon = memchr(line, ':', len);
+    if (!colon || colon == line) return 0;
+    const char *p = colon + 1;
+    int numbers = 0;
+    while (numbers < 2 && p < end && isdigit((unsigned char)*p)) {
+        while (p < end && isdigit((unsigned char)*p)) p++;
+        if (p >= end || *p != ':') return 0;
+        p++;
+        numbers++;
+    }
+    if (numbers == 0) return 0;
+    while (p < end && *p == ' ') p++;
+    static const char *const kinds[] = {"error:", "warning:"};
+    for (int i = 0; i < 2; i++) {
+        size_t n = strlen(kinds[i]);
+        if ((size_t)(end - p) >= n && strncmp(p, kinds[i], n) == 0) {
+            *file_len = (size_t)(colon - line);
+            *error = i == 0;
+            return (size_t)(p + n - line);
+        }
+    }
+    return 0;
+}
+
+bool sl_diag_compile_error(sl_check_result *out, const char *error) {
+    size_t prefix = strlen(_SL_COMPILE_ERROR);
+    if (!error || strncmp(error, _SL_COMPILE_ERROR, prefix) != 0) return false;
+    const char *main_file = error + prefix, *nl = strchr(main_file, '\n');
+    size_t main_len = nl ? (size_t)(nl - main_file) : strlen(main_file);
+    if (main_len > 0 && main_file[main_len - 1] == ':') main_len--;
+    char file[sizeof out->not_compiled];
+    snprintf(file, sizeof file, "%.*s", (int)main_len, main_file);
+    /* The compiler's lines; a line that only continues the one before (Mesa's candidate list: the
+     * same location, then the text indented) goes on that line, so a list is one line, not twenty.
+     * Each line goes whole into the message, or is counted among those left out. */
+    char lines[sizeof out->message] = "", pending[1024] = "", last[300] = "";
+    size_t used = 0, last_len = 0, room = sizeof out->message - strlen(file) - 80;
+    int continued = 0, more = 0, dropped = 0; /* a line's continuations said and left out; lines left out */
+    bool file_found = false;
+    for (const char *line = nl ? nl + 1 : NULL;;) {
+        const char *end = line ? strchr(line, '\n') : NULL;
+        size_t len = !line ? 0 : end ? (size_t)(end - line) : strlen(line), file_len = 0;
+        bool is_error = false, whole = line && *line;
+        size_t at = whole ? _sl_compiler_location(line, len, &file_len, &is_error) : 0;
+        if (at && is_error && !file_found) {
+            file_found = true;
+            if (file_len > 5 && strncmp(line, "labs/", 5) == 0) snprintf(file, sizeof file, "%.*s", (int)file_len, line);
+        }
+        bool continues = whole && at && last_len == at && strncmp(line, last, at) == 0 && len > at + 2 &&
+                         line[at] == ' ' && line[at + 1] == ' ';
+        size_t p = strlen(pending);
+        if (continues && ++continued > _SL_CONTINUED_MAX) {
+            more++;
+        } else if (continues) {
+            const char *rest = line + at;
+            while (*rest == ' ') rest++;
+            snprintf(pending + p, sizeof pending - p, "%s%.*s", p > 0 && pending[p - 1] == ':' ? " " : ", ",
+                     (int)(len - (size_t)(rest - line)), rest);
+        } else if (len > 0 || !whole) {
+            /* the line before is complete: into the message, whole, or left out */
+            if (more > 0) snprintf(pending + p, sizeof pending - p, " and %d more", more);
+            if (pending[0] && used + strlen(pending) + 1 < room)
+                used += (size_t)snprintf(lines + used, sizeof lines - used, "%s%s", used ? "\n" : "", pending);
+            else if (pending[0])
+                dropped++;
+            pending[0] = '\0';
+            continued = more = 0;
+            if (!whole) break;
+            snprintf(pending, sizeof pending, "%.*s", (int)len, line);
+            last_len = at < sizeof last ? at : 0;
+            snprintf(last, sizeof last, "%.*s", (int)last_len, line);
+        }
+        line = end ? end + 1 : NULL;
+    }
+    if (dropped > 0) snprintf(lines + used, sizeof lines - used, "%s(and %d more lines)", used ? "\n" : "", dropped);
+    sl_diag_say(out, "not reached: %s did not compile%s%s", file, lines[0] ? ":\n" : "", lines);
+    snprintf(out->summary, sizeof out->summary, "not reached: %s did not compile", file);
+    sl_utf8_trim(out->summary);
+    sl_utf8_copy(out->not_compiled, sizeof out->not_compiled, file);
+    out->settled = true;
+    return true;
+}
+
+void sl_diag_compile_error_once(sl_check_result *out, sl_compile_errors_said *said) {
+    if (!out->not_compiled[0] || out->passed) return;
+    for (int i = 0; i < said->count; i++)
+        if (strcmp(said->files[i], out->not_compiled) == 0) {
+            sl_diag_say(out, "not reached: %s did not compile (see above)", out->not_compiled);
+            return;
+        }
+    if (said->count < (int)(sizeof said->files / sizeof said->files[0]))
+        snprintf(said->files[said->count++], sizeof said->files[0], "%s", out->not_compiled);
 }

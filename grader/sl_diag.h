@@ -65,6 +65,9 @@ typedef struct sl_check_result {
      * once. Empty when nothing names a function. */
     char cause_function[64];
     const char *cause_kind;
+    /* The shader file whose GLSL compile error stopped the check before it could run
+     * ("labs/lab3_bias/shaders/bias.glsl"), or "": a report quotes the compiler once per file. */
+    char not_compiled[160];
 } sl_check_result;
 
 /* The kinds of cause a failed check names (results.json's "cause": {"function", "kind"}). */
@@ -117,6 +120,18 @@ bool sl_diag_image_passes(const sl_check *k, const sl_compare_stats *st, const c
  * the difference itself was met: a failed one keeps its own message. */
 bool sl_diag_lit_lost(const sl_image *student, const sl_image *reference, const sl_image *mask, const char *what,
                       sl_check_result *out);
+/* A runner's error that is a GLSL compile error ("GLSL compile error in MAIN:" and the compiler's lines):
+ * the check was not reached. Says "not reached: FILE did not compile:" with the compiler's lines (a
+ * candidate list on one line), FILE the first error's when it is a lab file, else MAIN; sets
+ * out->not_compiled and settles the check. False (out untouched) for any other error. */
+bool sl_diag_compile_error(sl_check_result *out, const char *error);
+/* A report quotes each compile error once: the first check (in the report's order) that FILE stopped
+ * keeps the compiler's lines, each later one says "not reached: FILE did not compile (see above)". */
+typedef struct sl_compile_errors_said {
+    char files[32][160];
+    int count;
+} sl_compile_errors_said;
+void sl_diag_compile_error_once(sl_check_result *out, sl_compile_errors_said *said);
 /* The TODO tag and file of a lab function ("TODO(lab3.2)", "labs/lab3_bias/shaders/bias.glsl"). */
 bool sl_diag_stub_location(const char *function, const char **todo, const char **file);
 

@@ -54,6 +54,10 @@ bool sl_probe_failure_explains(const sl_case *c, const sl_check *k, const sl_pro
                                bool isolated);
 /* (b) alone, for a function with or without a probe; never a bonus function for a regular check. */
 bool sl_function_may_be_blamed(const sl_case *c, const sl_check *k, const char *function, bool isolated);
+/* The step of its lab a student must have done for case c to pass, by the TODO tags of the lab's
+ * functions its regular checks run: a case of probes alone, the first (its functions are the steps'
+ * own, one by one), a case of pictures, the last; 0 where none is known (lab 0). */
+int sl_case_step(const sl_case *c);
 /* The path the framework takes for case c, in a few words ("pcf_grid() with radius 1"); empty when there is nothing to say. */
 void sl_case_path(const sl_case *c, const sl_case_result *r, char *out, size_t n);
 /* The GLSL function that computes visibility for case c ("pcf_grid()"), and its TODO ("lab4.3"): its lab's

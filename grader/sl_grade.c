@@ -58,7 +58,7 @@ static void _sl_explain_run_failure(const sl_case_result *r, sl_check_result *ou
         sl_diag_say(out, "crashed (%s)%s%s%s", strsignal(r->signal), r->crashed_in[0] ? " in " : " outside lab code",
                 r->crashed_in, r->crashed_in[0] ? "()" : "");
     } else if (r->error[0]) {
-        sl_diag_say(out, "%s", r->error);
+        if (!sl_diag_compile_error(out, r->error)) sl_diag_say(out, "%s", r->error);
     } else {
         sl_diag_say(out, "the case stopped early (exit status %d)%s%s%s", r->exit_code, r->crashed_in[0] ? " in " : "",
                 r->crashed_in, r->crashed_in[0] ? "()" : "");
@@ -384,7 +384,7 @@ static void _sl_candidates(const sl_case *c, const sl_check *k, const sl_case_re
         used += (size_t)snprintf(out + used, n - used, "Candidates: %s%s%s", failing, failing[0] && others[0] ? ", " : "",
                                  others);
     if (used < n && ruled[0])
-        used += (size_t)snprintf(out + used, n - used, "%sruled out: %s%s (%s)", failing[0] || others[0] ? "; " : "Ruled out: ",
+        used += (size_t)snprintf(out + used, n - used, "%s: %s%s (%s)", failing[0] || others[0] ? "; ruled out" : "Ruled out",
                                  ruled, ruled_count > 6 ? " and more" : "", ruled_count > 1 ? "their probes pass" : "its probe passes");
     if (used > 0 && used < n && out[used - 1] != ' ') snprintf(out + used, n - used, ".");
 }
@@ -446,7 +446,9 @@ static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_resul
 }
 
 bool sl_probe_failure_of(const sl_case *c, const sl_check *k, const sl_check_result *result, sl_probe_failure *out) {
-    if (k->kind != SL_CHECK_PROBE || result->passed || result->reference_problem) return false;
+    /* a probe its shader's compile error kept from running is no evidence about its function */
+    if (k->kind != SL_CHECK_PROBE || result->passed || result->reference_problem || result->not_compiled[0])
+        return false;
     memset(out, 0, sizeof *out);
     out->function = k->function;
     snprintf(out->where, sizeof out->where, "%s / %s", c->name, k->name);
@@ -568,7 +570,7 @@ static void _sl_grade_and_name(const sl_case *c, const sl_check *k, const sl_cas
     }
     const char *what = out->summary[0] ? out->summary : out->message;
     const sl_probe_function *f = k->kind == SL_CHECK_PROBE ? sl_probe_at(k->function) : NULL;
-    if (f && strncmp(what, f->name, strlen(f->name)) != 0) {
+    if (f && !out->not_compiled[0] && strncmp(what, f->name, strlen(f->name)) != 0) {
         char named[sizeof out->summary + 80];
         snprintf(named, sizeof named, "%s(): %s", f->name, what); /* one verdict, told apart per function */
         _sl_name_diagnosis(out, named, false);
@@ -590,7 +592,7 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
     if (!r->finished && !(r->capture_count > 0 && !r->signal && !r->timed_out && !r->error[0] && !r->staff_error[0])) {
         _sl_explain_run_failure(r, out);
         out->reference_problem = r->staff_error[0] != '\0'; /* the staff's to solve, as a reference's */
-        sl_utf8_copy(out->summary, sizeof out->summary, out->message);
+        if (!out->summary[0]) sl_utf8_copy(out->summary, sizeof out->summary, out->message);
         return;
     }
     /* The software renderer cuts endless shader loops short, so such a case
@@ -620,7 +622,8 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
     case SL_CHECK_IMAGE: _sl_check_image(c, k, r, ref, out); break;
     case SL_CHECK_PROBE:
         sl_diagnose_probe(c, k, r, ref, out);
-        if (!out->passed) sl_diag_set_cause(out, sl_probe_at(k->function)->name, out->stub ? SL_CAUSE_STUB : SL_CAUSE_WRONG);
+        /* a function its shader's compile error kept from running is not wrong: it was not reached */
+        if (!out->passed && !out->not_compiled[0]) sl_diag_set_cause(out, sl_probe_at(k->function)->name, out->stub ? SL_CAUSE_STUB : SL_CAUSE_WRONG);
         break;
     default:
         if (lab_diagnosis) lab_diagnosis(c, k, r, ref, out);

@@ -498,6 +498,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                         sl_utf8_copy(lf->summary, sizeof lf->summary, cr->summary[0] ? cr->summary : cr->message);
                     }
         }
+        /* Each shader's compile error quoted once, at the first check it stopped, in the reports' order. */
+        static sl_compile_errors_said said;
+        said.count = 0;
+        for (int i = 0; i < count; i++)
+            for (int k = 0; k < cases[i].check_count; k++) sl_diag_compile_error_once(&graded[i].checks[k], &said);
         rep.seconds = _sl_monotonic_now() - start;
         printf("shadowlab-grade: %s labs (%s), %d cases%s\n", rep.labs_kind, rep.labs_dir, count,
                o.isolate ? ", each lab isolated (the solutions stand in for the labs it builds on, the handout's "

@@ -16,6 +16,7 @@
 
 #include "sl_build_failure.h"
 #include "sl_backend.h"
+#include "sl_diagnose.h"
 #include "sl_files.h"
 #include "sl_grade.h"
 #include "sl_gradebook.h"
@@ -225,6 +226,47 @@ void _sl_case_ended(const sl_case *c, const sl_case_result *r, int ended, int to
     fflush(stderr);
 }
 
+/* Where a case stands in the order a student works a lab: its probes first (each step's function on its
+ * own, the first thing to fix: a picture's message leads with a failed probe, and quotes a compile
+ * error there), then the pictures by the last step they need, then the cases only a bonus has. */
+typedef struct _sl_case_rank {
+    int lab, kind, step, index;
+} _sl_case_rank;
+
+static _sl_case_rank _sl_rank_of(const sl_case *c, int index) {
+    bool probes_only = true, bonus_only = true;
+    for (int k = 0; k < c->check_count; k++) {
+        probes_only &= c->checks[k].kind == SL_CHECK_PROBE;
+        bonus_only &= c->checks[k].bonus;
+    }
+    return (_sl_case_rank){c->lab, bonus_only ? 2 : probes_only ? 0 : 1, sl_case_step(c), index};
+}
+
+static int _sl_compare_ranks(const void *a, const void *b) {
+    const _sl_case_rank *x = a, *y = b;
+    if (x->lab != y->lab) return x->lab < y->lab ? -1 : 1;
+    if (x->kind != y->kind) return x->kind < y->kind ? -1 : 1;
+    if (x->step != y->step) return x->step < y->step ? -1 : 1;
+    return x->index < y->index ? -1 : x->index > y->index; /* then by name, as read */
+}
+
+/* Sorts the cases into the order a student works (_sl_case_rank): every report prints them so. */
+static void _sl_order_cases(sl_case *cases, int count) {
+    _sl_case_rank *ranks = malloc(sizeof *ranks * (size_t)(count > 0 ? count : 1));
+    sl_case *sorted = malloc(sizeof *sorted * (size_t)(count > 0 ? count : 1));
+    if (!ranks || !sorted) { /* no memory: the name order stands */
+        free(ranks);
+        free(sorted);
+        return;
+    }
+    for (int i = 0; i < count; i++) ranks[i] = _sl_rank_of(&cases[i], i);
+    qsort(ranks, (size_t)count, sizeof *ranks, _sl_compare_ranks);
+    for (int i = 0; i < count; i++) sorted[i] = cases[ranks[i].index];
+    memcpy(cases, sorted, sizeof *sorted * (size_t)count);
+    free(ranks);
+    free(sorted);
+}
+
 int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report *rep) {
     DIR *d = opendir(o->cases_dir);
     if (!d) return -1;
@@ -258,6 +300,7 @@ int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report *rep) {
         if (_sl_matches_any(c->name, o->excludes, o->exclude_count)) continue;
         count++;
     }
+    _sl_order_cases(cases, count);
     return count;
 }
 

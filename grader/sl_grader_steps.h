@@ -80,7 +80,8 @@ bool _sl_compile_fence(const char *runners_dir, char *out, size_t n);
 /* --progress: called as each case ends (context: an _sl_progress). */
 void _sl_case_ended(const sl_case *c, const sl_case_result *r, int ended, int total, void *context);
 
-/* Reads the case files (in name order), keeps those the options select. */
+/* Reads the case files, keeps those the options select, in the order a student works each lab (its
+ * probes, its pictures by step, its bonus's cases last: grader/cases/README.md): every report's order. */
 int _sl_load_cases(const _sl_options *o, sl_case *cases, sl_grade_report *rep);
 
 /* The renderer the runners get, named by the solutions' runner (staff code: no lab code can speak for

@@ -267,8 +267,51 @@ static void _sl_acknowledge(_sl_job *job, const sl_run_options *o) {
     _sl_close(&job->job_fd);
 }
 
+/* Where `text` names a file under `seen` (the folder as the runner saw it: "/labs" in the namespaces
+ * sandbox, a real path below it), the name the student knows: `as` ("labs") and the rest. Only at a
+ * name's start (the text's, or after a space, a bracket or a quote), so a longer path is left alone. */
+static void _sl_rename_folder(char *text, size_t size, const char *seen, const char *as) {
+    size_t n = strlen(seen);
+    if (n < 2 || seen[0] != '/') return;
+    char out[8192];
+    size_t used = 0;
+    for (const char *p = text; *p && used + 1 < sizeof out;) {
+        bool start = p == text || strchr(" \t\n(\"'`", p[-1]) != NULL;
+        if (start && strncmp(p, seen, n) == 0 && p[n] == '/') {
+            used += (size_t)snprintf(out + used, sizeof out - used, "%s", as);
+            p += n;
+            if (used >= sizeof out) used = sizeof out - 1;
+            continue;
+        }
+        out[used++] = *p++;
+    }
+    out[used] = '\0';
+    sl_utf8_copy(text, size, out);
+}
+
+/* A runner's errors name files as it saw them, in the sandbox's view (/labs/lab3_bias/shaders/bias.glsl)
+ * or, below that level, by their real paths on this machine: a student knows them as the handout names
+ * them (labs/lab3_bias/shaders/bias.glsl). */
+static void _sl_student_paths(sl_case_result *r, const char *labs_dir, const char *framework_dir) {
+    const char *seen[2] = {labs_dir, framework_dir}, *as[2] = {"labs", "framework"};
+    for (int i = 0; i < 2; i++) {
+        char real[4096];
+        const char *forms[2] = {seen[i], realpath(seen[i], real) ? real : NULL};
+        for (int f = 0; f < 2; f++) {
+            if (!forms[f] || (f == 1 && strcmp(forms[1], forms[0]) == 0)) continue;
+            _sl_rename_folder(r->error, sizeof r->error, forms[f], as[i]);
+            _sl_rename_folder(r->capture_error, sizeof r->capture_error, forms[f], as[i]);
+            for (int k = 0; k < SL_JOB_MAX_PROBES; k++)
+                _sl_rename_folder(r->probe_errors[k], sizeof r->probe_errors[k], forms[f], as[i]);
+        }
+    }
+}
+
 static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
     sl_case_result *r = job->stream.r;
+    char labs_dir[sizeof job->proc.labs_dir], framework_dir[sizeof job->proc.framework_dir];
+    snprintf(labs_dir, sizeof labs_dir, "%s", job->proc.labs_dir); /* as the runner saw them */
+    snprintf(framework_dir, sizeof framework_dir, "%s", job->proc.framework_dir);
     if (kill_it) sl_sandbox_kill(o->sandbox, job->proc.pid);
     _sl_close(&job->job_fd);
     free(job->job);
@@ -291,6 +334,7 @@ static void _sl_finish(_sl_job *job, const sl_run_options *o, bool kill_it) {
     if (WIFEXITED(status)) r->exit_code = WEXITSTATUS(status);
     bool done = job->stream.done;
     _sl_stream_end(&job->stream);
+    _sl_student_paths(r, labs_dir, framework_dir);
     r->finished = done && !r->protocol_error[0] && !r->staff_error[0] && !r->timed_out && !r->interrupted &&
                   WIFEXITED(status) && WEXITSTATUS(status) == 0;
     if (r->protocol_error[0]) {

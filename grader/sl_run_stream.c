@@ -107,6 +107,15 @@ static bool _sl_header_ok(_sl_stream *s, const sl_message_header *h, const char 
     return true;
 }
 
+/* A compiler's message that filled its buffer was cut: it ends at its last whole line, so the report
+ * quotes the compiler's lines as it wrote them, never half of one (other text keeps its every
+ * character up to the cut). */
+static void _sl_whole_lines(char *text, size_t size) {
+    size_t len = strlen(text);
+    char *nl = len + 4 >= size && strncmp(text, "GLSL compile error in ", 22) == 0 ? strrchr(text, '\n') : NULL;
+    if (nl) nl[1] = '\0';
+}
+
 static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint64_t n) {
     sl_case_result *r = s->r;
     int32_t dims[3];
@@ -168,6 +177,7 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
     case SL_MSG_ERROR:
         sl_utf8_clean(r->error, sizeof r->error, payload, (size_t)h->payload_length,
                       SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
+        _sl_whole_lines(r->error, sizeof r->error);
         /* Before its hello the runner has no GL context yet: it could not make
          * one (no display, no headless GL, out of memory), a fault of this
          * machine, never the submission's: the staff's to solve, as a missing
@@ -179,10 +189,16 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
         }
         break;
     case SL_MSG_CAPTURE_ERROR: {
-        char text[400];
+        char text[sizeof r->probe_errors[0]];
         sl_utf8_clean(text, sizeof text, payload, (size_t)h->payload_length, SL_UTF8_KEEP_NEWLINE | SL_UTF8_KEEP_TAB);
+        _sl_whole_lines(text, sizeof text);
         snprintf(r->capture_error, sizeof r->capture_error, "%s: %s", name, text);
         sl_utf8_trim(r->capture_error);
+        if (capture >= SL_CAPTURE_PROBE && capture < SL_CAPTURE_END) {
+            char *own = r->probe_errors[capture - SL_CAPTURE_PROBE];
+            snprintf(own, sizeof r->probe_errors[0], "%s", text);
+            sl_utf8_trim(own);
+        }
         s->received |= 1u << capture;
         break;
     }

@@ -1105,6 +1105,85 @@ static void test_grade_blames_on_evidence(void) {
     sl_image_free(&darker);
 }
 
+/* A picture wrong while every function its check runs passes its probe: the message rules them out
+ * once ("Ruled out: ..."), with no candidate left to name. */
+static void test_grade_rules_out_once(void) {
+    sl_case c = grade_case(6, SL_CHECK_CASCADE_INDEX);
+    sl_case_result r = {.finished = true};
+    add_capture(&r, sl_check_capture_name(&c, &c.checks[0]), square(64, 64, 0, 0, 0, 0, 0, 0));
+    sl_reference ref = image_reference(square(64, 64, 1, 0, 0, 0, 32, 64)); /* cascade 1 on the left half */
+    sl_grade_context passed = {.probes_passed = ~0ull};
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[0], &r, &ref, &passed, &out);
+    printf("  %s\n", out.message);
+    CHECK(!out.passed && strstr(out.message, "Ruled out: ") != NULL);
+    CHECK(strcasestr(out.message, "ruled out: ruled out") == NULL);
+    CHECK(strstr(out.message, "Candidates") == NULL);
+    sl_image_free(&out.diff);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+}
+
+/* A GLSL compile error: "not reached", the lab file named as the handout names it, a candidate list on
+ * one line, whole lines only (more than fit are counted), and a report's later checks stopped by the
+ * same file point back to the first. A compiler's text cut where the channel's buffer ends loses its
+ * last, cut line there. */
+static void test_grade_compile_error_once(void) {
+    static char error[8192];
+    int n = snprintf(error, sizeof error, "GLSL compile error in framework/shaders/scene_bias.frag:\n"
+                     "labs/lab3_bias/shaders/bias.glsl:9:9: error: no matching function for call to `min(float)'; "
+                     "candidates are:\n");
+    for (int i = 0; i < 21; i++)
+        n += snprintf(error + n, sizeof error - (size_t)n, "labs/lab3_bias/shaders/bias.glsl:9:9: error:    vec%d min(vec%d, float)\n",
+                      i, i);
+    for (int i = 0; i < 40; i++)
+        n += snprintf(error + n, sizeof error - (size_t)n,
+                      "labs/lab3_bias/shaders/bias.glsl:%d:2: error: `x%d' undeclared, and a long explanation after it\n",
+                      20 + i, i);
+    sl_check_result first = {0}, second = {0}, other = {0};
+    CHECK(!sl_diag_compile_error(&first, "the runner could not make its context"));
+    CHECK(sl_diag_compile_error(&first, error) && first.settled);
+    CHECK(strcmp(first.not_compiled, "labs/lab3_bias/shaders/bias.glsl") == 0);
+    CHECK(strncmp(first.message, "not reached: labs/lab3_bias/shaders/bias.glsl did not compile:\n", 63) == 0);
+    CHECK(strstr(first.message, "candidates are: vec0 min(vec0, float), vec1 min(vec1, float), vec2 min(vec2, float), "
+                                "vec3 min(vec3, float) and 17 more\n") != NULL);
+    CHECK(strstr(first.message, "error:    ") == NULL && strstr(first.message, "xxxx") == NULL);
+    const char *tail = strrchr(first.message, '\n');
+    CHECK(tail && strncmp(tail, "\n(and ", 6) == 0 && strstr(tail, " more lines)") != NULL);
+    char copy[sizeof first.message];
+    snprintf(copy, sizeof copy, "%s", first.message);
+    for (char *line = strtok(copy, "\n"); line; line = strtok(NULL, "\n")) { /* whole lines only */
+        size_t len = strlen(line);
+        CHECK(strncmp(line, "labs/", 5) != 0 || (len > 8 && (strcmp(line + len - 8, "after it") == 0 ||
+                                                           strcmp(line + len - 7, "17 more") == 0)));
+    }
+    CHECK(sl_diag_compile_error(&second, error));
+    CHECK(sl_diag_compile_error(&other, "GLSL compile error in framework/shaders/scene.vert:\n"
+                                        "framework/shaders/scene.vert:21:22: error: no function with name 'shadow_coord'\n"));
+    CHECK(strcmp(other.not_compiled, "framework/shaders/scene.vert") == 0); /* no lab file in error: the program */
+    sl_compile_errors_said said = {0};
+    sl_diag_compile_error_once(&first, &said);
+    sl_diag_compile_error_once(&second, &said);
+    sl_diag_compile_error_once(&other, &said);
+    CHECK(strstr(first.message, "candidates are") != NULL);
+    CHECK(strcmp(second.message, "not reached: labs/lab3_bias/shaders/bias.glsl did not compile (see above)") == 0);
+    CHECK(strstr(other.message, "no function with name 'shadow_coord'") != NULL);
+    /* from the channel: a probe's compile error longer than its buffer, cut to whole lines */
+    sl_case c = grade_case(3, SL_CHECK_PROBE);
+    static stream st;
+    st.size = 0;
+    put(&st, SL_MSG_HELLO, NULL, "osmesa\nllvmpipe", 15, 15);
+    size_t length = strlen(error);
+    memset(error + length, 'x', 3000);
+    put(&st, SL_MSG_CAPTURE_ERROR, "probe_0", error, length + 3000, length + 3000);
+    sl_case_result r;
+    sl_run_parse_stream(&c, st.data, st.size, &r);
+    size_t kept = strlen(r.probe_errors[0]);
+    CHECK(kept > 0 && r.probe_errors[0][kept - 1] == '\n' && strstr(r.probe_errors[0], "xxx") == NULL);
+    sl_case_result_free(&r);
+    printf("  %.200s ... %s\n", first.message, strrchr(first.message, '\n') ? strrchr(first.message, '\n') : "");
+}
+
 /* Under --hidden --seed a probe's rows move as its "vary" says: one draw per
  * check and group, so rows keep their relations; kept parameters stay; two
  * seeds give two tables. */
@@ -1354,6 +1433,8 @@ int main(int argc, char **argv) {
         {"grade_leads_with_root_cause", test_grade_leads_with_root_cause},
         {"grade_probe_verdicts", test_grade_probe_verdicts},
         {"grade_blames_on_evidence", test_grade_blames_on_evidence},
+        {"grade_rules_out_once", test_grade_rules_out_once},
+        {"grade_compile_error_once", test_grade_compile_error_once},
         {"hidden_varies_probe_inputs", test_hidden_varies_probe_inputs},
         {"grade_run_failures", test_grade_run_failures},
         {"grade_state_needs_evidence", test_grade_state_needs_evidence},

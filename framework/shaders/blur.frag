@@ -1,5 +1,6 @@
 #version 330 core
 // Lab 5's blur: one direction of the separable Gaussian, one texel per fragment.
+#include "lab_prelude.glsl"
 #include "lab5_vsm/shaders/blur.glsl"
 
 in vec2 v_uv;

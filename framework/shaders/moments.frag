@@ -1,5 +1,6 @@
 #version 330 core
 // Lab 5's moments pass: the moments of the fragment's linear depth from the light.
+#include "lab_prelude.glsl"
 #include "vsm_depth.glsl"
 #include "lab5_vsm/shaders/moments.glsl"
 

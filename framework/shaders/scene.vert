@@ -1,5 +1,6 @@
 #version 330 core
 // Camera pass: world position, normal and the lab 2 shadow coordinate per vertex.
+#include "lab_prelude.glsl"
 #include "lab2_projective/shaders/shadow_coord.glsl"
 
 layout(location = 0) in vec3 a_position;

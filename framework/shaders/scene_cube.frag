@@ -11,7 +11,7 @@ in vec3 v_world_position;
 in vec3 v_world_normal;
 
 uniform samplerCube u_cube_map;
-uniform float u_light_far;    // the cube map stores distance / far
+// u_light_far (the lab files' prelude, lab_prelude.glsl): the cube map stores distance / far
 uniform float u_cube_bias;    // in the same units
 uniform float u_soft_radius;  // point_shadow_soft's disk, world units at distance far
 

@@ -20,8 +20,7 @@
 
 uniform float u_poisson_radius;  // texels
 uniform float u_light_size_uv;   // the light's width over the width of its frustum at the near plane
-uniform float u_light_near;
-uniform float u_light_far;
+// u_light_near, u_light_far: the light's planes, in the lab files' prelude (lab_prelude.glsl)
 
 out vec4 frag_color;
 

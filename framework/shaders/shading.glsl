@@ -1,19 +1,11 @@
 // Lambert shading shared by the camera-pass shaders (framework code).
+// The light (sl_light_type, its uniforms, sl_direction_to_light) is the lab
+// files' prelude: they may call it wherever they are compiled.
+#include "lab_prelude.glsl"
 uniform int u_output;         // 0 shaded, 1 visibility
-// The light's type (0 directional, 1 spot, 2 point) is compiled in: the
-// framework builds the camera pass per type (#define SL_LIGHT_TYPE), so a
-// directional light's pixels do not also run the spot light's code.
-const int sl_light_type = SL_LIGHT_TYPE;
-uniform vec3 u_light_position;
-uniform vec3 u_light_direction;
 uniform vec3 u_light_radiance;
 uniform float u_spot_cos;
 uniform vec3 u_albedo;
-
-// Unit vector from a surface point towards the light.
-vec3 sl_direction_to_light(vec3 world_position) {
-    return sl_light_type == 0 ? -u_light_direction : normalize(u_light_position - world_position);
-}
 
 // The colour of a surface point given the light's visibility there.
 // u_output 1: the visibility term alone (what the grader compares);

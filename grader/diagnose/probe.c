@@ -180,8 +180,15 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         }
     const sl_capture *cap = sl_result_capture(r, capture);
     if (!cap) {
+        /* its own error: every probe of a file that does not compile says so, not only the last one */
+        int index = (int)(k - c->checks);
+        const char *own = index >= 0 && index < SL_JOB_MAX_PROBES ? r->probe_errors[index] : "";
         size_t len = strlen(capture);
-        if (strncmp(r->capture_error, capture, len) == 0 && r->capture_error[len] == ':')
+        if (own[0] && sl_diag_compile_error(out, own))
+            return;
+        else if (own[0])
+            sl_diag_say(out, "%s() could not be called: %s", f->name, own);
+        else if (strncmp(r->capture_error, capture, len) == 0 && r->capture_error[len] == ':')
             sl_diag_say(out, "%s() could not be called:%s", f->name, r->capture_error + len + 1);
         else
             sl_diag_say(out, "%s() was not called: the case ended before its probe", f->name);

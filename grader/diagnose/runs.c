@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "sl_probe.h"
@@ -46,6 +47,31 @@ sl_lab_function sl_lab_function_at(int i) {
     }
     const sl_lab_function *u = _sl_unprobed_at(i - probed);
     return u ? *u : (sl_lab_function){NULL, 0, NULL, false};
+}
+
+/* The step a TODO tag names ("lab3.2", "TODO(lab1.4)": 2 and 4), 0 for none. */
+static int _sl_todo_step(const char *todo) {
+    const char *lab = todo ? strstr(todo, "lab") : NULL;
+    if (!lab) return 0;
+    const char *p = lab + 3;
+    while (*p >= '0' && *p <= '9') p++;
+    return *p == '.' ? atoi(p + 1) : 0;
+}
+
+int sl_case_step(const sl_case *c) {
+    bool probes_only = true;
+    for (int k = 0; k < c->check_count; k++) probes_only &= c->checks[k].kind == SL_CHECK_PROBE;
+    int step = 0;
+    for (int k = 0; k < c->check_count; k++) {
+        if (c->checks[k].bonus) continue;
+        for (int i = 0; i < sl_lab_function_count(); i++) {
+            sl_lab_function fn = sl_lab_function_at(i);
+            if (fn.lab != c->lab || fn.bonus || !sl_case_runs(c, &c->checks[k], fn.name)) continue;
+            int s = _sl_todo_step(fn.todo);
+            if (s > 0 && (step == 0 || (probes_only ? s < step : s > step))) step = s;
+        }
+    }
+    return step;
 }
 
 static bool _sl_is_bonus(const char *function) {
