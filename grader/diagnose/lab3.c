@@ -203,10 +203,36 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
                           "bias min(constant + slope * tan(theta), max_bias)", lo);
         return 0;
     }
-    /* where the reference is clamped, above max_bias here: no clamp */
+    /* "the clamp is missing" only when every failing row is one where the reference is clamped and
+     * this gives the unclamped constant + slope * tan(theta) there; a clamp to another value, or rows
+     * wrong where no clamp acts, get the measured values instead */
+    int clamped_wrong = -1, unclamped_rows = 0, failing_rows = 0;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double max_bias = *_sl_param(f, in, "max_bias"), cos_t = fmax(*_sl_param(f, in, "n_dot_l"), 1e-4);
+        double open = *_sl_param(f, in, "constant_bias") + *_sl_param(f, in, "slope") * sqrt(1 - cos_t * cos_t) / cos_t;
+        failing_rows++;
+        if (!_sl_near(_sl_want(v, r, 0), max_bias, 1e-7)) continue;
+        if (clamped_wrong < 0) clamped_wrong = r;
+        unclamped_rows += _sl_near(_sl_got(v, r, 0), open, 0.002 * open + 1e-6);
+    }
+    int clamped_rows = 0;
+    for (int r = 0; r < rows; r++)
+        clamped_rows += _sl_failed(v, r) && _sl_near(_sl_want(v, r, 0), *_sl_param(f, v->k->inputs[r], "max_bias"), 1e-7);
+    /* only the clamped rows fail, not all as without a clamp: the clamp is there, at another value */
+    if (clamped_wrong >= 0 && clamped_rows == failing_rows && unclamped_rows < failing_rows) {
+        const float *in = v->k->inputs[clamped_wrong];
+        snprintf(text, n, "where the reference is clamped to max_bias %.4g (n_dot_l = %g), it gives %.4g — the bias is "
+                          "min(constant + slope * tan(theta), max_bias), with the max_bias given",
+                 (double)*_sl_param(f, in, "max_bias"), (double)*_sl_param(f, in, "n_dot_l"), _sl_got(v, clamped_wrong, 0));
+        return clamped_wrong;
+    }
+    /* the clamp's label needs every failing row clamped there and unclamped here */
+    bool no_clamp = clamped_wrong >= 0 && clamped_rows == failing_rows && unclamped_rows == failing_rows;
     for (int r = 0; r < rows; r++) {
         double max_bias = *_sl_param(f, v->k->inputs[r], "max_bias");
-        if (_sl_failed(v, r) && _sl_near(_sl_want(v, r, 0), max_bias, 1e-7) && _sl_got(v, r, 0) > max_bias + 1e-7) {
+        if (no_clamp && _sl_failed(v, r) && _sl_near(_sl_want(v, r, 0), max_bias, 1e-7) && _sl_got(v, r, 0) > max_bias + 1e-7) {
             snprintf(text, n, "not clamped: the clamp to max_bias is missing — at n_dot_l = %g it gives %.4g, above "
                               "max_bias %.4g; return min(constant + slope * tan(theta), max_bias)",
                      (double)*_sl_param(f, v->k->inputs[r], "n_dot_l"), _sl_got(v, r, 0), max_bias);

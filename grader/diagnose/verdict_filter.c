@@ -85,6 +85,14 @@ static int _sl_radius_ignored(const sl_verdict_rows *v, char *text, size_t n) {
     }
     if (radius < 0) return -1;
     int floats = sl_probe_input_count(f);
+    /* "ignored" only when every pair of rows that differ in the radius alone agrees: a kernel whose
+     * results change with the radius (an asymmetric loop, a pattern of its own) may agree on one pair */
+    for (int a = 0; a < v->k->rows; a++)
+        for (int b = 0; b < v->k->rows; b++) {
+            bool same = b != a;
+            for (int i = 0; same && i < floats; i++) same = i == radius || v->k->inputs[a][i] == v->k->inputs[b][i];
+            if (same && !_sl_near(_sl_got(v, a, 0), _sl_got(v, b, 0), 1e-4)) return -1;
+        }
     for (int a = 0; a < v->k->rows; a++) {
         if (!_sl_failed(v, a)) continue;
         for (int b = 0; b < v->k->rows; b++) {
@@ -250,13 +258,20 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
                           "blocker search finds none, and pcss() returns 1.0");
         return row;
     }
+    /* a weight sum is what an empty map gives, when it gives something: 0 there is no kernel's weights
+     * but comparisons that all fail, which the rows below quote */
+    /* shadowed with nothing in the map: no label below has that as its evidence (a weight sum, a radius, a
+     * width all read a working comparison); the row that shows it is quoted as measured */
+    if (kernel && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0 && _sl_got(v, row, 0) <= 0.05) return row;
     if (kernel && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
         double sum = _sl_got(v, row, 0);
         snprintf(text, n, "the weights sum to %.4g, not 1 (nothing in front gives %.4g): the kernel is not normalised "
                           "— divide the sum of the results by the number of samples", sum, sum);
         return row;
     }
-    if ((row = _sl_first_failing(v, _SL_ROW_OWN_SURFACE)) >= 0 && _sl_got(v, row, 0) < _sl_want(v, row, 0)) {
+    /* the bias decides the own-surface rows alone: with an empty map failing too, something else shadows */
+    if ((row = _sl_first_failing(v, _SL_ROW_OWN_SURFACE)) >= 0 && _sl_got(v, row, 0) < _sl_want(v, row, 0) &&
+        _sl_first_failing(v, _SL_ROW_EMPTY_MAP) < 0) {
         snprintf(text, n, "the bias is not subtracted: a point on the stored surface itself compares as shadowed, which "
                           "is shadow acne — compare p.z - bias with the stored depth");
         return row;
@@ -293,11 +308,15 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
         if (here > there + tolerance) wide++;
         if (first_width < 0 && (here < there - tolerance || here > there + tolerance)) first_width = r;
     }
-    if (soft > 0 && hard == soft) {
+    /* both readings compare correctly on an empty map: a kernel that shadows it too is neither */
+    if (soft > 0 && hard == soft && _sl_first_failing(v, _SL_ROW_EMPTY_MAP) < 0) {
         if (as_centre == hard)
+            /* samples closer together than a texel give a single lookup's answer on the probe's map too: the
+             * rows show no blend, not that the code has no kernel */
             snprintf(text, n, "one comparison per point: results are 0 or 1 where the kernel should blend, exactly as "
-                              "a single lookup gives them — the kernel has no width; compare at every sample and "
-                              "average the results");
+                              "a single lookup gives them — on this 64-texel map every sample stays in the point's own "
+                              "texel (offsets radius texels wide, each 1.0 / textureSize(map, 0)?); compare at every "
+                              "sample and average the results");
         else
             snprintf(text, n, "depths averaged, then compared once: results are 0 or 1 where the kernel should blend, "
                               "and not where one comparison puts them — filtering depths instead of comparison results "
