@@ -250,6 +250,35 @@ static const sl_probe_function *_sl_probe_described(const sl_case *c, sl_check *
     return described;
 }
 
+/* "above": {"output": amount}: the output may also be up to amount above the expected value (an output
+ * the README lets students round up; below it, the usual tolerance alone). */
+static bool _sl_probe_above(const sl_case *c, sl_check *k, const sl_probe_function *f, const cJSON *json, char *err,
+                            size_t n) {
+    const cJSON *above = cJSON_GetObjectItemCaseSensitive(json, "above"), *item;
+    if (!above) return true;
+    if (!cJSON_IsObject(above)) {
+        snprintf(err, n, "%s: checks \"%s\": \"above\" must be an object: {\"output\": amount}", c->path, k->name);
+        return false;
+    }
+    cJSON_ArrayForEach(item, above) {
+        int found = -1;
+        const char *name = f->outputs;
+        for (int o = 0; o < f->output_count && name; o++) {
+            size_t len = strcspn(name, ",");
+            if (strlen(item->string) == len && strncmp(name, item->string, len) == 0) found = o;
+            name = strchr(name, ',');
+            if (name) name++;
+        }
+        if (found < 0 || !cJSON_IsNumber(item) || !(item->valuedouble >= 0) || item->valuedouble > 1e6) {
+            snprintf(err, n, "%s: checks \"%s\": \"above\": \"%s\" must be an output of %s() (%s) with an amount "
+                             "from 0 to 1e6", c->path, k->name, item->string, f->name, f->outputs);
+            return false;
+        }
+        k->above[found] = (float)item->valuedouble;
+    }
+    return true;
+}
+
 bool sl_case_probe_check(const sl_case *c, sl_check *k, const cJSON *json, char *err, size_t n) {
     const char *name = cJSON_GetStringValue(cJSON_GetObjectItemCaseSensitive(json, "function"));
     const sl_probe_function *f = name ? sl_probe_find(name) : NULL;
@@ -267,6 +296,7 @@ bool sl_case_probe_check(const sl_case *c, sl_check *k, const cJSON *json, char 
     if (!sl_json_number(json, "tolerance", &k->tolerance, 0, 1e9, c->path, err, n) ||
         !sl_json_number(json, "relative", &k->relative, 0, 1, c->path, err, n))
         return false;
+    if (!_sl_probe_above(c, k, f, json, err, n)) return false;
     const cJSON *rows = cJSON_GetObjectItemCaseSensitive(json, "rows"), *row;
     if (!cJSON_IsArray(rows) || cJSON_GetArraySize(rows) < 1 || cJSON_GetArraySize(rows) > SL_PROBE_MAX_ROWS) {
         snprintf(err, n, "%s: checks \"%s\": \"rows\" must be 1..%d rows of inputs", c->path, k->name, SL_PROBE_MAX_ROWS);

@@ -101,6 +101,9 @@ typedef struct sl_check {
     sl_probe_vary vary[SL_PROBE_MAX_PARAMS]; /* by parameter: how hidden variants change it ("vary") */
     uint32_t row_keep[SL_PROBE_MAX_ROWS];    /* 1 << parameter: the row keeps it as written ("keep") */
     double tolerance, relative; /* an output passes within tolerance + relative * |expected| */
+    /* by output: how far above the expected value it may also be ("above"), where the README lets a
+     * value be rounded up (lab 6's sphere radius) */
+    float above[SL_PROBE_MAX_OUTPUTS];
     int face;             /* cube_face: 0..5, GL's order (+x, -x, +y, -y, +z, -z) */
 } sl_check;
 

@@ -11,6 +11,9 @@
 #include "sl_gl.h"
 #include "verdict_rows.h"
 
+/* The depth resolution lab 1's README asks of the shadow map (GL_TEXTURE_DEPTH_SIZE). */
+#define _SL_LAB1_MIN_DEPTH_BITS 24
+
 void sl_diagnose_fbo(const sl_case *c, const sl_case_result *r, sl_check_result *out) {
     const sl_capture *cap = sl_result_capture(r, "fbo");
     if (!cap || cap->number_count < 10) {
@@ -28,6 +31,13 @@ void sl_diagnose_fbo(const sl_case *c, const sl_case_result *r, sl_check_result 
         sl_diag_say(out, "the texture attached as GL_DEPTH_ATTACHMENT is not map->depth_texture");
     } else if (v[3] <= 0) {
         sl_diag_say(out, "map->depth_texture has no depth format: use GL_DEPTH_COMPONENT24 (internal format) with GL_DEPTH_COMPONENT");
+    } else if (v[3] < _SL_LAB1_MIN_DEPTH_BITS) {
+        /* The README's contract is 24 bits or more. A 16-bit map still draws this case's pictures within
+         * their tolerance, so only the texture's own resolution shows it. */
+        sl_diag_say(out, "map->depth_texture has %.0f bits of depth, and the lab asks for at least %d: use "
+                         "GL_DEPTH_COMPONENT24 (GL_DEPTH_COMPONENT32F or GL_DEPTH24_STENCIL8 will do too) — 16 bits keep "
+                         "65536 depths, and a perspective light spends most of them near itself",
+                    v[3], _SL_LAB1_MIN_DEPTH_BITS);
     } else if (v[4] != v[9] || v[5] != v[9]) {
         sl_diag_say(out, "the depth texture is %.0fx%.0f, but the requested map size is %.0f: use the size argument", v[4], v[5], v[9]);
     } else if (v[8] != GL_NONE) {

@@ -154,7 +154,7 @@ static void _sl_sphere(const float *in, double split_near, double split_far, dou
 }
 
 static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
-    int failing = 0, whole = 0, too_small = 0, first = -1;
+    int failing = 0, whole = 0, too_small = 0, rounded = 0, first = -1, most = -1;
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
@@ -162,12 +162,28 @@ static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
         _sl_sphere(in, in[8], in[9], all);
         bool is_whole = true;
         for (int i = 0; i < 4; i++) is_whole &= fabs(_sl_got(v, r, i) - all[i]) <= 1e-3 * fmax(1, fabs(all[i]));
+        /* the slice's own centre, and a radius only larger: rounded up by more than "above" allows */
+        bool centred = true;
+        for (int i = 0; i < 3; i++)
+            centred &= fabs(_sl_got(v, r, i) - _sl_want(v, r, i)) <= v->k->tolerance + v->k->relative * fabs(_sl_want(v, r, i));
+        bool larger = _sl_got(v, r, 3) > _sl_want(v, r, 3);
         failing++;
         whole += is_whole;
         too_small += _sl_got(v, r, 3) < _sl_want(v, r, 3) * 0.999;
+        rounded += centred && larger && !is_whole;
+        if (centred && larger && (most < 0 || _sl_got(v, r, 3) - _sl_want(v, r, 3) > _sl_got(v, most, 3) - _sl_want(v, most, 3)))
+            most = r;
         if (first < 0) first = r;
     }
     if (!failing) return -1;
+    if (rounded == failing && v->k->above[3] > 0) {
+        snprintf(text, n, "the radius is %.3g m larger than the farthest corner's distance, and the lab lets it be "
+                          "rounded up by %g m at most: round up to a multiple of 1/%g m (ceil(r * %g) / %g) or not "
+                          "at all — a coarser step only makes every texel of the cascade larger",
+                 _sl_got(v, most, 3) - _sl_want(v, most, 3), (double)v->k->above[3], 1.0 / v->k->above[3],
+                 1.0 / v->k->above[3], 1.0 / v->k->above[3]);
+        return most;
+    }
     if (whole == failing) {
         snprintf(text, n, "the sphere is fitted to the whole frustum, not to the slice between split_near and split_far "
                           "(move each corner along its edge to t = (split - near) / (far - near))");

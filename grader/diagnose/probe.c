@@ -87,7 +87,9 @@ static bool _sl_close_enough(const sl_check *k, int row, int output, double stud
     _sl_output_name(sl_probe_at(k->function), output, name, sizeof name);
     if (_sl_output_is_enum(name)) return student == expected;
     double tolerance = k->row_tolerance[row] > 0 ? k->row_tolerance[row] : k->tolerance;
-    return fabs(student - expected) <= tolerance + k->relative * fabs(expected);
+    /* "above": a value the README lets students round up may be that much larger, never smaller */
+    double above = student > expected ? k->above[output] : 0;
+    return fabs(student - expected) <= tolerance + above + k->relative * fabs(expected);
 }
 
 /* What the stub of f returns for output o of a row. */

@@ -251,6 +251,10 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     }
     if ((row = _sl_homogeneous_differs(v)) >= 0) {
         snprintf(text, n, "no divide by w: the shadow coordinate is homogeneous — divide xyz by w before the lookup");
+        /* lookups at the wrong place: wherever w is not 1, shadows can go missing, appear or move */
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_NO_SHADOWS | 1u << SL_SYMPTOM_MISSING_SHADOW |
+                                   1u << SL_SYMPTOM_EXTRA_SHADOW | 1u << SL_SYMPTOM_TOO_DARK |
+                                   1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_GROSS);
         return row;
     }
     if (pcss && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
