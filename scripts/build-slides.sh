@@ -7,7 +7,9 @@
 # diagrams drawn by slides/diagrams/*.py, crops and insets), then each
 # SLIDES_DIR/labN_*.md twice:
 #   OUT_DIR/labN_*.html, .pdf           the lecturer's deck: the solutions' code
-#                                       where a slide quotes it (only where solutions/ exists)
+#                                       where a slide quotes it (only where solutions/ exists),
+#                                       the notes (HTML: a speaker view, key N; PDF: under
+#                                       each slide)
 #   OUT_DIR/student/labN_*.html, .pdf   the students' deck: no solution code; figures the
 #                                       viewer draws come from the solutions, or pre-rendered
 #                                       (SHADOWLAB_PRERENDERED, default SLIDES_DIR/figures),
@@ -99,7 +101,8 @@ build_deck() { # DECK WHO
   md="$out/.$name.$who.md"   # made by prepare_deck.py (below)
   # Unchanged since the last build (the deck, its figures, the styles, the tools): nothing to do.
   local key stamp="$out/.$name.$who.key"
-  key=$( { cat "$md" "$src/slides.css" "$src/print.css" "$src/tools/katex-filter.js" "$out/.katex/"*.css;
+  key=$( { cat "$md" "$src/slides.css" "$src/print.css" "$src/tools/katex-filter.js" "$src/tools/speaker-view.html" \
+             "$out/.katex/"*.css;
            grep -oE '\(figures/[^) ]+\)' "$md" | tr -d '()' | sort -u | (cd "$out" && xargs -r cat 2>/dev/null);
            echo "pdf=$pdf"; } | sha256sum | cut -d' ' -f1)
   if [ -s "$dest/$name.html" ] && { [ "$pdf" != 1 ] || [ -s "$dest/$name.pdf" ]; } &&
@@ -108,8 +111,11 @@ build_deck() { # DECK WHO
     return 0
   fi
   rm -f "$stamp"
+  # The lecturer's HTML has a speaker view (key N) for its notes; the students' has no notes.
+  local speaker=()
+  [ "$who" = lecturer ] && speaker=(--include-after-body="$src/tools/speaker-view.html")
   SL_DECK="$name ($who)" pandoc "$md" --from markdown --to dzslides "${embed[@]}" --resource-path="$out:$src" \
-    --filter "$src/tools/katex-filter.js" --metadata pagetitle="$name" \
+    --filter "$src/tools/katex-filter.js" --metadata pagetitle="$name" "${speaker[@]}" \
     --css="$out/.katex/katex-woff2.css" --css="$src/slides.css" --output="$dest/$name.html" || return 1
   if [ "$pdf" = 1 ]; then
     # Not self-contained: WeasyPrint reads the figures and fonts from disk, which is faster.

@@ -10,6 +10,8 @@
 #   browser    every HTML deck opened in headless Chromium and stepped through: no missing
 #              image, blank slide, slide running over, or KaTeX error; a few slides kept as
 #              PNGs in BUILD_DIR/tests/slides-review/
+#   hall       every HTML deck at 1920x1080 in headless Chromium (tests/slides_hall.py): 16:9,
+#              every text and diagram label >= 18 px, each figure a good share of its slide
 #   pdf-pages  pages of the PDFs (a diagram, typeset math, a figure row) rendered by
 #              pdftoppm and checked not blank; kept in BUILD_DIR/tests/slides-review/
 #   no-solutions  the students' decks as a copy without solutions/ builds them: figures
@@ -103,6 +105,15 @@ browser)
   [ $rc = 77 ] && exit 77
   [ $rc = 0 ] || fail=1
   ;;
+hall)
+  # At 1920x1080: 16:9 slides, text and diagram labels >= 18 px, figures a good share of their slide.
+  need_tools
+  command -v chromium >/dev/null || skip "chromium is not installed"
+  "$py" "$here/slides_hall.py" "$out"
+  rc=$?
+  [ $rc = 77 ] && exit 77
+  [ $rc = 0 ] || fail=1
+  ;;
 pdf-pages)
   need_tools
   command -v pdftoppm >/dev/null || skip "pdftoppm (poppler-utils) is not installed"
@@ -176,7 +187,7 @@ PY
     problem "pandoc failed on the students' lab 4 without solutions"
   grep -q 'left-out' "$build/tests/slides-none/lab4_pcf.html" || problem "the students' lab 4 shows no note for its left-out figures"
   ;;
-*) echo "usage: slides.sh decks|diagrams|figures|keys|browser|pdf-pages|no-solutions BUILD_DIR IMAGE_CHECK SLIDES_SRC [VIEWER]" >&2; exit 2 ;;
+*) echo "usage: slides.sh decks|diagrams|figures|keys|browser|hall|pdf-pages|no-solutions BUILD_DIR IMAGE_CHECK SLIDES_SRC [VIEWER]" >&2; exit 2 ;;
 esac
 echo "slides: $what took $((SECONDS - start)) s"
 exit $fail

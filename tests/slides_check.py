@@ -562,7 +562,9 @@ function checkDeck(win, doc) {
     var broken = imgs.filter(function (im) { return !(im.complete && im.naturalWidth > 0); })
                      .map(function (im) { return (im.getAttribute('src') || '').slice(0, 50); });
     var h = s.querySelector('h1');
-    var kx = Array.prototype.slice.call(s.querySelectorAll('.katex'));
+    // The lecturer's notes are not drawn on the slide (the speaker view shows them).
+    var kx = Array.prototype.slice.call(s.querySelectorAll('.katex'))
+                  .filter(function (k) { return !k.closest('.notes'); });
     out.slides.push({
       index: i + 1, title: h ? h.textContent : '', shown: shown === s,
       text: (s.innerText || '').replace(/\s+/g, ' ').trim().length,

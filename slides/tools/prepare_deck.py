@@ -8,7 +8,9 @@
   cannot disagree, and the deck's Markdown holds no solution code: the
   students' handout ships the Markdown). For students it becomes a note
   naming the TODO where they write it.
-- `::: lecturer` ... `:::` blocks are the lecturer's only.
+- `::: lecturer` ... `:::` blocks are the lecturer's only, and so are `::: notes` ... `:::`
+  blocks, the lecturer's notes: hidden on the HTML slide (the speaker view, key N, shows
+  them), printed under the slide in the lecturer's PDF. The questions' answers go there.
 - An image whose figure was left out (OUT/figures/manifest.json: no solutions
   to draw it with and none pre-rendered) becomes a note saying so: never a
   shadowless picture under a shadow caption.
@@ -84,11 +86,11 @@ def main():
         lines = f.read().split("\n")
     for line in lines:
         s = line.strip()
-        if s in ("::: lecturer", "::: {.lecturer}"):
+        if s in ("::: lecturer", "::: {.lecturer}", "::: notes", "::: {.notes}"):
             if a.audience == "student":
                 skipping = True
                 continue
-            out.append("::: {.lecturer}")
+            out.append("::: {.notes}" if "notes" in s else "::: {.lecturer}")
             continue
         if skipping:
             if s == ":::":
