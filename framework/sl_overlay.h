@@ -95,7 +95,7 @@ bool sl_overlay_marker(sl_overlay *ov, const float position[3], const float *rgb
  * panels and labels on top. */
 void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target, int width, int height);
 
-/* The text of every panel as plain lines ("[corner] text", "[label] text",
+/* The text of every panel as plain lines ("[status] text", "[corner] text", "[label] text",
  * "[marker] text"), for tests and logs: what a screenshot shows, in words. */
 size_t sl_overlay_text(const sl_overlay *ov, char *out, size_t out_size);
 
