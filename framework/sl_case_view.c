@@ -352,7 +352,9 @@ static bool _sl_keys(_sl_case_view *v) {
 /* --serve's key table for the page: the case view's keys but Esc (a page is
  * closed in the browser), as the viewer's table is sent (sl_viewer_keys.c). */
 static char *_sl_case_keys_json(int lab) {
-    cJSON *root = cJSON_CreateObject(), *keys = cJSON_AddArrayToObject(root, "keys");
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddNumberToObject(root, "lab", lab); /* the page lists the keys before the first frame */
+    cJSON *keys = cJSON_AddArrayToObject(root, "keys");
     char code[16];
     for (int i = 0; i < _SL_CASE_KEY_COUNT; i++) {
         if (_sl_case_keys[i].key == GLFW_KEY_ESCAPE) continue;

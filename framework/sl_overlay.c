@@ -10,6 +10,7 @@
 #include "sl_overlay_layout.h"
 #include "sl_overlay_state.h"
 #include "sl_shader.h"
+#include "sl_ttf.h"
 
 static const float _sl_default_rgb[3] = {0.85f, 0.85f, 0.85f}, _sl_lecture_rgb[3] = {1, 1, 1};
 static const float _sl_title_rgb[3] = {1.0f, 0.85f, 0.35f}, _sl_lecture_title_rgb[3] = {1.0f, 0.92f, 0.2f};
@@ -73,7 +74,14 @@ sl_overlay *sl_overlay_create(const char *framework_dir, char *err, size_t err_s
     glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, (void *)(4 * sizeof(float)));
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+    sl_overlay_set_font(ov, NULL);
     return ov;
+}
+
+static void _sl_face_free(_sl_face *f) {
+    if (f->texture) glDeleteTextures(1, &f->texture);
+    f->texture = 0;
+    sl_ttf_atlas_free(&f->atlas);
 }
 
 void sl_overlay_destroy(sl_overlay *ov) {
@@ -81,6 +89,8 @@ void sl_overlay_destroy(sl_overlay *ov) {
     sl_program_destroy(&ov->text_program);
     sl_program_destroy(&ov->line_program);
     glDeleteTextures(1, &ov->font_texture);
+    _sl_face_free(&ov->sans);
+    _sl_face_free(&ov->mono);
     glDeleteBuffers(1, &ov->text_vbo);
     glDeleteBuffers(1, &ov->line_vbo);
     glDeleteVertexArrays(1, &ov->text_vao);
@@ -96,6 +106,7 @@ void sl_overlay_clear(sl_overlay *ov) {
     ov->label_count = 0;
     ov->box_count = 0;
     ov->marker_count = 0;
+    ov->status_line[0] = '\0';
 }
 
 void sl_overlay_set_scale(sl_overlay *ov, int scale) { ov->scale = scale < 0 ? 0 : scale; }
@@ -109,8 +120,31 @@ int sl_overlay_scale_for(const sl_overlay *ov, int width, int height) {
 }
 
 int sl_overlay_line_width_for(const sl_overlay *ov, int width, int height) {
-    int s = sl_overlay_scale_for(ov, width, height);
-    return ov->lecture ? 2 * s : s;
+    /* In a hall the lines explain the picture; wide ones hide it (a frustum's edges crossed the scene). */
+    if (ov->lecture) return height >= 1000 ? 2 : 1;
+    return sl_overlay_scale_for(ov, width, height);
+}
+
+void sl_overlay_set_font(sl_overlay *ov, const char *path) {
+    snprintf(ov->font_path, sizeof ov->font_path, "%s", path ? path : SL_TTF_DEFAULT_SANS);
+    _sl_face_free(&ov->sans);
+    _sl_face_free(&ov->mono);
+    ov->font_failed = false;
+}
+
+bool sl_overlay_truetype(const sl_overlay *ov) { return ov->lecture && !ov->font_failed && ov->sans.texture; }
+
+int sl_overlay_status_height_for(int height) {
+    /* 40 pixels at 1080, 27 at 720: read from the back row of a hall on a projector of either */
+    int px = height / 27;
+    return px < 8 ? 8 : px;
+}
+
+void sl_overlay_status_line(sl_overlay *ov, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(ov->status_line, sizeof ov->status_line, fmt, ap);
+    va_end(ap);
 }
 
 bool sl_overlay_panel(sl_overlay *ov, sl_overlay_corner corner, const char *title) {
@@ -180,6 +214,48 @@ bool sl_overlay_marker(sl_overlay *ov, const float position[3], const float *rgb
     return true;
 }
 
+/* ---- TrueType faces --------------------------------------------------------- */
+
+/* The monospaced face beside the proportional one: DejaVuSansMono.ttf in the same folder, or where there
+ * is none (a font of one's own) the font itself, each glyph centred in its cell. */
+static void _sl_mono_path(const char *sans, char *out, size_t n) {
+    const char *slash = strrchr(sans, '/');
+    int dir = slash ? (int)(slash - sans) + 1 : 0;
+    snprintf(out, n, "%.*sDejaVuSansMono.ttf", dir, sans);
+    FILE *f = fopen(out, "rb");
+    if (f) fclose(f);
+    else snprintf(out, n, "%s", sans);
+}
+
+/* `f` rasterised from `path` at `px` pixels (kept while the size holds). False, with the bitmap font
+ * standing in from then on and one line said, when the font cannot be read: a lecture goes on. */
+static bool _sl_face_at(sl_overlay *ov, _sl_face *f, const char *path, int px) {
+    if (ov->font_failed) return false;
+    if (f->texture && f->atlas.pixel_height == px) return true;
+    _sl_face_free(f);
+    char err[SL_PATH_MAX + 128];
+    if (!sl_ttf_atlas_make(path, px, &f->atlas, err, sizeof err)) {
+        fprintf(stderr, "shadowlab: warning: %s; the overlay's text is the built-in bitmap font\n", err);
+        ov->font_failed = true;
+        _sl_face_free(&ov->sans);
+        _sl_face_free(&ov->mono);
+        return false;
+    }
+    glGenTextures(1, &f->texture);
+    glBindTexture(GL_TEXTURE_2D, f->texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, f->atlas.width, f->atlas.height, 0, GL_RED, GL_UNSIGNED_BYTE,
+                 f->atlas.texels);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    /* glyphs are drawn at the size they were rasterised, on whole pixels: nearest is exact */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return true;
+}
+
 /* ---- Drawing -------------------------------------------------------------- */
 static bool _sl_reserve(sl_overlay *ov, size_t floats) {
     if (floats <= ov->vertex_capacity) return true;
@@ -192,12 +268,11 @@ static bool _sl_reserve(sl_overlay *ov, size_t floats) {
     return true;
 }
 
-/* One quad (two triangles) from pixel rect (x0,y0)-(x1,y1) showing glyph g. */
-static size_t _sl_quad(float *out, float x0, float y0, float x1, float y1, int g, const float rgb[3], float alpha) {
-    const float tex_w = (float)(SL_FONT_GLYPHS * (SL_FONT_GLYPH_W + 1));
-    float u0 = (float)(g * (SL_FONT_GLYPH_W + 1)) / tex_w, u1 = (float)(g * (SL_FONT_GLYPH_W + 1) + SL_FONT_GLYPH_W) / tex_w;
-    const float corners[6][4] = {{x0, y0, u0, 0}, {x1, y0, u1, 0}, {x1, y1, u1, 1},
-                                 {x0, y0, u0, 0}, {x1, y1, u1, 1}, {x0, y1, u0, 1}};
+/* One quad (two triangles) from pixel rect (x0,y0)-(x1,y1) showing texture rect (u0,v0)-(u1,v1). */
+static size_t _sl_quad_uv(float *out, float x0, float y0, float x1, float y1, float u0, float v0, float u1, float v1,
+                          const float rgb[3], float alpha) {
+    const float corners[6][4] = {{x0, y0, u0, v0}, {x1, y0, u1, v0}, {x1, y1, u1, v1},
+                                 {x0, y0, u0, v0}, {x1, y1, u1, v1}, {x0, y1, u0, v1}};
     for (int i = 0; i < 6; i++) {
         float *v = out + i * 8;
         memcpy(v, corners[i], 4 * sizeof(float));
@@ -209,18 +284,91 @@ static size_t _sl_quad(float *out, float x0, float y0, float x1, float y1, int g
     return 6 * 8;
 }
 
-static size_t _sl_text(float *out, const char *text, float x, float y, int s, const float rgb[3]) {
+/* The same showing glyph g of the bitmap font. */
+static size_t _sl_quad(float *out, float x0, float y0, float x1, float y1, int g, const float rgb[3], float alpha) {
+    const float tex_w = (float)(SL_FONT_GLYPHS * (SL_FONT_GLYPH_W + 1));
+    float u0 = (float)(g * (SL_FONT_GLYPH_W + 1)) / tex_w, u1 = (float)(g * (SL_FONT_GLYPH_W + 1) + SL_FONT_GLYPH_W) / tex_w;
+    return _sl_quad_uv(out, x0, y0, x1, y1, u0, 0, u1, 1, rgb, alpha);
+}
+
+/* How text is drawn: the bitmap font at scale s, or a TrueType face; in cells cw wide (panels, labels) or,
+ * with cw 0, each glyph its own advance (the status line). */
+typedef struct _sl_pen {
+    const _sl_face *face; /* NULL: the bitmap font */
+    int s;
+    float cw;
+} _sl_pen;
+
+/* A solid rect of the pen's texture (a backing, a colour sample). */
+static size_t _sl_solid(float *out, const _sl_pen *pen, float x0, float y0, float x1, float y1, const float rgb[3],
+                        float alpha) {
+    if (!pen->face) return _sl_quad(out, x0, y0, x1, y1, SL_FONT_SOLID, rgb, alpha);
+    const sl_ttf_atlas *a = &pen->face->atlas;
+    float u = (float)(a->solid_x + 1) / (float)a->width, v = (float)(a->solid_y + 1) / (float)a->height;
+    return _sl_quad_uv(out, x0, y0, x1, y1, u, v, u, v, rgb, alpha);
+}
+
+static float _sl_advance(const _sl_pen *pen, unsigned char c) {
+    if (pen->cw > 0) return pen->cw;
+    if (!pen->face) return (float)(SL_OVERLAY_CELL_W * pen->s);
+    return pen->face->atlas.glyphs[(c >= 32 && c <= 126 ? c : '?') - SL_TTF_FIRST].advance;
+}
+
+static float _sl_text_width(const _sl_pen *pen, const char *text) {
+    float w = 0;
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++) w += _sl_advance(pen, *c);
+    return w;
+}
+
+static size_t _sl_text(float *out, const char *text, float x, float y, const _sl_pen *pen, const float rgb[3]) {
     size_t n = 0;
-    for (const unsigned char *c = (const unsigned char *)text; *c; c++, x += SL_OVERLAY_CELL_W * s) {
+    int s = pen->s;
+    for (const unsigned char *c = (const unsigned char *)text; *c; x += _sl_advance(pen, *c), c++) {
         if (*c == ' ') continue;
         if (*c == (unsigned char)SL_OVERLAY_SWATCH[0]) { /* a whole cell: a legend's colour sample */
-            n += _sl_quad(out + n, x, y, x + SL_OVERLAY_CELL_W * s, y + SL_FONT_GLYPH_H * s, SL_FONT_SOLID, rgb, 1);
+            float h = pen->face ? pen->face->atlas.ascent : (float)(SL_FONT_GLYPH_H * s);
+            n += _sl_solid(out + n, pen, x, y, x + _sl_advance(pen, *c), y + h, rgb, 1);
             continue;
         }
-        int g = *c >= 32 && *c <= 126 ? *c - 32 : '?' - 32;
-        n += _sl_quad(out + n, x, y, x + SL_FONT_GLYPH_W * s, y + SL_FONT_GLYPH_H * s, g, rgb, 1);
+        if (!pen->face) {
+            int g = *c >= 32 && *c <= 126 ? *c - 32 : '?' - 32;
+            n += _sl_quad(out + n, x, y, x + SL_FONT_GLYPH_W * s, y + SL_FONT_GLYPH_H * s, g, rgb, 1);
+            continue;
+        }
+        /* on whole pixels, the glyph centred in its cell when the text is in cells */
+        const sl_ttf_atlas *a = &pen->face->atlas;
+        const sl_ttf_glyph *g = &a->glyphs[(*c <= 126 ? *c : '?') - SL_TTF_FIRST];
+        if (g->w == 0 || g->h == 0) continue;
+        float centre = pen->cw > 0 ? (pen->cw - g->advance) * 0.5f : 0;
+        float gx = floorf(x + centre + 0.5f) + (float)g->left, gy = floorf(y + a->ascent + 0.5f) - (float)g->top;
+        float W = (float)a->width, H = (float)a->height;
+        n += _sl_quad_uv(out + n, gx, gy, gx + (float)g->w, gy + (float)g->h, (float)g->x / W, (float)g->y / H,
+                         (float)(g->x + g->w) / W, (float)(g->y + g->h) / H, rgb, 1);
     }
     return n;
+}
+
+/* Draws the first n floats of the text quads with texture `texture`. */
+static void _sl_flush_text(sl_overlay *ov, GLuint texture, size_t n, int width, int height) {
+    if (n == 0) return;
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(ov->text_program.id);
+    glUniform2f(sl_program_uniform(&ov->text_program, "u_viewport"), (float)width, (float)height);
+    glUniform1i(sl_program_uniform(&ov->text_program, "u_font"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glBindVertexArray(ov->text_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, ov->text_vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * sizeof(float)), ov->vertices, GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, (GLsizei)(n / 8));
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glUseProgram(0);
 }
 
 static const float _sl_backing_rgb[3] = {0.05f, 0.05f, 0.07f}, _sl_lecture_backing_rgb[3] = {0, 0, 0};
@@ -352,7 +500,8 @@ static void _sl_draw_lines(sl_overlay *ov, mat4 camera_view_projection, int widt
     if (!_sl_reserve_lines(ov, ((size_t)ov->box_count * 24 + (size_t)ov->marker_count * 24) * _SL_LINE_FLOATS)) return;
     float *v = ov->line_vertices;
     size_t n = 0, faint_end, bright_end;
-    float faint_alpha = ov->lecture ? 0.6f : 0.35f;
+    /* a lecture's boxes are translucent even where nothing hides them: the scene shows through */
+    float faint_alpha = ov->lecture ? 0.3f : 0.35f, bright_alpha = ov->lecture ? 0.7f : 1.0f;
     for (int b = 0; b < ov->box_count; b++) {
         const float *c = ov->box_rgb[b];
         const float rgba[4] = {c[0], c[1], c[2], ov->box_on_top[b] ? 1.0f : faint_alpha};
@@ -362,7 +511,7 @@ static void _sl_draw_lines(sl_overlay *ov, mat4 camera_view_projection, int widt
     for (int b = 0; b < ov->box_count; b++) {
         if (ov->box_on_top[b]) continue;
         const float *c = ov->box_rgb[b];
-        const float rgba[4] = {c[0], c[1], c[2], 1.0f};
+        const float rgba[4] = {c[0], c[1], c[2], bright_alpha};
         n += _sl_box_quads(v + n, ov->boxes[b], camera_view_projection, px, width, height, rgba);
     }
     bright_end = n;
@@ -395,6 +544,28 @@ static void _sl_draw_lines(sl_overlay *ov, mat4 camera_view_projection, int widt
     glDepthFunc(GL_LESS);
 }
 
+/* The status line: DejaVu Sans (the bitmap font where it cannot be read) at a size from the frame's
+ * height, on a translucent backing at the top left, cut where the frame ends. */
+#define _SL_STATUS_BACKING_ALPHA 0.55f
+static void _sl_draw_status_line(sl_overlay *ov, int width, int height) {
+    int px = sl_overlay_status_height_for(height);
+    _sl_pen pen = {.face = NULL, .s = px / SL_FONT_GLYPH_H > 0 ? px / SL_FONT_GLYPH_H : 1, .cw = 0};
+    if (ov->lecture && _sl_face_at(ov, &ov->sans, ov->font_path, px)) pen.face = &ov->sans;
+    float line_h = pen.face ? pen.face->atlas.line_height : (float)(SL_OVERLAY_CELL_H * pen.s);
+    float margin = floorf((float)px * 0.3f), pad = floorf((float)px * 0.25f);
+    char text[sizeof ov->status_line];
+    snprintf(text, sizeof text, "%s", ov->status_line);
+    float room = (float)width - 2 * margin - 2 * pad;
+    for (size_t len = strlen(text); len > 0 && _sl_text_width(&pen, text) > room; len--) text[len - 1] = '\0';
+    float w = _sl_text_width(&pen, text);
+    size_t n = _sl_solid(ov->vertices, &pen, margin, margin, margin + w + 2 * pad, margin + line_h + 2 * pad,
+                         _sl_lecture_backing_rgb, _SL_STATUS_BACKING_ALPHA);
+    /* the bitmap font's glyphs sit in the upper 8 of its 10 rows: centre them in the backing */
+    float y = margin + pad + (pen.face ? 0 : (float)pen.s);
+    n += _sl_text(ov->vertices + n, text, margin + pad, y, &pen, _sl_lecture_rgb);
+    _sl_flush_text(ov, pen.face ? pen.face->texture : ov->font_texture, n, width, height);
+}
+
 void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, width, height);
@@ -422,13 +593,23 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
         if (layout.fits || ov->scale > 0 || s <= 1) break;
     }
     const _sl_layout *L = &layout;
+    /* A lecture's panels and labels in DejaVu Sans Mono sized to the bitmap font's cells, so the layout
+     * and the labs' label positions hold; the bitmap font where it cannot be read. */
+    _sl_pen pen = {.face = NULL, .s = s, .cw = (float)(SL_OVERLAY_CELL_W * s)};
+    if (ov->lecture && ov->line_count + ov->label_count > 0) {
+        char mono[SL_PATH_MAX + 32];
+        _sl_mono_path(ov->font_path, mono, sizeof mono);
+        if (_sl_face_at(ov, &ov->mono, mono, (int)(0.84f * (float)(SL_OVERLAY_CELL_H * s) + 0.5f))) pen.face = &ov->mono;
+    }
     const float cw = (float)(SL_OVERLAY_CELL_W * s), ch = (float)(SL_OVERLAY_CELL_H * s), pad = (float)(3 * s);
     const float *backing = ov->lecture ? _sl_lecture_backing_rgb : _sl_backing_rgb;
     const float backing_alpha = ov->lecture ? _SL_LECTURE_BACKING_ALPHA : _SL_BACKING_ALPHA;
     int total = ov->line_count + ov->label_count;
-    /* Per glyph a quad, per panel and label a backing: 48 floats each (a wrapped line's indent is no glyph). */
+    /* Per glyph a quad, per panel and label a backing: 48 floats each (a wrapped line's indent is no glyph);
+     * the status line's after them. */
     size_t chars = 0;
     for (int i = 0; i < total; i++) chars += strlen(ov->lines[i].text) + 1;
+    chars += strlen(ov->status_line) + 1;
     if (!_sl_reserve(ov, (chars + (size_t)ov->panel_count + 1) * 48)) {
         ov->label_count = labels_before;
         return;
@@ -438,14 +619,13 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
     size_t n = 0;
     for (int p = 0; p < ov->panel_count; p++)
         if (L->panel_w[p] > 0)
-            n += _sl_quad(v + n, L->panel_x[p], L->panel_y[p], L->panel_x[p] + L->panel_w[p],
-                          L->panel_y[p] + L->panel_h[p], SL_FONT_SOLID, backing, backing_alpha);
+            n += _sl_solid(v + n, &pen, L->panel_x[p], L->panel_y[p], L->panel_x[p] + L->panel_w[p],
+                           L->panel_y[p] + L->panel_h[p], backing, backing_alpha);
     for (int i = 0; i < total; i++) {
         const _sl_text_line *l = &ov->lines[i];
         if (l->panel >= 0) continue;
         float w = (float)strlen(l->text) * cw - (float)s + 2 * pad, h = ch - 2.0f * (float)s + 2 * pad;
-        n += _sl_quad(v + n, (float)l->x, (float)l->y, (float)l->x + w, (float)l->y + h, SL_FONT_SOLID, backing,
-                      backing_alpha);
+        n += _sl_solid(v + n, &pen, (float)l->x, (float)l->y, (float)l->x + w, (float)l->y + h, backing, backing_alpha);
     }
     int row[_SL_MAX_PANELS] = {0};
     for (int r = 0; r < L->row_count; r++) {
@@ -454,38 +634,25 @@ void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target,
         char part[_SL_LINE_CHARS];
         snprintf(part, sizeof part, "%s%.*s", w->indent ? "  " : "", w->length, l->text + w->start);
         n += _sl_text(v + n, part, L->panel_x[l->panel] + pad, L->panel_y[l->panel] + pad + (float)row[l->panel]++ * ch,
-                      s, l->rgb);
+                      &pen, l->rgb);
     }
     for (int i = 0; i < total; i++) {
         const _sl_text_line *l = &ov->lines[i];
-        if (l->panel < 0) n += _sl_text(v + n, l->text, (float)l->x + pad, (float)l->y + pad, s, l->rgb);
+        if (l->panel < 0) n += _sl_text(v + n, l->text, (float)l->x + pad, (float)l->y + pad, &pen, l->rgb);
     }
     ov->label_count = labels_before; /* the markers' texts were for this draw */
-    if (n == 0) return;
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glUseProgram(ov->text_program.id);
-    glUniform2f(sl_program_uniform(&ov->text_program, "u_viewport"), (float)width, (float)height);
-    glUniform1i(sl_program_uniform(&ov->text_program, "u_font"), 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, ov->font_texture);
-    glBindVertexArray(ov->text_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, ov->text_vbo);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * sizeof(float)), v, GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, (GLsizei)(n / 8));
-    glDisable(GL_BLEND);
-    glEnable(GL_DEPTH_TEST);
-    glBindVertexArray(0);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glUseProgram(0);
+    _sl_flush_text(ov, pen.face ? pen.face->texture : ov->font_texture, n, width, height);
+    if (ov->status_line[0]) _sl_draw_status_line(ov, width, height);
 }
 
 size_t sl_overlay_text(const sl_overlay *ov, char *out, size_t out_size) {
     static const char *const names[] = {"top left", "top right", "bottom left", "bottom right"};
     size_t used = 0;
     if (out_size) out[0] = '\0';
+    if (ov->status_line[0]) {
+        int k = snprintf(out, out_size, "[status] %s\n", ov->status_line);
+        if (k > 0) used += (size_t)k;
+    }
     for (int i = 0; i < ov->line_count + ov->label_count; i++) {
         const _sl_text_line *l = &ov->lines[i];
         const char *where = l->panel >= 0 ? names[ov->panels[l->panel].corner] : "label";

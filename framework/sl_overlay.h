@@ -41,12 +41,27 @@ void sl_overlay_clear(sl_overlay *ov);
  * for a lecture). */
 void sl_overlay_set_scale(sl_overlay *ov, int scale);
 int sl_overlay_scale_for(const sl_overlay *ov, int width, int height);
-/* For a lecture hall: larger text, white on opaque black, lines twice as
- * wide, and boxes brighter where the scene hides them. */
+/* For a lecture hall: text from a TrueType font (sl_overlay_set_font), one
+ * step larger, white on black; thin translucent boxes; and the status line. */
 void sl_overlay_set_lecture(sl_overlay *ov, bool on);
-/* The width in pixels boxes and markers are drawn with: the font scale, twice
- * that for a lecture. */
+/* The width in pixels boxes and markers are drawn with: the font scale; for a
+ * lecture thin (1 pixel, 2 from 1000 pixels high) and the boxes translucent,
+ * so they do not hide the scene they explain. */
 int sl_overlay_line_width_for(const sl_overlay *ov, int width, int height);
+
+/* The TrueType font a lecture's text is drawn with (NULL: DejaVu Sans); its
+ * panels take DejaVuSansMono.ttf from the same folder. A font that cannot be
+ * read is said once on stderr and the bitmap font draws instead. */
+void sl_overlay_set_font(sl_overlay *ov, const char *path);
+/* Whether a lecture's text is drawn from TrueType (false before the first
+ * draw, and when the font could not be read). */
+bool sl_overlay_truetype(const sl_overlay *ov);
+/* A lecture's one line of text across the top left of the frame, sized from
+ * the frame's height (1/27 of it) so it reads from the back of a hall, on a
+ * translucent backing: what the frame shows, in a few words. */
+void sl_overlay_status_line(sl_overlay *ov, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* The status line's text height in pixels for a frame `height` pixels high. */
+int sl_overlay_status_height_for(int height);
 
 /* In a line's text, a whole cell of solid colour: a legend's colour sample
  * ("\x7f cascade 0" in the cascade's colour). */
@@ -80,7 +95,7 @@ bool sl_overlay_marker(sl_overlay *ov, const float position[3], const float *rgb
  * panels and labels on top. */
 void sl_overlay_draw(sl_overlay *ov, mat4 camera_view_projection, GLuint target, int width, int height);
 
-/* The text of every panel as plain lines ("[corner] text", "[label] text",
+/* The text of every panel as plain lines ("[status] text", "[corner] text", "[label] text",
  * "[marker] text"), for tests and logs: what a screenshot shows, in words. */
 size_t sl_overlay_text(const sl_overlay *ov, char *out, size_t out_size);
 

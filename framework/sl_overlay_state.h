@@ -11,6 +11,7 @@
 #include "sl_gl.h"
 #include "sl_overlay_types.h"
 #include "sl_shader.h"
+#include "sl_ttf.h"
 
 #define _SL_MAX_PANELS 16
 #define _SL_MAX_LINES 96
@@ -36,11 +37,24 @@ typedef struct _sl_marker {
     char text[32];
 } _sl_marker;
 
+/* A TrueType face rasterised at one size, with its texture (sl_ttf.h). */
+typedef struct _sl_face {
+    sl_ttf_atlas atlas;
+    GLuint texture;
+} _sl_face;
+
 struct sl_overlay {
     sl_program text_program, line_program;
     GLuint font_texture, text_vao, text_vbo, line_vao, line_vbo;
     int scale;
     bool lecture;
+    /* A lecture's TrueType text: the proportional face for the status line, the monospaced one for
+     * panels and labels (their columns line up as the bitmap font's do). Made when first drawn; when a
+     * font cannot be read the bitmap font stands in, said once. */
+    char font_path[SL_PATH_MAX];
+    _sl_face sans, mono;
+    bool font_failed;
+    char status_line[2 * _SL_LINE_CHARS]; /* a lecture's one line (empty: none) */
     _sl_panel panels[_SL_MAX_PANELS];
     int panel_count;
     _sl_text_line lines[_SL_MAX_LINES + _SL_MAX_LABELS + _SL_MAX_MARKERS];

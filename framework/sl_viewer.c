@@ -104,12 +104,14 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
            sl_build_labs_kind, v.renderer.labs_dir);
     /* The overlay is on in an interactive window and off in unattended runs,
      * so screenshots and slide figures show the scene alone unless asked. */
+    v.show_panels = !v.lecture; /* a hall sees one line; the panels come on key I */
     v.show_overlay = o.overlay_option >= 0 ? o.overlay_option == 1 : ((!o.headless || o.serve_port) && o.frames <= 0);
     v.overlay = sl_overlay_create(sl_framework_dir(), err, sizeof err);
     if (!v.overlay) fprintf(stderr, "shadowlab: no overlay: %s\n", err);
     else {
         sl_overlay_set_scale(v.overlay, v.text_scale);
         sl_overlay_set_lecture(v.overlay, v.lecture);
+        if (v.font) sl_overlay_set_font(v.overlay, v.font);
     }
     /* GLFW's key codes for letters, digits and [ ] - = are their ASCII codes (upper case). */
     _sl_viewer_keys_attach(&v);
@@ -125,7 +127,7 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
         return 1;
     }
     if (o.serve_port) {
-        char *keys = _sl_viewer_keys_json();
+        char *keys = _sl_viewer_keys_json(v.params.lab);
         sl_serve_desc sd = {.port = o.serve_port, .address = o.serve_address, .hello = keys};
         v.serve = sl_serve_start(&sd, err, sizeof err);
         cJSON_free(keys);
@@ -205,9 +207,9 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
             status = 1;
             break;
         }
-        bool labels = v.show_overlay || v.labels;
+        bool labels = (v.show_overlay && v.show_panels) || v.labels;
         const sl_technique *asked = sl_technique_of(v.params.lab);
-        bool overlay_drawn = v.overlay && (labels || v.show_frustum || v.caption ||
+        bool overlay_drawn = v.overlay && (v.show_overlay || labels || v.show_frustum || v.caption ||
                                            (v.frozen && asked && asked->frozen_lines));
         mat4 camera;
         _sl_viewer_camera_view_projection(&v.scene, fw, fh, camera);

@@ -20,7 +20,7 @@
  * another in lab 6. */
 typedef enum _sl_action {
     _SL_KEY_LAB, _SL_KEY_VISIBILITY, _SL_KEY_MAP, _SL_KEY_COMPARE, _SL_KEY_BIAS, _SL_KEY_BIAS_MODE, _SL_KEY_FILTER,
-    _SL_KEY_KERNEL, _SL_KEY_LIGHT, _SL_KEY_OVERLAY, _SL_KEY_FRUSTUM, _SL_KEY_ANIMATE, _SL_KEY_SCREENSHOT,
+    _SL_KEY_KERNEL, _SL_KEY_LIGHT, _SL_KEY_OVERLAY, _SL_KEY_PANELS, _SL_KEY_FRUSTUM, _SL_KEY_ANIMATE, _SL_KEY_SCREENSHOT,
     _SL_KEY_CODE, _SL_KEY_FLY, _SL_KEY_QUIT,
 } _sl_action;
 
@@ -45,6 +45,8 @@ static const sl_technique_key _sl_common_keys[] = {
     {{GLFW_KEY_LEFT, GLFW_KEY_RIGHT, GLFW_KEY_UP, GLFW_KEY_DOWN}, "arrows", "light",
      "move the light (a point light: along x and z)", _SL_KEY_LIGHT},
     {{GLFW_KEY_O}, "O", "overlay", "the overlay (this text) on, off", _SL_KEY_OVERLAY},
+    {{GLFW_KEY_I}, "I", "panels", "the overlay's panels (parameters, times, keys, legend) or its one status line",
+     _SL_KEY_PANELS},
     {{GLFW_KEY_G}, "G", "frustum", "the light's frustum and a marker at the light", _SL_KEY_FRUSTUM},
     {{GLFW_KEY_H}, "H", "turn light", "the light turns about the scene", _SL_KEY_ANIMATE},
     {{GLFW_KEY_X}, "X", "screenshot", "screenshot of the window, overlay included (shadowlab-NNN.png)",
@@ -160,6 +162,10 @@ static void _sl_act(_sl_viewer *v, GLFWwindow *w, const _sl_key_binding *b, int 
         }
         break;
     case _SL_KEY_OVERLAY: v->show_overlay = !v->show_overlay; break;
+    case _SL_KEY_PANELS:
+        v->show_panels = !v->show_panels;
+        if (v->show_panels) v->show_overlay = true; /* asking for the panels shows them */
+        break;
     case _SL_KEY_FRUSTUM: v->show_frustum = !v->show_frustum; break;
     case _SL_KEY_ANIMATE: v->animate_light = !v->animate_light; break;
     case _SL_KEY_SCREENSHOT: v->screenshot_requested = true; break;
@@ -250,6 +256,7 @@ static void _sl_key_state(_sl_viewer *v, const sl_frame_info *info, const _sl_ke
         else snprintf(out, n, "-");
         break;
     case _SL_KEY_FRUSTUM: snprintf(out, n, "%s", _sl_on(v->show_frustum)); break;
+    case _SL_KEY_PANELS: snprintf(out, n, "%s", _sl_on(v->show_panels)); break;
     case _SL_KEY_ANIMATE: snprintf(out, n, "%s", _sl_on(v->animate_light)); break;
     case _SL_KEY_CODE: snprintf(out, n, "%s", v->show_second ? v->second_kind : sl_build_labs_kind); break;
     default: break;
@@ -267,8 +274,29 @@ void _sl_viewer_key(GLFWwindow *w, int key, int scancode, int action, int mods) 
     const _sl_key_binding *b = _sl_binding(v->params.lab, key);
     if (!b) return;
     _sl_act(v, w, b, key);
+    /* the status line names the setting this key changed (keys that change none leave it as it was) */
+    char state[64];
+    _sl_key_state(v, sl_renderer_info(v->show_second ? &v->second : &v->renderer), b, state, sizeof state);
+    if (state[0] && !_sl_is_common(b, _SL_KEY_LAB) && !_sl_is_common(b, _SL_KEY_OVERLAY) &&
+        !_sl_is_common(b, _SL_KEY_PANELS)) {
+        v->changed_lab = v->params.lab;
+        v->changed_key = key;
+    }
     v->keys_acted++;
     v->dirty_title = true;
+}
+
+bool _sl_viewer_last_change(_sl_viewer *v, const sl_frame_info *info, char *out, size_t n) {
+    out[0] = '\0';
+    /* a key of another lab than the one now shown said nothing about this one */
+    if (!v->changed_key || v->changed_lab != v->params.lab) return false;
+    const _sl_key_binding *b = _sl_binding(v->params.lab, v->changed_key);
+    if (!b) return false;
+    char state[64];
+    _sl_key_state(v, info, b, state, sizeof state);
+    if (!state[0]) return false;
+    snprintf(out, n, "%s: %s", b->key->label, state);
+    return true;
 }
 
 /* --help's keys, from the table: every lab's, then each lab's own, then --case's. */
@@ -311,10 +339,13 @@ void _sl_viewer_list_keys(FILE *f) {
  * binding but Esc (a page is closed in the browser) with its keys' browser
  * codes and GLFW codes, and the keys only held (Shift, for lab 6's flying).
  * The page takes these keys and no others, so it has exactly the window's. */
-char *_sl_viewer_keys_json(void) {
+char *_sl_viewer_keys_json(int lab) {
     const _sl_key_binding *table;
     int count = _sl_key_table(&table);
-    cJSON *root = cJSON_CreateObject(), *keys = cJSON_AddArrayToObject(root, "keys");
+    cJSON *root = cJSON_CreateObject();
+    /* the lab the viewer starts in: the page lists its keys before the first frame names the lab */
+    cJSON_AddNumberToObject(root, "lab", lab);
+    cJSON *keys = cJSON_AddArrayToObject(root, "keys");
     char code[16];
     for (int i = 0; i < count; i++) {
         const _sl_key_binding *b = &table[i];

@@ -21,10 +21,13 @@ void _sl_viewer_fly(_sl_viewer *v, GLFWwindow *w, double now);
 void _sl_viewer_input_callbacks(GLFWwindow *window);
 /* The --serve page's keys, button, pointer and wheel since the last frame. */
 void _sl_viewer_serve_events(_sl_viewer *v);
-/* --help's keys; --list-keys' lines (LAB<tab>KEYS<tab>WHAT); the page's key table (JSON, cJSON_free it). */
+/* --help's keys; --list-keys' lines (LAB<tab>KEYS<tab>WHAT); the page's key table and the
+ * lab `lab` it starts in (JSON, cJSON_free it). */
 void _sl_viewer_print_keys(FILE *f);
 void _sl_viewer_list_keys(FILE *f);
-char *_sl_viewer_keys_json(void);
+char *_sl_viewer_keys_json(int lab);
+/* The setting the last key pressed in this lab changed, as it is now ("filter: grid"); false when none. */
+bool _sl_viewer_last_change(_sl_viewer *v, const sl_frame_info *info, char *out, size_t n);
 /* The overlay's key panel (bottom left): the lab's keys with what they set now, then the general ones. */
 void _sl_viewer_key_panel(_sl_viewer *v, const sl_frame_info *info);
 

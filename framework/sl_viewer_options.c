@@ -89,8 +89,11 @@ static void _sl_viewer_usage(FILE *f) {
             "  --frustum           draw the light's frustum in the scene\n"
             "  --animate           turn the light around the scene (with --frames: a fixed step per frame)\n"
             "  --solutions         start with the solutions' code (builds that have solutions/: key U)\n"
-            "  --lecture           for a lecture hall: large text, a high-contrast overlay, thick lines, and\n"
-            "                      the labels of --labels\n"
+            "  --lecture           for a lecture hall: the overlay as one line of TrueType text sized from\n"
+            "                      the window (lab, technique, the setting just changed, frame time), its\n"
+            "                      panels and labels on key I; the frustum thin and translucent\n"
+            "  --font FILE         the TrueType font of --lecture's text; default DejaVu Sans (Debian:\n"
+            "                      fonts-dejavu-core); a font that cannot be read: the bitmap font, said once\n"
             "  --labels            label what is drawn, with or without the overlay: a legend for the\n"
             "                      cascade colours (lab 6), the cube faces in the cross (lab 7), a marker at\n"
             "                      a spot or point light\n"
@@ -125,7 +128,7 @@ int _sl_viewer_options_parse(int argc, char **argv, _sl_viewer *v, _sl_viewer_op
                            strcmp(a, "--cascades") == 0 || strcmp(a, "--lambda") == 0 || strcmp(a, "--blend-band") == 0 ||
                            strcmp(a, "--caption") == 0 || strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0 ||
                            strcmp(a, "--text-scale") == 0 || strcmp(a, "--serve") == 0 || strcmp(a, "--serve-address") == 0 ||
-                           strcmp(a, "--screenshot-dir") == 0 ||
+                           strcmp(a, "--screenshot-dir") == 0 || strcmp(a, "--font") == 0 ||
                            strcmp(a, "--cube-pass") == 0 || strcmp(a, "--soft-radius") == 0 || strcmp(a, "--cube-bias") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
@@ -138,7 +141,9 @@ int _sl_viewer_options_parse(int argc, char **argv, _sl_viewer *v, _sl_viewer_op
             _sl_viewer_list_keys(stdout);
             return 0;
         } else if (strcmp(a, "--lecture") == 0) {
-            v->lecture = v->labels = true;
+            v->lecture = true;
+        } else if (strcmp(a, "--font") == 0) {
+            v->font = next;
         } else if (strcmp(a, "--labels") == 0) {
             v->labels = true;
         } else if (strcmp(a, "--lab") == 0) {

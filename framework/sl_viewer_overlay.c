@@ -156,12 +156,41 @@ void _sl_viewer_labels(_sl_viewer *v, const sl_frame_info *info, int width, int 
 
 /* What the overlay says: the lab and what really draws with its parameters
  * (top left), the pass times (top right), the keys (bottom left, in a window). */
+/* The status line, for a hall: the lab and its technique, the setting the last key changed (or, before
+ * any, the settings of what draws, as the window's title gives them; what draws instead when the lab is
+ * off), and the frame time (the passes' when frames are not timed by the clock). */
+static void _sl_viewer_status_line(_sl_viewer *v, const sl_frame_info *info) {
+    const sl_render_params *p = &v->params;
+    const sl_technique *t = sl_technique_of(p->lab);
+    char setting[256] = "";
+    if (!_sl_viewer_last_change(v, info, setting, sizeof setting)) {
+        char status[512];
+        _sl_viewer_status(v, info, status, sizeof status);
+        const char *drawing = strstr(status, "; drawing ");
+        if (drawing) snprintf(setting, sizeof setting, "off, %s (I: why)", drawing + 2);
+        else if (t && t->settings_text) {
+            sl_view_context c = _sl_viewer_context(v, info);
+            t->settings_text(&c, setting, sizeof setting);
+        }
+    }
+    double ms = v->frame_ms;
+    for (int i = 0; ms <= 0 && i < v->pass_count; i++) ms += v->pass_ms[i];
+    char time[32] = "";
+    if (ms > 0) snprintf(time, sizeof time, "   %.1f ms", ms);
+    sl_overlay_status_line(v->overlay, "lab %d  %s%s%s%s", p->lab, sl_lab_title(p->lab), setting[0] ? "   " : "",
+                           setting, time);
+}
+
 void _sl_viewer_overlay_fill(_sl_viewer *v, const sl_renderer *r, int width, int height, bool windowed) {
     sl_overlay *ov = v->overlay;
     const sl_render_params *p = &v->params;
     const sl_light *l = &v->scene.light;
     const sl_frame_info *info = sl_renderer_info(r);
     int drawn = info->lab_in_use;
+    if (!v->show_panels) {
+        _sl_viewer_status_line(v, info);
+        return;
+    }
     char title[96];
     snprintf(title, sizeof title, "lab %d: %s", p->lab, sl_lab_title(p->lab));
     sl_overlay_panel(ov, SL_OVERLAY_TOP_LEFT, title);

@@ -44,7 +44,10 @@ typedef struct _sl_viewer {
     unsigned char *changed;
     const char *keys;      /* --keys: keys pressed before the first frame */
     char status[512];      /* what is drawing instead of the asked lab, as last said ("" when it draws) */
-    bool lecture;          /* --lecture: large text, a high-contrast overlay, thick lines, the labels */
+    bool lecture;          /* --lecture: TrueType text, one status line, thin translucent lines */
+    bool show_panels;      /* the overlay's panels (I); off: its status line alone (a lecture's default) */
+    const char *font;      /* --font: the lecture's TrueType font; NULL: DejaVu Sans */
+    int changed_lab, changed_key; /* the last key that changed a setting, and the lab it was pressed in */
     bool labels;           /* --labels: the cascade legend, cube-face labels, the light's marker */
     int text_scale;        /* --text-scale: the overlay's font size; 0: from the frame's size */
     int screenshot_count;

@@ -23,6 +23,8 @@ packages=(
   libopenimageio-dev    # PNG / OpenEXR capture and references
   libcjson-dev          # case files, reports
   libarchive-dev        # submissions uploaded as .zip / .tar.gz (shadowlab-stage)
+  libfreetype-dev       # the lecture overlay's TrueType text (shadowlab --lecture)
+  fonts-dejavu-core     # its font, DejaVu Sans
   libwebsockets-dev     # the viewer in a browser (shadowlab --serve); optional at build time
   xvfb xauth            # the viewer's tests run in a virtual X display
   libglx-mesa0          # llvmpipe behind GLX: the viewer under Xvfb

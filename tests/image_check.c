@@ -13,6 +13,10 @@
  *   image_check differ A.png B.png
  *     prints the percentage of pixels that differ (by more than 0.1 in a
  *     channel); exit 0 if any do.
+ *   image_check changed A.png B.png
+ *     prints the percentage of pixels that differ at all (by more than half
+ *     an 8-bit step in a channel: a translucent line or backing counts);
+ *     exit 0.
  *   image_check mean IMAGE.png X Y W H
  *     prints the rectangle's mean luminance (0..1); exit 0.
  *   image_check -
@@ -21,6 +25,7 @@
  *     many checks in one process, which loads the image module once (most of
  *     what a check costs). */
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -97,6 +102,31 @@ static int _check(int argc, char **argv) {
         printf("image_check: %s, rectangle %d,%d %dx%d: %.1f%% dark, %.1f%% bright\n", argv[2], x0, y0, w, h, k, b);
         return k >= 25 && b >= 2 && b <= 40 ? 0 : 1;
     }
+    if (argc == 4 && strcmp(argv[1], "changed") == 0) {
+        sl_image a, b;
+        if (!sl_image_read(argv[2], &a, err, sizeof err) || !sl_image_read(argv[3], &b, err, sizeof err)) {
+            fprintf(stderr, "image_check: %s\n", err);
+            sl_image_free(&a);
+            return 2;
+        }
+        bool same_size = a.width == b.width && a.height == b.height && a.channels == b.channels;
+        if (!same_size)
+            fprintf(stderr, "image_check: %s is %dx%d, %s %dx%d\n", argv[2], a.width, a.height, argv[3], b.width, b.height);
+        else {
+            long changed = 0;
+            for (int y = 0; y < a.height; y++)
+                for (int x = 0; x < a.width; x++) {
+                    const float *p = sl_image_pixel(&a, x, y), *q = sl_image_pixel(&b, x, y);
+                    bool d = false;
+                    for (int c = 0; c < a.channels && c < 3; c++) d = d || fabsf(p[c] - q[c]) > 0.5f / 255.0f;
+                    changed += d;
+                }
+            printf("%.3f\n", 100.0 * (double)changed / ((double)a.width * a.height));
+        }
+        sl_image_free(&a);
+        sl_image_free(&b);
+        return same_size ? 0 : 2;
+    }
     if (argc == 4 && strcmp(argv[1], "differ") == 0) {
         sl_image a, b;
         if (!sl_image_read(argv[2], &a, err, sizeof err) || !sl_image_read(argv[3], &b, err, sizeof err)) {
@@ -149,7 +179,7 @@ static int _check(int argc, char **argv) {
         return d >= 20 && k >= 25 && b >= 2 && b <= 40 ? 0 : 1;
     }
     fprintf(stderr, "usage: image_check text WITH.png WITHOUT.png X Y W H | not-blank IMAGE.png |\n"
-                    "       label IMAGE.png X Y W H | differ A.png B.png | mean IMAGE.png X Y W H |\n"
+                    "       label IMAGE.png X Y W H | differ A.png B.png | changed A.png B.png | mean IMAGE.png X Y W H |\n"
                     "       - (one of these a line from stdin)\n");
     return 2;
 }

@@ -161,6 +161,16 @@ class WebDriver:
 def png_crop_to_ppm(png_path, width, height, ppm_path):
     """The top-left width x height of an 8-bit RGB(A) PNG (Chromium's
     screenshots), written as a binary PPM that the image module reads."""
+    channels, rows = png_rows(png_path, height)
+    with open(ppm_path, "wb") as f:
+        f.write(b"P6\n%d %d\n255\n" % (width, height))
+        for row in rows[:height]:
+            for x in range(width):
+                f.write(bytes(row[x * channels:x * channels + 3]))
+
+
+def png_rows(png_path, height=None):
+    """The channels and the first `height` rows (all: None) of an 8-bit RGB(A) PNG."""
     data = open(png_path, "rb").read()
     assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
     pos, idat, header = 8, b"", None
@@ -199,11 +209,30 @@ def png_crop_to_ppm(png_path, width, height, ppm_path):
         previous = row
         if len(rows) == height:
             break
-    with open(ppm_path, "wb") as f:
-        f.write(b"P6\n%d %d\n255\n" % (width, height))
-        for row in rows[:height]:
-            for x in range(width):
-                f.write(bytes(row[x * channels:x * channels + 3]))
+    return channels, rows
+
+
+def fitted(browser, work, size, check):
+    """The frame fills the page's width or height with its aspect kept, centred, in a window of another
+    shape (a projector's): where the screenshot is not the bars' black is the contained rectangle."""
+    box = browser.js("const r = document.getElementById('frame').getBoundingClientRect();"
+                     "return [r.left, r.top, r.width, r.height, window.innerHeight];")
+    left, top, width, height, inner = box
+    check("the frame's box is the window's height", abs(height - inner) < 1, json.dumps(box))
+    scale = min(width / size[0], height / size[1])
+    want = (left + (width - size[0] * scale) / 2, top + (height - size[1] * scale) / 2)
+    want = (want[0], want[1], want[0] + size[0] * scale, want[1] + size[1] * scale)
+    shot = os.path.join(work, "page-fitted.png")
+    browser.screenshot(shot)
+    channels, rows = png_rows(shot, int(inner))
+    end = int(left + width) * channels  # the page's scroll bar, right of the box, is not the picture's
+    ys = [y for y, row in enumerate(rows) if any(sum(row[x:x + 3]) > 40 for x in range(0, end, channels * 4))]
+    xs = [x // channels for x in range(0, end, channels)
+          if any(sum(rows[y][x:x + 3]) > 40 for y in range(0, len(rows), 4))]
+    got = (min(xs), min(ys), max(xs) + 1, max(ys) + 1) if xs and ys else (0, 0, 0, 0)
+    check("the frame is fitted to the window, its aspect kept (the picture where expected, black bars around)",
+          all(abs(g - w) <= 4 for g, w in zip(got, want)) and scale > 1.5,
+          f"picture at {got}, expected {tuple(round(w) for w in want)} (scale {scale:.2f})")
 
 
 MEAN = """const img = document.getElementById('frame');
@@ -377,6 +406,16 @@ def test(viewer, compare, work):
         header = browser.js("return window.sl.header")
         check("a frame arrives with its size", header["width"] == size[0] and header["height"] == size[1],
               json.dumps(header)[:200])
+        before = browser.js("return window.sl.keysBeforeFrame")
+        check("the page lists the starting lab's keys before the first frame", before == "keys, lab 4", str(before))
+        fitted(browser, work, size, check)
+        # The checks below compare the page's pixels with the viewer's own: a window of the frame's size
+        # (and the page's scroll bar), where fitting draws it at 1:1.
+        bar = browser.js("return window.innerWidth - document.documentElement.clientWidth")
+        browser.call("POST", browser.s("/goog/cdp/execute"),
+                     {"cmd": "Emulation.setDeviceMetricsOverride",
+                      "params": {"width": size[0] + bar, "height": size[1], "deviceScaleFactor": 1, "mobile": False}})
+        frames_after(browser, 1)
         frames_after(browser, 2)
         shaded = mean(browser)
         latency = press_and_wait(browser, "v")

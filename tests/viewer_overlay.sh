@@ -7,8 +7,8 @@
 # solutions, --solutions draws exactly what the solutions' own viewer draws;
 # the keys O, G and U do what their options do. The overlay says what really
 # draws when the asked lab is off (as the renderer noted it); --labels names the
-# cascade colours, the cube faces and the light; --lecture draws thicker lines
-# and larger text; in a window the key panel lists the lab's own keys with their
+# cascade colours, the cube faces and the light; --lecture draws the frustum
+# thin and translucent and one status line for the panels; in a window the key panel lists the lab's own keys with their
 # state; --help's keys are the key table's; --batch refuses what is not a headless run.
 set -u
 viewer=$1 solutions=$2 check=$3 work=$4
@@ -49,10 +49,14 @@ run l6-labels --headless --lab 6 --scene cascade_field --size 640x400 --frames 1
   --screenshot "$work/l6-labels.png"
 run l7-labels --headless --lab 7 --scene closed_room --size 640x400 --frames 1 --show-map --labels \
   --screenshot "$work/l7-labels.png"
-run lecture-frustum "${common[@]}" --frustum --lecture --screenshot "$work/lecture-frustum.png"
+# the frustum alone, without the spot light's marker (whose label a lecture draws larger)
+sun=(--headless --lab 4 --scene boxes_on_floor --size 640x400 --frames 2)
+run sun "${sun[@]}" --screenshot "$work/sun.png"
+run sun-frustum "${sun[@]}" --frustum --screenshot "$work/sun-frustum.png"
+run lecture-frustum "${sun[@]}" --frustum --lecture --screenshot "$work/lecture-frustum.png"
 run lecture-overlay "${common[@]}" --overlay --lecture --screenshot "$work/lecture-overlay.png"
 run_all "$solutions" plain no-overlay overlay lab5 lab6 lab7 frustum key-l key-o key-oo lab5-pcf lab7-sun l6-labels \
-  l7-labels lecture-frustum lecture-overlay
+  l7-labels sun sun-frustum lecture-frustum lecture-overlay
 run try-ab "${common[@]}" --solutions --screenshot "$work/ab.png"
 run try-key-a "${common[@]}" --keys U --screenshot "$work/key-a.png"
 run own-lab5 --headless --lab 5 --scene stacked_occluders --size 320x200 --frames 1 --overlay
@@ -139,13 +143,14 @@ grep -qF "[marker] point light" "$work/l7-labels.log" || problem "no marker at t
 check_image label "$work/l7-labels.png" 436 196 16 13 || problem "no +Y label on the cross"
 check_image label "$work/l7-labels.png" 502 262 16 13 || problem "no +X label on the cross"
 
-# --lecture: the frustum's lines are thicker (more pixels change) and the text larger (the panel reaches
-# farther); the same scene otherwise.
-normal=$(check_image differ "$work/plain.png" "$work/frustum.png") lecture=$(check_image differ "$work/plain.png" "$work/lecture-frustum.png")
+# --lecture: the frustum's lines are no wider and translucent (no more pixels change, and those that do
+# change less), and one status line stands for the panels (viewer_lecture.sh measures how much it covers).
+normal=$(check_image changed "$work/sun.png" "$work/sun-frustum.png") lecture=$(check_image changed "$work/sun.png" "$work/lecture-frustum.png")
 echo "viewer_overlay: the frustum changes $normal% of the pixels, $lecture% with --lecture"
-awk -v a="$normal" -v b="$lecture" 'BEGIN { exit !(b >= 2 * a && a > 0) }' || problem "--lecture's frustum lines are not thicker"
-check_image text "$work/lecture-overlay.png" "$work/plain.png" 8 100 280 60 || problem "--lecture's panel is not larger"
-check_image text "$work/overlay.png" "$work/plain.png" 8 100 280 60 >/dev/null && problem "the plain overlay reaches as far as --lecture's"
+awk -v a="$normal" -v b="$lecture" 'BEGIN { exit !(b > 0 && b <= a) }' || problem "--lecture's frustum lines are wider than the plain viewer's"
+grep -q "^\[status\] lab 4  PCF & PCSS" "$work/lecture-overlay.log" || problem "--lecture's overlay has no status line"
+grep -q "^\[top left\]" "$work/lecture-overlay.log" && problem "--lecture's overlay shows its panels before key I"
+check_image text "$work/overlay.png" "$work/plain.png" 8 100 280 60 >/dev/null && problem "the plain overlay's panel reaches below its parameters"
 
 # --batch runs headless runs only, says which line it refuses and why, and fails when a line does (no picture
 # is drawn here: each line is refused before a context is made).

@@ -1,5 +1,6 @@
 #version 330 core
-// A glyph's texel is 1 where the glyph is set; backings use a solid texel.
+// A glyph's texel is its coverage: 0 or 1 in the bitmap font, anti-aliased
+// edges in a TrueType face; backings use a solid texel.
 in vec2 v_uv;
 in vec4 v_color;
 uniform sampler2D u_font;
@@ -7,6 +8,6 @@ out vec4 frag_color;
 
 void main() {
     float ink = texture(u_font, v_uv).r;
-    if (ink < 0.5) discard;
-    frag_color = v_color;
+    if (ink <= 0.0) discard;
+    frag_color = vec4(v_color.rgb, v_color.a * ink);
 }
