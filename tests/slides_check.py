@@ -340,11 +340,93 @@ def check_two_pass(path):
         problem(f"{path}: Q is drawn lit but its stored distance is not its own")
 
 
+def check_aliasing(path):
+    """Each texel's footprint under its beam; the images on the near plane are the footprints seen
+    through the eye; the near one's is the longer; the steep footprint is tau / cos(theta)."""
+    g = Svg(path)
+    tau, n, th = g.fact("texel"), g.fact("near"), math.radians(g.fact("theta"))
+    eye, d = (g.fact("eye_x"), g.fact("eye_y")), (g.fact("dir_x"), g.fact("dir_y"))
+    tol = 1.5 / g.s
+    lengths = {}
+    for name in ("near", "far"):
+        foot = g.line(f"foot-{name}")
+        if foot is None or g.line(f"image-{name}") is None:
+            problem(f"{path}: no {name} footprint or image drawn")
+            return
+        (x0, y0), (x1, y1) = foot
+        if not (near(abs(x1 - x0), tau, tol) and near(y0, 0, tol) and near(y1, 0, tol)):
+            problem(f"{path}: the {name} footprint is not one texel ({tau}) of the floor")
+        beam = g.points(f"beam-{name}")
+        xs = sorted({round(p[0], 3) for p in beam})
+        if not (near(xs[0], min(x0, x1), tol) and near(xs[-1], max(x0, x1), tol)):
+            problem(f"{path}: the {name} footprint is not under its texel's beam")
+        want = []
+        for p in ((x0, y0), (x1, y1)):
+            v = (p[0] - eye[0], p[1] - eye[1])
+            z = v[0] * d[0] + v[1] * d[1]
+            want.append((eye[0] + v[0] * n / z, eye[1] + v[1] * n / z))
+        got = g.line(f"image-{name}")
+        for w in want:
+            if not any(near(w[0], q[0], tol) and near(w[1], q[1], tol) for q in got):
+                problem(f"{path}: the {name} image does not end where the footprint projects on the near plane ({w})")
+        lengths[name] = math.dist(*got)
+    if not lengths["near"] > 2 * lengths["far"]:
+        problem(f"{path}: the near footprint's image ({lengths['near']:.3f}) is not much longer than the far one's "
+                f"({lengths['far']:.3f}): perspective aliasing is not drawn")
+    steep = g.line("foot-steep")
+    if not near(math.dist(*steep), tau / math.cos(th), tol):
+        problem(f"{path}: the steep footprint is {math.dist(*steep):.3f} long, tau / cos(theta) = {tau / math.cos(th):.3f}")
+    flat = g.line("foot-flat")
+    if not near(math.dist(*flat), tau, tol):
+        problem(f"{path}: the footprint facing the light is not tau long")
+    (nx0, ny0), (nx1, ny1) = g.line("normal")
+    ang = math.degrees(math.atan2(abs(nx1 - nx0), ny1 - ny0))
+    if not near(ang, g.fact("theta"), 1.0):
+        problem(f"{path}: the normal is drawn {ang:.1f} degrees from the light, theta = {g.fact('theta')}")
+
+
+def check_umbra(path):
+    """The umbra and both penumbrae end where the lines from the light's ends through the blocker's
+    edges meet the receiver; each penumbra is (d_r - d_b) w_light / d_b wide."""
+    g = Svg(path)
+    w, B, db, dr = g.fact("light"), g.fact("blocker_width"), g.fact("blocker"), g.fact("receiver")
+    tol = 1.5 / g.s
+    light, blocker = g.line("light"), g.line("blocker")
+    if not (near(abs(light[1][0] - light[0][0]), w, tol) and near(light[0][1], dr, tol)):
+        problem(f"{path}: the light is not w_light = {w} wide at height d_r")
+    if not (near(abs(blocker[1][0] - blocker[0][0]), B, tol) and near(blocker[0][1], dr - db, tol)):
+        problem(f"{path}: the blocker is not {B} wide at depth d_b")
+    lx = sorted(p[0] for p in light)
+    bx = sorted(p[0] for p in blocker)
+    def hit(l, e):
+        return l + (e - l) * dr / db
+    # The umbra: between the lines from each end of the light through the blocker's edge on its side;
+    # each penumbra: from there to the line from the light's other end through the same edge.
+    want = {"umbra": (hit(lx[0], bx[0]), hit(lx[1], bx[1])),
+            "penumbra": (hit(lx[1], bx[1]), hit(lx[0], bx[1])),
+            "penumbra-left": (hit(lx[1], bx[0]), hit(lx[0], bx[0]))}
+    for id_, (x0, x1) in want.items():
+        got = g.line(id_)
+        if got is None:
+            problem(f"{path}: no {id_} drawn")
+            continue
+        g0, g1 = sorted(p[0] for p in got)
+        lo, hi = sorted((x0, x1))
+        if not (near(g0, lo, tol) and near(g1, hi, tol)):
+            problem(f"{path}: the {id_} is drawn from {g0:.3f} to {g1:.3f}, the lines through the blocker's edges "
+                    f"give {lo:.3f} to {hi:.3f}")
+    pen = g.line("penumbra")
+    width, formula = abs(pen[1][0] - pen[0][0]), (dr - db) * w / db
+    if not near(width, formula, tol):
+        problem(f"{path}: the penumbra is drawn {width:.3f} wide, (d_r - d_b) w_light / d_b = {formula:.3f}")
+
+
 def diagrams(out, root):
     checks = {"acne": check_acne, "pcss": check_pcss, "splits": check_splits, "cube_faces": check_cube,
               "chebyshev": check_chebyshev, "depth_precision": check_depth_precision,
               "second_depth": check_second_depth, "dual_paraboloid": check_dual_paraboloid,
-              "two_pass": check_two_pass}
+              "two_pass": check_two_pass, "aliasing": check_aliasing,
+              "umbra": check_umbra}
     manifest = json.load(open(os.path.join(out, "figures", "manifest.json")))
     decks = {}
     for deck in glob.glob(os.path.join(root, "slides", "lab*.md")):
@@ -369,7 +451,7 @@ def diagrams(out, root):
             continue
         checks[script](path)
         seen.add(script)
-    for need in ("acne", "pcss", "splits", "cube_faces", "chebyshev"):
+    for need in ("acne", "pcss", "splits", "cube_faces", "chebyshev", "aliasing", "umbra"):
         if need not in seen:
             problem(f"no deck draws the {need} diagram")
     print(f"slides-check: {len(decks)} diagrams checked against their formulas")
