@@ -56,7 +56,7 @@ import json, os, shutil, sys
 manifest, work, dest = sys.argv[1:]
 n = 0
 for target, m in json.load(open(manifest)).items():
-    if m["kind"] in ("figure", "animation"):
+    if m["kind"] in ("figure", "animation", "truth"):
         shutil.copyfile(os.path.join(work, target), os.path.join(dest, os.path.basename(target)))
         n += 1
 print(f"slides: {n} pre-rendered figures in {dest}")

@@ -147,7 +147,7 @@ no-solutions)
 import json, os, sys
 d = sys.argv[1]
 for target, m in json.load(open(os.path.join(d, "manifest.json"))).items():
-    if m["kind"] in ("figure", "animation"):
+    if m["kind"] in ("figure", "animation", "truth"):
         for p in (os.path.join(d, os.path.basename(target)), os.path.join(d, ".stamps", target.replace("/", "_") + ".key")):
             if os.path.exists(p):
                 os.remove(p)

@@ -493,6 +493,16 @@ def red_pixels(path):
     return sum(1 for r, g, b in im.getdata() if r > 200 and g < 70 and b < 70)
 
 
+def mean_difference(a, b):
+    ga, gb = grey(a), grey(b)
+    return sum(abs(x - y) for x, y in zip(ga.getdata(), gb.getdata())) / (ga.width * ga.height)
+
+
+def leaked_pixels(leaking, reduced):
+    """Pixels lit above 0.2 in one picture and dark (under 0.05) in the other."""
+    return sum(1 for x, y in zip(grey(leaking).getdata(), grey(reduced).getdata()) if x > 51 and y < 13)
+
+
 def figures(out):
     F = lambda name: os.path.join(out, "figures", name)  # noqa: E731
     need = ["lab3_bias_0_crop.png", "lab3_bias_0005_crop.png", "lab3_bias_005_crop.png", "lab3_bias_1_crop.png",
@@ -501,7 +511,9 @@ def figures(out):
             "lab5_vsm_r0_crop.png", "lab5_vsm_r2_crop.png", "lab5_vsm_r6_crop.png", "lab5_bleeding.png",
             "lab5_bleeding_reduced.png", "lab6_shimmer_changes.png", "lab6_snapped_changes.png",
             "lab7_room_hard_crop.png", "lab7_room_soft_crop.png", "lab1_map_128_crop.png", "lab1_map_2048_crop.png",
-            "lab4_poisson_fixed.png", "lab4_poisson_rotated.png"]
+            "lab4_poisson_fixed.png", "lab4_poisson_rotated.png", "lab4_pole_truth_crop.png",
+            "lab4_pole_grid_wide.png", "lab4_pole_pcss_wide.png", "lab4_pole_vsm_wide.png", "lab5_pcf_r3_crop.png",
+            "lab5_vsm_r3_crop.png", "lab5_bleeding_crop.png", "lab5_bleeding_reduced_crop.png"]
     manifest = json.load(open(os.path.join(out, "figures", "manifest.json")))
     left_out = [n for n in need if manifest.get("figures/" + n, {}).get("status") == "missing"]
     if left_out:
@@ -553,6 +565,27 @@ def figures(out):
     m1 = sum(grey(F("lab5_bleeding_reduced.png")).getdata())
     if not m0 > m1:
         problem("lab 5: the bleeding figure is not lighter than the reduced one")
+    # Lab 4, the truth: the mean of hard shadows from points over the light is softer than a fixed
+    # 5x5 kernel, and PCSS, which estimates the penumbra from that light, is the nearest to it.
+    truth = F("lab4_pole_truth_crop.png")
+    err = {k: mean_difference(truth, F(f"lab4_pole_{k}_wide.png")) for k in ("grid", "pcss", "vsm")}
+    pt, pg = partial_pixels(truth), partial_pixels(F("lab4_pole_grid_wide.png"))
+    print(f"slides-check: lab 4 against the truth, mean grey difference PCF / PCSS / VSM: "
+          f"{err['grid']:.2f} / {err['pcss']:.2f} / {err['vsm']:.2f}; penumbra pixels truth {pt}, PCF {pg}")
+    if not pt > 1.5 * pg:
+        problem(f"lab 4: the averaged area light's shadow is not softer than PCF 5x5 ({pt} vs {pg} penumbra pixels)")
+    if not err["pcss"] < 0.8 * min(err["grid"], err["vsm"]):
+        problem(f"lab 4: PCSS is not the nearest to the truth (mean differences {err})")
+    # Lab 5: VSM and PCF with the same footprint differ where the slide shows them; the bleeding
+    # crop shows light inside the wide slab's shadow that the reduction removes.
+    vp = changed_fraction(F("lab5_pcf_r3_crop.png"), F("lab5_vsm_r3_crop.png"))
+    print(f"slides-check: lab 5 VSM against PCF, {vp:.1%} of the crop differs")
+    if vp < 0.03:
+        problem(f"lab 5: the VSM and PCF crops hardly differ ({vp:.2%} of pixels)")
+    leak = leaked_pixels(F("lab5_bleeding_crop.png"), F("lab5_bleeding_reduced_crop.png"))
+    print(f"slides-check: lab 5 bleeding, {leak} pixels of the crop lit without the reduction, dark with it")
+    if leak < 500:
+        problem(f"lab 5: the bleeding crop shows little leak ({leak} pixels lit above 0.2 that the reduction darkens)")
     # Lab 6: without snapping many more edges move.
     c0, c1 = red_pixels(F("lab6_shimmer_changes.png")), red_pixels(F("lab6_snapped_changes.png"))
     print(f"slides-check: lab 6 pixels that changed, not snapped / snapped: {c0} / {c1}")
@@ -616,6 +649,8 @@ def keys(slides, help_file, list_file, grader_sources):
                 continue
             grade_line = "shadowlab-grade" in line
             for opt in re.findall(r"(?<![\w-])(--[a-z][a-z0-9-]*)", line):
+                if line.startswith("<!-- truth:") and opt == "--samples":
+                    continue   # render_figures.py's own (the number of light positions), not the viewer's
                 no += 1
                 if grade_line:
                     if f'"{opt}"' not in grader and f"{opt} " not in grader and f"{opt}=" not in grader:

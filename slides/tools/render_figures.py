@@ -13,6 +13,11 @@ command runs from OUT_DIR, so figures/... lands in OUT_DIR/figures:
   <!-- diagram: NAME.py ARGS --out figures/x.svg -->     slides/diagrams/NAME.py
   <!-- derive: crop|inset figures/src.png X,Y WxH [--scale S] --out figures/x.png -->
         slides/tools/figtool.py on a figure made before it
+  <!-- truth: shadowlab ARGS --samples N --screenshot figures/x.png -->
+        an area light's soft shadow as it is: the mean of N hard-shadow renders (ARGS as
+        a figure's, e.g. --filter none --visibility), each with the scene's light moved to
+        one of N points spread evenly over a disk across its axis, of radius the light's
+        size (--light-size in ARGS, else the scene's "size": the radius, as PCSS takes it)
 
 The viewer's figures show the solutions' code. With --from none (a copy
 without solutions/, e.g. the students' handout) they are copied from
@@ -29,6 +34,7 @@ import argparse
 import concurrent.futures
 import hashlib
 import json
+import math
 import os
 import re
 import shlex
@@ -38,9 +44,10 @@ import sys
 import tempfile
 import time
 
-LINE = re.compile(r"^<!-- (figure|animation|diagram|derive): *(.*?) *-->$")
+LINE = re.compile(r"^<!-- (figure|animation|diagram|derive|truth): *(.*?) *-->$")
 BATCH_LINE = re.compile(r"^shadowlab: batch line ([0-9]+)$")            # shadowlab --batch: a line starts
 BATCH_EXIT = re.compile(r"^shadowlab: batch line ([0-9]+): exit ([0-9]+)$")  # and how it ended
+VIEWER_KINDS = ("figure", "animation", "truth")   # drawn by the viewer, with the solutions' code
 HERE = os.path.dirname(os.path.abspath(__file__))
 SLIDES = os.path.dirname(HERE)
 ROOT = os.path.dirname(SLIDES)
@@ -57,7 +64,7 @@ def directives(deck):
 
 
 def target_of(kind, args):
-    flag = "--screenshot" if kind in ("figure", "animation") else "--out"
+    flag = "--screenshot" if kind in VIEWER_KINDS else "--out"
     for i, a in enumerate(args):
         if a == flag and i + 1 < len(args):
             return args[i + 1]
@@ -96,6 +103,55 @@ def derive(args, out):
     return False, ""
 
 
+def light_samples(scene, radius, n):
+    """n copies of a scene (parsed JSON) with its light moved to points spread evenly over a disk of
+    the given radius across the light's axis (a Vogel spiral: equal area per point, no randomness).
+    The light's target moves with it, so each copy's light points the same way."""
+    light = scene.get("light", {})
+    if "position" not in light:
+        raise ValueError("truth: the scene's light has no position (a directional light has no disk to sample)")
+    pos = light["position"]
+    if "target" in light:
+        axis = [t - p for t, p in zip(light["target"], pos)]
+    else:
+        axis = list(light.get("direction", [0, -1, 0]))
+    length = math.sqrt(sum(v * v for v in axis))
+    axis = [v / length for v in axis]
+    helper = [0.0, 1.0, 0.0] if abs(axis[1]) < 0.9 else [1.0, 0.0, 0.0]
+    def cross(a, b):
+        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    e1 = cross(axis, helper)
+    l1 = math.sqrt(sum(v * v for v in e1))
+    e1 = [v / l1 for v in e1]
+    e2 = cross(axis, e1)
+    golden = math.pi * (3.0 - math.sqrt(5.0))
+    out = []
+    for k in range(n):
+        r, a = radius * math.sqrt((k + 0.5) / n), k * golden
+        off = [r * math.cos(a) * u + r * math.sin(a) * v for u, v in zip(e1, e2)]
+        copy = json.loads(json.dumps(scene))
+        copy["light"]["position"] = [p + o for p, o in zip(pos, off)]
+        if "target" in light:
+            copy["light"]["target"] = [t + o for t, o in zip(light["target"], off)]
+        out.append((copy, off))
+    return out
+
+
+def average_images(paths, dest):
+    """The per-pixel mean of same-sized pictures, rounded (PIL: sums in 32-bit channels)."""
+    from PIL import Image, ImageMath
+    first = Image.open(paths[0]).convert("RGB")
+    sums = [Image.new("I", first.size, 0) for _ in range(3)]
+    for p in paths:
+        im = Image.open(p).convert("RGB")
+        if im.size != first.size:
+            raise ValueError(f"truth: {p} is {im.size}, not {first.size}")
+        sums = [ImageMath.eval("s + c", s=s, c=im.getchannel(k).convert("I")) for k, s in enumerate(sums)]
+    n = len(paths)
+    mean = [ImageMath.eval("(s + h) / n", s=s, h=n // 2, n=n).convert("L") for s in sums]
+    Image.merge("RGB", mean).save(dest)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--viewer")
@@ -132,7 +188,8 @@ def main():
 
     # What else a figure depends on: the viewer and its inputs; a diagram's scripts; figtool.
     tool_hash = {"diagram": tree_hash([os.path.join(SLIDES, "diagrams")]),
-                 "derive": tree_hash([os.path.join(HERE, "figtool.py")])}
+                 "derive": tree_hash([os.path.join(HERE, "figtool.py")]),
+                 "truth": deps + tree_hash([os.path.abspath(__file__)])}
 
     def stamp_of(kind, args):
         extra = tool_hash.get(kind, deps)
@@ -147,7 +204,7 @@ def main():
         path = os.path.join(out, target)
         os.makedirs(os.path.dirname(path), exist_ok=True)
         stamp_file = os.path.join(stamps, target.replace("/", "_") + ".key")
-        if kind in ("figure", "animation") and a.source == "none":
+        if kind in VIEWER_KINDS and a.source == "none":
             pre = os.path.join(a.prerendered, os.path.basename(target)) if a.prerendered else None
             if pre and os.path.isfile(pre):
                 shutil.copyfile(pre, path)
@@ -162,7 +219,7 @@ def main():
         key = stamp_of(kind, args)
         if os.path.isfile(path) and os.path.isfile(stamp_file) and open(stamp_file).read() == key:
             return target, "cached", None
-        if kind in ("figure", "animation") and args[0] != "shadowlab":
+        if kind in VIEWER_KINDS and args[0] != "shadowlab":
             return target, "failed", f"{deck}:{no}: a {kind} command starts with shadowlab"
         return target, None, (path, stamp_file, key)
 
@@ -187,6 +244,57 @@ def main():
             failed, err = r.returncode != 0, r.stderr
         else:
             failed, err = derive(args, out)
+        return finish(job, work, failed, err, time.time() - t0)
+
+    def run_truth(job, work):
+        """An area light's shadow as it is: the mean of --samples hard-shadow renders, the light moved
+        over its disk (light_samples), drawn by one viewer process (shadowlab --batch)."""
+        deck, no, kind, args, target = job
+        t0 = time.time()
+        rest, samples, size, scene_name = [], 64, None, "boxes_on_floor"
+        it = iter(range(1, len(args)))
+        for i in it:
+            x = args[i]
+            if x in ("--samples", "--light-size", "--scene", "--screenshot") and i + 1 < len(args):
+                v = args[i + 1]
+                next(it)
+                if x == "--samples":
+                    samples = int(v)
+                elif x == "--light-size":
+                    size = float(v)
+                elif x == "--scene":
+                    scene_name = v
+                continue
+            rest.append(x)
+        scenes = os.environ.get("SHADOWLAB_SCENES", os.path.join(ROOT, "framework", "scenes"))
+        scene_file = scene_name if scene_name.endswith(".json") else os.path.join(scenes, scene_name + ".json")
+        try:
+            scene = json.load(open(os.path.join(out, scene_file)))
+            radius = size if size is not None else float(scene.get("light", {}).get("size", 0.0))
+            if not radius > 0:
+                raise ValueError("truth: the light has no size (--light-size or the scene's \"size\")")
+            copies = light_samples(scene, radius, samples)
+        except (OSError, ValueError) as e:
+            return finish(job, work, True, str(e), 0.0)
+        with tempfile.TemporaryDirectory(prefix="render-truth-") as tmp:
+            lines, pictures = [], []
+            for k, (copy, _) in enumerate(copies):
+                sf, pf = os.path.join(tmp, f"scene{k}.json"), os.path.join(tmp, f"{k}.png")
+                with open(sf, "w") as f:
+                    json.dump(copy, f)
+                lines.append(shlex.join(viewer_args + ["--headless", "--frames", "1"] + rest +
+                                        ["--scene", sf, "--screenshot", pf]))
+                pictures.append(pf)
+            with open(os.path.join(tmp, "batch"), "w") as f:
+                f.write("\n".join(lines) + "\n")
+            r = subprocess.run([a.viewer, "--batch", os.path.join(tmp, "batch")], cwd=out,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+            failed, err = r.returncode != 0, r.stderr
+            if not failed:
+                try:
+                    average_images(pictures, work[0])
+                except (OSError, ValueError) as e:
+                    failed, err = True, str(e)
         return finish(job, work, failed, err, time.time() - t0)
 
     def run_viewer(batch):
@@ -264,7 +372,8 @@ def main():
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
             viewer_runs = [(g, pool.submit(run_viewer, [(job, work) for _, job, work in g])) for g in groups if g]
             other_runs = [(i, pool.submit(run, job, work)) for i, job, work in todo
-                          if job[2] not in ("figure", "animation")]
+                          if job[2] not in ("figure", "animation", "truth")]
+            other_runs += [(i, pool.submit(run_truth, job, work)) for i, job, work in todo if job[2] == "truth"]
             for g, future in viewer_runs:
                 for (i, _, _), result in zip(g, future.result()):
                     results[i] = result
