@@ -14,11 +14,14 @@ Every lab*.html deck in OUT_DIR (and OUT_DIR/student) is opened in headless Chro
     or four fifths of its width (a row of side-by-side figures).
 
 Text the slide hides (the lecturer's notes, shown in the speaker view) is not on the slide and
-is not measured. Exit 0: every slide passes; 1: a problem (each named: deck, slide, title, what
+is not measured; it must be hidden there, and nowhere in the students' decks: every "Questions
+for the room" slide keeps its answers in notes, and no phrase of any notes is in a students'
+HTML or PDF (pdftotext), while each is in the lecturer's HTML (so the phrases are real ones). Exit 0: every slide passes; 1: a problem (each named: deck, slide, title, what
 and how big); 77: no Chromium.
 """
 import functools
 import glob
+import html
 import http.server
 import json
 import os
@@ -33,6 +36,14 @@ WIDTH, HEIGHT = 1920, 1080
 MIN_TEXT_PX = 18.0
 MIN_FIGURE_HEIGHT = 0.5   # of the slide's height
 MIN_FIGURE_WIDTH = 0.8    # of the slide's width, for a row of figures
+# Slides made to show one figure (a diagram with its labels, or a row of renders): each must be in
+# its deck with that many pictures, labels where it is a diagram, and the figure filling most of it.
+FIGURE_SLIDES = {
+    "lab4_pcf": {"Umbra and penumbra": (1, True), "Against the truth, the same light": (4, False)},
+    "lab5_vsm": {"VSM beside PCF": (2, False), "Light bleeding": (2, False)},
+    "lab6_cascades": {"A texel\u2019s footprint, seen": (1, True)},
+}
+MOST = 0.6                # "most of the slide": of its height, or of its width for a row
 
 # Runs in the harness page; each deck is loaded in a same-origin iframe of 1920x1080.
 MEASURE = r"""
@@ -98,7 +109,12 @@ function measureDeck(win, doc) {
     var k = sr.width / s.offsetWidth;          // CSS px to screen px (dzslides scales the body)
     var h1 = s.querySelector('h1');
     var slide = {index: i + 1, title: h1 ? h1.textContent.trim() : '', w: sr.width, h: sr.height,
-                 text: [], labels: [], figures: 0, figW: 0, figH: 0};
+                 text: [], labels: [], figures: 0, figW: 0, figH: 0, notes: 0, notesDrawn: 0};
+    // The lecturer's notes (answers to the questions among them) are for the speaker view only.
+    Array.prototype.forEach.call(s.querySelectorAll('.notes'), function (nt) {
+      slide.notes++;
+      if (nt.getClientRects().length && win.getComputedStyle(nt).visibility !== 'hidden') slide.notesDrawn++;
+    });
     // Text: every text node with characters, at its element's computed size, where it is drawn.
     var walker = doc.createTreeWalker(s, NodeFilter.SHOW_TEXT);
     for (var n = walker.nextNode(); n; n = walker.nextNode()) {
@@ -193,6 +209,74 @@ def chromium():
     return None
 
 
+def words(text):
+    return re.sub(r"\s+", " ", text).strip()
+
+
+def html_text(path):
+    t = open(path, encoding="utf-8").read()
+    t = re.sub(r"<(script|style)\b.*?</\1>", " ", t, flags=re.S)
+    t = re.sub(r'src="data:[^"]*"', " ", t)
+    return words(html.unescape(re.sub(r"<[^>]+>", " ", t)))
+
+
+def notes_phrases(md):
+    """Each slide of a prepared deck (.NAME.lecturer.md): (title, its notes' lines), and plain
+    phrases of the notes (math, code and list numbers left out) that the decks would show as text."""
+    slides, title, inside = [], None, False
+    for line in open(md, encoding="utf-8"):
+        line = line.rstrip("\n")
+        if line.startswith("# "):
+            title = line[2:].strip()
+            slides.append([title, []])
+            continue
+        if line.strip() in ("::: {.notes}", "::: notes"):
+            inside = True
+            continue
+        if inside and line.strip() == ":::":
+            inside = False
+            continue
+        if inside and slides:
+            slides[-1][1].append(line)
+    phrases = []
+    for _, lines in slides:
+        for line in lines:
+            plain = re.sub(r"^\s*[0-9]+\.\s", " ", line.replace("*", ""))
+            for part in re.split(r"\$[^$]*\$|`[^`]*`|[;:,.()?!\u2014\u2013]", plain):
+                part = words(part)
+                if len(part) >= 18 and len(part.split()) >= 3:
+                    phrases.append(part)
+    return slides, phrases
+
+
+def notes_stay_with_the_lecturer(out):
+    problems, checked = [], 0
+    for md in sorted(glob.glob(os.path.join(out, ".lab[0-9]*.lecturer.md"))):
+        name = os.path.basename(md)[1:-len(".lecturer.md")]
+        slides, phrases = notes_phrases(md)
+        for title, lines in slides:
+            if title.lower().startswith("questions for the room") and not any(l.strip() for l in lines):
+                problems.append(f"{name}: '{title}' has no lecturer's notes: its answers belong there")
+        if not phrases:
+            continue
+        lecturer = html_text(os.path.join(out, name + ".html"))
+        found = [p for p in phrases if p in lecturer]
+        if len(found) < 0.8 * len(phrases):
+            problems.append(f"{name}: only {len(found)} of {len(phrases)} phrases of the notes are in the lecturer's "
+                            f"HTML (e.g. {next(p for p in phrases if p not in lecturer)!r}): the check reads them wrong")
+        shown = {"HTML": html_text(os.path.join(out, "student", name + ".html"))}
+        pdf = os.path.join(out, "student", name + ".pdf")
+        if shutil.which("pdftotext") and os.path.isfile(pdf):
+            r = subprocess.run(["pdftotext", "-layout", pdf, "-"], capture_output=True, text=True)
+            shown["PDF"] = words(r.stdout)
+        for kind, text in shown.items():
+            leaked = [p for p in found if p in text]
+            if leaked:
+                problems.append(f"{name}: the students' {kind} shows the lecturer's notes: {leaked[0]!r}")
+        checked += len(found)
+    return problems, checked
+
+
 def main():
     if len(sys.argv) < 2:
         sys.exit("usage: slides_hall.py OUT_DIR")
@@ -253,6 +337,10 @@ def main():
                     kind = "a diagram's label" if "where" in t else "text"
                     problems.append(f"{where}: {kind} at {t['px']:.1f} px (under {MIN_TEXT_PX:g}): {t['text']!r}")
                     break
+            if s.get("notesDrawn"):
+                problems.append(f"{where}: the lecturer's notes are drawn on the slide (they belong in the speaker view)")
+            if deck.startswith("student") and s.get("notes"):
+                problems.append(f"{where}: a students' deck carries the lecturer's notes")
             if s["figures"]:
                 figs += 1
                 hs, ws = s["figH"] / s["h"], s["figW"] / s["w"]
@@ -261,8 +349,28 @@ def main():
                 if hs < MIN_FIGURE_HEIGHT and ws < MIN_FIGURE_WIDTH:
                     problems.append(f"{where}: its figure is drawn {s['figW']:.0f}x{s['figH']:.0f}, "
                                     f"{100 * hs:.0f}% of the slide's height and {100 * ws:.0f}% of its width")
+        name = os.path.basename(deck)[:-len(".html")]
+        titles = {s["title"].replace("'", "\u2019"): s for s in res["slides"]}
+        for title, (pictures, diagram) in FIGURE_SLIDES.get(name, {}).items():
+            s = titles.get(title)
+            if s is None:
+                problems.append(f"{deck}: no slide '{title}' (its figure is checked here)")
+                continue
+            where = f"{deck} slide {s['index']} ({title})"
+            if s["figures"] != pictures:
+                problems.append(f"{where}: {s['figures']} pictures drawn, {pictures} expected")
+                continue
+            if diagram and not s["labels"]:
+                problems.append(f"{where}: the diagram's labels were not found")
+            hs, ws = s["figH"] / s["h"], s["figW"] / s["w"]
+            if hs < MOST and not (pictures > 1 and ws >= 0.9):
+                problems.append(f"{where}: its figure fills {100 * hs:.0f}% of the height, {100 * ws:.0f}% of the "
+                                f"width: not most of the slide")
         print(f"slides-hall: {deck}: {len(res['slides'])} slides, smallest text {smallest or 0:.1f} px, "
               f"{figs} with figures" + (f" (least filled {100 * worst_fig:.0f}%)" if worst_fig is not None else ""))
+    note_problems, phrases = notes_stay_with_the_lecturer(out)
+    problems += note_problems
+    print(f"slides-hall: {phrases} phrases of the lecturer's notes, in none of the students' decks")
     for p in problems:
         print(f"slides-hall: {p}", file=sys.stderr)
     if problems:
