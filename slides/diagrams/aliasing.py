@@ -22,7 +22,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from svg import Canvas, INK, ACCENT, LIGHT, BLUE, GREEN, GREY  # noqa: E402
+from svg import Canvas, INK, ACCENT, LIGHT, BLUE, GREY  # noqa: E402
 
 
 def main():
