@@ -216,10 +216,10 @@ static void _sl_split_label_text(_sl_viewer *v, const _sl_split_side *side, cons
     else snprintf(out, n, "lab %d's %s", info->lab_in_use, t->name);
     size_t used = strlen(out);
     if (info->lab_in_use != p.lab && used < n)
-        used += (size_t)snprintf(out + used, n - used, " (lab %d %s is off)", p.lab, sl_lab_title(p.lab));
+        used += (size_t)snprintf(out + used, n - used, " (lab %d is off)", p.lab);
     const _sl_split *s = &v->split;
     if (s->sides[0].code != s->sides[1].code && used < n)
-        snprintf(out + used, n - used, ", %s code", _sl_split_second(v, side) ? v->second_kind : sl_build_labs_kind);
+        snprintf(out + used, n - used, ", %s", _sl_split_second(v, side) ? v->second_kind : sl_build_labs_kind);
 }
 
 void _sl_viewer_split_labels(_sl_viewer *v, const sl_frame_info *left, int width, int height) {
