@@ -21,6 +21,18 @@ void _sl_viewer_split_usage(FILE *f) {
             "                      of the left half; key Y shows the left half alone, and both again\n");
 }
 
+/* Whether the halves differ in `setting`. The left side's words become the viewer's settings and the right
+ * half follows the viewer where its side is silent: so the right side must name it, apart from the left's. */
+static bool _sl_split_apart(const _sl_split *s, _sl_split_setting setting) {
+    const _sl_split_side *a = &s->sides[0], *b = &s->sides[1];
+    switch (setting) {
+    case _SL_SPLIT_LAB: return b->lab && a->lab != b->lab;
+    case _SL_SPLIT_FILTER: return b->filter >= 0 && a->filter != b->filter;
+    case _SL_SPLIT_CODE: return b->code >= 0 && a->code != b->code;
+    }
+    return false;
+}
+
 /* One word of a side: a lab number, a filter name or a code's name. */
 static bool _sl_split_word(_sl_viewer *v, const char *word, _sl_split_side *side) {
     sl_filter_mode filter;
@@ -68,10 +80,8 @@ bool _sl_viewer_split_parse(_sl_viewer *v, const char *text) {
         for (char *save = NULL, *w = strtok_r(words, ":", &save); w; w = strtok_r(NULL, ":", &save))
             if (!_sl_split_word(v, w, side)) return false;
     }
-    const _sl_split_side *a = &s->sides[0], *b = &s->sides[1];
-    bool labs = (a->lab || b->lab) && a->lab != b->lab, filters = a->filter != b->filter,
-         codes = a->code != b->code;
-    if (!labs && !filters && !codes) {
+    if (!_sl_split_apart(s, _SL_SPLIT_LAB) && !_sl_split_apart(s, _SL_SPLIT_FILTER) &&
+        !_sl_split_apart(s, _SL_SPLIT_CODE)) {
         fprintf(stderr, "shadowlab: --split %s: the two sides set nothing apart\n", text);
         return false;
     }
@@ -108,11 +118,8 @@ void _sl_viewer_split_show(_sl_viewer *v, bool on) {
 bool _sl_viewer_split_holds(_sl_viewer *v, _sl_split_setting setting) {
     const _sl_split *s = &v->split;
     if (!s->on) return false;
-    const _sl_split_side *a = &s->sides[0], *b = &s->sides[1];
-    static const char *const names[] = {"lab", "filter", "code"};
-    bool held = setting == _SL_SPLIT_LAB ? a->lab != b->lab
-              : setting == _SL_SPLIT_FILTER ? a->filter != b->filter
-                                            : a->code != b->code;
+    static const char *const names[] = {"labs", "filters", "codes"};
+    bool held = _sl_split_apart(s, setting);
     if (held)
         printf("shadowlab: --split shows two of the %s side by side: Y shows the left half alone, where the key "
                "changes it\n", names[setting]);
@@ -218,7 +225,7 @@ static void _sl_split_label_text(_sl_viewer *v, const _sl_split_side *side, cons
     if (info->lab_in_use != p.lab && used < n)
         used += (size_t)snprintf(out + used, n - used, " (lab %d is off)", p.lab);
     const _sl_split *s = &v->split;
-    if (s->sides[0].code != s->sides[1].code && used < n)
+    if (_sl_split_apart(s, _SL_SPLIT_CODE) && used < n)
         snprintf(out + used, n - used, ", %s", _sl_split_second(v, side) ? v->second_kind : sl_build_labs_kind);
 }
 
