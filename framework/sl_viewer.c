@@ -24,6 +24,7 @@
 #include "sl_viewer_keys.h"
 #include "sl_viewer_options.h"
 #include "sl_viewer_overlay.h"
+#include "sl_viewer_split.h"
 #include "sl_viewer_state.h"
 #include <cjson/cJSON.h>
 #define GLFW_INCLUDE_NONE
@@ -81,6 +82,7 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
         if (!v.params.lab) v.params.lab = 1;
         while (v.params.lab > 1 && !sl_lab_folder(v.params.lab)) v.params.lab--;
     }
+    _sl_viewer_split_show(&v, v.split.given); /* the viewer's settings are the left half's */
     sl_context_desc cd = {
         .backend = o.headless ? o.backend : SL_BACKEND_GLFW,
         .width = o.width,
@@ -166,6 +168,7 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
                 fprintf(stderr, "shadowlab: shader reload failed, keeping the previous version:\n%s\n", err);
             else if (reloaded)
                 printf("shadowlab: shaders reloaded\n");
+            _sl_viewer_split_reload(&v);
         }
         if (live) _sl_viewer_fly(&v, window, now);
         int fw, fh;
@@ -198,7 +201,10 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
         double frame_seconds = live && last_frame_time > 0 ? now - last_frame_time : 0;
         last_frame_time = now;
         if (v.camera_path) _sl_viewer_camera_path(&v, o.frames > 0 ? (double)rendered / o.frames : now / _SL_PATH_SECONDS);
+        /* --split: the right half's setting first, so the frame's depth is the left half's (the overlay's lines) */
+        if (v.split.on) _sl_viewer_split_draw_right(&v, target, fw, fh);
         sl_renderer_draw(active, &v.scene, &v.params, target, fw, fh);
+        if (v.split.on) _sl_viewer_split_compose(&v, target, fw, fh);
         const sl_frame_info *info = sl_renderer_info(active);
         /* --mark-changes compares the frames as drawn, before the overlay: its text (the pass times) changes
          * from frame to frame, the scene it is about may not */
@@ -209,7 +215,7 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
         }
         bool labels = (v.show_overlay && v.show_panels) || v.labels;
         const sl_technique *asked = sl_technique_of(v.params.lab);
-        bool overlay_drawn = v.overlay && (v.show_overlay || labels || v.show_frustum || v.caption ||
+        bool overlay_drawn = v.overlay && (v.show_overlay || labels || v.show_frustum || v.caption || v.split.on ||
                                            (v.frozen && asked && asked->frozen_lines));
         mat4 camera;
         _sl_viewer_camera_view_projection(&v.scene, fw, fh, camera);
@@ -219,6 +225,7 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
             if (v.show_overlay) _sl_viewer_overlay_fill(&v, active, fw, fh, live);
             if (v.show_frustum) _sl_viewer_add_frustum(v.overlay, info);
             _sl_viewer_labels(&v, info, fw, fh, labels);
+            if (v.split.on) _sl_viewer_split_labels(&v, info, fw, fh);
             if (v.caption) {
                 sl_overlay_panel(v.overlay, SL_OVERLAY_BOTTOM_LEFT, NULL);
                 sl_overlay_line(v.overlay, (const float[3]){1, 1, 1}, "%s", v.caption);
@@ -310,6 +317,7 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
     free(v.changed);
     sl_overlay_destroy(v.overlay);
     if (v.second_ready) sl_renderer_destroy(&v.second);
+    _sl_viewer_split_destroy(&v);
     sl_renderer_destroy(&v.renderer);
     sl_context_destroy(v.ctx);
     return status;

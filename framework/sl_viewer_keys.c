@@ -7,6 +7,7 @@
 
 #include "sl_case_view.h"
 #include "sl_viewer_camera.h"
+#include "sl_viewer_split.h"
 #include <cjson/cJSON.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -21,7 +22,7 @@
 typedef enum _sl_action {
     _SL_KEY_LAB, _SL_KEY_VISIBILITY, _SL_KEY_MAP, _SL_KEY_COMPARE, _SL_KEY_BIAS, _SL_KEY_BIAS_MODE, _SL_KEY_FILTER,
     _SL_KEY_KERNEL, _SL_KEY_LIGHT, _SL_KEY_OVERLAY, _SL_KEY_PANELS, _SL_KEY_FRUSTUM, _SL_KEY_ANIMATE, _SL_KEY_SCREENSHOT,
-    _SL_KEY_CODE, _SL_KEY_FLY, _SL_KEY_QUIT,
+    _SL_KEY_CODE, _SL_KEY_SPLIT, _SL_KEY_FLY, _SL_KEY_QUIT,
 } _sl_action;
 
 /* The keys of every lab. A technique's key panel lists the ones it names (sl_technique.panel_keys) with its
@@ -52,6 +53,7 @@ static const sl_technique_key _sl_common_keys[] = {
     {{GLFW_KEY_X}, "X", "screenshot", "screenshot of the window, overlay included (shadowlab-NNN.png)",
      _SL_KEY_SCREENSHOT},
     {{GLFW_KEY_U}, "U", "code", "student or solutions code (builds that carry both)", _SL_KEY_CODE},
+    {{GLFW_KEY_Y}, "Y", "split", "with --split: its two halves, or the left half's setting alone", _SL_KEY_SPLIT},
     /* held, not pressed: the viewer polls them every frame (_sl_viewer_fly), but a letter a lab takes for
      * its own key (lab 7's S) is that key there */
     {{GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E}, "W A S D Q E", "fly",
@@ -131,7 +133,13 @@ static void _sl_act(_sl_viewer *v, GLFWwindow *w, const _sl_key_binding *b, int 
         else if (c.request == SL_VIEW_REQUEST_CAMERA_PATH) v->camera_path = (v->camera_path + 1) % 3;
         return;
     }
-    switch ((_sl_action)b->key->id) {
+    /* the setting --split's halves differ in stays theirs */
+    _sl_action action = (_sl_action)b->key->id;
+    if ((action == _SL_KEY_LAB && _sl_viewer_split_holds(v, _SL_SPLIT_LAB)) ||
+        (action == _SL_KEY_FILTER && _sl_viewer_split_holds(v, _SL_SPLIT_FILTER)) ||
+        (action == _SL_KEY_CODE && v->second_functions && _sl_viewer_split_holds(v, _SL_SPLIT_CODE)))
+        return;
+    switch (action) {
     case _SL_KEY_LAB: p->lab = key - GLFW_KEY_0; break;
     case _SL_KEY_VISIBILITY: p->output = p->output == SL_OUTPUT_SHADED ? SL_OUTPUT_VISIBILITY : SL_OUTPUT_SHADED; break;
     case _SL_KEY_MAP: p->show_shadow_map = !p->show_shadow_map; break;
@@ -172,6 +180,10 @@ static void _sl_act(_sl_viewer *v, GLFWwindow *w, const _sl_key_binding *b, int 
     case _SL_KEY_CODE:
         if (!v->second_functions) printf("shadowlab: this build has no second lab code to switch to (U)\n");
         else v->show_second = !v->show_second;
+        break;
+    case _SL_KEY_SPLIT:
+        if (!v->split.given) printf("shadowlab: Y shows --split's two halves: this run has no --split\n");
+        else _sl_viewer_split_show(v, !v->split.on);
         break;
     case _SL_KEY_FLY: break; /* held keys, polled every frame (_sl_viewer_fly) */
     case _SL_KEY_QUIT:
@@ -259,6 +271,7 @@ static void _sl_key_state(_sl_viewer *v, const sl_frame_info *info, const _sl_ke
     case _SL_KEY_PANELS: snprintf(out, n, "%s", _sl_on(v->show_panels)); break;
     case _SL_KEY_ANIMATE: snprintf(out, n, "%s", _sl_on(v->animate_light)); break;
     case _SL_KEY_CODE: snprintf(out, n, "%s", v->show_second ? v->second_kind : sl_build_labs_kind); break;
+    case _SL_KEY_SPLIT: snprintf(out, n, "%s", v->split.given ? _sl_on(v->split.on) : ""); break;
     default: break;
     }
 }
@@ -414,6 +427,7 @@ void _sl_viewer_key_panel(_sl_viewer *v, const sl_frame_info *info) {
         const _sl_key_binding *b = &table[i];
         if (b->technique || _sl_panel_lists(NULL, b->key->names) || _sl_binding(lab, b->key->codes[0]) != b) continue;
         if (_sl_is_common(b, _SL_KEY_CODE) && !v->second_functions) continue;
+        if (_sl_is_common(b, _SL_KEY_SPLIT) && !v->split.given) continue;
         if (_sl_is_common(b, _SL_KEY_QUIT) && v->serve) continue; /* a page is closed in the browser */
         char state[64], item[128], names[32];
         _sl_key_state(v, info, b, state, sizeof state);

@@ -8,6 +8,7 @@
 #include "sl_bench.h"
 #include "sl_viewer_capture.h"
 #include "sl_viewer_keys.h"
+#include "sl_viewer_split.h"
 
 /* The offscreen backends of this build, for messages: "osmesa, egl or window". */
 static const char *_sl_backend_choices(void) { return sl_backend_choices(); }
@@ -104,6 +105,7 @@ static void _sl_viewer_usage(FILE *f) {
             "                      and distance images stretched to their own range (printed)\n"
             "  --check NAME        with --case: the check to show first (as the case file names it)\n",
             (double)_SL_PATH_SLIDE_METRES, (double)_SL_PATH_TURN_DEGREES, _SL_PATH_SECONDS, sl_backend_name(sl_backend_default_headless()), _sl_backend_choices());
+    _sl_viewer_split_usage(f);
     _sl_viewer_print_keys(f);
     sl_bench_usage(f);
 }
@@ -129,7 +131,8 @@ int _sl_viewer_options_parse(int argc, char **argv, _sl_viewer *v, _sl_viewer_op
                            strcmp(a, "--caption") == 0 || strcmp(a, "--frame-dir") == 0 || strcmp(a, "--keys") == 0 ||
                            strcmp(a, "--text-scale") == 0 || strcmp(a, "--serve") == 0 || strcmp(a, "--serve-address") == 0 ||
                            strcmp(a, "--screenshot-dir") == 0 || strcmp(a, "--font") == 0 ||
-                           strcmp(a, "--cube-pass") == 0 || strcmp(a, "--soft-radius") == 0 || strcmp(a, "--cube-bias") == 0;
+                           strcmp(a, "--cube-pass") == 0 || strcmp(a, "--soft-radius") == 0 || strcmp(a, "--cube-bias") == 0 ||
+                           strcmp(a, "--split") == 0;
         if (takes_value && !next) {
             fprintf(stderr, "shadowlab: %s needs a value\n", a);
             return 2;
@@ -322,6 +325,8 @@ int _sl_viewer_options_parse(int argc, char **argv, _sl_viewer *v, _sl_viewer_op
                 fprintf(stderr, "shadowlab: --cube-pass is auto, six or layered\n");
                 return 2;
             }
+        } else if (strcmp(a, "--split") == 0) {
+            if (!_sl_viewer_split_parse(v, next)) return 2;
         } else if (strcmp(a, "--show-map") == 0) {
             v->params.show_shadow_map = true;
         } else if (strcmp(a, "--serve") == 0) {
@@ -372,6 +377,10 @@ int _sl_viewer_options_parse(int argc, char **argv, _sl_viewer *v, _sl_viewer_op
     o->gif = _sl_viewer_is_gif(o->screenshot);
     if (v->mark_changes && (o->gif || !o->screenshot || o->frames < 2)) {
         fprintf(stderr, "shadowlab: --mark-changes needs --frames K (2 or more) and --screenshot FILE.png\n");
+        return 2;
+    }
+    if (v->split.given && o->case_name) {
+        fprintf(stderr, "shadowlab: --case shows the grader's pictures side by side already: not with --split\n");
         return 2;
     }
     if (o->gif && o->case_name) {

@@ -14,6 +14,25 @@
 #include "sl_serve.h"
 #include "sl_technique.h"
 
+/* --split A,B (sl_viewer_split.c): one half of the frame, and what it sets apart from the other half. */
+typedef struct _sl_split_side {
+    int lab;    /* 0: the viewer's lab */
+    int filter; /* -1: the viewer's filter; else an sl_filter_mode */
+    int code;   /* -1: the viewer's code (key U); 0: this build's; 1: the second lab code */
+} _sl_split_side;
+
+typedef struct _sl_split {
+    bool given, on;          /* --split was given; the halves show now (key Y) */
+    _sl_split_side sides[2]; /* left, right */
+    /* The right half draws with a renderer of its own (its own maps, programs and per-lab state) over the
+     * whole frame first; its right half waits in `framebuffer` while the left half draws, then goes back:
+     * each half is the single view's picture. */
+    sl_renderer right;
+    bool right_ready, right_second; /* made; with the second lab code */
+    GLuint framebuffer, color;
+    int width, height;
+} _sl_split;
+
 typedef struct _sl_viewer {
     sl_context *ctx;
     sl_renderer renderer;
@@ -63,6 +82,7 @@ typedef struct _sl_viewer {
     const sl_lab_functions *second_functions;
     const char *second_dir, *second_kind;
     unsigned long keys_acted; /* key presses a binding took (--serve's page counts them) */
+    _sl_split split; /* --split: two settings side by side */
 } _sl_viewer;
 
 enum { _SL_PATH_NONE = 0, _SL_PATH_SLIDE, _SL_PATH_TURN };

@@ -19,6 +19,14 @@
  *     exit 0.
  *   image_check mean IMAGE.png X Y W H
  *     prints the rectangle's mean luminance (0..1); exit 0.
+ *   image_check halves SPLIT.png LEFT.png RIGHT.png BAND DIVIDER
+ *     SPLIT is LEFT over its left half and RIGHT over its right half (the
+ *     viewer's --split), but for the labels in the bottom BAND rows and the
+ *     divider, DIVIDER columns either side of the middle: there every pixel
+ *     is within 2/255 of the single picture of its half. In the band 1-60% of
+ *     each half's pixels changed (a label, not a covered band), and most of
+ *     the divider's; and LEFT and RIGHT differ in each half (else a swap of
+ *     the halves would pass unseen).
  *   image_check -
  *     one of the above a line from stdin (words split at tabs, so paths may hold spaces), each
  *     answered by its output and a line "image_check: exit N": a test makes
@@ -48,6 +56,80 @@ static bool _differs(const sl_image *a, const sl_image *b, int x, int y, int bx,
 }
 
 static int _check(int argc, char **argv);
+
+/* A channel of p and q apart by more than `by`. */
+static bool _apart(const float *p, const float *q, int channels, float by) {
+    for (int c = 0; c < channels && c < 3; c++)
+        if (fabsf(p[c] - q[c]) > by) return true;
+    return false;
+}
+
+/* image_check halves: see the top of the file. */
+static int _check_halves(char **argv) {
+    char err[1024];
+    sl_image split = {0}, single[2] = {{0}, {0}};
+    bool read = sl_image_read(argv[2], &split, err, sizeof err) && sl_image_read(argv[3], &single[0], err, sizeof err) &&
+                sl_image_read(argv[4], &single[1], err, sizeof err);
+    int band = atoi(argv[5]), divider = atoi(argv[6]), status = 2;
+    int w = split.width, h = split.height, half = w / 2;
+    if (!read) fprintf(stderr, "image_check: %s\n", err);
+    else if (single[0].width != w || single[1].width != w || single[0].height != h || single[1].height != h)
+        fprintf(stderr, "image_check: %s, %s and %s are not one size\n", argv[2], argv[3], argv[4]);
+    else if (band < 1 || band >= h || divider < 1 || divider >= half)
+        fprintf(stderr, "image_check: the band (%d rows) or the divider (%d columns) does not fit %dx%d\n", band,
+                divider, w, h);
+    else {
+        const float step = 1.0f / 255.0f;
+        long mismatched[2] = {0, 0}, compared[2] = {0, 0}, unlike[2] = {0, 0}, labelled[2] = {0, 0},
+             band_pixels[2] = {0, 0}, divided = 0, divider_pixels = 0;
+        int first_x = -1, first_y = -1;
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                int side = x < half ? 0 : 1;
+                const float *p = sl_image_pixel(&split, x, y), *q = sl_image_pixel(&single[side], x, y);
+                bool changed = _apart(p, q, split.channels, 0.5f * step);
+                if (x >= half - divider && x < half + divider) {
+                    divider_pixels++;
+                    divided += changed;
+                } else if (y >= h - band) {
+                    band_pixels[side]++;
+                    labelled[side] += changed;
+                } else {
+                    compared[side]++;
+                    bool off = _apart(p, q, split.channels, 2 * step);
+                    if (off && first_x < 0) first_x = x, first_y = y;
+                    mismatched[side] += off;
+                    unlike[side] += _apart(sl_image_pixel(&single[0], x, y), sl_image_pixel(&single[1], x, y),
+                                           split.channels, 2 * step);
+                }
+            }
+        status = 0;
+        for (int side = 0; side < 2; side++) {
+            const char *name = side ? "right" : "left";
+            double off = 100.0 * mismatched[side] / compared[side], apart = 100.0 * unlike[side] / compared[side],
+                   label = 100.0 * labelled[side] / band_pixels[side];
+            printf("image_check: %s half: %ld of its pixels outside the label band (%.3f%%) differ from %s; the two "
+                   "singles differ on %.3f%% of them; %.1f%% of the label band changed\n", name, mismatched[side], off,
+                   argv[3 + side], apart, label);
+            if (mismatched[side] > 0) status = 1;
+            if (unlike[side] == 0 || apart < 0.1) {
+                printf("image_check: %s and %s are alike in the %s half: this check could not tell the halves apart\n",
+                       argv[3], argv[4], name);
+                status = 1;
+            }
+            if (label < 1 || label > 60) status = 1;
+        }
+        double line = 100.0 * divided / divider_pixels;
+        printf("image_check: %.1f%% of the divider's columns changed\n", line);
+        if (line < 50) status = 1;
+        if (first_x >= 0)
+            printf("image_check: %ld pixels off, the first at %d,%d\n", mismatched[0] + mismatched[1], first_x, first_y);
+    }
+    sl_image_free(&split);
+    sl_image_free(&single[0]);
+    sl_image_free(&single[1]);
+    return status;
+}
 
 int main(int argc, char **argv) {
     if (argc != 2 || strcmp(argv[1], "-") != 0) return _check(argc, argv);
@@ -147,6 +229,7 @@ static int _check(int argc, char **argv) {
         sl_image_free(&b);
         return differ < 0 ? 2 : differ > 0 ? 0 : 1;
     }
+    if (argc == 7 && strcmp(argv[1], "halves") == 0) return _check_halves(argv);
     if (argc == 8 && strcmp(argv[1], "text") == 0) {
         sl_image with, without;
         if (!sl_image_read(argv[2], &with, err, sizeof err) || !sl_image_read(argv[3], &without, err, sizeof err)) {
@@ -180,6 +263,7 @@ static int _check(int argc, char **argv) {
     }
     fprintf(stderr, "usage: image_check text WITH.png WITHOUT.png X Y W H | not-blank IMAGE.png |\n"
                     "       label IMAGE.png X Y W H | differ A.png B.png | changed A.png B.png | mean IMAGE.png X Y W H |\n"
+                    "       halves SPLIT.png LEFT.png RIGHT.png BAND DIVIDER |\n"
                     "       - (one of these a line from stdin)\n");
     return 2;
 }

@@ -10,7 +10,9 @@ chromedriver (the W3C WebDriver protocol, over HTTP on this machine only).
       the page's keys are the viewer's key table (--list-keys) and that every
       key of it, pressed in the browser in labs 4 to 7, is acted on; and
       --case in the browser: its labels and summary on the page, its keys
-      (not Esc) taken from its own table, Tab changing the picture.
+      (not Esc) taken from its own table, Tab changing the picture; and
+      --split: the page shows the split frame (each half its setting, the
+      labels, the divider), not the same frame with its halves swapped.
   serve_browser.py security VIEWER WORK_DIR
       only the URL the viewer printed connects: the page and the WebSocket
       without the token or with a wrong one, with Host: evil.example (DNS
@@ -387,6 +389,45 @@ def case_view(viewer, work, check):
           f"serving the case view at {server.url}" in open(server.log_path).read())
 
 
+def split_view(viewer, compare, work, check):
+    """--serve with --split: the frame the page shows is the split frame the viewer renders headless (lab 1,
+    no shadows, beside lab 4's: the halves differ well beyond JPEG's noise), and not the same two halves
+    swapped (--split 4,1)."""
+    size = (480, 270)
+    view = ["--scene", "boxes_on_floor", "--size", f"{size[0]}x{size[1]}", "--no-overlay"]
+    server = Server(viewer, work, view + ["--split", "1,4"])
+    browser = None
+    try:
+        browser = WebDriver(work)
+        browser.go(server.url)
+        wait_for("the split view's first frame", lambda: browser.js("return window.sl.frames") >= 1)
+        bar = browser.js("return window.innerWidth - document.documentElement.clientWidth")
+        browser.call("POST", browser.s("/goog/cdp/execute"),
+                     {"cmd": "Emulation.setDeviceMetricsOverride",
+                      "params": {"width": size[0] + bar, "height": size[1], "deviceScaleFactor": 1, "mobile": False}})
+        frames_after(browser, 2)
+        shot = os.path.join(work, "page-split.png")
+        browser.screenshot(shot)
+        crop = os.path.join(work, "page-split.ppm")
+        png_crop_to_ppm(shot, size[0], size[1], crop)
+        text = browser.js("return document.getElementById('text').textContent")
+    finally:
+        if browser:
+            browser.close()
+        server.stop()
+    references = {}
+    for sides in ("1,4", "4,1"):
+        references[sides] = os.path.join(work, f"headless-split-{sides.replace(',', '-')}.png")
+        subprocess.run([viewer, "--headless", "--frames", "1", "--split", sides, "--screenshot", references[sides]] + view,
+                       check=True, stdout=subprocess.DEVNULL)
+    same = subprocess.run([compare, crop, references["1,4"], "0.1", "1.0"], stdout=subprocess.DEVNULL).returncode == 0
+    check("--split: the page shows the split frame the viewer renders (JPEG: 0.1, 1% of pixels)", same)
+    swapped = subprocess.run([compare, crop, references["4,1"], "0.1", "1.0"], stdout=subprocess.DEVNULL).returncode != 0
+    check("--split: the page's halves are not the other way round (--split 4,1)", swapped)
+    check("--split: the page shows the halves' labels", "[label] no shadows (only lab 1's depth map)" in text and
+          "[label] lab 4's PCF grid 3x3" in text, " | ".join(text.splitlines()[:3]))
+
+
 def test(viewer, compare, work):
     failures = []
 
@@ -463,6 +504,7 @@ def test(viewer, compare, work):
     log = open(server.log_path).read()
     check("the server said where it serves", f"serving the viewer at {server.url}" in log)
     case_view(viewer, work, check)
+    split_view(viewer, compare, work, check)
     print("serve_browser: " + ("passed" if not failures else f"{len(failures)} failed"))
     return 1 if failures else 0
 
