@@ -13,6 +13,10 @@ const char *sl_diag_darkening_word(double mean_visibility) {
     return "strongly";
 }
 
+const char *sl_diag_shadowed_share_words(double fraction_of_lit) {
+    return fraction_of_lit >= SL_DIAG_ALMOST_ALL ? "almost everything" : "most of the lit area";
+}
+
 double sl_diag_perspective_fov_deg(double m11) {
     if (!isfinite(m11) || m11 == 0) return NAN;
     double half = atan(1.0 / m11); /* (-90, 90) degrees: a negative m11 is a half-angle past 90 */

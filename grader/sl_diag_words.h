@@ -16,6 +16,12 @@
 #define SL_DIAG_NOTICEABLE_LOSS 0.30
 const char *sl_diag_darkening_word(double mean_visibility);
 
+/* How much of the reference's lit area is shadowed here, as the words a message starts with: "almost
+ * everything" from SL_DIAG_ALMOST_ALL of it, "most of the lit area" below (the messages that use it
+ * fire from half of it on). */
+#define SL_DIAG_ALMOST_ALL 0.90
+const char *sl_diag_shadowed_share_words(double fraction_of_lit);
+
 /* The field of view, in degrees, that glm_perspective's matrix was made
  * with, from its m11 = 1 / tan(fovy / 2): the angle folded into (0, 180),
  * as the matrix shows it; NaN when m11 is 0 or not a number. */

@@ -286,7 +286,8 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *s, const sl_i
     }
     if (v.extra_shadow > 0.5 && v.missing_shadow < 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
-        sl_diag_say(out, "almost everything is in shadow (%.0f%% of the reference's lit pixels)", 100 * v.extra_shadow);
+        sl_diag_say(out, "%s is in shadow (%.0f%% of the reference's lit pixels)",
+                    sl_diag_shadowed_share_words(v.extra_shadow), 100 * v.extra_shadow);
         sl_diag_cause_in(out, fn, "does %s compare like with like — the fragment's distance divided by far_plane with the "
                            "stored distance / far (TODO %s)?", fn, todo);
         return true;
