@@ -136,6 +136,8 @@ static void test_diag_angle_slips_and_words(void) {
     CHECK(strcmp(sl_diag_darkening_word(0.95), "slightly") == 0);
     CHECK(strcmp(sl_diag_darkening_word(0.8), "noticeably") == 0);
     CHECK(strcmp(sl_diag_darkening_word(0.6), "strongly") == 0);
+    CHECK(strcmp(sl_diag_shadowed_share_words(0.56), "most of the lit area") == 0);
+    CHECK(strcmp(sl_diag_shadowed_share_words(0.95), "almost everything") == 0);
 }
 
 static void test_compare_depth_patterns(void) {
