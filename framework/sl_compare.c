@@ -54,6 +54,8 @@ sl_compare_stats sl_compare_images(const sl_image *student, const sl_image *refe
             bool fail = nan || !_sl_close_to_neighbourhood(student, reference, x, y, threshold) ||
                         !_sl_close_to_neighbourhood(reference, student, x, y, threshold);
             s.failing += fail;
+            s.failing_shadow_lost += fail && !nan && pr[0] < 0.5f && ps[0] >= 0.5f;
+            s.failing_shadow_gained += fail && !nan && pr[0] >= 0.5f && ps[0] < 0.5f;
             if (diff && diff->data) {
                 float *pd = sl_image_pixel(diff, x, y);
                 float grey = 0;

@@ -26,6 +26,10 @@
 typedef struct sl_compare_stats {
     bool size_mismatch;
     long pixels, failing, nan_pixels;
+    /* Of the failing pixels (not NaN), those whose channel 0 crossed 0.5, read as visibility: lit in the
+     * student's where the reference is shadowed (a shadow lost), and shadowed where it is lit (one
+     * gained). The rest of the failing pixels are on the same side of 0.5 in both: brightness only. */
+    long failing_shadow_lost, failing_shadow_gained;
     double failing_fraction;
     double max_difference;     /* largest plain per-pixel difference */
     double mean_difference;    /* mean plain per-pixel difference (NaN pixels left out): systematic errors */

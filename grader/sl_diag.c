@@ -69,9 +69,10 @@ void sl_diag_set_cause(sl_check_result *out, const char *function, const char *k
     out->cause_kind = out->cause_function[0] ? kind : NULL;
 }
 
-/* Adds a case's hint after the message. */
+/* Adds a case's hint after the message, unless the message already says it word for word (a diagnosis
+ * whose cause is the hint's own advice): each piece of advice is said once. */
 void sl_diag_hint(sl_check_result *out, const char *hint) {
-    if (!hint[0]) return;
+    if (!hint[0] || strstr(out->message, hint)) return;
     size_t n = strlen(out->message);
     bool ends_sentence = n > 0 && strchr(".?!", out->message[n - 1]) != NULL;
     sl_diag_append(out, "%s Hint: %s", ends_sentence ? "" : ".", hint);

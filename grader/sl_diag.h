@@ -105,7 +105,7 @@ void sl_diag_cause(sl_check_result *out, const char *fmt, ...) __attribute__((fo
  * message says the function was ruled out and lists the candidates instead. */
 void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-/* Adds a case's hint after the message. */
+/* Adds a case's hint after the message, unless the message already says it word for word. */
 void sl_diag_hint(sl_check_result *out, const char *hint);
 /* "not implemented" for this lab's stubs first, then "needs lab K"; false if no stub is in the way. */
 bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check_result *out);

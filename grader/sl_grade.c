@@ -14,6 +14,7 @@
 #include <cjson/cJSON.h>
 
 #include "sl_compare.h"
+#include "sl_diag_words.h"
 #include "sl_diagnose.h"
 #include "sl_files.h"
 #include "sl_json.h"
@@ -134,12 +135,18 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
                     100 * v.missing_shadow, 100 * v.extra_shadow);
         sl_diag_cause(out, "is the comparison inverted?");
     } else if (v.extra_shadow > 0.5) {
-        sl_diag_say(out, "almost everything is in shadow (%.0f%% of lit pixels)", 100 * v.extra_shadow);
+        sl_diag_say(out, "%s is in shadow (%.0f%% of lit pixels)", sl_diag_shadowed_share_words(v.extra_shadow),
+                    100 * v.extra_shadow);
         sl_diag_cause(out, "is the comparison inverted, the depth map empty, or the shadow coordinate wrong (W, divide)?");
     } else {
-        sl_diag_say(out, "shadows differ from the reference on %.1f%% of pixels (allowed %.1f%%): %.0f%% of the "
-                         "reference's shadow is missing, %.1f%% of its lit area is shadowed",
-                    100 * st->failing_fraction, 100 * k->fail_fraction, 100 * v.missing_shadow, 100 * v.extra_shadow);
+        /* the breakdown in the headline's own unit, pixels of the image, so that its parts add up to it */
+        double pixels = st->pixels ? (double)st->pixels : 1;
+        long brightness = st->failing - st->nan_pixels - st->failing_shadow_lost - st->failing_shadow_gained;
+        sl_diag_say(out, "shadows differ from the reference on %.1f%% of pixels (allowed %.1f%%): %.1f%% of pixels "
+                         "lost their shadow, %.1f%% gained one, %.1f%% only differ in brightness (both lit or both "
+                         "shadowed)",
+                    100 * st->failing_fraction, 100 * k->fail_fraction, 100 * (double)st->failing_shadow_lost / pixels,
+                    100 * (double)st->failing_shadow_gained / pixels, 100 * (double)brightness / pixels);
     }
 }
 

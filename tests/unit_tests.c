@@ -18,6 +18,7 @@
 #include "sl_build_failure.h"
 #include "sl_case.h"
 #include "sl_compare.h"
+#include "sl_diag_words.h"
 #include "sl_gl.h"
 #include "sl_grade.h"
 #include "sl_hidden.h"
@@ -92,6 +93,51 @@ static void test_compare_neighbourhood(void) {
     sl_image_free(&shifted);
     sl_image_free(&nan_img);
     sl_image_free(&small);
+}
+
+/* The failing pixels by kind add up to the failing count: shadows lost, shadows gained, brightness only. */
+static void test_compare_failing_by_kind(void) {
+    sl_image ref = square(64, 64, 0, 1, 16, 16, 40, 40);        /* a 24x24 shadow */
+    sl_image stu = square(64, 64, 0, 1, 16, 16, 40, 40);
+    for (int y = 16; y < 40; y++)
+        for (int x = 16; x < 28; x++) sl_image_pixel(&stu, x, y)[0] = 1;   /* half the shadow lost: 12x24 */
+    for (int y = 50; y < 54; y++)
+        for (int x = 50; x < 60; x++) sl_image_pixel(&stu, x, y)[0] = 0;   /* a shadow gained: 10x4 */
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 64; x++) sl_image_pixel(&stu, x, y)[0] = 0.7f; /* lit but dimmer: 64x8 */
+    sl_compare_stats s = sl_compare_images(&stu, &ref, 0.1, NULL);
+    /* a pixel passes where a neighbour matches it: a few at the lost half's corners do */
+    CHECK(s.failing_shadow_lost > 11 * 24 && s.failing_shadow_lost <= 12 * 24);
+    CHECK(s.failing_shadow_gained == 10 * 4);
+    CHECK(s.nan_pixels == 0);
+    CHECK(s.failing - s.failing_shadow_lost - s.failing_shadow_gained == 64 * 8);
+    sl_image_free(&ref);
+    sl_image_free(&stu);
+}
+
+/* A slip of units is named from the matrix's m11 alone; a right or unrelated angle is no slip. */
+static void test_diag_angle_slips_and_words(void) {
+    char text[200] = "";
+    const double pi = acos(-1.0);
+    double m11_of_90_radians = 1.0 / tan(90.0 / 2), m11_of_90_degrees = 1.0 / tan(pi / 4);
+    CHECK(sl_diag_angle_slip(m11_of_90_radians, 90, "90.0f", text, sizeof text));
+    CHECK(strcmp(text, "90 was passed as radians: use glm_rad(90.0f)") == 0);
+    CHECK(fabs(sl_diag_perspective_fov_deg(m11_of_90_radians) - 116.6) < 0.1); /* what the matrix shows */
+    CHECK(!sl_diag_angle_slip(m11_of_90_degrees, 90, "90.0f", text, sizeof text));
+    CHECK(!sl_diag_angle_slip(1.0 / tan(pi / 8), 90, "90.0f", text, sizeof text)); /* 45 degrees: no slip */
+    /* 60 radians folds past 180 degrees: m11 is negative, and still read */
+    double m11_of_60_radians = 1.0 / tan(60.0 / 2);
+    CHECK(m11_of_60_radians < 0);
+    CHECK(sl_diag_angle_slip(m11_of_60_radians, 60, "2 * spot_angle_deg", text, sizeof text));
+    CHECK(strcmp(text, "2 * spot_angle_deg = 60 was passed as radians: use glm_rad(2 * spot_angle_deg)") == 0);
+    double twice = 90 * pi / 180 * pi / 180;
+    CHECK(sl_diag_angle_slip(1.0 / tan(twice / 2), 90, "90.0f", text, sizeof text));
+    CHECK(strncmp(text, "glm_rad was applied twice", 25) == 0);
+    CHECK(strcmp(sl_diag_darkening_word(0.95), "slightly") == 0);
+    CHECK(strcmp(sl_diag_darkening_word(0.8), "noticeably") == 0);
+    CHECK(strcmp(sl_diag_darkening_word(0.6), "strongly") == 0);
+    CHECK(strcmp(sl_diag_shadowed_share_words(0.56), "most of the lit area") == 0);
+    CHECK(strcmp(sl_diag_shadowed_share_words(0.95), "almost everything") == 0);
 }
 
 static void test_compare_depth_patterns(void) {
@@ -1418,6 +1464,8 @@ int main(int argc, char **argv) {
     static const struct { const char *name; void (*fn)(void); } tests[] = {
         {"compare_neighbourhood", test_compare_neighbourhood},
         {"compare_depth_patterns", test_compare_depth_patterns},
+        {"compare_failing_by_kind", test_compare_failing_by_kind},
+        {"diag_angle_slips_and_words", test_diag_angle_slips_and_words},
         {"shader_includes_and_lines", test_shader_includes_and_lines},
         {"shader_missing_include", test_shader_missing_include},
         {"shader_text_as_editors_write_it", test_shader_text_as_editors_write_it},

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "sl_compare.h"
+#include "sl_diag_words.h"
 #include "verdict_rows.h"
 
 static double _sl_matrix_error(const double *a, const double *b) {
@@ -63,9 +64,14 @@ void sl_diagnose_matrices(const sl_case *c, const sl_check *k, const sl_case_res
                 for (int col = 0; col < 4; col++) q[row] += pv[col * 4 + row] * p[col];
             for (int a = 0; a < 3; a++) outside += fabs(q[a] / q[3]) > 1.0001;
         }
+        char slip[200];
         if (outside)
             sl_diag_say(out, "the orthographic fit is too small: scene corners fall outside the light's frustum, so shadows "
                          "are cut off at its edge (TODO lab2.2)");
+        else if (c->scene.light.type == SL_LIGHT_SPOT &&
+                 sl_diag_angle_slip(sp[5], sl_diag_perspective_fov_deg(rp[5]), "2 * spot_angle_deg", slip, sizeof slip))
+            sl_diag_say(out, "the light's projection differs from the reference (largest error %.3g): %s (TODO lab2.2)", ep,
+                        slip);
         else
             sl_diag_say(out, "the light's projection differs from the reference (largest error %.3g): %s (TODO lab2.2)", ep,
                     c->scene.light.type == SL_LIGHT_SPOT
@@ -170,17 +176,15 @@ static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, si
             return r;
         }
         /* a spot light: glm_perspective(fovy, 1, near, far), fovy = 2 * spot_angle_deg in radians */
-        if (e[5] > 0 && s[5] > 0 && fabs(e[11] + 1) < 1e-6) {
+        if (e[5] > 0 && isfinite(s[5]) && s[5] != 0 && fabs(e[11] + 1) < 1e-6) {
             double fov_e = 2 * atan(1 / e[5]), fov_s = 2 * atan(1 / s[5]);
             if (fabs(fov_s * 2 - fov_e) < 1e-3) {
                 snprintf(text, n, "the field of view is the cone's half-angle: fovy is twice spot_angle_deg");
                 return r;
             }
-            const double degrees_per_radian = 57.29577951308232;
-            if (fabs(s[5] - 1 / tan(fov_e * degrees_per_radian / 2)) < 1e-3) {
-                snprintf(text, n, "the angle is in degrees where glm_perspective takes radians: glm_rad(2 * spot_angle_deg)");
-                return r;
-            }
+            /* a slip of units: m11 may be negative (60 radians is past 180 degrees once folded), so it is not
+             * required to be positive here */
+            if (sl_diag_angle_slip(s[5], sl_diag_perspective_fov_deg(e[5]), "2 * spot_angle_deg", text, n)) return r;
         }
     }
     return -1;

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "sl_compare.h"
+#include "sl_diag_words.h"
 
 #include <cglm/cglm.h>
 
@@ -87,8 +88,8 @@ bool sl_diagnose_lab4_visibility(const sl_case *c, const sl_image *s, const sl_i
         sl_diag_cause_in(out, fn, "is the bias subtracted in every comparison of %s, p.z - bias (TODO %s)?", fn, todo);
     } else if (acne.mean < 0.93) {
         /* smoothly darkened: samples far away compare the receiver with the surface's own distant depths */
-        sl_diag_say(out, "lit surfaces are darkened smoothly (mean visibility %.2f where the reference is fully lit)",
-                    acne.mean);
+        sl_diag_say(out, "lit surfaces are %s darkened, smoothly (mean visibility %.2f where the reference is fully "
+                         "lit)", sl_diag_darkening_word(acne.mean), acne.mean);
         sl_diag_cause_in(out, fn, "the kernel reaches too far and compares with distant depths — are the sample offsets "
                            "scaled by the texel size, 1.0 / textureSize(map, 0)?");
     } else if (c->params.filter.mode == SL_FILTER_HARDWARE && soft_ref > n / 500 && soft_stu < soft_ref / 4) {

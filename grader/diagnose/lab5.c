@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "sl_compare.h"
+#include "sl_diag_words.h"
 #include "sl_gl.h"
 #include "sl_probe.h"
 #include "sl_verdict.h"
@@ -380,8 +381,8 @@ bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *s, const sl_i
         return true;
     }
     if (acne.fraction > 0.2 && acne.mean > 0.5 && acne.mean < 0.97) {
-        sl_diag_say(out, "lit surfaces are slightly darkened everywhere (mean visibility %.3f where the reference "
-                         "is 1)", acne.mean);
+        sl_diag_say(out, "lit surfaces are %s darkened everywhere (mean visibility %.3f where the reference "
+                         "is 1)", sl_diag_darkening_word(acne.mean), acne.mean);
         sl_diag_cause_in(out, "chebyshev_upper_bound", "the bound only holds for t > mu: chebyshev_upper_bound() returns 1.0 when t <= mu "
                            "(TODO(lab5.7))");
         return true;

@@ -10,6 +10,7 @@
 #include <cjson/cJSON.h>
 
 #include "sl_compare.h"
+#include "sl_diag_words.h"
 #include "sl_json.h"
 #include "sl_probe.h"
 
@@ -285,7 +286,8 @@ bool sl_diagnose_lab7_visibility(const sl_case *c, const sl_image *s, const sl_i
     }
     if (v.extra_shadow > 0.5 && v.missing_shadow < 0.2) {
         out->symptoms |= 1u << SL_SYMPTOM_EXTRA_SHADOW;
-        sl_diag_say(out, "almost everything is in shadow (%.0f%% of the reference's lit pixels)", 100 * v.extra_shadow);
+        sl_diag_say(out, "%s is in shadow (%.0f%% of the reference's lit pixels)",
+                    sl_diag_shadowed_share_words(v.extra_shadow), 100 * v.extra_shadow);
         sl_diag_cause_in(out, fn, "does %s compare like with like — the fragment's distance divided by far_plane with the "
                            "stored distance / far (TODO %s)?", fn, todo);
         return true;
@@ -411,10 +413,15 @@ static int _sl_projection_verdict(const sl_check *k, const double *s, const doub
     for (int row = 0; row < k->rows; row++) {
         if (!((failing >> row) & 1u)) continue;
         const double *sm = s + row * 16, *em = e + row * 16;
-        double s_fov = 2 * atan(1.0 / sm[5]) * 180 / GLM_PI, aspect = sm[5] / sm[0];
-        if (fabs(sm[5] - em[5]) > 1e-3 * fabs(em[5]))
+        double aspect = sm[5] / sm[0];
+        char slip[200];
+        /* a slip of units first: the angle the matrix shows (117 degrees for 90 radians) was never written */
+        if (fabs(sm[5] - em[5]) > 1e-3 * fabs(em[5]) &&
+            sl_diag_angle_slip(sm[5], sl_diag_perspective_fov_deg(em[5]), "90.0f", slip, sizeof slip))
+            snprintf(text, n, "%s: a cube face needs 90 degrees, in radians, so the six frusta meet edge to edge", slip);
+        else if (fabs(sm[5] - em[5]) > 1e-3 * fabs(em[5]))
             snprintf(text, n, "the field of view is %.3g degrees: a cube face needs 90 (in radians: glm_rad(90.0f)), "
-                              "so the six frusta meet edge to edge", s_fov);
+                              "so the six frusta meet edge to edge", sl_diag_perspective_fov_deg(sm[5]));
         else if (fabs(sm[0] - em[0]) > 1e-3 * fabs(em[0]))
             snprintf(text, n, "the aspect ratio is %.3g: a cube face is square, aspect 1", aspect);
         else
