@@ -138,6 +138,11 @@ static uint32_t _sl_check_captures_of_kind(const sl_case *c, const sl_check *k) 
     }
 }
 
+const char *sl_criterion_percent(double fraction, char *out, size_t n) {
+    snprintf(out, n, "%.4g", 100 * fraction); /* four digits: 100 * 0.0025 is 0.25 give or take 1e-17 */
+    return out;
+}
+
 bool sl_case_name_valid(const char *name) {
     if (!*name) return false;
     for (const char *p = name; *p; p++)

@@ -19,6 +19,10 @@ bool sl_case_name_valid(const char *name);
  * ("visibility.png", "slope.probe.json"); false when it needs none. */
 bool sl_check_reference_file(const sl_check *k, char *out, size_t out_size);
 
+/* A criterion's fraction as the percentage its case states ("0.25", "0.1", "1"), not rounded
+ * to a format's digits: a message says the number the check applies. Returns `out`. */
+const char *sl_criterion_percent(double fraction, char *out, size_t out_size);
+
 /* Reads and validates one case file; false with a message naming the file. */
 bool sl_case_load(sl_case *c, const char *path, char *err, size_t err_size);
 

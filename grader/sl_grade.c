@@ -137,9 +137,11 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
         sl_diag_say(out, "almost everything is in shadow (%.0f%% of lit pixels)", 100 * v.extra_shadow);
         sl_diag_cause(out, "is the comparison inverted, the depth map empty, or the shadow coordinate wrong (W, divide)?");
     } else {
-        sl_diag_say(out, "shadows differ from the reference on %.1f%% of pixels (allowed %.1f%%): %.0f%% of the "
+        char allowed[16];
+        sl_diag_say(out, "shadows differ from the reference on %.1f%% of pixels (allowed %s%%): %.0f%% of the "
                          "reference's shadow is missing, %.1f%% of its lit area is shadowed",
-                    100 * st->failing_fraction, 100 * k->fail_fraction, 100 * v.missing_shadow, 100 * v.extra_shadow);
+                    100 * st->failing_fraction, sl_criterion_percent(k->fail_fraction, allowed, sizeof allowed),
+                    100 * v.missing_shadow, 100 * v.extra_shadow);
     }
 }
 
@@ -222,8 +224,9 @@ static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case
     if (k->kind == SL_CHECK_VISIBILITY) {
         _sl_check_visibility(c, k, s, t, lit_mask, &st, out);
     } else {
-        sl_diag_say(out, "the image differs from the reference on %.1f%% of pixels (allowed %.1f%%)",
-                    100 * st.failing_fraction, 100 * k->fail_fraction);
+        char allowed[16];
+        sl_diag_say(out, "the image differs from the reference on %.1f%% of pixels (allowed %s%%)",
+                    100 * st.failing_fraction, sl_criterion_percent(k->fail_fraction, allowed, sizeof allowed));
     }
     if (st.nan_pixels) sl_diag_append(out, "; %ld pixels are NaN (a division by zero?)", st.nan_pixels);
 }
