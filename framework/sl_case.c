@@ -44,6 +44,14 @@ static const struct {
 
 const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
 
+void sl_check_kind_defaults(sl_check_kind kind, double *threshold, double *fail_fraction, double *epsilon,
+                            double *mean_tolerance) {
+    *threshold = _sl_kinds[kind].threshold;
+    *fail_fraction = _sl_kinds[kind].fail_fraction;
+    *epsilon = _sl_kinds[kind].epsilon;
+    *mean_tolerance = _sl_kinds[kind].mean;
+}
+
 static const char *const _sl_symptom_names[SL_SYMPTOM_COUNT] = {
     [SL_SYMPTOM_NO_SHADOWS] = "no_shadows",         [SL_SYMPTOM_MISSING_SHADOW] = "missing_shadow",
     [SL_SYMPTOM_EXTRA_SHADOW] = "extra_shadow",     [SL_SYMPTOM_ACNE] = "acne",

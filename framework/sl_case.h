@@ -9,6 +9,9 @@
 const char *sl_symptom_name(sl_symptom symptom);
 
 const char *sl_check_kind_name(sl_check_kind kind);
+/* The tolerances a check of this kind applies where its case gives none (sl_case.c's table). */
+void sl_check_kind_defaults(sl_check_kind kind, double *threshold, double *fail_fraction, double *epsilon,
+                            double *mean_tolerance);
 /* The capture a check compares ("visibility", "depth_map", "probe_2", ...). */
 const char *sl_check_capture_name(const sl_case *c, const sl_check *k);
 /* Every capture a check needs of the runner, as bits (1 << sl_capture_kind). */

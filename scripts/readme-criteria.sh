@@ -16,6 +16,8 @@
 # --check: writes nothing; exit 1 naming every README whose list is not what
 # the cases apply, and every grading figure a README states outside its list
 # (a "within 0.1 of", an "at most 0.5% of pixels": the list says those, once).
+# Either way, grader/cases/README.md's table of check kinds must state the
+# defaults of framework/sl_case.c's table (it is checked, never written).
 set -u
 here=$(cd "$(dirname "$0")/.." && pwd)
 check=false
@@ -117,6 +119,35 @@ stray_figures() {
         print FILENAME ":" FNR ": " $0 }' "$1"
 }
 
+# grader/cases/README.md's table of check kinds: the defaults each row states are sl_case.c's.
+same() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-9 * (b < 0 ? -b : b) + 1e-15) }'; }
+defaults_stated() {
+  local doc=$1 kind col t f m e said
+  declare -A thr fail_of mean_of eps
+  while IFS=$'\t' read -r _ kind t f m e; do thr[$kind]=$t fail_of[$kind]=$f mean_of[$kind]=$m eps[$kind]=$e; done < <(grep '^default' <<<"$applied")
+  while IFS=$'\t' read -r kind col; do
+    [ -n "${thr[$kind]+x}" ] || { echo "  $kind: no such check kind"; continue; }
+    said=""
+    if [[ $col =~ threshold\ ([0-9.e-]+)(\ \([^\)]*\))?,\ ([0-9.]+)%\ of\ (pixels|texels),\ mean\ ([0-9.e-]+) ]]; then
+      said="threshold ${BASH_REMATCH[1]}, ${BASH_REMATCH[3]}%, mean ${BASH_REMATCH[5]}"
+      same "${BASH_REMATCH[1]}" "${thr[$kind]}" && same "$(awk -v p="${BASH_REMATCH[3]}" 'BEGIN { print p / 100 }')" "${fail_of[$kind]}" &&
+        same "${BASH_REMATCH[5]}" "${mean_of[$kind]}" && continue
+    elif [[ $col =~ ^\ *as\ \`([a-z_]+)\` ]]; then
+      said="as ${BASH_REMATCH[1]}"; local o=${BASH_REMATCH[1]}
+      [ "${thr[$o]:-}" = "${thr[$kind]}" ] && [ "${fail_of[$o]:-}" = "${fail_of[$kind]}" ] && [ "${mean_of[$o]:-}" = "${mean_of[$kind]}" ] && continue
+    elif [[ $kind = matrices && $col =~ ([0-9.e-]+)\ of\ the\ largest ]]; then
+      said="${BASH_REMATCH[1]}"; same "${BASH_REMATCH[1]}" "${eps[$kind]}" && continue
+    elif [[ $kind = penumbra && $col =~ within\ ([0-9.]+)% ]]; then
+      said="${BASH_REMATCH[1]}%"; same "$(awk -v p="${BASH_REMATCH[1]}" 'BEGIN { print p / 100 }')" "${thr[$kind]}" && continue
+    elif [[ $kind = bleeding && $col =~ \`threshold\`\ \(([0-9.e-]+)\) ]] || [[ $kind = flicker && $col =~ ([0-9.e-]+)\ by\ default ]]; then
+      said="${BASH_REMATCH[1]}"; same "${BASH_REMATCH[1]}" "${thr[$kind]}" && continue
+    elif [ "${thr[$kind]}${fail_of[$kind]}${mean_of[$kind]}${eps[$kind]}" = 0000 ] || [ "$kind" = probe ]; then
+      continue                                   # no default of the table to state (a probe's are its own)
+    fi
+    echo "  $kind: says ${said:-no default}; the table in framework/sl_case.c: threshold ${thr[$kind]}, fail fraction ${fail_of[$kind]}, mean ${mean_of[$kind]}, epsilon ${eps[$kind]}"
+  done < <(awk -F'|' '/^\| `[a-z_]+` \|/ { k = $2; gsub(/[ `]/, "", k); print k "\t" $5 }' "$doc")
+}
+
 fail=0
 list=$(mktemp); trap 'rm -f "$list" "$list.new"' EXIT
 for readme in "$here"/labs/lab[0-9]*_*/README.md; do
@@ -151,5 +182,11 @@ for doc in "$here"/labs/lab[0-9]*_*/README.md "$here"/README.md "$here"/grader/R
     fail=1
   fi
 done
-$check && [ $fail = 0 ] && echo "readme-criteria: every lab README states the criteria its cases apply, and no other figure"
+wrong=$(defaults_stated "$here/grader/cases/README.md")
+if [ -n "$wrong" ]; then
+  echo "readme-criteria: grader/cases/README.md's table of check kinds does not state the defaults the grader applies:" >&2
+  echo "$wrong" >&2
+  fail=1
+fi
+$check && [ $fail = 0 ] && echo "readme-criteria: every lab README states the criteria its cases apply, and no other figure; grader/cases/README.md the defaults"
 exit $fail

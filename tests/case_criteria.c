@@ -7,9 +7,11 @@
  *
  *   check LAB CASE NAME KIND THRESHOLD FAIL_FRACTION MEAN_TOLERANCE EPSILON BINARISE BONUS
  *
- * and, first, the rules every case of a kind shares (sl_compare.h), one a line:
+ * and, first, the rules every case of a kind shares (sl_compare.h), one a line,
+ * and each kind's defaults (sl_case.c's table), tab-separated:
  *
  *   rule NAME VALUE
+ *   default KIND THRESHOLD FAIL_FRACTION MEAN_TOLERANCE EPSILON
  *
  * Probes are left out: each row of a probe states its own tolerance. Exit 1
  * when a case does not load. */
@@ -34,6 +36,12 @@ int main(int argc, char **argv) {
     printf("rule bleeding_max_kept %.17g\n", SL_BLEEDING_MAX_KEPT);
     printf("rule bleeding_negligible %.17g\n", SL_BLEEDING_NEGLIGIBLE);
     printf("rule bleeding_min_umbra_pixels %d\n", SL_BLEEDING_MIN_UMBRA_PIXELS);
+    for (int kind = 0; kind < SL_CHECK_KIND_COUNT; kind++) {
+        double threshold, fail, epsilon, mean;
+        sl_check_kind_defaults((sl_check_kind)kind, &threshold, &fail, &epsilon, &mean);
+        printf("default\t%s\t%.17g\t%.17g\t%.17g\t%.17g\n", sl_check_kind_name((sl_check_kind)kind), threshold, fail,
+               mean, epsilon);
+    }
     static sl_case c; /* large: off the stack */
     int status = 0;
     for (int i = 1; i < argc; i++) {
