@@ -257,7 +257,10 @@ static void _sl_update(_sl_case_view *v) {
         _sl_judge_flicker(v, &student);
         sl_image marks = _sl_case_view_flicker_marks(&student, &v->lit_mask, v->c.frame_count);
         sl_image last = _sl_case_view_last_frame(&student, v->c.frame_count), ref_last = _sl_case_view_last_frame(&v->reference, v->c.frame_count);
-        sl_compare_images(&last, &ref_last, 0.05, &diff); /* for the eye: the last frames side by side */
+        /* for the eye: the last frames compared as a visibility check compares them */
+        double threshold, fail, epsilon, mean;
+        sl_check_kind_defaults(SL_CHECK_VISIBILITY, &threshold, &fail, &epsilon, &mean);
+        sl_compare_images(&last, &ref_last, threshold, &diff);
         if (marks.data) _sl_upload(v, _SL_STUDENT, &marks, -1);
         if (diff.data) _sl_upload(v, _SL_DIFF, &diff, -1);
         sl_image_free(&marks);
