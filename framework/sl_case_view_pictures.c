@@ -60,7 +60,9 @@ const char *_sl_case_view_legend(sl_check_kind k) {
     case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: return "moments (red: depth, green: depth squared)";
     case SL_CHECK_CASCADE_INDEX: return "cascade (red 0, green 1, blue 2, yellow 3, grey none)";
     case SL_CHECK_IMAGE: return "shaded image";
-    case SL_CHECK_FLICKER: return "the last frame of the path, in red the receivers (surfaces facing the light) that change between lit and shadowed from one frame to the next";
+    case SL_CHECK_FLICKER:
+        return "the last frame of the path, in red the receivers (surfaces facing the light) that change between "
+               "lit and shadowed from one frame to the next";
     default: return "visibility (white lit, black shadow)";
     }
 }
@@ -79,7 +81,8 @@ sl_image _sl_case_view_flicker_marks(const sl_image *stacked, const sl_image *li
             bool changed = false;
             for (int f = 1; masked && f < frames && !changed; f++) {
                 if (sl_image_pixel(lit_mask, x, y)[0] < 0.5f) break;
-                float now = sl_image_pixel(stacked, x, f * h + y)[0], before = sl_image_pixel(stacked, x, (f - 1) * h + y)[0];
+                float now = sl_image_pixel(stacked, x, f * h + y)[0];
+                float before = sl_image_pixel(stacked, x, (f - 1) * h + y)[0];
                 changed = (now >= 0.5f) != (before >= 0.5f) || isnan(now) != isnan(before);
             }
             float grey = sl_image_pixel(stacked, x, (frames - 1) * h + y)[0];

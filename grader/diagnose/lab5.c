@@ -338,7 +338,8 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
      * has no bleeding to measure: nothing to lose. */
     /* an umbra without light is also a picture without light: it must be lit where the reference is */
     bool light_ok = !sl_visibility_lit_lost(&on->image, t, m).failed;
-    bool measured_ok = umbra < SL_BLEEDING_MIN_UMBRA_PIXELS || with <= fmax(SL_BLEEDING_MAX_KEPT * without, SL_BLEEDING_NEGLIGIBLE);
+    bool measured_ok = umbra < SL_BLEEDING_MIN_UMBRA_PIXELS ||
+                       with <= fmax(SL_BLEEDING_MAX_KEPT * without, SL_BLEEDING_NEGLIGIBLE);
     if (measured_ok && light_ok) {
         out->passed = true;
         return;
