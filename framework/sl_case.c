@@ -44,6 +44,14 @@ static const struct {
 
 const char *sl_check_kind_name(sl_check_kind kind) { return _sl_kinds[kind].name; }
 
+void sl_check_kind_defaults(sl_check_kind kind, double *threshold, double *fail_fraction, double *epsilon,
+                            double *mean_tolerance) {
+    *threshold = _sl_kinds[kind].threshold;
+    *fail_fraction = _sl_kinds[kind].fail_fraction;
+    *epsilon = _sl_kinds[kind].epsilon;
+    *mean_tolerance = _sl_kinds[kind].mean;
+}
+
 static const char *const _sl_symptom_names[SL_SYMPTOM_COUNT] = {
     [SL_SYMPTOM_NO_SHADOWS] = "no_shadows",         [SL_SYMPTOM_MISSING_SHADOW] = "missing_shadow",
     [SL_SYMPTOM_EXTRA_SHADOW] = "extra_shadow",     [SL_SYMPTOM_ACNE] = "acne",
@@ -136,6 +144,11 @@ static uint32_t _sl_check_captures_of_kind(const sl_case *c, const sl_check *k) 
     case SL_CHECK_CUBE_FACE: return 1u << (SL_CAPTURE_CUBE_FACE + k->face);
     default: return 0;
     }
+}
+
+const char *sl_criterion_percent(double fraction, char *out, size_t n) {
+    snprintf(out, n, "%.4g", 100 * fraction); /* four digits: 100 * 0.0025 is 0.25 give or take 1e-17 */
+    return out;
 }
 
 bool sl_case_name_valid(const char *name) {

@@ -220,25 +220,47 @@ static void _sl_judge(_sl_case_view *v, const sl_image *student, sl_image *diff)
              extra, lost_text);
 }
 
+/* Flicker's verdict as the grader's (grader/diagnose/lab6.c): the share of the
+ * world-fixed receivers that change between lit and shadowed from one frame
+ * to the next (sl_flicker_measure, on the solutions' lit mask), the shadows
+ * kept, the lit surfaces lit. */
+static void _sl_judge_flicker(_sl_case_view *v, const sl_image *student) {
+    const sl_check *k = v->check;
+    const sl_frame_info *info = sl_renderer_info(&v->renderer);
+    char allowed[16], kept[16], lit[16];
+    sl_criterion_percent(k->threshold, allowed, sizeof allowed);
+    sl_criterion_percent(SL_FLICKER_MIN_SHADOW_KEPT, kept, sizeof kept);
+    sl_criterion_percent(SL_LIT_MAX_LOST, lit, sizeof lit);
+    snprintf(v->criterion, sizeof v->criterion, "criterion: at most %s%% of the receivers (surfaces facing the light) "
+             "change per frame; in shadow at least %s%% as often as the reference; at most %s%% of its lit pixels dark",
+             allowed, kept, lit);
+    if (!v->lit_mask.data) {
+        snprintf(v->summary, sizeof v->summary, "%s / %s: no lit mask of the receivers beside the reference: "
+                 "nothing to measure on", v->c.name, k->name);
+        return;
+    }
+    sl_flicker yours = sl_flicker_measure(student, &v->lit_mask, v->c.frame_count);
+    const sl_flicker *reference = &v->reference_flicker;
+    bool passes = yours.score <= k->threshold && sl_flicker_shadows_kept(&yours, reference) &&
+                  !sl_visibility_lit_lost(student, &v->reference, &v->lit_mask).failed;
+    snprintf(v->summary, sizeof v->summary, "%s / %s: %.3f%% of the world-fixed receiver pixels change per frame "
+             "(allowed %s%%, the reference %.3f%%): %s%s%s", v->c.name, k->name, 100 * yours.score,
+             allowed, 100 * reference->score, passes ? "passes" : "fails",
+             info->not_implemented_count ? "; not implemented: " : "",
+             info->not_implemented_count ? info->not_implemented[0] : "");
+}
+
 static void _sl_update(_sl_case_view *v) {
     sl_image student = {0}, diff = {0};
     _sl_render_student(v, &student);
     if (v->check->kind == SL_CHECK_FLICKER) {
-        /* the path's frames: what changed along it, and the last frames side by side */
-        const sl_frame_info *info = sl_renderer_info(&v->renderer);
-        double yours = 0, reference = v->reference_flicker;
-        sl_image marks = _sl_case_view_flicker_marks(&student, v->c.frame_count, &yours);
+        _sl_judge_flicker(v, &student);
+        sl_image marks = _sl_case_view_flicker_marks(&student, &v->lit_mask, v->c.frame_count);
         sl_image last = _sl_case_view_last_frame(&student, v->c.frame_count), ref_last = _sl_case_view_last_frame(&v->reference, v->c.frame_count);
-        sl_compare_images(&last, &ref_last, 0.05, &diff);
-        snprintf(v->summary, sizeof v->summary,
-                 "%s / %s: along the camera path %.3f%% of pixels change from one frame to the next in yours, %.3f%% in "
-                 "the reference%s%s", v->c.name, v->check->name, 100 * yours, 100 * reference,
-                 info->not_implemented_count ? "; not implemented: " : "",
-                 info->not_implemented_count ? info->not_implemented[0] : "");
-        snprintf(v->criterion, sizeof v->criterion, "criterion: of the pixels on surfaces facing the light, at most "
-                 "%.3f%% may change between lit and shadowed from one frame to the next, keeping the reference's "
-                 "shadows (shadowlab-grade --case %s gives the verdict; the share above is of all pixels)",
-                 100 * v->check->threshold, v->c.name);
+        /* for the eye: the last frames compared as a visibility check compares them */
+        double threshold, fail, epsilon, mean;
+        sl_check_kind_defaults(SL_CHECK_VISIBILITY, &threshold, &fail, &epsilon, &mean);
+        sl_compare_images(&last, &ref_last, threshold, &diff);
         if (marks.data) _sl_upload(v, _SL_STUDENT, &marks, -1);
         if (diff.data) _sl_upload(v, _SL_DIFF, &diff, -1);
         sl_image_free(&marks);
@@ -271,7 +293,16 @@ static void _sl_upload_reference(_sl_case_view *v) {
         _sl_upload(v, _SL_REFERENCE, &v->reference, v->check->kind);
         return;
     }
-    sl_image marks = _sl_case_view_flicker_marks(&v->reference, v->c.frame_count, &v->reference_flicker);
+    /* the receivers: the solutions' lit mask, which the grader measures on too */
+    char path[1400], err[1024];
+    snprintf(path, sizeof path, "%s/%s/lit_mask.exr", v->references_dir, v->c.name);
+    sl_image_free(&v->lit_mask);
+    if (!sl_image_read(path, &v->lit_mask, err, sizeof err)) {
+        fprintf(stderr, "shadowlab: --case: %s\n", err);
+        v->lit_mask = (sl_image){0};
+    }
+    v->reference_flicker = sl_flicker_measure(&v->reference, &v->lit_mask, v->c.frame_count);
+    sl_image marks = _sl_case_view_flicker_marks(&v->reference, &v->lit_mask, v->c.frame_count);
     if (marks.data) _sl_upload(v, _SL_REFERENCE, &marks, -1);
     sl_image_free(&marks);
 }
@@ -516,6 +547,10 @@ int sl_case_view_main(const sl_case_view_desc *d) {
                 snprintf(last_summary, sizeof last_summary, "%s", v.summary);
                 printf("shadowlab: %s\n", v.summary);
                 printf("shadowlab: %s\n", v.criterion);
+                int bw, bh;
+                sl_context_framebuffer_size(v.ctx, &bw, &bh);
+                if (!_sl_case_view_band_fits(&v, bw, bh))
+                    printf("shadowlab: the summary and criterion are cut short under the panels (%dx%d)\n", bw, bh);
                 if (v.stretched[_SL_STUDENT] || v.stretched[_SL_REFERENCE])
                     printf("shadowlab: each picture stretched black to white over its own range: yours %.4f - %.4f, "
                            "the reference %.4f - %.4f\n", (double)v.range[_SL_STUDENT][0],
@@ -574,5 +609,6 @@ done:
         sl_context_destroy(v.ctx);
     }
     sl_image_free(&v.reference);
+    sl_image_free(&v.lit_mask);
     return status;
 }

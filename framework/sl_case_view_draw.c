@@ -33,6 +33,9 @@ static void _sl_label(_sl_case_view *v, int panel, int x, int y) {
         sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
         sl_overlay_label(v->overlay, x, y + line, red, "%s", r);
         sl_overlay_label(v->overlay, x, y + 2 * line, blue, "%s", b);
+    } else if (_sl_case_view_marks_legend(v->check->kind)) {
+        sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
+        sl_overlay_label(v->overlay, x, y + line, red, "%s", _sl_case_view_marks_legend(v->check->kind));
     } else if (v->stretched[panel]) {
         sl_overlay_label(v->overlay, x, y, colours[panel], "%s", names[panel]);
         if (v->range[panel][1] > v->range[panel][0])
@@ -46,8 +49,10 @@ static void _sl_label(_sl_case_view *v, int panel, int x, int y) {
     }
 }
 
-/* Text in lines of at most `width` characters, broken at spaces, into the current panel; at most `lines`. */
-static int _sl_band_text(sl_overlay *ov, const float *rgb, const char *text, int width, int lines) {
+/* Text in lines of at most `width` characters, broken at spaces, into the current panel; at most `lines`.
+ * Returns the lines used; `cut_short` (may be NULL) says whether text was left over. Without an
+ * overlay, only counts. */
+static int _sl_band_text(sl_overlay *ov, const float *rgb, const char *text, int width, int lines, bool *cut_short) {
     int used = 0;
     while (*text && used < lines) {
         int len = (int)strlen(text), cut = len;
@@ -56,12 +61,28 @@ static int _sl_band_text(sl_overlay *ov, const float *rgb, const char *text, int
             while (cut > width / 2 && text[cut] != ' ') cut--;
             if (text[cut] != ' ') cut = width;
         }
-        sl_overlay_line(ov, rgb, "%.*s", cut, text);
+        if (ov) sl_overlay_line(ov, rgb, "%.*s", cut, text);
         used++;
         text += cut;
         while (*text == ' ') text++;
     }
+    if (cut_short) *cut_short = *text != '\0';
     return used;
+}
+
+/* The band's width in characters, for a window `width` pixels wide at overlay scale `s`. */
+static int _sl_band_chars(int width, int s) {
+    int chars = (width - 16 * s) / (SL_OVERLAY_CELL_W * s);
+    return chars > 118 ? 118 : chars; /* the overlay's longest line */
+}
+
+bool _sl_case_view_band_fits(_sl_case_view *v, int width, int height) {
+    if (!v->overlay) return true;
+    int chars = _sl_band_chars(width, sl_overlay_scale_for(v->overlay, width, height));
+    bool summary_cut = false, criterion_cut = false;
+    int used = _sl_band_text(NULL, NULL, v->summary, chars, 2, &summary_cut);
+    _sl_band_text(NULL, NULL, v->criterion, chars, _SL_BAND_LINES - used, &criterion_cut);
+    return !summary_cut && !criterion_cut;
 }
 
 void _sl_case_view_draw(_sl_case_view *v, int width, int height) {
@@ -91,10 +112,9 @@ void _sl_case_view_draw(_sl_case_view *v, int width, int height) {
     if (!v->overlay) return;
     /* the summary and the criterion under the panels */
     sl_overlay_panel(v->overlay, SL_OVERLAY_BOTTOM_LEFT, NULL);
-    int chars = (width - 16 * s) / (SL_OVERLAY_CELL_W * s);
-    if (chars > 118) chars = 118; /* the overlay's longest line */
-    int used = _sl_band_text(v->overlay, NULL, v->summary, chars, 2);
-    _sl_band_text(v->overlay, (const float[3]){0.6f, 0.8f, 1.0f}, v->criterion, chars, _SL_BAND_LINES - used);
+    int chars = _sl_band_chars(width, s);
+    int used = _sl_band_text(v->overlay, NULL, v->summary, chars, 2, NULL);
+    _sl_band_text(v->overlay, (const float[3]){0.6f, 0.8f, 1.0f}, v->criterion, chars, _SL_BAND_LINES - used, NULL);
     mat4 identity;
     glm_mat4_identity(identity);
     sl_overlay_draw(v->overlay, identity, 0, width, height);

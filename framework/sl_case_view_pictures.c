@@ -60,34 +60,40 @@ const char *_sl_case_view_legend(sl_check_kind k) {
     case SL_CHECK_MOMENTS: case SL_CHECK_MOMENTS_BLURRED: return "moments (red: depth, green: depth squared)";
     case SL_CHECK_CASCADE_INDEX: return "cascade (red 0, green 1, blue 2, yellow 3, grey none)";
     case SL_CHECK_IMAGE: return "shaded image";
-    case SL_CHECK_FLICKER: return "the last frame of the path, in red what changed from one frame to the next";
+    case SL_CHECK_FLICKER:
+        return "the last frame of the path, in red the receivers (surfaces facing the light) that change between "
+               "lit and shadowed from one frame to the next";
     default: return "visibility (white lit, black shadow)";
     }
 }
 
-/* Flicker: of a path's frames stacked top to bottom (each width x height), the
- * last frame in grey with every pixel that changed between two frames in red;
- * `changed` gets their fraction. */
-sl_image _sl_case_view_flicker_marks(const sl_image *stacked, int frames, double *changed) {
+/* Flicker: of a path's frames stacked top to bottom (each the mask's size),
+ * the last frame in grey with every receiver that changes between lit and
+ * shadowed (or to or from NaN) between two consecutive frames in red: the
+ * changes sl_flicker_measure counts. Without a mask of the frame's size, no marks. */
+sl_image _sl_case_view_flicker_marks(const sl_image *stacked, const sl_image *lit_mask, int frames) {
     int w = stacked->width, h = frames > 0 ? stacked->height / frames : 0;
     sl_image out = sl_image_alloc(w, h, 3);
-    long count = 0;
-    if (!out.data || !stacked->data || frames < 1) {
-        *changed = 0;
-        return out;
-    }
+    if (!out.data || !stacked->data || frames < 1) return out;
+    bool masked = lit_mask->data && lit_mask->width == w && lit_mask->height == h;
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++) {
-            bool moved = false;
-            for (int f = 1; f < frames && !moved; f++)
-                moved = fabsf(sl_image_pixel(stacked, x, f * h + y)[0] - sl_image_pixel(stacked, x, (f - 1) * h + y)[0]) > 0.25f;
+            bool changed = false;
+            for (int f = 1; masked && f < frames && !changed; f++) {
+                if (sl_image_pixel(lit_mask, x, y)[0] < 0.5f) break;
+                float now = sl_image_pixel(stacked, x, f * h + y)[0];
+                float before = sl_image_pixel(stacked, x, (f - 1) * h + y)[0];
+                changed = (now >= 0.5f) != (before >= 0.5f) || isnan(now) != isnan(before);
+            }
             float grey = sl_image_pixel(stacked, x, (frames - 1) * h + y)[0];
             float *q = sl_image_pixel(&out, x, y);
-            q[0] = moved ? 1 : grey, q[1] = moved ? 0.05f : grey, q[2] = moved ? 0.05f : grey;
-            count += moved;
+            q[0] = changed ? 1 : grey, q[1] = changed ? 0.05f : grey, q[2] = changed ? 0.05f : grey;
         }
-    *changed = (double)count / ((double)w * h);
     return out;
+}
+
+const char *_sl_case_view_marks_legend(sl_check_kind k) {
+    return k == SL_CHECK_FLICKER ? "red: changed between frames" : NULL;
 }
 
 /* The last frame of a path's stack (a view into it: not to be freed). */

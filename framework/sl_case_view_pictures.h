@@ -19,8 +19,11 @@ bool _sl_case_view_value_range(const sl_image *img, sl_check_kind kind, float ou
 /* The difference panel's colours' meanings; what the panels show. */
 void _sl_case_view_diff_legend(sl_check_kind k, const char **red, const char **blue);
 const char *_sl_case_view_legend(sl_check_kind k);
-/* Flicker: the last of `frames` stacked frames with what changed in red; `changed` gets its fraction. */
-sl_image _sl_case_view_flicker_marks(const sl_image *stacked, int frames, double *changed);
+/* Flicker: the last of `frames` stacked frames, with the receivers (the lit mask's pixels) that change between
+ * lit and shadowed from one frame to the next in red: what sl_flicker_measure counts. */
+sl_image _sl_case_view_flicker_marks(const sl_image *stacked, const sl_image *lit_mask, int frames);
+/* The panels' own legend where they carry marks (flicker's red); NULL where they have none. */
+const char *_sl_case_view_marks_legend(sl_check_kind k);
 /* The last frame of a stack (a view into it: not to be freed). */
 sl_image _sl_case_view_last_frame(const sl_image *stacked, int frames);
 /* One channel of an image, as an image of its own. */

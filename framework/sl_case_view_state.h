@@ -6,6 +6,7 @@
 #include <stdbool.h>
 
 #include "sl_case.h"
+#include "sl_compare.h"
 #include "sl_context.h"
 #include "sl_overlay.h"
 #include "sl_renderer.h"
@@ -22,7 +23,8 @@ typedef struct _sl_case_view {
     const char *references_dir;
     sl_image reference;
     int panel_size[_SL_PANELS][2]; /* each panel's picture size, drawn with its aspect kept */
-    double reference_flicker;      /* flicker: the share of the reference's pixels that change along the path */
+    sl_image lit_mask;             /* flicker: the receivers, as the solutions drew them (the grader's lit_mask.exr) */
+    sl_flicker reference_flicker;  /* flicker: the reference's, measured as the grader measures it */
     sl_context *ctx;
     sl_renderer renderer;
     sl_program panel_program;

@@ -152,6 +152,33 @@ sl_lit_lost sl_visibility_lit_lost(const sl_image *student, const sl_image *refe
     return l;
 }
 
+sl_flicker sl_flicker_measure(const sl_image *stacked, const sl_image *lit_mask, int frames) {
+    sl_flicker f = {0, 0, 0};
+    if (!stacked->data || !lit_mask->data || frames < 1) return f;
+    long pixels = (long)lit_mask->width * lit_mask->height, changes = 0, dark = 0;
+    if (stacked->width != lit_mask->width || (long)stacked->height != (long)lit_mask->height * frames) return f;
+    for (long i = 0; i < pixels; i++) {
+        if (lit_mask->data[i * lit_mask->channels] < 0.5f) continue;
+        f.receivers++;
+        for (int frame = 0; frame < frames; frame++) {
+            float v = stacked->data[(frame * pixels + i) * stacked->channels];
+            dark += !(v >= 0.5f);
+            if (frame > 0) {
+                float before = stacked->data[((frame - 1) * pixels + i) * stacked->channels];
+                changes += (v >= 0.5f) != (before >= 0.5f) || isnan(v) != isnan(before);
+            }
+        }
+    }
+    if (f.receivers && frames > 1) f.score = (double)changes / ((double)f.receivers * (frames - 1));
+    if (f.receivers) f.shadowed = (double)dark / ((double)f.receivers * frames);
+    return f;
+}
+
+bool sl_flicker_shadows_kept(const sl_flicker *yours, const sl_flicker *reference) {
+    return reference->shadowed < SL_FLICKER_MIN_REFERENCE_SHADOW ||
+           yours->shadowed >= SL_FLICKER_MIN_SHADOW_KEPT * reference->shadowed;
+}
+
 double sl_fraction_equal(const sl_image *image, float value, float tolerance) {
     long n = (long)image->width * image->height, count = 0;
     if (!image->data || n == 0) return 0;

@@ -81,6 +81,37 @@ typedef struct sl_lit_lost {
  * `lit_mask` (may be NULL) of one frame's size: the mask then applies to each. */
 sl_lit_lost sl_visibility_lit_lost(const sl_image *student, const sl_image *reference, const sl_image *lit_mask);
 
+/* Lab 6's flicker along a camera path, measured on the receivers: the pixels a
+ * lit mask of one frame's size shows facing the light. The picture's camera
+ * stays put while the cascades follow the path, so a receiver pixel is one
+ * place in the world: a change between lit and shadowed there is flicker. The
+ * grader and the viewer's --case measure it with this one function. */
+typedef struct sl_flicker {
+    long receivers;  /* the mask's lit pixels */
+    double score;    /* of the receivers, those changing between consecutive frames, averaged over the frame pairs */
+    double shadowed; /* of the receivers, those in shadow, averaged over the frames */
+} sl_flicker;
+
+sl_flicker sl_flicker_measure(const sl_image *stacked, const sl_image *lit_mask, int frames);
+
+/* Still frames have no flicker: they must also keep the reference's shadows,
+ * at least SL_FLICKER_MIN_SHADOW_KEPT of its shadowed share, wherever the
+ * reference has shadow on at least SL_FLICKER_MIN_REFERENCE_SHADOW of the
+ * receivers (and the lit surfaces lit, sl_visibility_lit_lost). */
+#define SL_FLICKER_MIN_SHADOW_KEPT 0.5
+#define SL_FLICKER_MIN_REFERENCE_SHADOW 0.005
+bool sl_flicker_shadows_kept(const sl_flicker *yours, const sl_flicker *reference);
+
+/* Lab 5's bleeding check, in the reference's umbra (its visibility at most
+ * SL_BLEEDING_UMBRA, on surfaces facing the light): the share of pixels lit
+ * above the check's threshold with the reduction may be at most
+ * SL_BLEEDING_MAX_KEPT of the share without it, or below SL_BLEEDING_NEGLIGIBLE;
+ * an umbra of fewer than SL_BLEEDING_MIN_UMBRA_PIXELS pixels passes. */
+#define SL_BLEEDING_UMBRA 0.02
+#define SL_BLEEDING_MAX_KEPT 0.5
+#define SL_BLEEDING_NEGLIGIBLE 0.01
+#define SL_BLEEDING_MIN_UMBRA_PIXELS 100
+
 /* Depth maps: the fraction of texels at (about) `value`, and whether all
  * texels different from `clear` lie inside the lower-left w x h rectangle
  * (GL's origin; images are stored top row first). */

@@ -142,11 +142,13 @@ static void _sl_check_visibility(const sl_case *c, const sl_check *k, const sl_i
         /* the breakdown in the headline's own unit, pixels of the image, so that its parts add up to it */
         double pixels = st->pixels ? (double)st->pixels : 1;
         long brightness = st->failing - st->nan_pixels - st->failing_shadow_lost - st->failing_shadow_gained;
-        sl_diag_say(out, "shadows differ from the reference on %.1f%% of pixels (allowed %.1f%%): %.1f%% of pixels "
+        char allowed[16];
+        sl_diag_say(out, "shadows differ from the reference on %.1f%% of pixels (allowed %s%%): %.1f%% of pixels "
                          "lost their shadow, %.1f%% gained one, %.1f%% only differ in brightness (both lit or both "
                          "shadowed)",
-                    100 * st->failing_fraction, 100 * k->fail_fraction, 100 * (double)st->failing_shadow_lost / pixels,
-                    100 * (double)st->failing_shadow_gained / pixels, 100 * (double)brightness / pixels);
+                    100 * st->failing_fraction, sl_criterion_percent(k->fail_fraction, allowed, sizeof allowed),
+                    100 * (double)st->failing_shadow_lost / pixels, 100 * (double)st->failing_shadow_gained / pixels,
+                    100 * (double)brightness / pixels);
     }
 }
 
@@ -229,8 +231,9 @@ static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case
     if (k->kind == SL_CHECK_VISIBILITY) {
         _sl_check_visibility(c, k, s, t, lit_mask, &st, out);
     } else {
-        sl_diag_say(out, "the image differs from the reference on %.1f%% of pixels (allowed %.1f%%)",
-                    100 * st.failing_fraction, 100 * k->fail_fraction);
+        char allowed[16];
+        sl_diag_say(out, "the image differs from the reference on %.1f%% of pixels (allowed %s%%)",
+                    100 * st.failing_fraction, sl_criterion_percent(k->fail_fraction, allowed, sizeof allowed));
     }
     if (st.nan_pixels) sl_diag_append(out, "; %ld pixels are NaN (a division by zero?)", st.nan_pixels);
 }

@@ -77,8 +77,20 @@ elif [ -s "$face" ]; then
 fi
 out=$("$solutions" --headless --case lab3_probes 2>&1)
 grep -q "has no picture to show" <<<"$out" || problem "a probe-only case is not explained"
-# Lab 6's flicker: the path's frames, what changed along them (the solutions: next to nothing).
+# Lab 6's flicker: the path's frames, what changed along them (the solutions: next to nothing),
+# measured as the grader measures it: of the world-fixed receivers, per frame, against the case's bound.
 out=$("$solutions" --headless --case lab6_stability_turn --screenshot "$work/flicker.png" 2>&1)
-grep -qE "lab6_stability_turn / flicker: along the camera path 0\.0[0-4][0-9]% of pixels change from one frame to the next in yours, 0\.[0-9]+% in the reference" <<<"$out" ||
-  { echo "$out"; problem "the solutions' flicker view of lab6_stability_turn is not still"; }
+grep -qE "lab6_stability_turn / flicker: 0\.0[0-4][0-9]% of the world-fixed receiver pixels change per frame \(allowed [0-9.]+%, the reference 0\.[0-9]+%\): passes" <<<"$out" ||
+  { echo "$out"; problem "the solutions' flicker view of lab6_stability_turn is not still, or not the grader's measure"; }
+allowed=$(sed -nE 's/.*"kind": "flicker".*"threshold": ([0-9.e-]+).*/\1/p' "$(dirname "$0")/../grader/cases/lab6_stability_turn.json")
+grep -qE "allowed $(awk -v t="$allowed" 'BEGIN { printf "%.4g", 100 * t }')%," <<<"$out" ||
+  { echo "$out"; problem "the flicker view does not allow the case's threshold ($allowed)"; }
+grep -qE "criterion: at most [0-9.]+% of the receivers \(surfaces facing the light\) change per frame" <<<"$out" ||
+  { echo "$out"; problem "the flicker view's criterion is not the grader's"; }
+# The stubs' frames lose the reference's shadows: no flicker, and still a fail.
+stub_out=$("$student" --headless --case lab6_stability_move --screenshot "$work/flicker-stubs.png" 2>&1)
+grep -qE "lab6_stability_move / flicker: .*: fails; not implemented: lab6_" <<<"$stub_out" ||
+  { echo "$stub_out"; problem "the stubs' flicker view does not fail"; }
+# Every summary and criterion fits the band under its panels (the longest: flicker's, with a stub named).
+grep -h "cut short" "$work"/*.log <(echo "$out") <(echo "$stub_out") && problem "a summary or criterion is cut short under the panels"
 exit $fail

@@ -140,6 +140,29 @@ static void test_diag_angle_slips_and_words(void) {
     CHECK(strcmp(sl_diag_shadowed_share_words(0.95), "almost everything") == 0);
 }
 
+/* Flicker as the grader and the viewer's --case count it: of the receivers only, per frame pair;
+ * and a criterion's percentage printed as the case states it (0.25, not 0.2). */
+static void test_compare_flicker_and_percent(void) {
+    sl_image mask = sl_image_alloc(4, 2, 1), stack = sl_image_alloc(4, 2 * 3, 1);
+    for (int i = 0; i < 4; i++) mask.data[i] = 1; /* the top row faces the light, the bottom row does not */
+    for (int i = 0; i < 4 * 6; i++) stack.data[i] = 1;
+    sl_image_pixel(&stack, 0, 2)[0] = 0; /* frame 1: one receiver in shadow, then lit again in frame 2 */
+    sl_image_pixel(&stack, 1, 3)[0] = 0; /* a pixel facing away changes: not a receiver, not counted */
+    sl_flicker f = sl_flicker_measure(&stack, &mask, 3);
+    CHECK(f.receivers == 4);
+    CHECK(fabs(f.score - 2.0 / (4 * 2)) < 1e-12); /* two changes over 4 receivers and 2 frame pairs */
+    CHECK(fabs(f.shadowed - 1.0 / (4 * 3)) < 1e-12);
+    sl_flicker none = {4, 0, 0}, reference = {4, 0, 0.1};
+    CHECK(!sl_flicker_shadows_kept(&none, &reference));
+    CHECK(sl_flicker_shadows_kept(&reference, &reference));
+    char text[16];
+    CHECK(strcmp(sl_criterion_percent(0.0025, text, sizeof text), "0.25") == 0);
+    CHECK(strcmp(sl_criterion_percent(0.001, text, sizeof text), "0.1") == 0);
+    CHECK(strcmp(sl_criterion_percent(0.01, text, sizeof text), "1") == 0);
+    sl_image_free(&mask);
+    sl_image_free(&stack);
+}
+
 static void test_compare_depth_patterns(void) {
     /* depths only in the lower-left 16x16 of a 64x64 map (rows stored top first) */
     sl_image img = square(64, 64, 0.5f, 1.0f, 0, 48, 16, 64);
@@ -1466,6 +1489,7 @@ int main(int argc, char **argv) {
         {"compare_depth_patterns", test_compare_depth_patterns},
         {"compare_failing_by_kind", test_compare_failing_by_kind},
         {"diag_angle_slips_and_words", test_diag_angle_slips_and_words},
+        {"compare_flicker_and_percent", test_compare_flicker_and_percent},
         {"shader_includes_and_lines", test_shader_includes_and_lines},
         {"shader_missing_include", test_shader_missing_include},
         {"shader_text_as_editors_write_it", test_shader_text_as_editors_write_it},

@@ -300,13 +300,13 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
 }
 
 /* Light bleeding: where the reference (with the reduction) is in umbra, the
- * fraction of pixels lit above the threshold here, with and without it. */
-static double _sl_bleed(const sl_image *v, const sl_image *t, const sl_image *mask, long *umbra) {
+ * fraction of pixels lit above the check's threshold here, with and without it. */
+static double _sl_bleed(const sl_image *v, const sl_image *t, const sl_image *mask, double threshold, long *umbra) {
     long n = (long)t->width * t->height, in = 0, lit = 0;
     for (long i = 0; i < n; i++) {
-        if ((mask && mask->data[i] < 0.5f) || t->data[i] > 0.02f) continue;
+        if ((mask && mask->data[i] < 0.5f) || t->data[i] > (float)SL_BLEEDING_UMBRA) continue;
         in++;
-        lit += !(v->data[i] <= 0.1f);
+        lit += !(v->data[i] <= (float)threshold);
     }
     *umbra = in;
     return in ? (double)lit / (double)in : 0;
@@ -333,13 +333,14 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
     const sl_image *m = ref->lit_mask.data && ref->lit_mask.width == t->width && ref->lit_mask.height == t->height
                             ? &ref->lit_mask
                             : NULL;
-    (void)k;
-    double with = _sl_bleed(&on->image, t, m, &umbra), without = _sl_bleed(&off->image, t, m, &umbra);
+    double with = _sl_bleed(&on->image, t, m, k->threshold, &umbra),
+           without = _sl_bleed(&off->image, t, m, k->threshold, &umbra);
     /* A scene (or a hidden variant of it) whose reference has next to no umbra
      * has no bleeding to measure: nothing to lose. */
     /* an umbra without light is also a picture without light: it must be lit where the reference is */
     bool light_ok = !sl_visibility_lit_lost(&on->image, t, m).failed;
-    bool measured_ok = umbra < 100 || with <= fmax(0.5 * without, 0.01);
+    bool measured_ok = umbra < SL_BLEEDING_MIN_UMBRA_PIXELS ||
+                       with <= fmax(SL_BLEEDING_MAX_KEPT * without, SL_BLEEDING_NEGLIGIBLE);
     if (measured_ok && light_ok) {
         out->passed = true;
         return;
@@ -356,7 +357,7 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
     }
     sl_diag_say(out, "light bleeding: %.1f%% of the reference's umbra is lit above %.2f with the reduction (amount "
                      "%.2f), %.1f%% without it; the reduction must at least halve it",
-                100 * with, 0.1, c->params.vsm.bleeding, 100 * without);
+                100 * with, k->threshold, c->params.vsm.bleeding, 100 * without);
     if (with > without) {
         sl_diag_append(out, ", and the reduction adds light to the umbra instead");
         sl_diag_cause_in(out, "reduce_light_bleeding", "are linstep's arguments swapped? reduce_light_bleeding() returns linstep(amount, 1.0, "

@@ -88,30 +88,7 @@ void sl_diagnose_cascade_index(const sl_case *c, const sl_check *k, const sl_cas
 
 /* ---- the flicker score along a camera path ---- */
 
-typedef struct _sl_flicker {
-    double score;    /* of receiver pixels, changing between consecutive frames, averaged over the frame pairs */
-    double shadowed; /* of receiver pixels, in shadow, averaged over the frames */
-} _sl_flicker;
-
-static _sl_flicker _sl_measure_flicker(const sl_image *stack, const sl_image *mask, int frames) {
-    _sl_flicker f = {0, 0};
-    long pixels = (long)mask->width * mask->height, receivers = 0, changes = 0, dark = 0;
-    for (long i = 0; i < pixels; i++) {
-        if (mask->data[i] < 0.5f) continue;
-        receivers++;
-        for (int frame = 0; frame < frames; frame++) {
-            float v = stack->data[frame * pixels + i];
-            dark += !(v >= 0.5f);
-            if (frame > 0) {
-                float before = stack->data[(frame - 1) * pixels + i];
-                changes += (v >= 0.5f) != (before >= 0.5f) || isnan(v) != isnan(before);
-            }
-        }
-    }
-    if (receivers && frames > 1) f.score = (double)changes / ((double)receivers * (frames - 1));
-    if (receivers && frames > 0) f.shadowed = (double)dark / ((double)receivers * frames);
-    return f;
-}
+/* The measure is sl_compare's (sl_flicker_measure), shared with the viewer's --case. */
 
 /* Only the camera's aim changes along the path: it turns. */
 static bool _sl_path_turns(const sl_case *c) {
@@ -136,8 +113,8 @@ void sl_diagnose_flicker(const sl_case *c, const sl_check *k, const sl_case_resu
         out->settled = true;
         return;
     }
-    _sl_flicker got = _sl_measure_flicker(s, m, c->frame_count), want = _sl_measure_flicker(t, m, c->frame_count);
-    bool shadows_ok = want.shadowed < 0.005 || got.shadowed >= 0.5 * want.shadowed;
+    sl_flicker got = sl_flicker_measure(s, m, c->frame_count), want = sl_flicker_measure(t, m, c->frame_count);
+    bool shadows_ok = sl_flicker_shadows_kept(&got, &want);
     /* frames that never change pass the score: they must also be lit where the reference's are */
     bool light_ok = !sl_visibility_lit_lost(s, t, m).failed;
     bool measured_ok = got.score <= k->threshold && shadows_ok;
