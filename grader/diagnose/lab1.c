@@ -14,6 +14,36 @@
 /* The depth resolution lab 1's README asks of the shadow map (GL_TEXTURE_DEPTH_SIZE). */
 #define _SL_LAB1_MIN_DEPTH_BITS 24
 
+/* The faults of a framebuffer whose depth texture is attached: its format, size, colour attachment and
+ * draw/read buffers. They are independent of each other, so all that are measured are said, joined;
+ * returns how many. v: the "fbo" capture's numbers. */
+static int _sl_fbo_faults(const double *v, sl_check_result *out) {
+    int faults = 0;
+    out->message[0] = '\0';
+#define _SL_FAULT(...) (sl_diag_append(out, "%s", faults++ ? "; also, " : ""), sl_diag_append(out, __VA_ARGS__))
+    if (v[3] <= 0) {
+        _SL_FAULT("map->depth_texture has no depth format: use GL_DEPTH_COMPONENT24 (internal format) with "
+                  "GL_DEPTH_COMPONENT");
+    } else if (v[3] < _SL_LAB1_MIN_DEPTH_BITS) {
+        /* The README's contract is 24 bits or more. A 16-bit map still draws this case's pictures within
+         * their tolerance, so only the texture's own resolution shows it. */
+        _SL_FAULT("map->depth_texture has %.0f bits of depth, and the lab asks for at least %d: use "
+                  "GL_DEPTH_COMPONENT24 (GL_DEPTH_COMPONENT32F or GL_DEPTH24_STENCIL8 will do too) — 16 bits keep "
+                  "65536 depths, and a perspective light spends most of them near itself",
+                  v[3], _SL_LAB1_MIN_DEPTH_BITS);
+    }
+    if (v[4] != v[9] || v[5] != v[9])
+        _SL_FAULT("the depth texture is %.0fx%.0f, but the requested map size is %.0f: use the size argument", v[4],
+                  v[5], v[9]);
+    if (v[8] != GL_NONE) _SL_FAULT("the framebuffer has a colour attachment: a depth-only pass needs none");
+    if (v[6] != GL_NONE || v[7] != GL_NONE)
+        _SL_FAULT("draw/read buffer is %s, not GL_NONE: call glDrawBuffer(GL_NONE) and glReadBuffer(GL_NONE) while "
+                  "the framebuffer is bound",
+                  v[6] != GL_NONE ? "set" : "set for reading");
+#undef _SL_FAULT
+    return faults;
+}
+
 void sl_diagnose_fbo(const sl_case *c, const sl_case_result *r, sl_check_result *out) {
     const sl_capture *cap = sl_result_capture(r, "fbo");
     if (!cap || cap->number_count < 10) {
@@ -29,22 +59,8 @@ void sl_diagnose_fbo(const sl_case *c, const sl_case_result *r, sl_check_result 
         sl_diag_say(out, "nothing is attached as GL_DEPTH_ATTACHMENT: attach the depth texture with glFramebufferTexture2D");
     } else if (!v[2]) {
         sl_diag_say(out, "the texture attached as GL_DEPTH_ATTACHMENT is not map->depth_texture");
-    } else if (v[3] <= 0) {
-        sl_diag_say(out, "map->depth_texture has no depth format: use GL_DEPTH_COMPONENT24 (internal format) with GL_DEPTH_COMPONENT");
-    } else if (v[3] < _SL_LAB1_MIN_DEPTH_BITS) {
-        /* The README's contract is 24 bits or more. A 16-bit map still draws this case's pictures within
-         * their tolerance, so only the texture's own resolution shows it. */
-        sl_diag_say(out, "map->depth_texture has %.0f bits of depth, and the lab asks for at least %d: use "
-                         "GL_DEPTH_COMPONENT24 (GL_DEPTH_COMPONENT32F or GL_DEPTH24_STENCIL8 will do too) — 16 bits keep "
-                         "65536 depths, and a perspective light spends most of them near itself",
-                    v[3], _SL_LAB1_MIN_DEPTH_BITS);
-    } else if (v[4] != v[9] || v[5] != v[9]) {
-        sl_diag_say(out, "the depth texture is %.0fx%.0f, but the requested map size is %.0f: use the size argument", v[4], v[5], v[9]);
-    } else if (v[8] != GL_NONE) {
-        sl_diag_say(out, "the framebuffer has a colour attachment: a depth-only pass needs none");
-    } else if (v[6] != GL_NONE || v[7] != GL_NONE) {
-        sl_diag_say(out, "draw/read buffer is %s, not GL_NONE: call glDrawBuffer(GL_NONE) and glReadBuffer(GL_NONE) while the framebuffer is bound",
-                v[6] != GL_NONE ? "set" : "set for reading");
+    } else if (_sl_fbo_faults(v, out)) {
+        /* said: every fault of the texture and the buffers at once, so one round of fixes is enough */
     } else if (status != GL_FRAMEBUFFER_COMPLETE) {
         sl_diag_say(out, "the framebuffer is incomplete: %s", sl_gl_enum_name(status));
     } else if (r->failed[0] && strcmp(r->failed, "lab1_create_shadow_map") == 0) {
