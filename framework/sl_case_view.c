@@ -188,14 +188,13 @@ static void _sl_judge(_sl_case_view *v, const sl_image *student, sl_image *diff)
                  SL_VISIBILITY_MIN_SHADOW_PIXELS, 100 * lost, shadowed);
         sl_image_free(&mask);
     }
-    char figures[200];
+    char figures[200], allowed_share[16];
+    sl_criterion_percent(k->fail_fraction, allowed_share, sizeof allowed_share); /* as the grader prints it */
     if (channels == 2)
-        snprintf(figures, sizeof figures, "%.2f%% of pixels differ (depth %.2f%%, depth squared %.2f%%; allowed %.2f%% "
-                 "each)", 100 * failing, 100 * st[0].failing_fraction, 100 * st[1].failing_fraction,
-                 100 * k->fail_fraction);
+        snprintf(figures, sizeof figures, "%.2f%% of pixels differ (depth %.2f%%, depth squared %.2f%%; allowed %s%% "
+                 "each)", 100 * failing, 100 * st[0].failing_fraction, 100 * st[1].failing_fraction, allowed_share);
     else
-        snprintf(figures, sizeof figures, "%.2f%% of pixels differ (allowed %.2f%%)", 100 * failing,
-                 100 * k->fail_fraction);
+        snprintf(figures, sizeof figures, "%.2f%% of pixels differ (allowed %s%%)", 100 * failing, allowed_share);
     char extra[200] = "";
     if (k->kind == SL_CHECK_PENUMBRA || k->kind == SL_CHECK_BLEEDING) {
         snprintf(v->summary, sizeof v->summary, "%s / %s: %.2f%% of pixels differ from the reference's by more than "
