@@ -3,7 +3,8 @@
 # The student distribution: one archive with the framework, the labs with
 # their stubs, the public cases and their references, the grader, the
 # slides, the scripts, the tests a student's copy runs, and the README. No
-# solutions/, no wrong variants, no attack suite, nothing of the build.
+# solutions/, no wrong variants, no attack suite, nothing of the build, no
+# lecturer's notes in the decks' Markdown (the answers to the room's questions).
 # Made from the files git tracks, as they are in the working tree, except
 # labs/: the stubs as committed (HEAD). Where labs/ differs from HEAD (edits,
 # finished labs, new files) it refuses and names what differs, unless told:
@@ -53,6 +54,18 @@ if [ $labs_from = committed ]; then
   git archive --format=tar HEAD labs | tar -xf - -C "$stage/$name"
 else
   git ls-files -z -- labs | tar --null -T - -cf - | tar -xf - -C "$stage/$name"
+fi
+# The decks' Markdown without the lecturer's blocks: `::: notes` (the lecturer's notes, which hold the
+# answers to the questions for the room) and `::: lecturer`, as the students' decks are built
+# (slides/tools/prepare_deck.py). Neither holds a `:::` of its own (slides/README.md).
+for deck in "$stage/$name"/slides/*.md; do
+  [ "$(basename "$deck")" != README.md ] || continue
+  awk '/^::: *(notes|lecturer) *$/ {skip = 1; next} skip && /^::: *$/ {skip = 0; next} !skip' "$deck" >"$deck.tmp"
+  mv "$deck.tmp" "$deck"
+done
+if grep -lE '^::: *(notes|lecturer) *$' "$stage/$name"/slides/*.md 2>/dev/null | grep -v '/README\.md$'; then
+  echo "make-handout: the lecturer's notes are still in the decks above" >&2
+  exit 1
 fi
 if [ -e "$stage/$name/solutions" ] || grep -rqs "sl_solution" "$stage/$name/labs"; then
   echo "make-handout: solutions leaked into the handout" >&2

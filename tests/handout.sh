@@ -37,6 +37,16 @@ while IFS= read -r line; do
   [ -n "$line" ] || continue
   problem "an implementation of a lab step is in the handout: $line"
 done <<<"$answers"
+# The lecturer's notes (the answers to the questions for the room) stay out of the decks' Markdown:
+# every line of a `::: notes` or `::: lecturer` block that is not also elsewhere in its deck.
+for deck in "$src"/slides/lab*.md; do
+  shipped="$root/slides/$(basename "$deck")"
+  [ -f "$shipped" ] || { problem "slides/$(basename "$deck") is not in the handout"; continue; }
+  while IFS= read -r line; do
+    [ "$(grep -cxF -- "$line" "$deck")" = 1 ] || continue # a line the slides say too
+    ! grep -qxF -- "$line" "$shipped" || problem "slides/$(basename "$deck") ships the lecturer's notes: $line"
+  done < <(awk '/^::: *(notes|lecturer) *$/ {on = 1; next} on && /^::: *$/ {on = 0} on && NF' "$deck")
+done
 # Every public case and its references (the grades below run a few of them)
 while IFS= read -r f; do
   [ -e "$root/$f" ] || problem "$f is not in the handout"
