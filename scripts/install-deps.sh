@@ -28,7 +28,7 @@ packages=(
   libwebsockets-dev     # the viewer in a browser (shadowlab --serve); optional at build time
   xvfb xauth            # the viewer's tests run in a virtual X display
   libglx-mesa0          # llvmpipe behind GLX: the viewer under Xvfb
-  python3               # the handout test's scan for lab answers (tests/handout_answers.sh)
+  python3               # the handout test's scan for lab answers, the README checks (tests/*.py)
 )
 if [ "${1:-}" = --tests ]; then
   packages+=(
