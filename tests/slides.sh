@@ -11,7 +11,8 @@
 #              image, blank slide, slide running over, or KaTeX error; a few slides kept as
 #              PNGs in BUILD_DIR/tests/slides-review/
 #   hall       every HTML deck at 1920x1080 in headless Chromium (tests/slides_hall.py): 16:9,
-#              every text and diagram label >= 18 px, each figure a good share of its slide
+#              every text and diagram label >= 18 px, each figure a good share of its slide;
+#              the lecturer's speaker view (key N) shows the slide's notes
 #   pdf-pages  pages of the PDFs (a diagram, typeset math, a figure row) rendered by
 #              pdftoppm and checked not blank; kept in BUILD_DIR/tests/slides-review/
 #   no-solutions  the students' decks as a copy without solutions/ builds them: figures

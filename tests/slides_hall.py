@@ -166,6 +166,32 @@ function measureDeck(win, doc) {
   });
   return res;
 }
+// The speaker view (key N, slides/tools/speaker-view.html), opened on the first slide with notes:
+// its window is a frame of this page, read once the view has followed the deck.
+function speakerCheck(w, d, done) {
+  var secs = Array.prototype.slice.call(d.querySelectorAll('body > section'));
+  var idx = secs.findIndex(function (s) { return s.querySelector('.notes'); });
+  if (idx < 0) { done({error: 'no slide has notes'}); return; }
+  var box = document.createElement('iframe');
+  box.style.width = '900px'; box.style.height = '700px';
+  document.body.appendChild(box);
+  w.open = function () { return box.contentWindow; };
+  if (w.Dz && w.Dz.setCursor) w.Dz.setCursor(idx + 1, 0);
+  setTimeout(function () {
+    w.dispatchEvent(new w.KeyboardEvent('keydown', {key: 'N'}));
+    setTimeout(function () {
+      var v = box.contentDocument;
+      function text(id) { var e = v && v.getElementById(id); return e ? e.textContent : null; }
+      var h1 = secs[idx].querySelector('h1');
+      done({slide: idx + 1, count: secs.length, title: h1 ? h1.textContent.trim() : '',
+            where: text('where'), notes: text('notes'), next: text('next'),
+            expected: Array.prototype.map.call(secs[idx].querySelectorAll('.notes'),
+                                               function (n) { return n.textContent; }).join(' '),
+            notesPx: v && v.getElementById('notes') ? parseFloat(getComputedStyle(v.getElementById('notes')).fontSize) : 0});
+      box.remove();
+    }, 700);
+  }, 100);
+}
 """
 
 HARNESS = """<!DOCTYPE html><html><head><style>body{margin:0} iframe{border:0;display:block}</style></head>
@@ -186,8 +212,8 @@ function next(i) {
       setTimeout(function () {
         try { if (w.Dz && w.Dz.onresize) w.Dz.onresize(); results[decks[i]] = measureDeck(w, d); }
         catch (e) { results[decks[i]] = {error: String(e), slides: []}; }
-        f.remove();
-        next(i + 1);
+        if (/^student\//.test(decks[i])) { f.remove(); next(i + 1); return; }
+        speakerCheck(w, d, function (sv) { results[decks[i]].speaker = sv; f.remove(); next(i + 1); });
       }, 50);
     });
   };
@@ -277,6 +303,27 @@ def notes_stay_with_the_lecturer(out):
     return problems, checked
 
 
+def speaker_view_problems(deck, sv):
+    """The lecturer's deck's speaker view, opened with key N on its first slide with notes: it
+    names that slide, shows that slide's notes (all of them, nothing else) and the next title."""
+    if not sv or sv.get("error"):
+        return [f"{deck}: speaker view: {(sv or {}).get('error') or 'not measured'}"]
+    where = f"{deck} speaker view on slide {sv['slide']} ({sv['title'][:40]})"
+    if sv["where"] is None:
+        return [f"{where}: key N opened no speaker view"]
+    problems = []
+    if not words(sv["where"]).startswith(f"{sv['slide']} / {sv['count']} {words(sv['title'])}"):
+        problems.append(f"{where}: its heading says {sv['where']!r}")
+    if not words(sv["expected"]) or words(sv["notes"]) != words(sv["expected"]):
+        problems.append(f"{where}: shows {words(sv['notes'])[:80]!r}, not the slide's notes "
+                        f"{words(sv['expected'])[:80]!r}")
+    if not (sv["next"] or "").startswith(("Next: ", "Last slide")):
+        problems.append(f"{where}: no next slide: {sv['next']!r}")
+    if sv["notesPx"] < MIN_TEXT_PX:
+        problems.append(f"{where}: notes drawn at {sv['notesPx']:.0f} px, under {MIN_TEXT_PX:.0f}")
+    return problems
+
+
 def main():
     if len(sys.argv) < 2:
         sys.exit("usage: slides_hall.py OUT_DIR")
@@ -323,6 +370,8 @@ def main():
         if res.get("error") or not res["slides"]:
             problems.append(f"{deck}: {res.get('error') or 'no slides'}")
             continue
+        if not deck.startswith("student/"):
+            problems += speaker_view_problems(deck, res.get("speaker"))
         smallest, figs, worst_fig = None, 0, None
         for s in res["slides"]:
             where = f"{deck} slide {s['index']} ({s['title'][:40]})"
