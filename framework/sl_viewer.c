@@ -107,7 +107,9 @@ static int _sl_viewer_run(int argc, char **argv, int batch_line) {
     /* The overlay is on in an interactive window and off in unattended runs,
      * so screenshots and slide figures show the scene alone unless asked. */
     v.show_panels = !v.lecture; /* a hall sees one line; the panels come on key I */
-    v.show_overlay = o.overlay_option >= 0 ? o.overlay_option == 1 : ((!o.headless || o.serve_port) && o.frames <= 0);
+    /* a lecture's line is what --lecture asks for, in a screenshot too */
+    v.show_overlay = o.overlay_option >= 0 ? o.overlay_option == 1
+                                           : (v.lecture || ((!o.headless || o.serve_port) && o.frames <= 0));
     v.overlay = sl_overlay_create(sl_framework_dir(), err, sizeof err);
     if (!v.overlay) fprintf(stderr, "shadowlab: no overlay: %s\n", err);
     else {

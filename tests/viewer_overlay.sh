@@ -53,7 +53,7 @@ run l7-labels --headless --lab 7 --scene closed_room --size 640x400 --frames 1 -
 sun=(--headless --lab 4 --scene boxes_on_floor --size 640x400 --frames 2)
 run sun "${sun[@]}" --screenshot "$work/sun.png"
 run sun-frustum "${sun[@]}" --frustum --screenshot "$work/sun-frustum.png"
-run lecture-frustum "${sun[@]}" --frustum --lecture --screenshot "$work/lecture-frustum.png"
+run lecture-frustum "${sun[@]}" --frustum --lecture --no-overlay --screenshot "$work/lecture-frustum.png"
 run lecture-overlay "${common[@]}" --overlay --lecture --screenshot "$work/lecture-overlay.png"
 run_all "$solutions" plain no-overlay overlay lab5 lab6 lab7 frustum key-l key-o key-oo lab5-pcf lab7-sun l6-labels \
   l7-labels sun sun-frustum lecture-frustum lecture-overlay
