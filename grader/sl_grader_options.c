@@ -96,6 +96,10 @@ static void _sl_usage(FILE *f) {
             "  --update-references  render the references, and their MANIFEST.json, from the solutions\n"
             "  --no-reference-cache decode every reference image from its file: no use of the build's\n"
             "                       cache of decoded references (cache/references beside bin/)\n"
+            "  --no-experiments     with --isolate in a staff build: do not run a failed check again with\n"
+            "                       one function replaced by the solution's; messages rank by the probes\n"
+            "  --experiment-budget SECONDS  the wall time all experiments of a grade may take (default\n"
+            "                       300); past it, the probes' ranking stands (the log says so)\n"
             "Exit status: 0 full marks, 1 some checks failed, 2 grading could not run properly\n"
             "(a staff-side problem: missing or changed references, bad case files, unwritable reports),\n"
             "3 graded, but the --submission-summary says the submission held no lab file.\n");
@@ -179,7 +183,7 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
                                                  "--sandbox", "--memory", "--seed", "--not-built", "--gradebook",
                                                  "--build-logs", "--submission-summary", "--technique-dir",
-                                                 "--stub-labs", "--bonus"};
+                                                 "--stub-labs", "--bonus", "--experiment-budget"};
         bool value = false;
         for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) value |= strcmp(a, with_value[k]) == 0;
         if (value && !v) {
@@ -247,6 +251,14 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--progress") == 0) o->progress = true;
         else if (strcmp(a, "--update-references") == 0) o->update = true;
         else if (strcmp(a, "--no-reference-cache") == 0) o->no_reference_cache = true;
+        else if (strcmp(a, "--no-experiments") == 0) o->no_experiments = true;
+        else if (strcmp(a, "--experiment-budget") == 0) {
+            o->experiment_budget = atof(v);
+            if (!(o->experiment_budget > 0)) {
+                fprintf(stderr, "shadowlab-grade: --experiment-budget takes seconds, more than 0\n");
+                return SL_EXIT_ERROR;
+            }
+        }
         else if (strcmp(a, "--isolate") == 0) o->isolate = true;
         else if (strcmp(a, "--hidden") == 0) o->hidden = true;
         else if (strcmp(a, "--seed") == 0) o->seed = v;
