@@ -302,12 +302,14 @@ void sl_experiments_run(const sl_experiment_grade *g, const sl_experiment_budget
                 const _sl_candidate *set[2] = {&candidates[a], &candidates[b]};
                 going = _sl_try(&L, set, 2);
             }
-        /* every single and every pair tried without a fix: the cause is outside what was replaced */
-        bool exhausted = going && n <= _SL_PAIR_CANDIDATES;
+        /* every single and every pair tried without a fix: the cause is outside what was replaced.
+         * Where no function differs, nothing was tried: the probes' ranking stands. */
+        bool exhausted = going && n > 0 && n <= _SL_PAIR_CANDIDATES;
         for (int i = 0; i < g->count; i++)
             for (int k = 0; g->cases[i].lab == lab && k < g->cases[i].check_count; k++) {
                 sl_experiment_verdict *v = &verdicts[i * SL_CASE_MAX_CHECKS + k];
                 v->tried = tried_alone;
+                if (v->outcome == SL_EXPERIMENT_UNFINISHED && n == 0) v->outcome = SL_EXPERIMENT_NONE;
                 if (v->outcome == SL_EXPERIMENT_UNFINISHED && exhausted) v->outcome = SL_EXPERIMENT_OUTSIDE;
             }
     }
@@ -328,14 +330,10 @@ void sl_experiment_lead(const sl_experiment_verdict *v, char *out, size_t n) {
                          "are wrong", v->functions[0], v->functions[1]);
         break;
     case SL_EXPERIMENT_OUTSIDE:
-        if (v->tried > 0)
-            snprintf(out, n, "Replacing this lab's shader functions that differ from the solution's with correct ones, "
-                             "one or two at a time, does not fix this check (an experiment): the cause lies outside "
-                             "them: in the lab's C code or in what the shader files share (their uniforms, constants, "
-                             "#defines)");
-        else
-            snprintf(out, n, "This lab's shader functions are the solution's own: the cause lies outside them: in the "
-                             "lab's C code or in what the shader files share (their uniforms, constants, #defines)");
+        snprintf(out, n, "Replacing this lab's shader functions that differ from the solution's (%d) with correct ones, "
+                         "one or two at a time, does not fix this check (an experiment): the cause lies outside them: "
+                         "in the lab's C code or in what the shader files share (their uniforms, constants, #defines)",
+                 v->tried);
         break;
     default: break;
     }

@@ -19,10 +19,10 @@
 #define SL_EXPERIMENT_MAX_FUNCTIONS 16
 
 typedef enum {
-    SL_EXPERIMENT_NONE = 0,  /* no experiment on this check (passed, not eligible, nothing to replace) */
+    SL_EXPERIMENT_NONE = 0,  /* no experiment on this check (passed, not eligible, no function differs) */
     SL_EXPERIMENT_SINGLE,    /* replacing one function fixes it (`functions[0]`) */
     SL_EXPERIMENT_PAIR,      /* no single replacement does; one pair does (`functions[0]`, `functions[1]`) */
-    SL_EXPERIMENT_OUTSIDE,   /* every function differing from the solution's was tried, alone and in pairs: none fixes it */
+    SL_EXPERIMENT_OUTSIDE,   /* every shader function differing from the solution's was tried, alone and in pairs: no fix */
     SL_EXPERIMENT_UNFINISHED /* the budget ran out before an answer: the probes' ranking stands */
 } sl_experiment_outcome;
 
