@@ -3,12 +3,14 @@
 #include "sl_experiment.h"
 
 #include <dirent.h>
+#include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -21,6 +23,7 @@
 #define _SL_PAIR_CANDIDATES 6 /* pairs among at most this many functions: 15 pairs */
 
 typedef struct _sl_candidate {
+    bool c_function;   /* a function of the lab's C file: a runner of its own (the builder links it) */
     char file[128];    /* under the lab's shaders/: "pcf.glsl" */
     char name[SL_GLSL_NAME_MAX];
     int occurrence;    /* of its name in the file (overloads) */
@@ -106,9 +109,15 @@ static bool _sl_function_is_bonus(const char *said) {
     return false;
 }
 
+static bool _sl_same_text(const char *a_text, const sl_glsl_function *a, const char *b_text, const sl_glsl_function *b) {
+    size_t n = a->end - a->start;
+    return n == b->end - b->start && memcmp(a_text + a->start, b_text + b->start, n) == 0;
+}
+
 /* The lab's functions whose text differs from the solution's: only those can change a picture
  * when replaced (the shaders' own, by name and order in each file). */
-static int _sl_candidates(const char *graded_tree, const char *solutions_tree, int lab, _sl_candidate *out, int max) {
+static int _sl_candidates(const char *graded_tree, const char *solutions_tree, const char *stubs_tree, int lab,
+                          _sl_candidate *out, int max) {
     const char *folder = sl_lab_folder(lab);
     char dir_path[1400];
     snprintf(dir_path, sizeof dir_path, "%s/%s/shaders", solutions_tree, folder);
@@ -122,23 +131,27 @@ static int _sl_candidates(const char *graded_tree, const char *solutions_tree, i
     closedir(dir);
     qsort(names, (size_t)files, sizeof names[0], (int (*)(const void *, const void *))strcmp);
     int count = 0;
-    static sl_glsl_function theirs[128], ours[128];
+    static sl_glsl_function theirs[128], ours[128], stubs[128];
     for (int f = 0; f < files; f++) {
         char path[1600];
-        size_t solution_size = 0, student_size = 0;
+        size_t solution_size = 0, student_size = 0, stub_size = 0;
         snprintf(path, sizeof path, "%s/%s/shaders/%s", solutions_tree, folder, names[f]);
         char *solution = _sl_read(path, &solution_size);
         snprintf(path, sizeof path, "%s/%s/shaders/%s", graded_tree, folder, names[f]);
         char *student = _sl_read(path, &student_size);
+        snprintf(path, sizeof path, "%s/%s/shaders/%s", stubs_tree, folder, names[f]);
+        char *stub = stubs_tree ? _sl_read(path, &stub_size) : NULL;
         int n = solution ? sl_glsl_functions(solution, solution_size, theirs, 128) : -1;
         int m = student ? sl_glsl_functions(student, student_size, ours, 128) : -1;
+        int o = stub ? sl_glsl_functions(stub, stub_size, stubs, 128) : -1;
         for (int i = 0; i < n && m >= 0 && count < max; i++) {
             int occurrence = 0;
             for (int j = 0; j < i; j++) occurrence += strcmp(theirs[j].name, theirs[i].name) == 0;
             const sl_glsl_function *mine = sl_glsl_find(ours, m, theirs[i].name, occurrence);
-            if (!mine) continue;
-            size_t a = theirs[i].end - theirs[i].start, b = mine->end - mine->start;
-            if (a == b && memcmp(solution + theirs[i].start, student + mine->start, a) == 0) continue;
+            if (!mine || _sl_same_text(solution, &theirs[i], student, mine)) continue;
+            /* a stub left as the handout has it says "not implemented" by itself: nothing to find out */
+            const sl_glsl_function *handout = o >= 0 ? sl_glsl_find(stubs, o, theirs[i].name, occurrence) : NULL;
+            if (handout && _sl_same_text(stub, handout, student, mine)) continue;
             _sl_candidate *c = &out[count++];
             snprintf(c->file, sizeof c->file, "%s", names[f]);
             snprintf(c->name, sizeof c->name, "%s", theirs[i].name);
@@ -149,8 +162,95 @@ static int _sl_candidates(const char *graded_tree, const char *solutions_tree, i
         }
         free(solution);
         free(student);
+        free(stub);
     }
     return count;
+}
+
+static bool _sl_starts_with_word(const char *text, const sl_glsl_function *f, const char *word) {
+    size_t n = strlen(word);
+    return f->end - f->start > n && strncmp(text + f->start, word, n) == 0 && !isalnum((unsigned char)text[f->start + n]);
+}
+
+/* The lab's C functions with external linkage whose text differs from the solution's and from
+ * the stub's: each can be swapped in the linked runner (a static one cannot). */
+static int _sl_c_candidates(const char *graded_tree, const char *solutions_tree, const char *stubs_tree, int lab,
+                            _sl_candidate *out, int max) {
+    const char *folder = sl_lab_folder(lab);
+    char path[1600], file[32];
+    snprintf(file, sizeof file, "lab%d.c", lab);
+    size_t solution_size = 0, student_size = 0, stub_size = 0;
+    snprintf(path, sizeof path, "%s/%s/%s", solutions_tree, folder, file);
+    char *solution = _sl_read(path, &solution_size);
+    snprintf(path, sizeof path, "%s/%s/%s", graded_tree, folder, file);
+    char *student = _sl_read(path, &student_size);
+    snprintf(path, sizeof path, "%s/%s/%s", stubs_tree, folder, file);
+    char *stub = stubs_tree ? _sl_read(path, &stub_size) : NULL;
+    static sl_glsl_function theirs[128], ours[128], stubs[128];
+    int n = solution ? sl_glsl_functions(solution, solution_size, theirs, 128) : -1;
+    int m = student ? sl_glsl_functions(student, student_size, ours, 128) : -1;
+    int o = stub ? sl_glsl_functions(stub, stub_size, stubs, 128) : -1;
+    int count = 0;
+    for (int i = 0; i < n && m >= 0 && count < max; i++) {
+        const sl_glsl_function *mine = sl_glsl_find(ours, m, theirs[i].name, 0);
+        if (!mine || sl_glsl_find(theirs, n, theirs[i].name, 1) || _sl_same_text(solution, &theirs[i], student, mine))
+            continue;
+        if (_sl_starts_with_word(solution, &theirs[i], "static") || _sl_starts_with_word(student, mine, "static")) continue;
+        const sl_glsl_function *handout = o >= 0 ? sl_glsl_find(stubs, o, theirs[i].name, 0) : NULL;
+        if (handout && _sl_same_text(stub, handout, student, mine)) continue;
+        _sl_candidate *c = &out[count++];
+        *c = (_sl_candidate){.c_function = true};
+        snprintf(c->file, sizeof c->file, "%s", file);
+        snprintf(c->name, sizeof c->name, "%s", theirs[i].name);
+        snprintf(c->said, sizeof c->said, "%s()", c->name);
+        c->bonus = _sl_function_is_bonus(c->said);
+    }
+    free(solution);
+    free(student);
+    free(stub);
+    return count;
+}
+
+/* A runner with the set's C functions the solution's: the builder links it (the student's lab
+ * object with those symbols weak, the solution's with only them global) and prints its path. */
+static bool _sl_build_runner(const char *builder, int lab, const _sl_candidate *const *set, int n, char *out,
+                             size_t out_size) {
+    char lab_text[16], functions[200] = "";
+    snprintf(lab_text, sizeof lab_text, "%d", lab);
+    for (int i = 0; i < n; i++)
+        if (set[i]->c_function)
+            snprintf(functions + strlen(functions), sizeof functions - strlen(functions), "%s%s",
+                     functions[0] ? "," : "", set[i]->name);
+    int pipe_fds[2];
+    if (pipe2(pipe_fds, O_CLOEXEC) != 0) return false;
+    pid_t pid = fork();
+    if (pid < 0) {
+        close(pipe_fds[0]), close(pipe_fds[1]);
+        return false;
+    }
+    if (pid == 0) {
+        dup2(pipe_fds[1], 1);
+        int null_fd = open("/dev/null", O_WRONLY);
+        if (null_fd >= 0) dup2(null_fd, 2);
+        char *const argv[] = {(char *)builder, lab_text, functions, NULL};
+        execv(builder, argv);
+        _exit(127);
+    }
+    close(pipe_fds[1]);
+    char text[2048];
+    size_t used = 0;
+    ssize_t got;
+    while ((got = read(pipe_fds[0], text + used, sizeof text - 1 - used)) > 0) used += (size_t)got;
+    close(pipe_fds[0]);
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    text[used] = '\0';
+    while (used > 0 && text[used - 1] == '\n') text[--used] = '\0';
+    const char *last = strrchr(text, '\n');
+    last = last ? last + 1 : text;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || last[0] != '/' || access(last, X_OK) != 0) return false;
+    snprintf(out, out_size, "%s", last);
+    return true;
 }
 
 /* Puts the solution's definition of `c` into the tree's copy of the student's file. */
@@ -183,6 +283,7 @@ typedef struct _sl_lab_run {
     double start;
     int lab;
     int tree_count;
+    bool incomplete; /* an experiment could not be made: no claim rests on "none fixes it" */
 } _sl_lab_run;
 
 static bool _sl_within_budget(_sl_lab_run *L, int runs) {
@@ -223,9 +324,19 @@ static bool _sl_try(_sl_lab_run *L, const _sl_candidate *const *set, int n) {
     snprintf(tree, sizeof tree, "%s/lab%d-%d", g->work_dir, lab, L->tree_count++);
     const sl_runner_setup *base = &g->run->setups[lab];
     bool made = _sl_copy_tree(base->labs_tree, tree, 0);
-    for (int i = 0; made && i < n; i++) made = _sl_splice_into(tree, g->solutions_tree, lab, set[i]);
-    if (!made) return true; /* a tree that could not be made answers nothing: not fixed */
+    bool any_c = false;
+    for (int i = 0; made && i < n; i++) {
+        any_c |= set[i]->c_function;
+        if (!set[i]->c_function) made = _sl_splice_into(tree, g->solutions_tree, lab, set[i]);
+    }
+    char runner[1200];
+    if (made && any_c) made = g->builder && _sl_build_runner(g->builder, lab, set, n, runner, sizeof runner);
+    if (!made) { /* an experiment that could not be made answers nothing */
+        L->incomplete = true;
+        return true;
+    }
     sl_run_options run = *g->run;
+    if (any_c) run.setups[lab].runner = runner;
     run.case_ended = NULL; /* no progress line names an experiment */
     run.case_ended_context = NULL;
     run.setups[lab].labs_tree = tree;
@@ -288,9 +399,14 @@ void sl_experiments_run(const sl_experiment_grade *g, const sl_experiment_budget
         if (open == 0) continue; /* a lab without failures runs no experiment */
         cost->checks += open;
         static _sl_candidate candidates[SL_EXPERIMENT_MAX_FUNCTIONS];
-        int n = _sl_candidates(g->graded_tree, g->solutions_tree, lab, candidates, SL_EXPERIMENT_MAX_FUNCTIONS);
+        int n = _sl_candidates(g->graded_tree, g->solutions_tree, g->stubs_tree, lab, candidates,
+                               SL_EXPERIMENT_MAX_FUNCTIONS);
+        if (g->builder) /* the lab's C functions, where a runner can be linked with one of the solution's */
+            n += _sl_c_candidates(g->graded_tree, g->solutions_tree, g->stubs_tree, lab, candidates + n,
+                                  SL_EXPERIMENT_MAX_FUNCTIONS - n);
         cost->functions += n;
         L.lab = lab;
+        L.incomplete = false;
         bool going = true;
         for (int a = 0; a < n && going; a++) {
             const _sl_candidate *set[1] = {&candidates[a]};
@@ -304,11 +420,12 @@ void sl_experiments_run(const sl_experiment_grade *g, const sl_experiment_budget
             }
         /* every single and every pair tried without a fix: the cause is outside what was replaced.
          * Where no function differs, nothing was tried: the probes' ranking stands. */
-        bool exhausted = going && n > 0 && n <= _SL_PAIR_CANDIDATES;
+        bool exhausted = going && !L.incomplete && n > 0 && n <= _SL_PAIR_CANDIDATES;
         for (int i = 0; i < g->count; i++)
             for (int k = 0; g->cases[i].lab == lab && k < g->cases[i].check_count; k++) {
                 sl_experiment_verdict *v = &verdicts[i * SL_CASE_MAX_CHECKS + k];
                 v->tried = tried_alone;
+                v->with_c = g->builder != NULL;
                 if (v->outcome == SL_EXPERIMENT_UNFINISHED && n == 0) v->outcome = SL_EXPERIMENT_NONE;
                 if (v->outcome == SL_EXPERIMENT_UNFINISHED && exhausted) v->outcome = SL_EXPERIMENT_OUTSIDE;
             }
@@ -330,10 +447,18 @@ void sl_experiment_lead(const sl_experiment_verdict *v, char *out, size_t n) {
                          "are wrong", v->functions[0], v->functions[1]);
         break;
     case SL_EXPERIMENT_OUTSIDE:
-        snprintf(out, n, "Replacing this lab's shader functions that differ from the solution's (%d) with correct ones, "
-                         "one or two at a time, does not fix this check (an experiment): the cause lies outside them: "
-                         "in the lab's C code or in what the shader files share (their uniforms, constants, #defines)",
-                 v->tried);
+        if (v->with_c)
+            snprintf(out, n, "Replacing this lab's functions that differ from the solution's (%d, C and GLSL) with "
+                             "correct ones, one or two at a time, does not fix this check (an experiment): the cause "
+                             "lies outside them: in what the lab's files share (their constants, uniforms, #defines, "
+                             "static helpers) or in a call the compiler folded into its caller",
+                     v->tried);
+        else
+            snprintf(out, n, "Replacing this lab's shader functions that differ from the solution's (%d) with correct "
+                             "ones, one or two at a time, does not fix this check (an experiment): the cause lies "
+                             "outside them: in the lab's C code or in what the shader files share (their uniforms, "
+                             "constants, #defines)",
+                     v->tried);
         break;
     default: break;
     }

@@ -30,6 +30,7 @@ typedef struct sl_experiment_verdict {
     sl_experiment_outcome outcome;
     char functions[2][80]; /* as a message names them: "pcf_grid()", "cube_depth.geom" */
     int tried;             /* functions tried alone on this check */
+    bool with_c;           /* the lab's C functions were among them */
 } sl_experiment_verdict;
 
 typedef struct sl_experiment_budget {
@@ -56,7 +57,11 @@ typedef struct sl_experiment_grade {
     const sl_reference *refs;             /* case i's check k: refs[i * SL_CASE_MAX_CHECKS + k] */
     const sl_run_options *run;
     const char *graded_tree, *solutions_tree;
+    const char *stubs_tree;               /* the handout's: a function left as its stub is not tried */
     const char *work_dir;                 /* a private folder the experiment trees are made in */
+    /* Links a runner with some of the lab's C functions the solution's: run as BUILDER LAB F1[,F2],
+     * it prints the runner's path (scripts/build-experiment-runner); NULL: shader functions only. */
+    const char *builder;
 } sl_experiment_grade;
 
 /* Whether check k's failure is one an experiment may explain: a picture or a lab's own

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Skips a comment or a preprocessor line at text[i], if one starts there;
+/* Skips a comment, a preprocessor line or a C string or character literal at text[i], if one starts there;
  * returns where scanning goes on. `line_start`: i begins a line (after spaces). */
 static size_t _sl_skip_comment(const char *text, size_t size, size_t i, bool line_start) {
     if (i + 1 < size && text[i] == '/' && text[i + 1] == '/') {
@@ -16,6 +16,11 @@ static size_t _sl_skip_comment(const char *text, size_t size, size_t i, bool lin
         i += 2;
         while (i + 1 < size && !(text[i] == '*' && text[i + 1] == '/')) i++;
         return i + 1 < size ? i + 2 : size;
+    }
+    if (text[i] == '"' || text[i] == '\'') { /* C's literals (the splitter reads a lab's C file too) */
+        char quote = text[i++];
+        while (i < size && text[i] != quote && text[i] != '\n') i += text[i] == '\\' ? 2 : 1;
+        return i < size ? i + 1 : size;
     }
     if (line_start && text[i] == '#') { /* a directive, continued by a backslash at a line's end */
         while (i < size && text[i] != '\n') {

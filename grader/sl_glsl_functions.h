@@ -1,5 +1,6 @@
-/* sl_glsl_functions: the function definitions of a GLSL source, found by
- * matching braces (comments and preprocessor lines skipped), and a source
+/* sl_glsl_functions: the function definitions of a GLSL source (or a lab's C
+ * file), found by matching braces (comments, preprocessor lines and C's string
+ * and character literals skipped), and a source
  * with one definition replaced by another's. Staff grading's experiments
  * (sl_experiment.h) put one solution function into a student's shader file
  * with it. Text only: nothing here compiles or runs GLSL. */

@@ -508,9 +508,11 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
             static sl_experiment_verdict verdicts[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
             sl_experiment_grade eg = {.cases = cases, .count = count, .graded = graded, .refs = refs, .run = &run,
                                       .graded_tree = o.labs_dir, .solutions_tree = sl_config_solutions_dir,
+                                      .stubs_tree = sl_config_stubs_dir[0] ? sl_config_stubs_dir : NULL,
+                                      .builder = o.experiment_builder,
                                       .work_dir = isolation_root};
-            sl_experiment_budget budget = {.seconds = o.experiment_budget > 0 ? o.experiment_budget : 300,
-                                           .max_runs = 400};
+            sl_experiment_budget budget = {.seconds = o.experiment_budget > 0 ? o.experiment_budget : 120,
+                                           .max_runs = 120};
             sl_experiments_run(&eg, &budget, verdicts, &experiment_cost, &_sl_stop);
             for (int i = 0; i < count; i++)
                 for (int k = 0; k < cases[i].check_count; k++) {

@@ -10,7 +10,9 @@
 # - correct: lab 5 as the solutions have it: full marks and no experiment run;
 # - attack: an attack: the same mistakes, and a lab5.c that, in an experiment's runner, reads the solution's
 #   function from its sandbox and sends it out through stdout, stderr, files, the channel, its exit
-#   status and its time: nothing of it reaches the output, the reports or the disk.
+#   status and its time; and a lab2.c that calls the solution's lab2_shadow_matrix() it is linked beside
+#   in a C experiment and sends its answer out the same ways: nothing reaches the output, the reports
+#   or the disk, and the experiments answer "not fixed", the one bit.
 set -uo pipefail
 mode=$1 src=$2 build=$3 work=$4
 rm -rf "$work"
@@ -84,10 +86,52 @@ ATTACK
   chmod -R a+rX "$dir"
 }
 
+c_attack() { # c_attack NAME: lab 2 with a mistake in lab2_shadow_matrix() and code that, linked beside the
+  # solution's lab2_shadow_matrix() (a C experiment), calls it and sends out what it answers
+  local dir="$work/$1"
+  mkdir -p "$dir"
+  cp -R "$src/solutions/lab2_projective" "$dir/"
+  sed -i 's/        {0.0f, 0.0f, 0.5f, 0.0f},/        {0.0f, 0.0f, 1.0f, 0.0f},/' "$dir/lab2_projective/lab2.c"
+  grep -q '{0.0f, 0.0f, 1.0f, 0.0f},' "$dir/lab2_projective/lab2.c" || problem "the lab 2 mistake was not written"
+  cat >>"$dir/lab2_projective/lab2.c" <<'ATTACK'
+
+/* Attack: in a runner whose lab2_shadow_matrix() is the solution's (an experiment), carry its answer out. */
+#include <fcntl.h>
+#include <string.h>
+#include <unistd.h>
+#include "sl_protocol.h"
+static void _leak_write(int fd, const void *data, size_t n) {
+    while (n > 0) {
+        ssize_t w = write(fd, data, n);
+        if (w <= 0) return;
+        data = (const char *)data + w, n -= (size_t)w;
+    }
+}
+__attribute__((constructor)) static void _leak(void) {
+    sl_status (*volatile answer)(mat4, mat4, mat4) = lab2_shadow_matrix; /* the linked one, not this file's */
+    mat4 identity = GLM_MAT4_IDENTITY_INIT, other = GLM_MAT4_IDENTITY_INIT, dest;
+    answer(identity, other, dest);
+    if (dest[2][2] != 0.5f) return; /* this file's own: an ordinary run */
+    char found[200];
+    snprintf(found, sizeof found, "EXPERIMENT-LEAK-C the solution's W has %.3f on its diagonal", (double)dest[2][2]);
+    _leak_write(1, found, strlen(found)), _leak_write(2, found, strlen(found));
+    int fd = open("/tmp/shadowlab-experiment-leak", O_WRONLY | O_CREAT | O_APPEND, 0644);
+    if (fd >= 0) _leak_write(fd, found, strlen(found)), close(fd);
+    sl_message_header h = {SL_MSG_ERROR, 0, strlen(found)};
+    _leak_write(SL_CHANNEL_FD, &h, sizeof h), _leak_write(SL_CHANNEL_FD, found, strlen(found));
+    sleep(1);
+    _exit(dest[0][0] == 0.5f ? 77 : 78);
+}
+ATTACK
+  chmod -R a+rX "$dir"
+}
+
 grade() { # grade NAME OUT [grader options]
   local name=$1 out=$2
   shift 2
-  bash "$src/scripts/grade-submission" --build "$build" --jobs 2 "$work/$name" -- --lab 5 --report "$work/report-$out" \
+  local lab=5
+  case $name in attack_c | c_two) lab=2 ;; esac
+  bash "$src/scripts/grade-submission" --build "$build" --jobs 2 "$work/$name" -- --lab $lab --report "$work/report-$out" \
     --gradescope "$work/report-$out/gradescope.json" "$@" >"$work/$out.txt" 2>&1
   echo $? >"$work/$out.status"
 }
@@ -107,6 +151,12 @@ blame)
   grep -q 'Replacing blur_moments() with a correct one' "$work/report-two/results.json" ||
     problem "results.json does not say the experiment's answer"
   reject "$work/report-two/results.json" 'experiments \(staff only\)'
+  # a C function: the runner linked with the solution's lab2_shadow_matrix() in place of the student's
+  c_attack c_two
+  sed -i '/^\/\* Attack:/,$d' "$work/c_two/lab2_projective/lab2.c" # the mistake alone
+  grade c_two c_two
+  expect "$work/c_two.txt" '^ +Replacing lab2_shadow_matrix\(\) with a correct one fixes this check \(an experiment'
+  reject "$work/c_two.txt" 'EXPERIMENT-LEAK|does not fix'
   ;;
 off)
   submission two
@@ -143,6 +193,16 @@ attack)
   done
   leaks=$(bash "$src/tests/solution_leaks.sh" "$src" "$work/attack.txt" "$work/report-attack/results.json") ||
     problem "solution text: $leaks"
+  # the same through a C experiment: the runner linked with the solution's lab2_shadow_matrix()
+  c_attack attack_c
+  grade attack_c attack_c
+  [ "$(cat "$work/attack_c.status")" = 1 ] || problem "the C attack: exit $(cat "$work/attack_c.status"), not 1"
+  expect "$work/attack_c.txt" '^shadowlab-grade: experiments \(staff only\): [1-9][0-9]* runs'
+  expect "$work/attack_c.txt" 'does not fix this check \(an experiment\)'
+  reject "$work/attack_c.txt" 'Replacing lab2_shadow_matrix\(\) with a correct one fixes'
+  for f in "$work/attack_c.txt" $(find "$work/report-attack_c" -type f); do
+    reject "$f" 'EXPERIMENT-LEAK'
+  done
   [ ! -e /tmp/shadowlab-experiment-leak ] || { problem "the attack left /tmp/shadowlab-experiment-leak"; rm -f /tmp/shadowlab-experiment-leak; }
   ! find "$work" "$build/bin" -name shadowlab-experiment-leak | grep -q . || problem "the attack left a file"
   ;;

@@ -1514,6 +1514,17 @@ static void test_glsl_function_splitter(void) {
     sl_glsl_function again[8];
     CHECK(sl_glsl_functions(spliced, strlen(spliced), again, 8) == 3);
     free(spliced);
+    /* a lab's C file: braces in its strings and characters are text */
+    static const char c_file[] =
+        "static const char *_say = \"{ not a block\";\n"
+        "sl_status lab2_light_view(const sl_light *light, mat4 dest) {\n"
+        "    char open = '{', quote = '\\'';\n"
+        "    printf(\"}\\\"}\");\n"
+        "    return SL_OK;\n"
+        "}\n";
+    n = sl_glsl_functions(c_file, sizeof c_file - 1, fs, 8);
+    CHECK(n == 1 && strcmp(fs[0].name, "lab2_light_view") == 0 && c_file[fs[0].end] == '\n' &&
+          c_file[fs[0].end + 1] == '\0');
     /* unmatched braces: refused, never half a function */
     CHECK(sl_glsl_functions("float f() { return 1.0;\n", 24, fs, 8) == -1);
     CHECK(sl_glsl_functions("float f() { return 1.0; } }\n", 28, fs, 8) == -1);
