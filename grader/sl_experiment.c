@@ -438,7 +438,8 @@ void sl_experiment_lead(const sl_experiment_verdict *v, char *out, size_t n) {
     switch (v->outcome) {
     case SL_EXPERIMENT_SINGLE:
         snprintf(out, n, "Replacing %s with a correct one fixes this check (an experiment: the case was run again with "
-                         "the solution's %s in place of yours, everything else yours): the mistake is in %s",
+                         "the solution's %s in place of yours, everything else yours): look for the mistake in %s "
+                         "first",
                  v->functions[0], v->functions[0], v->functions[0]);
         break;
     case SL_EXPERIMENT_PAIR:
