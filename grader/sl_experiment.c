@@ -284,6 +284,7 @@ typedef struct _sl_lab_run {
     int lab;
     int tree_count;
     bool incomplete; /* an experiment could not be made: no claim rests on "none fixes it" */
+    char trees[1100]; /* the experiments' copies of the labs tree: a folder others cannot list */
 } _sl_lab_run;
 
 static bool _sl_within_budget(_sl_lab_run *L, int runs) {
@@ -321,7 +322,7 @@ static bool _sl_try(_sl_lab_run *L, const _sl_candidate *const *set, int n) {
     if (cases == 0) return true;
     if (!_sl_within_budget(L, cases)) return false;
     char tree[1200];
-    snprintf(tree, sizeof tree, "%s/lab%d-%d", g->work_dir, lab, L->tree_count++);
+    snprintf(tree, sizeof tree, "%s/lab%d-%d", L->trees, lab, L->tree_count++);
     const sl_runner_setup *base = &g->run->setups[lab];
     bool made = _sl_copy_tree(base->labs_tree, tree, 0);
     bool any_c = false;
@@ -333,6 +334,7 @@ static bool _sl_try(_sl_lab_run *L, const _sl_candidate *const *set, int n) {
     if (made && any_c) made = g->builder && _sl_build_runner(g->builder, lab, set, n, runner, sizeof runner);
     if (!made) { /* an experiment that could not be made answers nothing */
         L->incomplete = true;
+        L->cost->unmade++;
         return true;
     }
     sl_run_options run = *g->run;
@@ -383,6 +385,10 @@ void sl_experiments_run(const sl_experiment_grade *g, const sl_experiment_budget
                         sl_experiment_verdict *verdicts, sl_experiment_cost *cost, volatile int *stop) {
     memset(cost, 0, sizeof *cost);
     _sl_lab_run L = {.g = g, .budget = budget, .verdicts = verdicts, .cost = cost, .stop = stop, .start = _sl_now()};
+    /* Runners below the namespaces sandbox see the file system: a copy that holds a solution function
+     * is reached by its own runner's path alone, in a folder no one else can list. */
+    snprintf(L.trees, sizeof L.trees, "%s/experiments-XXXXXX", g->work_dir);
+    if (!mkdtemp(L.trees) || chmod(L.trees, 0711) != 0) L.trees[0] = '\0';
     for (int i = 0; i < g->count; i++)
         for (int k = 0; k < SL_CASE_MAX_CHECKS; k++) verdicts[i * SL_CASE_MAX_CHECKS + k] = (sl_experiment_verdict){0};
     for (int lab = 1; lab <= SL_LAB_COUNT; lab++) {
@@ -397,6 +403,10 @@ void sl_experiments_run(const sl_experiment_grade *g, const sl_experiment_budget
                 }
         }
         if (open == 0) continue; /* a lab without failures runs no experiment */
+        if (!L.trees[0]) { /* nowhere to make an experiment: the probes' ranking */
+            cost->unmade++;
+            continue;
+        }
         cost->checks += open;
         static _sl_candidate candidates[SL_EXPERIMENT_MAX_FUNCTIONS];
         int n = _sl_candidates(g->graded_tree, g->solutions_tree, g->stubs_tree, lab, candidates,

@@ -42,6 +42,7 @@ typedef struct sl_experiment_cost {
     int checks;      /* failed checks experimented on */
     int runs;        /* case runs */
     int functions;   /* functions that differ from the solution's, over the labs tried */
+    int unmade;      /* experiments that could not be made (a copy, a link): they answered nothing */
     double seconds;
     bool budget_spent;
 } sl_experiment_cost;

@@ -539,10 +539,12 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         rep.seconds = _sl_monotonic_now() - start - experiment_cost.seconds;
         if (experiments)
             fprintf(stderr, "shadowlab-grade: experiments (staff only): %d runs for %d failed checks (%d functions "
-                            "differing from the solutions'), %.0f s%s\n", experiment_cost.runs, experiment_cost.checks,
+                            "differing from the solutions'), %.0f s%s%s\n", experiment_cost.runs, experiment_cost.checks,
                     experiment_cost.functions, experiment_cost.seconds,
                     experiment_cost.budget_spent ? "; the budget ran out: the checks not answered keep the probes' "
-                                                   "ranking" : "");
+                                                   "ranking" : "",
+                    experiment_cost.unmade ? "; some experiments could not be made (a copy of the lab or a runner's "
+                                             "link failed): their checks keep the probes' ranking" : "");
         printf("shadowlab-grade: %s labs (%s), %d cases%s\n", rep.labs_kind, rep.labs_dir, count,
                o.isolate ? ", each lab isolated (the solutions stand in for the labs it builds on, the handout's "
                               "stubs for the others)" : "");
