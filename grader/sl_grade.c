@@ -424,6 +424,22 @@ static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_resul
                         sl_check_result *out) {
     char symptom[sizeof out->message], lead[1200];
     snprintf(symptom, sizeof symptom, "%s", out->message);
+    /* An experiment's answer is evidence no probe gives: it leads alone, and no function
+     * it did not find fixing this check is blamed beside it. */
+    if (!out->settled && context && context->experiment_lead && context->experiment_lead[0]) {
+        size_t len = strlen(symptom);
+        bool ends_sentence = len > 0 && strchr(".?!", symptom[len - 1]) != NULL;
+        snprintf(out->message, sizeof out->message, "%s. What the check measured: %s%s", context->experiment_lead,
+                 symptom, ends_sentence ? "" : ".");
+        sl_utf8_trim(out->message);
+        sl_utf8_copy(out->summary, sizeof out->summary, context->experiment_lead);
+        out->cause_kind = NULL;
+        out->cause_function[0] = '\0';
+        if (context->experiment_function && context->experiment_function[0])
+            sl_diag_set_cause(out, context->experiment_function, SL_CAUSE_WRONG);
+        out->cause[0] = '\0';
+        return;
+    }
     bool root = !out->settled && _sl_root_cause(c, k, context, out->symptoms, lead, sizeof lead, out);
     char dropped[64] = "";
     if (out->cause[0] && out->blamed[0] && !_sl_blame_allowed(c, k, context, out->blamed, out->symptoms)) {

@@ -42,6 +42,10 @@ typedef struct sl_grade_context {
     const sl_lab_failure *lab_failures; /* the earlier labs' failed checks, in lab order; NULL: unknown */
     int lab_failure_count;
     bool isolated;  /* --isolate: the solutions stand in for the other labs, whose failures do not show here */
+    /* Staff grading's experiment on this check (sl_experiment.h), when it answered: its lead
+     * replaces the probes' lead and candidates; the function it names (none: ""), the cause. */
+    const char *experiment_lead;
+    const char *experiment_function;
 } sl_grade_context;
 
 /* Grades one check; context may be NULL (nothing known besides this check). */

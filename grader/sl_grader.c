@@ -20,6 +20,7 @@
 #include "sl_backend.h"
 #include "sl_files.h"
 #include "sl_grade.h"
+#include "sl_experiment.h"
 #include "sl_gradebook.h"
 #include "sl_roster.h"
 #include "sl_grader_options.h"
@@ -498,12 +499,52 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                         sl_utf8_copy(lf->summary, sizeof lf->summary, cr->summary[0] ? cr->summary : cr->message);
                     }
         }
+        /* Staff grading: each failed check run again with one function of its lab replaced by the
+         * solution's (sl_experiment.h); each run gives one bit, and the checks it answers for are
+         * said again with it. Nothing runs where nothing failed. */
+        sl_experiment_cost experiment_cost = {0};
+        bool experiments = o.isolate && have_solutions && !o.no_experiments && complete;
+        if (experiments) {
+            static sl_experiment_verdict verdicts[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
+            sl_experiment_grade eg = {.cases = cases, .count = count, .graded = graded, .refs = refs, .run = &run,
+                                      .graded_tree = o.labs_dir, .solutions_tree = sl_config_solutions_dir,
+                                      .stubs_tree = sl_config_stubs_dir[0] ? sl_config_stubs_dir : NULL,
+                                      .builder = o.experiment_builder,
+                                      .work_dir = isolation_root};
+            sl_experiment_budget budget = {.seconds = o.experiment_budget > 0 ? o.experiment_budget : 120,
+                                           .max_runs = 120};
+            sl_experiments_run(&eg, &budget, verdicts, &experiment_cost, &_sl_stop);
+            for (int i = 0; i < count; i++)
+                for (int k = 0; k < cases[i].check_count; k++) {
+                    const sl_experiment_verdict *v = &verdicts[i * SL_CASE_MAX_CHECKS + k];
+                    char lead[1200];
+                    sl_experiment_lead(v, lead, sizeof lead);
+                    if (!lead[0]) continue;
+                    sl_image_free(&graded[i].checks[k].diff);
+                    sl_grade_context context = {.earlier = graded[i].checks, .earlier_count = k, .isolated = true,
+                                                .experiment_lead = lead,
+                                                .experiment_function = v->outcome == SL_EXPERIMENT_SINGLE ||
+                                                                               v->outcome == SL_EXPERIMENT_PAIR
+                                                                           ? v->functions[0] : ""};
+                    sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k],
+                                   &context, &graded[i].checks[k]);
+                }
+        }
         /* Each shader's compile error quoted once, at the first check it stopped, in the reports' order. */
         static sl_compile_errors_said said;
         said.count = 0;
         for (int i = 0; i < count; i++)
             for (int k = 0; k < cases[i].check_count; k++) sl_diag_compile_error_once(&graded[i].checks[k], &said);
-        rep.seconds = _sl_monotonic_now() - start;
+        /* the grade's time without the experiments': how long they took is said to staff alone (below) */
+        rep.seconds = _sl_monotonic_now() - start - experiment_cost.seconds;
+        if (experiments)
+            fprintf(stderr, "shadowlab-grade: experiments (staff only): %d runs for %d failed checks (%d functions "
+                            "differing from the solutions'), %.0f s%s%s\n", experiment_cost.runs, experiment_cost.checks,
+                    experiment_cost.functions, experiment_cost.seconds,
+                    experiment_cost.budget_spent ? "; the budget ran out: the checks not answered keep the probes' "
+                                                   "ranking" : "",
+                    experiment_cost.unmade ? "; some experiments could not be made (a copy of the lab or a runner's "
+                                             "link failed): their checks keep the probes' ranking" : "");
         printf("shadowlab-grade: %s labs (%s), %d cases%s\n", rep.labs_kind, rep.labs_dir, count,
                o.isolate ? ", each lab isolated (the solutions stand in for the labs it builds on, the handout's "
                               "stubs for the others)" : "");

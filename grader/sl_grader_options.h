@@ -26,6 +26,11 @@ typedef struct _sl_options {
     uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
     uint32_t stub_labs; /* 1 << lab of each --stub-labs: the handout's stubs, unchanged, neither built nor run */
     bool update, list, isolate, strict, hidden, progress, no_reference_cache;
+    /* staff grading (--isolate with the solutions): a failed check run again with one function
+     * replaced by the solution's (sl_experiment.h); off: the probes' ranking alone */
+    bool no_experiments;
+    double experiment_budget; /* seconds for every experiment of the grade; 0: the default */
+    const char *experiment_builder; /* links a runner with a C function of the solution's (sl_experiment.h) */
     const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
     /* with --gradebook: the LMS's roster, its due date (Moodle), and the grades written back in its format */
     const char *roster, *due, *export_format, *export_path, *assignment;

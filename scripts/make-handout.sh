@@ -47,7 +47,7 @@ mkdir "$stage/$name"
 # staff-only material: solutions (with the benchmark's plain-GL program), wrong
 # variants, attacks, the tests that read the solutions, the handout maker itself
 staff='^(solutions/|tests/variants/|tests/attacks/|\.ci/|scripts/make-handout\.sh$|tests/(attack_util\.h|attack\.sh'
-staff+='|make_attack\.sh|make_variant\.sh|any_tree\.sh|compile_attacks\.sh|solution_leaks\.sh|handout_answers\.sh|handout\.sh)$)'
+staff+='|make_attack\.sh|make_variant\.sh|any_tree\.sh|compile_attacks\.sh|solution_leaks\.sh|handout_answers\.sh|handout\.sh|experiments\.sh)$)'
 git ls-files -z | grep -zvE "$staff" | grep -zvE '^labs/' |
   tar --null -T - -cf - | tar -xf - -C "$stage/$name"
 if [ $labs_from = committed ]; then

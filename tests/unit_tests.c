@@ -20,6 +20,7 @@
 #include "sl_compare.h"
 #include "sl_diag_words.h"
 #include "sl_gl.h"
+#include "sl_glsl_functions.h"
 #include "sl_grade.h"
 #include "sl_hidden.h"
 #include "sl_mesh.h"
@@ -1468,6 +1469,67 @@ static void test_reference_cache_trust(void) {
 
 /* The three --bonus policies on the totals where they differ: a bonus smaller
  * and larger than what was lost, and a full score. */
+/* The splitter experiments splice with: every definition by braces, comments, directives, structs,
+ * interface blocks and prototypes not taken for one; the splice replaces one definition alone. */
+static void test_glsl_function_splitter(void) {
+    static const char student[] =
+        "#version 330 core\n"
+        "#define TAP(o) texture(map, uv + (o)) \\\n   * 1.0\n"
+        "layout(std140) uniform Lights { vec4 position; } lights;\n"
+        "struct Sample { float depth; };\n"
+        "float helper(float x);\n"
+        "// float commented(float x) { return x; }\n"
+        "/* vec2 blocked() { return vec2(0); } */\n"
+        "float helper(float x) { if (x > 0.0) { return x; } return -x; }\n"
+        "\n"
+        "/* the one to fix */\n"
+        "float pcf_grid(sampler2D map, vec2 uv,\n"
+        "               int radius)\n"
+        "{\n"
+        "    return 0.0; // }\n"
+        "}\n"
+        "void main() { gl_FragDepth = helper(1.0); }\n";
+    static const char solution[] =
+        "float pcf_grid(sampler2D map, vec2 uv, int radius) { float s = 0.0; { s += 1.0; } return s; }\n";
+    sl_glsl_function fs[8], gs[8];
+    int n = sl_glsl_functions(student, sizeof student - 1, fs, 8);
+    CHECK(n == 3);
+    if (n != 3) return;
+    CHECK(strcmp(fs[0].name, "helper") == 0 && strcmp(fs[1].name, "pcf_grid") == 0 && strcmp(fs[2].name, "main") == 0);
+    CHECK(strncmp(student + fs[0].start, "float helper(float x) {", 23) == 0);
+    CHECK(student[fs[0].end - 1] == '}' && student[fs[0].end] == '\n');
+    CHECK(strncmp(student + fs[1].start, "float pcf_grid(", 15) == 0); /* its comment is not part of it */
+    CHECK(strncmp(student + fs[1].end - 3, "\n}\n", 3) == 0 || strncmp(student + fs[1].end - 2, "\n}", 2) == 0);
+    CHECK(sl_glsl_find(fs, n, "pcf_grid", 0) == &fs[1] && sl_glsl_find(fs, n, "pcf_grid", 1) == NULL);
+    CHECK(sl_glsl_find(fs, n, "commented", 0) == NULL && sl_glsl_find(fs, n, "blocked", 0) == NULL);
+    int m = sl_glsl_functions(solution, sizeof solution - 1, gs, 8);
+    CHECK(m == 1);
+    if (m != 1) return;
+    char *spliced = sl_glsl_splice(student, sizeof student - 1, &fs[1], solution, &gs[0]);
+    CHECK(spliced != NULL);
+    if (!spliced) return;
+    CHECK(strstr(spliced, "return 0.0;") == NULL && strstr(spliced, "s += 1.0;") != NULL);
+    CHECK(strstr(spliced, "/* the one to fix */\nfloat pcf_grid(sampler2D map, vec2 uv, int radius) { float s") != NULL);
+    CHECK(strstr(spliced, "float helper(float x) { if") != NULL && strstr(spliced, "void main() { gl_FragDepth") != NULL);
+    sl_glsl_function again[8];
+    CHECK(sl_glsl_functions(spliced, strlen(spliced), again, 8) == 3);
+    free(spliced);
+    /* a lab's C file: braces in its strings and characters are text */
+    static const char c_file[] =
+        "static const char *_say = \"{ not a block\";\n"
+        "sl_status lab2_light_view(const sl_light *light, mat4 dest) {\n"
+        "    char open = '{', quote = '\\'';\n"
+        "    printf(\"}\\\"}\");\n"
+        "    return SL_OK;\n"
+        "}\n";
+    n = sl_glsl_functions(c_file, sizeof c_file - 1, fs, 8);
+    CHECK(n == 1 && strcmp(fs[0].name, "lab2_light_view") == 0 && c_file[fs[0].end] == '\n' &&
+          c_file[fs[0].end + 1] == '\0');
+    /* unmatched braces: refused, never half a function */
+    CHECK(sl_glsl_functions("float f() { return 1.0;\n", 24, fs, 8) == -1);
+    CHECK(sl_glsl_functions("float f() { return 1.0; } }\n", 28, fs, 8) == -1);
+}
+
 static void test_bonus_policies(void) {
     CHECK(sl_bonus_total(SL_BONUS_APART, 8, 10, 3) == 8);
     CHECK(sl_bonus_total(SL_BONUS_FILL, 8, 10, 1) == 9);
@@ -1519,6 +1581,7 @@ int main(int argc, char **argv) {
         {"text_normalise_and_check", test_text_normalise_and_check},
         {"reference_cache_trust", test_reference_cache_trust},
         {"bonus_policies", test_bonus_policies},
+        {"glsl_function_splitter", test_glsl_function_splitter},
     };
     snprintf(tmp_dir, sizeof tmp_dir, "/tmp/sl_unit_XXXXXX");
     if (!mkdtemp(tmp_dir)) return 2;
