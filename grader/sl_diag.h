@@ -140,4 +140,11 @@ int sl_diag_function_lab(const char *function);
 /* A GL enum's name ("GL_CLAMP_TO_EDGE"), "unknown GL enum" for others. */
 const char *sl_diag_enum_name(unsigned value);
 
+/* Where the graded code and the handout's stubs are (set once per grade), for a diagnosis that
+ * reads a function's text: whether a function that answers as its stub does is still the stub. */
+void sl_diag_set_sources(const char *graded_tree, const char *stubs_tree);
+/* Whether `function`'s definition in `file` (a path under the labs tree) is the handout's, up to
+ * comments and white space: 1 it is, 0 it was written, -1 unknown (no sources set, a file missing). */
+int sl_diag_still_the_stub(const char *file, const char *function);
+
 #endif

@@ -19,7 +19,6 @@
 #include "sl_grade.h"
 #include "sl_params.h"
 
-#define _SL_MAX_FILE (1u << 20)
 #define _SL_PAIR_CANDIDATES 6 /* pairs among at most this many functions: 15 pairs */
 
 typedef struct _sl_candidate {
@@ -37,22 +36,6 @@ static double _sl_now(void) {
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
-static char *_sl_read(const char *path, size_t *size) {
-    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
-    if (fd < 0) return NULL;
-    char *text = malloc(_SL_MAX_FILE + 1);
-    size_t used = 0;
-    ssize_t got = 0;
-    while (text && used < _SL_MAX_FILE && (got = read(fd, text + used, _SL_MAX_FILE - used)) > 0) used += (size_t)got;
-    close(fd);
-    if (!text || got < 0 || used >= _SL_MAX_FILE) {
-        free(text);
-        return NULL;
-    }
-    text[used] = '\0';
-    *size = used;
-    return text;
-}
 
 static bool _sl_write(const char *path, const char *text) {
     unlink(path);
@@ -88,7 +71,7 @@ static bool _sl_copy_tree(const char *from, const char *to, int depth) {
             ok = _sl_copy_tree(src, dst, depth + 1);
         } else if (S_ISREG(st.st_mode)) {
             size_t size = 0;
-            char *text = _sl_read(src, &size);
+            char *text = sl_glsl_read_source(src, &size);
             ok = text && strlen(text) == size && _sl_write(dst, text);
             free(text);
         }
@@ -136,11 +119,11 @@ static int _sl_candidates(const char *graded_tree, const char *solutions_tree, c
         char path[1600];
         size_t solution_size = 0, student_size = 0, stub_size = 0;
         snprintf(path, sizeof path, "%s/%s/shaders/%s", solutions_tree, folder, names[f]);
-        char *solution = _sl_read(path, &solution_size);
+        char *solution = sl_glsl_read_source(path, &solution_size);
         snprintf(path, sizeof path, "%s/%s/shaders/%s", graded_tree, folder, names[f]);
-        char *student = _sl_read(path, &student_size);
+        char *student = sl_glsl_read_source(path, &student_size);
         snprintf(path, sizeof path, "%s/%s/shaders/%s", stubs_tree, folder, names[f]);
-        char *stub = stubs_tree ? _sl_read(path, &stub_size) : NULL;
+        char *stub = stubs_tree ? sl_glsl_read_source(path, &stub_size) : NULL;
         int n = solution ? sl_glsl_functions(solution, solution_size, theirs, 128) : -1;
         int m = student ? sl_glsl_functions(student, student_size, ours, 128) : -1;
         int o = stub ? sl_glsl_functions(stub, stub_size, stubs, 128) : -1;
@@ -181,11 +164,11 @@ static int _sl_c_candidates(const char *graded_tree, const char *solutions_tree,
     snprintf(file, sizeof file, "lab%d.c", lab);
     size_t solution_size = 0, student_size = 0, stub_size = 0;
     snprintf(path, sizeof path, "%s/%s/%s", solutions_tree, folder, file);
-    char *solution = _sl_read(path, &solution_size);
+    char *solution = sl_glsl_read_source(path, &solution_size);
     snprintf(path, sizeof path, "%s/%s/%s", graded_tree, folder, file);
-    char *student = _sl_read(path, &student_size);
+    char *student = sl_glsl_read_source(path, &student_size);
     snprintf(path, sizeof path, "%s/%s/%s", stubs_tree, folder, file);
-    char *stub = stubs_tree ? _sl_read(path, &stub_size) : NULL;
+    char *stub = stubs_tree ? sl_glsl_read_source(path, &stub_size) : NULL;
     static sl_glsl_function theirs[128], ours[128], stubs[128];
     int n = solution ? sl_glsl_functions(solution, solution_size, theirs, 128) : -1;
     int m = student ? sl_glsl_functions(student, student_size, ours, 128) : -1;
@@ -260,7 +243,7 @@ static bool _sl_splice_into(const char *tree, const char *solutions_tree, int la
     size_t solution_size = 0, student_size = 0;
     snprintf(path, sizeof path, "%s/%s/shaders/%s", solutions_tree, folder, c->file);
     snprintf(target, sizeof target, "%s/%s/shaders/%s", tree, folder, c->file);
-    char *solution = _sl_read(path, &solution_size), *student = _sl_read(target, &student_size);
+    char *solution = sl_glsl_read_source(path, &solution_size), *student = sl_glsl_read_source(target, &student_size);
     static sl_glsl_function theirs[128], ours[128];
     int n = solution ? sl_glsl_functions(solution, solution_size, theirs, 128) : -1;
     int m = student ? sl_glsl_functions(student, student_size, ours, 128) : -1;

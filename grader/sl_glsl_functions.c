@@ -1,9 +1,14 @@
 /* sl_glsl_functions: a GLSL function splitter by braces (see the header). */
+#define _POSIX_C_SOURCE 200809L
 #include "sl_glsl_functions.h"
 
 #include <ctype.h>
+#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+#define _SL_MAX_SOURCE (1u << 20)
 
 /* Skips a comment, a preprocessor line or a C string or character literal at text[i], if one starts there;
  * returns where scanning goes on. `line_start`: i begins a line (after spaces). */
@@ -108,4 +113,47 @@ char *sl_glsl_splice(const char *into, size_t into_size, const sl_glsl_function 
     memcpy(text + target->start + piece, into + target->end, into_size - target->end);
     text[size] = '\0';
     return text;
+}
+
+char *sl_glsl_read_source(const char *path, size_t *size) {
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+    if (fd < 0) return NULL;
+    char *text = malloc(_SL_MAX_SOURCE + 1);
+    size_t used = 0;
+    ssize_t got = 0;
+    while (text && used < _SL_MAX_SOURCE && (got = read(fd, text + used, _SL_MAX_SOURCE - used)) > 0)
+        used += (size_t)got;
+    close(fd);
+    if (!text || got < 0 || used >= _SL_MAX_SOURCE) {
+        free(text);
+        return NULL;
+    }
+    text[used] = '\0';
+    *size = used;
+    return text;
+}
+
+/* The next character of a definition that is code (comments and white space skipped), or -1 at its end. */
+static int _sl_next_code(const char *text, size_t end, size_t *i) {
+    while (*i < end) {
+        char ch = text[*i];
+        if (isspace((unsigned char)ch)) {
+            (*i)++;
+        } else if (ch == '/' && *i + 1 < end && (text[*i + 1] == '/' || text[*i + 1] == '*')) {
+            *i = _sl_skip_comment(text, end, *i, false);
+        } else {
+            (*i)++;
+            return (unsigned char)ch;
+        }
+    }
+    return -1;
+}
+
+bool sl_glsl_same_code(const char *a_text, const sl_glsl_function *a, const char *b_text, const sl_glsl_function *b) {
+    size_t i = a->start, j = b->start;
+    for (;;) {
+        int x = _sl_next_code(a_text, a->end, &i), y = _sl_next_code(b_text, b->end, &j);
+        if (x != y) return false;
+        if (x < 0) return true;
+    }
 }

@@ -30,4 +30,11 @@ const sl_glsl_function *sl_glsl_find(const sl_glsl_function *functions, int coun
 char *sl_glsl_splice(const char *into, size_t into_size, const sl_glsl_function *target, const char *from,
                      const sl_glsl_function *source);
 
+/* A source file's text (at most 1 MiB, NUL-terminated), or NULL; *size its length. Symbolic links are
+ * not followed: a graded tree's file is read as the tree holds it. */
+char *sl_glsl_read_source(const char *path, size_t *size);
+
+/* Whether two definitions are the same text up to comments and white space. */
+bool sl_glsl_same_code(const char *a_text, const sl_glsl_function *a, const char *b_text, const sl_glsl_function *b);
+
 #endif

@@ -1,5 +1,6 @@
 #define _GNU_SOURCE
 #include "sl_grader.h"
+#include "sl_diag.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -142,6 +143,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     }
     char err[1500];
     const char *graded_tree = o.update && !technique_update ? sl_config_solutions_dir : o.labs_dir;
+    sl_diag_set_sources(graded_tree, sl_config_stubs_dir[0] ? sl_config_stubs_dir : NULL);
     if (!_sl_check_labs_tree(graded_tree, err, sizeof err)) {
         fprintf(stderr, "shadowlab-grade: --labs-dir: %s\n", err);
         return SL_EXIT_ERROR;

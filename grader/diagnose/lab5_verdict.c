@@ -49,8 +49,11 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
     }
     if (!failing) return -1;
     if (as_stub == failing) {
-        snprintf(text, n, "not implemented: it returns the texel at uv unblurred, as the stub does — the weighted sum "
-                          "of 2 * radius + 1 texels along direction");
+        /* "not implemented" only of the stub as handed out: written code that blurs nothing is told so */
+        snprintf(text, n, "%s the texel at uv unblurred, as the stub does — the weighted sum of 2 * radius + 1 texels "
+                          "along direction",
+                 sl_diag_still_the_stub(v->f->file, v->f->name) == 0 ? "it is written, but returns"
+                                                                      : "not implemented: it returns");
         return first;
     }
     /* a flat map stays flat whatever the kernel: what it gives there is the sum of the weights */
