@@ -317,10 +317,19 @@ static bool _sl_passes_depart(const sl_case *c, const sl_case_result *r, sl_chec
             sl_diag_cause_in(out, "blur_moments", "blur_moments() steps along `direction` (x for (1, 0)) (TODO(lab5.5) in "
                              "labs/lab5_vsm/shaders/blur.glsl)");
         } else {
-            sl_diag_say(out, "the blur's first (horizontal) pass departs from the Gaussian blur of radius %d along x of "
-                             "its input (the moments pass's output, as captured) on %.0f%% of the texels, by up to %.3g; "
-                             "the passes before it are right",
-                        radius, 100 * off1, largest);
+            /* a narrower or wider kernel: edges along x sharper or softer than the contract's blur of the same input */
+            double sharp = _sl_gradient_energy(&x, 1, 0) / fmax(_sl_gradient_energy(&hm, 1, 0), 1e-12);
+            if (sharp > 1.2 || sharp < 0.83)
+                sl_diag_say(out, "the blur's first (horizontal) pass blurs %s than the Gaussian of radius %d along x of its "
+                                 "input (the moments pass's output, which is right): its edges along x are %.2fx as sharp "
+                                 "as the contract's blur of the same input (it departs on %.0f%% of the texels, by up to "
+                                 "%.3g)",
+                            sharp > 1 ? "less" : "more", radius, sharp, 100 * off1, largest);
+            else
+                sl_diag_say(out, "the blur's first (horizontal) pass departs from the Gaussian blur of radius %d along x "
+                                 "of its input (the moments pass's output, as captured) on %.0f%% of the texels, by up to "
+                                 "%.3g; the passes before it are right",
+                            radius, 100 * off1, largest);
             sl_diag_cause_in(out, "blur_moments", "blur_moments(): sigma = max(float(radius) * 0.5, 0.5), offsets of one "
                              "texel along direction, radius texels each side, weights that sum to 1 (TODO(lab5.5))");
         }
@@ -343,7 +352,8 @@ static bool _sl_passes_depart(const sl_case *c, const sl_case_result *r, sl_chec
                              "labs/lab5_vsm/lab5.c)");
         } else if (_sl_equals(&y, &hx)) {
             sl_diag_say(out, "the first blur pass is right, but the second, asked for direction (0, 1), blurs along x "
-                             "again: its output equals a horizontal blur of the first pass's");
+                             "again: the moments are blurred along x only (its output equals a horizontal blur of the "
+                             "first pass's)");
             sl_diag_cause_in(out, "blur_moments", "blur_moments() steps along `direction`, (0, 1) in the second pass "
                              "(TODO(lab5.5) in labs/lab5_vsm/shaders/blur.glsl)");
         } else if (_sl_equals(&y, &x)) {

@@ -316,6 +316,16 @@ static bool _sl_stored_distance_fit(const sl_case *c, int face, const float *fac
         point.b = 1.0 / far;
         point.share = _sl_fit_share(texels, count, _sl_predict_point, &point);
     }
+    /* a constant (nothing drawn, a cleared face) is no distance: other messages say it */
+    double lowest = INFINITY, highest = -INFINITY;
+    for (long i = 0; i < count; i++) {
+        lowest = fmin(lowest, texels[i].s);
+        highest = fmax(highest, texels[i].s);
+    }
+    if (highest - lowest < 0.01) {
+        said = false;
+        goto done;
+    }
     /* the contract itself holds here: what differs is elsewhere (the geometry a face sees) */
     if (affine.share >= _SL_FIT_SHARE && fabs(affine.a - 1) < 0.01 && fabs(affine.b) < 0.002) goto done;
     double best = fmax(fmax(affine.share, squared.share), fmax(along.share, point.share));
