@@ -165,7 +165,14 @@ void sl_vsm_describe_target(const sl_moments_target *t, double out[SL_MOMENTS_TA
         glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min_filter);
         out[8 + 2 * i] = level1;
         out[9 + 2 * i] = min_filter;
+        if (i == 0) { /* the camera pass magnifies moments[0] near the light: its mag filter */
+            GLint mag_filter = 0;
+            glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &mag_filter);
+            out[18] = mag_filter;
+        }
         glBindTexture(GL_TEXTURE_2D, 0);
     }
+    /* what each blur pass read and drew into: the renderer's record, filled in by the caller */
+    for (int i = 14; i < 18; i++) out[i] = -2;
     while (glGetError() != GL_NO_ERROR) {}
 }

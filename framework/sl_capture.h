@@ -23,8 +23,11 @@ bool sl_capture_cube_face(GLuint cube, int face, sl_image *out, char *err, size_
  * grader checks of the target: framebuffer status, the texture's internal
  * format, width, height, red and green bits, whether it is a float format,
  * the depth attachment's type, then for moments[0] and moments[1] the width of mipmap level 1 (0: none)
- * and the min filter, then framebuffer[1]'s status (0: not a framebuffer), and whether moments[0]
- * is framebuffer[0]'s colour attachment (SL_MOMENTS_TARGET_NUMBERS numbers). */
+ * and the min filter, then framebuffer[1]'s status (0: not a framebuffer), whether moments[0]
+ * is framebuffer[0]'s colour attachment, then for the blur's two passes the moments texture each read
+ * on unit 0 and the framebuffer each drew into (14-17, from sl_frame_info's vsm_blur_read and
+ * vsm_blur_drew: -2 here, the caller fills them in), and moments[0]'s mag filter (18)
+ * (SL_MOMENTS_TARGET_NUMBERS numbers). */
 bool sl_vsm_capture_moments(GLuint texture, sl_image *out, char *err, size_t err_size);
 void sl_vsm_describe_target(const sl_moments_target *t, double out[SL_MOMENTS_TARGET_NUMBERS]);
 

@@ -130,12 +130,16 @@ static uint32_t _sl_check_captures_of_kind(const sl_case *c, const sl_check *k) 
         /* from lab 2 on, acne is told from shadow on the surfaces that face the light */
         /* lab 5: the moments target's format too, the first suspect of a VSM picture that is off */
         /* and the blurred moments, where a target cleared to (0, 0) shows */
+        /* and what each of its passes drew, so a message can say which pass departs first */
         return (1u << SL_CAPTURE_VISIBILITY) | (c->lab >= 2 ? 1u << SL_CAPTURE_LIT_MASK : 0) |
-               (c->lab == 5 ? (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_MOMENTS_BLURRED) : 0);
+               (c->lab == 5 ? (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_MOMENTS_BLURRED) |
+                                  (1u << SL_CAPTURE_MOMENTS_PASSES)
+                            : 0);
     case SL_CHECK_IMAGE: return 1u << SL_CAPTURE_IMAGE;
     case SL_CHECK_PENUMBRA: return 1u << SL_CAPTURE_VISIBILITY;
     case SL_CHECK_MOMENTS: return (1u << SL_CAPTURE_MOMENTS) | (1u << SL_CAPTURE_MOMENTS_TARGET);
-    case SL_CHECK_MOMENTS_BLURRED: return (1u << SL_CAPTURE_MOMENTS_BLURRED) | (1u << SL_CAPTURE_MOMENTS_TARGET);
+    case SL_CHECK_MOMENTS_BLURRED:
+        return (1u << SL_CAPTURE_MOMENTS_BLURRED) | (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_MOMENTS_PASSES);
     case SL_CHECK_BLEEDING:
         return (1u << SL_CAPTURE_VISIBILITY) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED) | (1u << SL_CAPTURE_LIT_MASK) |
                (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_MOMENTS_BLURRED);

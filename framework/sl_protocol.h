@@ -25,7 +25,7 @@
 #include "sl_scene.h"
 
 #define SL_JOB_MAGIC 0x424a4c53u /* "SLJB" */
-#define SL_PROTOCOL_VERSION 3 /* 3: probe tables name their function (sl_probe_table) */
+#define SL_PROTOCOL_VERSION 4 /* 3: probe tables name their function (sl_probe_table); 4: lab 5's passes */
 #define SL_JOB_MAX_FRAMES 16
 #define SL_JOB_MAX_PROBES 8   /* a case's checks: each may be a probe */
 #define SL_CHANNEL_FD 3
@@ -46,6 +46,11 @@ typedef enum sl_capture_kind {
     SL_CAPTURE_MOMENTS_BLURRED, /* image, 2 channels: the moments the camera pass reads, map size */
     SL_CAPTURE_MOMENTS_TARGET,  /* numbers: lab 5's target, as glGet* reports it */
     SL_CAPTURE_VISIBILITY_UNREDUCED, /* image, 1 channel: the visibility without light-bleeding reduction */
+    /* image, 2 channels, map size x 3 map sizes: what each pass of the blurred frame drew, read back from the
+     * framebuffer it drew into right after its draw, stacked top to bottom: the moments pass, the blur's
+     * first (horizontal) pass, its second (vertical) pass; NaN where a pass did not run or drew into no
+     * framebuffer object */
+    SL_CAPTURE_MOMENTS_PASSES,
     SL_CAPTURE_CASCADE_INDEX, /* lab 6: image, 1 channel: the cascade each pixel used (-1: none), camera size */
     SL_CAPTURE_FLICKER,    /* lab 6: image, 1 channel: every frame's visibility, stacked: camera width x height * frames */
     /* lab 7: image, 1 channel: one face of the cube map (face f = SL_CAPTURE_CUBE_FACE + f), face size */
@@ -65,7 +70,7 @@ int sl_capture_parse(const char *name);
 
 #define SL_FBO_NUMBERS 10     /* see sl_runner.c: status, attachment type, ..., requested size */
 #define SL_MATRICES_NUMBERS 48
-#define SL_MOMENTS_TARGET_NUMBERS 14 /* see sl_vsm_describe_target */
+#define SL_MOMENTS_TARGET_NUMBERS 19 /* see sl_vsm_describe_target */
 #define SL_PATH_NUMBERS 2           /* the highest lab whose code drew the last frame; lab 7's cube map drawn layered (1) */
 
 typedef struct sl_job {

@@ -73,6 +73,10 @@ typedef struct sl_frame_info {
     sl_shadow_map shadow_map;    /* lab 1's map, for inspection */
     bool moments_ready;          /* lab 5: moments drawn, blurred and filtered this frame */
     sl_moments_target moments_target; /* lab 5's targets, for inspection */
+    /* lab 5: which moments texture (0, 1; -1 another, -2 none) each blur pass read on unit 0, and which
+     * framebuffer it drew into; with keep_pass_outputs, what each pass drew (SL_CAPTURE_MOMENTS_PASSES) */
+    int vsm_blur_read[2], vsm_blur_drew[2];
+    const sl_image *vsm_passes;
     /* lab 6 (sl_lab6_cascades.c): the cascades of this frame */
     bool cascades_ready;         /* lab 6's functions and lab 2's shadow matrix ran, the layers are drawn */
     int cascade_count;
@@ -147,6 +151,8 @@ typedef struct sl_renderer {
     /* lab 1's light camera, where the grader gave it (sl_renderer_set_light_camera) */
     bool light_camera_given;
     mat4 light_camera_view, light_camera_projection;
+    /* read back each pass's output right after its draw (lab 5's passes: the grader's runner asks) */
+    bool keep_pass_outputs;
 } sl_renderer;
 
 /* Called before each call into lab code with the function's name, so a crash

@@ -174,7 +174,8 @@ static void _sl_capture_lab5(sl_renderer *r, const sl_job *job, sl_scene *scene,
     char err[512];
     const sl_frame_info *info = sl_renderer_info(r);
     uint32_t lab5 = (1u << SL_CAPTURE_MOMENTS) | (1u << SL_CAPTURE_MOMENTS_BLURRED) |
-                    (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED);
+                    (1u << SL_CAPTURE_MOMENTS_TARGET) | (1u << SL_CAPTURE_VISIBILITY_UNREDUCED) |
+                    (1u << SL_CAPTURE_MOMENTS_PASSES);
     if (!(job->captures & lab5)) return;
     sl_render_params q = *p;
     q.output = SL_OUTPUT_VISIBILITY;
@@ -182,7 +183,11 @@ static void _sl_capture_lab5(sl_renderer *r, const sl_job *job, sl_scene *scene,
         int kind = pass == 0 ? SL_CAPTURE_MOMENTS : SL_CAPTURE_MOMENTS_BLURRED;
         q.vsm.blur_radius = pass == 0 ? 0 : p->vsm.blur_radius; /* 0: the moments pass alone */
         if (pass == 0 && !_sl_wants(job, kind)) continue;
+        r->keep_pass_outputs = pass == 1 && _sl_wants(job, SL_CAPTURE_MOMENTS_PASSES);
         sl_renderer_draw(r, scene, &q, fb, job->width, job->height);
+        r->keep_pass_outputs = false;
+        if (pass == 1 && _sl_wants(job, SL_CAPTURE_MOMENTS_PASSES) && info->vsm_passes && info->vsm_passes->data)
+            _sl_send_image(SL_CAPTURE_MOMENTS_PASSES, info->vsm_passes);
         if (!_sl_wants(job, kind) || !info->moments_ready) continue;
         sl_image img;
         if (sl_vsm_capture_moments(info->moments_target.moments[0], &img, err, sizeof err)) {
@@ -195,6 +200,10 @@ static void _sl_capture_lab5(sl_renderer *r, const sl_job *job, sl_scene *scene,
     if (_sl_wants(job, SL_CAPTURE_MOMENTS_TARGET) && info->moments_target.framebuffer[0] + info->moments_target.moments[0]) {
         double v[SL_MOMENTS_TARGET_NUMBERS];
         sl_vsm_describe_target(&info->moments_target, v);
+        for (int i = 0; i < 2; i++) {
+            v[14 + i] = info->vsm_blur_read[i];
+            v[16 + i] = info->vsm_blur_drew[i];
+        }
         _sl_send_numbers(SL_CAPTURE_MOMENTS_TARGET, v, SL_MOMENTS_TARGET_NUMBERS);
     }
     if (_sl_wants(job, SL_CAPTURE_VISIBILITY_UNREDUCED)) {

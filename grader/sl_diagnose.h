@@ -140,7 +140,7 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
                           sl_check_result *out);
 /* The moments target, when it is the cause (said in out): its format, a clear to (0, 0), its mipmaps
  * (made for the wrong texture, or not read); false when it is fine. */
-bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out);
+bool sl_diagnose_lab5_format(const sl_case *c, const sl_case_result *r, sl_check_result *out);
 bool sl_diagnose_lab5_visibility(const sl_case *c, const sl_image *student, const sl_image *reference,
                                  const sl_image *lit_mask, sl_check_result *out);
 /* ---- lab 6 (grader/diagnose/lab6.c) ---- */
@@ -219,7 +219,7 @@ typedef struct sl_lab_diagnoses {
                        sl_check_result *out);
     /* Before a failed visibility check of the lab's cases is measured: a capture that already explains it
      * (said in out), or false. */
-    bool (*capture_explains)(const sl_case_result *r, sl_check_result *out);
+    bool (*capture_explains)(const sl_case *c, const sl_case_result *r, sl_check_result *out);
     /* sl_case_runs and sl_case_path for the lab's cases (runs.c); a row's settings (sl_case_meets_row). */
     bool (*case_runs)(const sl_case *c, const sl_check *k, const char *function);
     void (*case_path)(const sl_case *c, const sl_case_result *r, char *out, size_t n);

@@ -227,7 +227,7 @@ static void _sl_compare_image(const sl_case *c, const sl_check *k, const sl_case
     if (sl_diag_explain_missing(c, r, out)) return; /* the hint is about a mistake, not a missing stub */
     if (out->message[0]) return;                      /* only the mean is off: said */
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(c->lab);
-    if (k->kind == SL_CHECK_VISIBILITY && lab && lab->capture_explains && lab->capture_explains(r, out)) return;
+    if (k->kind == SL_CHECK_VISIBILITY && lab && lab->capture_explains && lab->capture_explains(c, r, out)) return;
     if (k->kind == SL_CHECK_VISIBILITY) {
         _sl_check_visibility(c, k, s, t, lit_mask, &st, out);
     } else {

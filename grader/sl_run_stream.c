@@ -51,7 +51,8 @@ static uint64_t _sl_payload_limit(const _sl_stream *s, uint32_t type, int captur
     case SL_MSG_NUMBERS: return SL_MSG_NUMBERS_MAX * sizeof(double);
     case SL_MSG_RENDER_TIME: return sizeof(double);
     case SL_MSG_IMAGE:
-        if (capture == SL_CAPTURE_DEPTH_MAP || capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED)
+        if (capture == SL_CAPTURE_DEPTH_MAP || capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED ||
+            capture == SL_CAPTURE_MOMENTS_PASSES)
             return SL_IMAGE_HEADER_BYTES + 2 * (uint64_t)SL_IMAGE_SIDE_MAX * SL_IMAGE_SIDE_MAX * sizeof(float);
         if (capture == SL_CAPTURE_FLICKER)
             return SL_IMAGE_HEADER_BYTES + (uint64_t)s->c->width * (uint64_t)s->c->height *
@@ -124,7 +125,8 @@ static void _sl_take_image(_sl_stream *s, int capture, const char *payload, uint
         return;
     }
     memcpy(dims, payload, sizeof dims);
-    bool moments = capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED;
+    bool moments = capture == SL_CAPTURE_MOMENTS || capture == SL_CAPTURE_MOMENTS_BLURRED ||
+                   capture == SL_CAPTURE_MOMENTS_PASSES;
     bool cube_face = capture >= SL_CAPTURE_CUBE_FACE && capture <= SL_CAPTURE_CUBE_FACE_LAST;
     bool camera = capture != SL_CAPTURE_DEPTH_MAP && !moments && !cube_face;
     int channels = capture == SL_CAPTURE_IMAGE ? 3 : moments ? 2 : 1;

@@ -114,8 +114,11 @@ static double _sl_zero_share(const sl_image *m) {
     return n ? (double)zero / (double)n : 0;
 }
 
+static bool _sl_moments_pass_cleared_to_zero(const sl_case_result *r);
+
 static bool _sl_cleared_to_zero(const sl_case_result *r, sl_check_result *out) {
     const sl_capture *m = sl_result_capture(r, "moments_blurred");
+    if (!_sl_moments_pass_cleared_to_zero(r)) return false; /* the zeros came later: a blur pass's */
     if (!m || !m->image.data || m->image.channels != 2) return false;
     double zero = _sl_zero_share(&m->image);
     if (zero < 0.02) return false;
@@ -149,6 +152,23 @@ static bool _sl_mipmaps_ok(const sl_case_result *r, sl_check_result *out) {
                            "labs/lab5_vsm/lab5.c), after the blur wrote it");
         return false;
     }
+    if (level1[0] > 0 && (filter0 == GL_NEAREST_MIPMAP_LINEAR || filter0 == GL_NEAREST_MIPMAP_NEAREST)) {
+        sl_diag_say(out, "moments[0] is minified with %s: within each mipmap level the lookup takes the one nearest "
+                         "texel, so its result steps at texel edges where a filtered shadow must blend",
+                    sl_gl_enum_name((GLenum)filter0));
+        sl_diag_cause_in(out, "lab5_filter_moments", "GL_LINEAR_MIPMAP_LINEAR as moments[0]'s min filter in "
+                         "lab5_filter_moments(): linear within a level and between levels (TODO(lab5.6) in "
+                         "labs/lab5_vsm/lab5.c)");
+        return false;
+    }
+    if (v[18] == GL_NEAREST) {
+        sl_diag_say(out, "moments[0] is magnified with GL_NEAREST: where a texel covers several pixels, the lookup's "
+                         "result steps at texel edges instead of blending between texels");
+        sl_diag_cause_in(out, "lab5_filter_moments", "GL_LINEAR as moments[0]'s GL_TEXTURE_MAG_FILTER in "
+                         "lab5_filter_moments(), which sets how the camera pass samples the moments (TODO(lab5.6) in "
+                         "labs/lab5_vsm/lab5.c)");
+        return false;
+    }
     if (level1[0] > 0 && filter0 != 0 && !mipmapped) {
         sl_diag_say(out, "moments[0] has mipmaps but is read with %s: distant receivers read level 0 alone and alias",
                     sl_gl_enum_name((GLenum)filter0));
@@ -159,10 +179,251 @@ static bool _sl_mipmaps_ok(const sl_case_result *r, sl_check_result *out) {
     return true;
 }
 
-bool sl_diagnose_lab5_format(const sl_case_result *r, sl_check_result *out) {
+/* Whether the moments pass's own output (where it was captured) holds (0, 0) on more than 2% of the map:
+ * without it, zeros in the blurred moments cannot be the clear's. True when it was not captured. */
+static bool _sl_moments_pass_cleared_to_zero(const sl_case_result *r) {
+    const sl_capture *cap = sl_result_capture(r, sl_capture_name(SL_CAPTURE_MOMENTS_PASSES));
+    if (!cap || !cap->image.data || cap->image.channels != 2 || cap->image.height != 3 * cap->image.width) return true;
+    sl_image m = {cap->image.width, cap->image.width, 2, cap->image.data};
+    return isnan(m.data[0]) || _sl_zero_share(&m) >= 0.02;
+}
+
+/* ---- the passes, one after the other ----
+ *
+ * The runner reads back what each pass drew (SL_CAPTURE_MOMENTS_PASSES): the moments pass, the blur's
+ * horizontal pass, its vertical pass. Each blur pass is compared with what the contract computes from
+ * the student's OWN previous stage (README: a Gaussian with sigma = radius / 2, radius texels each side,
+ * the edge texels repeated), so an earlier pass's mistake is never blamed on a later one. */
+
+/* Stage `stage` of the stacked capture, as an image that borrows its rows. */
+static sl_image _sl_stage(const sl_image *passes, int stage) {
+    int size = passes->width;
+    return (sl_image){size, size, 2, passes->data + (size_t)stage * size * size * 2};
+}
+
+static bool _sl_stage_drawn(const sl_image *m) {
+    long n = (long)m->width * m->height;
+    for (long i = 0; i < n; i++)
+        if (!isnan(m->data[2 * i])) return true;
+    return false;
+}
+
+/* The contract's 1-D blur of `in` along x (dx 1) or y, into a new image. */
+static sl_image _sl_contract_blur(const sl_image *in, int radius, int dx, int dy) {
+    sl_image out = sl_image_alloc(in->width, in->height, 2);
+    if (!out.data) return out;
+    double sigma = fmax(radius * 0.5, 0.5), weights[2 * 32 + 1], total = 0;
+    for (int i = -radius; i <= radius; i++) total += weights[i + radius] = exp(-(double)(i * i) / (2 * sigma * sigma));
+    for (int y = 0; y < in->height; y++)
+        for (int x = 0; x < in->width; x++)
+            for (int ch = 0; ch < 2; ch++) {
+                double sum = 0;
+                for (int i = -radius; i <= radius; i++) {
+                    int sx = x + i * dx, sy = y + i * dy;
+                    sx = sx < 0 ? 0 : sx >= in->width ? in->width - 1 : sx;
+                    sy = sy < 0 ? 0 : sy >= in->height ? in->height - 1 : sy;
+                    sum += weights[i + radius] * in->data[((long)sy * in->width + sx) * 2 + ch];
+                }
+                out.data[((long)y * in->width + x) * 2 + ch] = (float)(sum / total);
+            }
+    return out;
+}
+
+/* The share of texels where `a` departs from `b` by more than `tolerance` in either moment (NaN departs),
+ * and the largest such difference. */
+static double _sl_departs(const sl_image *a, const sl_image *b, double tolerance, double *largest) {
+    long n = (long)a->width * a->height, off = 0;
+    double worst = 0;
+    for (long i = 0; i < 2 * n; i += 2) {
+        double d = fmax(fabs((double)a->data[i] - b->data[i]), fabs((double)a->data[i + 1] - b->data[i + 1]));
+        if (isnan(d)) d = INFINITY;
+        if (d > tolerance) {
+            off++;
+            if (d > worst) worst = d;
+        }
+    }
+    if (largest) *largest = worst;
+    return n ? (double)off / (double)n : 0;
+}
+
+/* The tolerance of "equals" between two stages: far above float noise, far below a blur's effect. */
+#define _SL_STAGE_TOLERANCE 2e-3
+#define _SL_STAGE_SHARE 0.01
+
+static bool _sl_equals(const sl_image *a, const sl_image *b) {
+    return _sl_departs(a, b, _SL_STAGE_TOLERANCE, NULL) <= _SL_STAGE_SHARE;
+}
+
+static const char *_sl_moments_name(double which) {
+    return which == 0 ? "moments[0]" : which == 1 ? "moments[1]" : which == -1 ? "a texture not of the target"
+                                                                                : "no texture";
+}
+
+static const char *_sl_framebuffer_name(double which) {
+    return which == 0 ? "framebuffer[0]" : which == 1 ? "framebuffer[1]" : which == -1 ? "a framebuffer not of the target"
+                                                                                       : "the default framebuffer";
+}
+
+/* The first of lab 5's passes that departs from what it must compute from its own input, said; false when
+ * every blur pass does what the contract asks of what it read (then the moments pass is what differs). */
+static bool _sl_passes_depart(const sl_case *c, const sl_case_result *r, sl_check_result *out) {
+    const sl_capture *cap = sl_result_capture(r, sl_capture_name(SL_CAPTURE_MOMENTS_PASSES));
+    int radius = c->params.vsm.blur_radius < 32 ? c->params.vsm.blur_radius : 32;
+    if (!cap || !cap->image.data || cap->image.channels != 2 || cap->image.height != 3 * cap->image.width ||
+        radius <= 0 || c->params.vsm_off)
+        return false;
+    const sl_capture *t = sl_result_capture(r, "moments_target");
+    double read[2] = {-3, -3}, drew[2] = {-3, -3}; /* -3: not known */
+    if (t && t->number_count >= SL_MOMENTS_TARGET_NUMBERS)
+        for (int i = 0; i < 2; i++) {
+            read[i] = t->numbers[14 + i];
+            drew[i] = t->numbers[16 + i];
+        }
+    sl_image m = _sl_stage(&cap->image, 0), x = _sl_stage(&cap->image, 1), y = _sl_stage(&cap->image, 2);
+    if (!_sl_stage_drawn(&m)) return false; /* the moments pass drew into no framebuffer object: said elsewhere */
+    static const char *const pass_names[2] = {"first (horizontal)", "second (vertical)"};
+    const sl_image *outputs[2] = {&x, &y};
+    for (int pass = 0; pass < 2; pass++)
+        if (!_sl_stage_drawn(outputs[pass])) {
+            sl_diag_say(out, "the blur's %s pass drew into %s, not one of the moments target's complete framebuffers: "
+                             "nothing it computed reaches the moments", pass_names[pass], _sl_framebuffer_name(drew[pass]));
+            sl_diag_cause_in(out, "lab5_begin_blur_pass", "lab5_begin_blur_pass() binds framebuffer[1] for direction 0 "
+                             "and framebuffer[0] for direction 1 (TODO(lab5.4) in labs/lab5_vsm/lab5.c)");
+            return true;
+        }
+    bool said = false;
+    double largest = 0;
+    sl_image hm = _sl_contract_blur(&m, radius, 1, 0), vm = _sl_contract_blur(&m, radius, 0, 1), vx = {0}, hx = {0};
+    if (!hm.data || !vm.data) goto done;
+    double off1 = _sl_departs(&x, &hm, _SL_STAGE_TOLERANCE, &largest);
+    if (off1 > _SL_STAGE_SHARE) {
+        said = true;
+        if (read[0] != -3 && read[0] != 0) {
+            sl_diag_say(out, "the blur's first (horizontal) pass departs from a blur of the moments pass's output on "
+                             "%.0f%% of the texels: it read %s on unit 0, where the moments pass drew into moments[0]",
+                        100 * off1, _sl_moments_name(read[0]));
+            sl_diag_cause_in(out, "lab5_begin_blur_pass", "for direction 0, lab5_begin_blur_pass() binds moments[0] "
+                             "on GL_TEXTURE0 and draws into framebuffer[1] (TODO(lab5.4) in labs/lab5_vsm/lab5.c)");
+        } else if (_sl_equals(&x, &m)) {
+            sl_diag_say(out, "the blur's first (horizontal) pass leaves its input as it is: its output equals the "
+                             "moments pass's on %.0f%% of the texels, where a blur of radius %d changes %.0f%% of them",
+                        100 * (1 - _sl_departs(&x, &m, _SL_STAGE_TOLERANCE, NULL)), radius,
+                        100 * _sl_departs(&hm, &m, _SL_STAGE_TOLERANCE, NULL));
+            sl_diag_cause_in(out, "blur_moments", "blur_moments() returns the weighted sum of 2 * radius + 1 texels along "
+                             "direction, not the centre texel alone (TODO(lab5.5) in labs/lab5_vsm/shaders/blur.glsl)");
+        } else if (_sl_equals(&x, &vm)) {
+            sl_diag_say(out, "the blur's first pass, asked for direction (1, 0), blurs along y: its output equals a "
+                             "vertical blur of the moments pass's");
+            sl_diag_cause_in(out, "blur_moments", "blur_moments() steps along `direction` (x for (1, 0)) (TODO(lab5.5) in "
+                             "labs/lab5_vsm/shaders/blur.glsl)");
+        } else {
+            /* a narrower or wider kernel: edges along x sharper or softer than the contract's blur of the same input */
+            double sharp = _sl_gradient_energy(&x, 1, 0) / fmax(_sl_gradient_energy(&hm, 1, 0), 1e-12);
+            if (sharp > 1.2 || sharp < 0.83)
+                sl_diag_say(out, "the blur's first (horizontal) pass blurs %s than the Gaussian of radius %d along x of its "
+                                 "input (the moments pass's output, which is right): its edges along x are %.2fx as sharp "
+                                 "as the contract's blur of the same input (it departs on %.0f%% of the texels, by up to "
+                                 "%.3g)",
+                            sharp > 1 ? "less" : "more", radius, sharp, 100 * off1, largest);
+            else
+                sl_diag_say(out, "the blur's first (horizontal) pass departs from the Gaussian blur of radius %d along x "
+                                 "of its input (the moments pass's output, as captured) on %.0f%% of the texels, by up to "
+                                 "%.3g; the passes before it are right",
+                            radius, 100 * off1, largest);
+            sl_diag_cause_in(out, "blur_moments", "blur_moments(): sigma = max(float(radius) * 0.5, 0.5), offsets of one "
+                             "texel along direction, radius texels each side, weights that sum to 1 (TODO(lab5.5))");
+        }
+        goto done;
+    }
+    vx = _sl_contract_blur(&x, radius, 0, 1);
+    hx = _sl_contract_blur(&x, radius, 1, 0);
+    if (!vx.data || !hx.data) goto done;
+    double off2 = _sl_departs(&y, &vx, _SL_STAGE_TOLERANCE, &largest);
+    if (off2 > _SL_STAGE_SHARE) {
+        said = true;
+        bool feedback = read[1] != -3 && read[1] >= 0 && read[1] == drew[1];
+        if (_sl_equals(&y, &vm) && !_sl_equals(&vm, &vx)) {
+            sl_diag_say(out, "the first blur pass is right, but the second blur pass reads the unblurred moments: its "
+                             "output equals a 1-D (vertical) blur of the moments pass's, not of the first pass's output%s%s%s",
+                        read[1] != -3 ? " (it read " : "", read[1] != -3 ? _sl_moments_name(read[1]) : "",
+                        read[1] != -3 ? " on unit 0)" : "");
+            sl_diag_cause_in(out, "lab5_begin_blur_pass", "for direction 1, lab5_begin_blur_pass() binds moments[1], "
+                             "the first pass's output, on GL_TEXTURE0 and draws into framebuffer[0] (TODO(lab5.4) in "
+                             "labs/lab5_vsm/lab5.c)");
+        } else if (_sl_equals(&y, &hx)) {
+            sl_diag_say(out, "the first blur pass is right, but the second, asked for direction (0, 1), blurs along x "
+                             "again: the moments are blurred along x only (its output equals a horizontal blur of the "
+                             "first pass's)");
+            sl_diag_cause_in(out, "blur_moments", "blur_moments() steps along `direction`, (0, 1) in the second pass "
+                             "(TODO(lab5.5) in labs/lab5_vsm/shaders/blur.glsl)");
+        } else if (_sl_equals(&y, &x)) {
+            sl_diag_say(out, "the first blur pass is right, but the second leaves the first's output as it is: no "
+                             "vertical blur");
+            sl_diag_cause_in(out, "blur_moments", "blur_moments() blurs along `direction` in both passes (TODO(lab5.5)), "
+                             "and lab5_begin_blur_pass() runs the second pass from moments[1] into framebuffer[0] "
+                             "(TODO(lab5.4))");
+        } else {
+            /* some texels right, the rest as the target held them before the pass: not written */
+            long n = (long)y.width * y.height, right = 0, kept = 0;
+            const sl_image *before = drew[1] == 0 ? &m : drew[1] == 1 ? &x : NULL;
+            for (long i = 0; i < 2 * n; i += 2) {
+                bool is_right = fabs(y.data[i] - vx.data[i]) <= _SL_STAGE_TOLERANCE &&
+                                fabs(y.data[i + 1] - vx.data[i + 1]) <= _SL_STAGE_TOLERANCE;
+                right += is_right;
+                kept += !is_right && before && fabs(y.data[i] - before->data[i]) <= 1e-6 &&
+                        fabs(y.data[i + 1] - before->data[i + 1]) <= 1e-6;
+            }
+            if (before && kept > n / 100 && right + kept > n * 98 / 100 && !feedback) {
+                sl_diag_say(out, "the first blur pass is right, but the second left %.0f%% of the texels of %s as they "
+                                 "were before it (%s): only the other %.0f%% hold the vertical blur. Those texels were "
+                                 "not written — a test still on from the moments pass (the depth test, with "
+                                 "framebuffer[0]'s depth buffer, keeps every texel whose depth is nearer than the "
+                                 "full-screen triangle's)",
+                            100.0 * kept / n, _sl_framebuffer_name(drew[1]),
+                            drew[1] == 0 ? "the moments pass's output" : "the first pass's output", 100.0 * right / n);
+                sl_diag_cause_in(out, "lab5_begin_blur_pass", "a full-screen pass writes every texel: "
+                                 "lab5_begin_blur_pass() disables the depth test (glDisable(GL_DEPTH_TEST); TODO(lab5.4) "
+                                 "in labs/lab5_vsm/lab5.c)");
+            } else {
+                sl_diag_say(out, "the first blur pass is right, but the second (vertical) departs from the Gaussian "
+                                 "blur of radius %d along y of the first pass's output on %.0f%% of the texels, by up to "
+                                 "%.3g%s",
+                            radius, 100 * off2, largest,
+                            feedback ? "; it reads the texture it draws into (a feedback loop: undefined results)" : "");
+                sl_diag_cause_in(out, feedback ? "lab5_begin_blur_pass" : "blur_moments",
+                                 feedback ? "for direction 1, lab5_begin_blur_pass() binds moments[1] on GL_TEXTURE0 "
+                                            "and draws into framebuffer[0] (TODO(lab5.4))"
+                                          : "blur_moments() along (0, 1): sigma = max(float(radius) * 0.5, 0.5), "
+                                            "offsets of one texel, radius texels each side (TODO(lab5.5))");
+            }
+        }
+        goto done;
+    }
+    const sl_capture *camera = sl_result_capture(r, "moments_blurred");
+    if (camera && camera->image.data && camera->image.width == y.width && camera->image.height == y.height &&
+        camera->image.channels == 2 && !_sl_equals(&camera->image, &y)) {
+        said = true;
+        const char *holds = _sl_equals(&camera->image, &m) ? "the moments pass's output, unblurred"
+                            : _sl_equals(&camera->image, &x) ? "the first blur pass's output, blurred along x only"
+                                                              : "neither blur pass's output";
+        sl_diag_say(out, "both blur passes compute what they must from their inputs, but the second drew into %s, and "
+                         "moments[0], which the camera pass reads, holds %s",
+                    _sl_framebuffer_name(drew[1]), holds);
+        sl_diag_cause_in(out, "lab5_begin_blur_pass", "the second pass (direction 1) draws into framebuffer[0], whose "
+                         "colour attachment is moments[0] (TODO(lab5.4) in labs/lab5_vsm/lab5.c)");
+    }
+done:
+    sl_image_free(&hm);
+    sl_image_free(&vm);
+    sl_image_free(&vx);
+    sl_image_free(&hx);
+    return said;
+}
+
+bool sl_diagnose_lab5_format(const sl_case *c, const sl_case_result *r, sl_check_result *out) {
     /* an incomplete texture or framebuffer leaves (0, 0) too: said before the clear is blamed */
     return !_sl_format_ok(r, out) || !_sl_blur_targets_ok(r, out) || !_sl_mipmaps_ok(r, out) ||
-           _sl_cleared_to_zero(r, out);
+           _sl_cleared_to_zero(r, out) || _sl_passes_depart(c, r, out);
 }
 
 void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
@@ -218,7 +479,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
             empty++;
             zeroed += s->data[2 * i] == 0.0f && s->data[2 * i + 1] == 0.0f;
         }
-    if (empty > n / 100 && zeroed > empty / 2) {
+    if (empty > n / 100 && zeroed > empty / 2 && (!blurred || _sl_moments_pass_cleared_to_zero(r))) {
         sl_diag_say(out, "%.0f%% of the texels where nothing is drawn hold (0, 0), the reference (1, 1): \"an occluder "
                          "at the light\" instead of \"nothing in front\"", 100.0 * (double)zeroed / (double)empty);
         sl_diag_cause_in(out, "lab5_begin_moments_pass", "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1) "
@@ -261,6 +522,7 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
                            "labs/lab5_vsm/shaders/moments.glsl)");
         return;
     }
+    if (blurred && _sl_passes_depart(c, r, out)) return;
     if (blurred && ok[0] + ok[1] < 2) {
         /* a blur lowers the differences between neighbours in its direction: compare both directions' */
         double sharp_x = _sl_gradient_energy(s, 1, 0) / fmax(_sl_gradient_energy(t, 1, 0), 1e-12);
@@ -347,7 +609,7 @@ void sl_diagnose_bleeding(const sl_case *c, const sl_check *k, const sl_case_res
     }
     if (sl_diag_explain_missing(c, r, out)) return;
     if (measured_ok && sl_diag_lit_lost(&on->image, t, m, "light bleeding", out)) return;
-    if (sl_diagnose_lab5_format(r, out)) return;
+    if (sl_diagnose_lab5_format(c, r, out)) return;
     if (with > 0.9 && without > 0.9) {
         /* the whole umbra lit either way: the reduction has nothing to act on, the lookup is what is wrong */
         sl_diag_say(out, "%.0f%% of the reference's umbra is lit, with the reduction and without it: there is no "

@@ -159,6 +159,220 @@ static bool _sl_reference_face_up(const char *ref_path, int face, float up[3]) {
     return found;
 }
 
+/* ---- what a face stores, measured against the contract ----
+ *
+ * The contract: each texel holds length(surface point - light) / far. The reference gives that value, r,
+ * for each texel the face sees; with the texel's direction from the light (the face's axis, right and up,
+ * the up read from the solution's face views) it gives the surface point too, P = L + r far dir. What the
+ * student's face holds, s, is then fitted against forms a stored distance takes when one step of the
+ * contract is changed: s = a r + b (divided by another number, an offset, reversed), s = a r^2 (the
+ * squared distance), s = a r cos (the distance along the face's axis, not the length), and
+ * s = |P - Q| / far (measured from another point Q than the light). The form that holds on the most
+ * texels, when it holds on nearly all, is what the message says. */
+
+typedef struct _sl_stored_texel {
+    double s, r, cos_axis;
+    double point[3]; /* the surface point (valid when the face's frame is known) */
+} _sl_stored_texel;
+
+/* The share of texels on which `predict(texel)` is within the tolerance of the stored value. */
+#define _SL_FIT_TOLERANCE 0.004
+#define _SL_FIT_SHARE 0.95
+
+typedef struct _sl_fit {
+    double a, b, q[3];
+    double share;
+} _sl_fit;
+
+static double _sl_fit_share(const _sl_stored_texel *t, long n, double (*predict)(const _sl_stored_texel *, const _sl_fit *),
+                            const _sl_fit *f) {
+    long ok = 0;
+    for (long i = 0; i < n; i++) ok += fabs(t[i].s - predict(&t[i], f)) <= _SL_FIT_TOLERANCE;
+    return n ? (double)ok / (double)n : 0;
+}
+
+static double _sl_predict_affine(const _sl_stored_texel *t, const _sl_fit *f) { return f->a * t->r + f->b; }
+static double _sl_predict_squared(const _sl_stored_texel *t, const _sl_fit *f) { return f->a * t->r * t->r; }
+static double _sl_predict_axis(const _sl_stored_texel *t, const _sl_fit *f) { return f->a * t->r * t->cos_axis; }
+static double _sl_predict_point(const _sl_stored_texel *t, const _sl_fit *f) {
+    double d[3] = {t->point[0] - f->q[0], t->point[1] - f->q[1], t->point[2] - f->q[2]};
+    return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * f->b; /* b: 1 / far */
+}
+
+/* Least squares of s = a x (through the origin), x = g(texel). */
+static double _sl_scale_fit(const _sl_stored_texel *t, long n, double (*g)(const _sl_stored_texel *)) {
+    double sxy = 0, sxx = 0;
+    for (long i = 0; i < n; i++) {
+        double x = g(&t[i]);
+        sxy += x * t[i].s;
+        sxx += x * x;
+    }
+    return sxx > 0 ? sxy / sxx : 0;
+}
+static double _sl_x_squared(const _sl_stored_texel *t) { return t->r * t->r; }
+static double _sl_x_axis(const _sl_stored_texel *t) { return t->r * t->cos_axis; }
+
+/* Solves the 4x4 system m x = v by Gaussian elimination; false when it is singular. */
+static bool _sl_solve4(double m[4][4], double v[4], double x[4]) {
+    for (int col = 0; col < 4; col++) {
+        int pivot = col;
+        for (int row = col + 1; row < 4; row++)
+            if (fabs(m[row][col]) > fabs(m[pivot][col])) pivot = row;
+        if (fabs(m[pivot][col]) < 1e-12) return false;
+        for (int j = 0; j < 4; j++) {
+            double tmp = m[col][j];
+            m[col][j] = m[pivot][j];
+            m[pivot][j] = tmp;
+        }
+        double tmp = v[col];
+        v[col] = v[pivot];
+        v[pivot] = tmp;
+        for (int row = col + 1; row < 4; row++) {
+            double f = m[row][col] / m[col][col];
+            for (int j = col; j < 4; j++) m[row][j] -= f * m[col][j];
+            v[row] -= f * v[col];
+        }
+    }
+    for (int row = 3; row >= 0; row--) {
+        double sum = v[row];
+        for (int j = row + 1; j < 4; j++) sum -= m[row][j] * x[j];
+        x[row] = sum / m[row][row];
+    }
+    return true;
+}
+
+/* The point Q the stored distances (times far) are measured from: |P - Q|^2 = |P|^2 - 2 P.Q + |Q|^2 is
+ * linear in Q and |Q|^2, so four unknowns by least squares. */
+static bool _sl_point_fit(const _sl_stored_texel *t, long n, double far, double q[3]) {
+    double m[4][4] = {{0}}, v[4] = {0}, x[4];
+    for (long i = 0; i < n; i++) {
+        const double *p = t[i].point;
+        double row[4] = {-2 * p[0], -2 * p[1], -2 * p[2], 1};
+        double rhs = t[i].s * t[i].s * far * far - (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        for (int a = 0; a < 4; a++) {
+            for (int b = 0; b < 4; b++) m[a][b] += row[a] * row[b];
+            v[a] += row[a] * rhs;
+        }
+    }
+    if (!_sl_solve4(m, v, x)) return false;
+    for (int i = 0; i < 3; i++) q[i] = x[i];
+    return true;
+}
+
+/* Says what face `face` stores, if one changed step of the contract explains it on nearly every texel. */
+static bool _sl_stored_distance_fit(const sl_case *c, int face, const float *face_up, const sl_image *s,
+                                    const sl_image *t, sl_check_result *out) {
+    int n = s->width;
+    double far = c->scene.light.far;
+    const float *light = c->scene.light.position;
+    if (n <= 0 || far <= 0 || s->height != n || t->width != n || t->height != n) return false;
+    _sl_stored_texel *texels = malloc(sizeof *texels * (size_t)n * (size_t)n);
+    if (!texels) return false;
+    double right[3] = {0, 0, 0};
+    const float *axis = _sl_axes[face];
+    if (face_up) { /* a lookAt's right: forward x up */
+        right[0] = axis[1] * face_up[2] - axis[2] * face_up[1];
+        right[1] = axis[2] * face_up[0] - axis[0] * face_up[2];
+        right[2] = axis[0] * face_up[1] - axis[1] * face_up[0];
+    }
+    long count = 0;
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            double sv = s->data[(long)j * n + i], rv = t->data[(long)j * n + i];
+            if (!isfinite(sv) || rv >= 0.999 || sv >= 0.999 || rv <= 0) continue; /* "nothing there", or clamped */
+            _sl_stored_texel *e = &texels[count++];
+            e->s = sv;
+            e->r = rv;
+            e->cos_axis = _sl_cos_axis(n, i, j);
+            double x = 2.0 * (i + 0.5) / n - 1.0, y = 1.0 - 2.0 * (j + 0.5) / n, d[3], len = 0;
+            for (int a = 0; a < 3; a++) {
+                d[a] = axis[a] + x * right[a] + y * (face_up ? face_up[a] : 0);
+                len += d[a] * d[a];
+            }
+            for (int a = 0; a < 3; a++) e->point[a] = light[a] + rv * far * d[a] / sqrt(len);
+        }
+    bool said = false;
+    if (count < (long)n * n / 20) goto done;
+    /* the affine fit: s = a r + b */
+    double sr = 0, ss = 0, srr = 0, srs = 0;
+    for (long i = 0; i < count; i++) {
+        sr += texels[i].r;
+        ss += texels[i].s;
+        srr += texels[i].r * texels[i].r;
+        srs += texels[i].r * texels[i].s;
+    }
+    double det = count * srr - sr * sr;
+    _sl_fit affine = {0}, squared = {0}, along = {0}, point = {0};
+    if (fabs(det) > 1e-12) {
+        affine.a = (count * srs - sr * ss) / det;
+        affine.b = (ss - affine.a * sr) / count;
+        affine.share = _sl_fit_share(texels, count, _sl_predict_affine, &affine);
+    }
+    squared.a = _sl_scale_fit(texels, count, _sl_x_squared);
+    squared.share = _sl_fit_share(texels, count, _sl_predict_squared, &squared);
+    along.a = _sl_scale_fit(texels, count, _sl_x_axis);
+    along.share = _sl_fit_share(texels, count, _sl_predict_axis, &along);
+    if (face_up && _sl_point_fit(texels, count, far, point.q)) {
+        point.b = 1.0 / far;
+        point.share = _sl_fit_share(texels, count, _sl_predict_point, &point);
+    }
+    /* a constant (nothing drawn, a cleared face) is no distance: other messages say it */
+    double lowest = INFINITY, highest = -INFINITY;
+    for (long i = 0; i < count; i++) {
+        lowest = fmin(lowest, texels[i].s);
+        highest = fmax(highest, texels[i].s);
+    }
+    if (highest - lowest < 0.01) {
+        said = false;
+        goto done;
+    }
+    /* the contract itself holds here: what differs is elsewhere (the geometry a face sees) */
+    if (affine.share >= _SL_FIT_SHARE && fabs(affine.a - 1) < 0.01 && fabs(affine.b) < 0.002) goto done;
+    double best = fmax(fmax(affine.share, squared.share), fmax(along.share, point.share));
+    if (best < _SL_FIT_SHARE) goto done;
+    said = true;
+    const char *fix = "store length(world position - u_light_position) / u_light_far in gl_FragDepth "
+                      "(shaders/cube_depth.frag, TODO lab7.5)";
+    if (affine.share == best) {
+        if (fabs(affine.b) < 0.002)
+            sl_diag_say(out, "face %s stores %.3g times the expected distance / far on %.0f%% of the texels both see: "
+                             "the distance divided by %.4g instead of the far plane, %g?",
+                        _sl_face(face), affine.a, 100 * affine.share, far / affine.a, far);
+        else if (fabs(affine.a + 1) < 0.02 && fabs(affine.b - 1) < 0.02)
+            sl_diag_say(out, "face %s stores 1 - distance / far on %.0f%% of the texels both see: reversed, so near "
+                             "surfaces hold large values and far ones small", _sl_face(face), 100 * affine.share);
+        else
+            sl_diag_say(out, "face %s stores %.3g x distance / far %+.3g on %.0f%% of the texels both see: "
+                             "(distance %+.3g) / %.4g, where the contract is distance / %g",
+                        _sl_face(face), affine.a, affine.b, 100 * affine.share, affine.b * far / affine.a,
+                        far / affine.a, far);
+    } else if (squared.share == best) {
+        sl_diag_say(out, "face %s stores the squared distance on %.0f%% of the texels both see: %.3g x (distance / "
+                         "far)^2, that is distance^2 / %.4g, where the lookup compares distance / far",
+                    _sl_face(face), 100 * squared.share, squared.a, far * far / squared.a);
+    } else if (along.share == best) {
+        sl_diag_say(out, "face %s stores the distance along the face's axis (%s), not the length from the light, on "
+                         "%.0f%% of the texels both see%s: the two agree only at the face's centre, and its corners "
+                         "come out %.0f%% nearer", _sl_face(face), _sl_face(face), 100 * along.share,
+                    fabs(along.a - 1) > 0.01 ? " (times a factor)" : "", 100 * (1 - 1 / sqrt(3.0)));
+    } else {
+        double from_origin = sqrt(point.q[0] * point.q[0] + point.q[1] * point.q[1] + point.q[2] * point.q[2]);
+        for (int a = 0; a < 3; a++)
+            if (fabs(point.q[a]) < 0.005) point.q[a] = 0; /* printed as 0.00, never -0.00 */
+        sl_diag_say(out, "face %s stores the distance from (%.2f, %.2f, %.2f)%s, not from the light at (%g, %g, %g), "
+                         "on %.0f%% of the texels both see (the point fitted to its values)",
+                    _sl_face(face), point.q[0], point.q[1], point.q[2], from_origin < 0.05 ? ", the world's origin" : "",
+                    (double)light[0], (double)light[1], (double)light[2], 100 * point.share);
+        fix = "the distance is measured from the light: length(fs_in.world_position - u_light_position) / "
+              "u_light_far, the world position from the vertex shader's model matrix (shaders/cube_depth.frag, "
+              "TODO lab7.5)";
+    }
+    sl_diag_cause_in(out, "cube_depth.frag", "%s", fix);
+done:
+    free(texels);
+    return said;
+}
+
 void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                            sl_check_result *out) {
     const char *face = _sl_face(k->face);
@@ -189,7 +403,8 @@ void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_re
     double empty = sl_fraction_equal(s, 1.0f, 1e-6f), ref_empty = sl_fraction_equal(t, 1.0f, 1e-6f);
     char up[80] = "from GL's table of cube map faces";
     float face_up[3];
-    if (_sl_reference_face_up(ref->path, k->face, face_up)) _sl_vector(face_up, up, sizeof up);
+    bool have_up = _sl_reference_face_up(ref->path, k->face, face_up);
+    if (have_up) _sl_vector(face_up, up, sizeof up);
     bool layered = sl_lab7_drawn_layered(r), others_drawn = false;
     for (int f = 0; f < 6; f++) {
         const sl_capture *other = f == k->face ? NULL : sl_result_capture(r, sl_capture_name(SL_CAPTURE_CUBE_FACE + f));
@@ -223,6 +438,8 @@ void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_re
                          "depth along the face's axis), not distance / far", face);
         sl_diag_cause_in(out, "cube_depth.frag", "the lookup compares distances: write length(world position - light) / u_light_far into "
                            "gl_FragDepth in shaders/cube_depth.frag (TODO lab7.5)");
+    } else if (_sl_stored_distance_fit(c, k->face, have_up ? face_up : NULL, s, t, out)) {
+        /* said: which step of the stored distance departs, fitted to the face's values */
     } else if (_sl_match(s, t, _sl_scale, tan(glm_rad(22.5f)), k->threshold * 5) > 0.95) {
         sl_diag_say(out, "face %s shows a narrower view than the reference: the reference's middle %.0f%%, magnified",
                     face, 100 * tan(glm_rad(22.5f)));
