@@ -25,6 +25,7 @@
 #include "sl_grader_options.h"
 #include "sl_grader_steps.h"
 #include "sl_hidden.h"
+#include "sl_probe_generic.h"
 #include "sl_manifest.h"
 #include "sl_report.h"
 #include "sl_run.h"
@@ -195,6 +196,15 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     static char hidden_notes[_SL_MAX_CASES][400];
     if (o.hidden)
         for (int i = 0; i < count; i++) sl_hidden_derive(&cases[i], seed, hidden_notes[i], sizeof hidden_notes[i]);
+    /* every probe also runs on generic rows, drawn from the hidden seed when there is one (never when
+     * writing references: those hold the written rows alone) */
+    uint64_t probe_seed = o.hidden ? seed : SL_PROBE_GENERIC_DEFAULT_SEED;
+    if (o.probe_seed && !sl_hidden_parse_seed(o.probe_seed, &probe_seed)) {
+        fprintf(stderr, "shadowlab-grade: --probe-seed S takes a whole number, 0 to 2^64 - 1\n");
+        return SL_EXIT_ERROR;
+    }
+    if (!o.update)
+        for (int i = 0; i < count; i++) sl_probe_generic_add(&cases[i], probe_seed);
     if (o.list) {
         _sl_list_cases(cases, count, &rep, o.hidden ? (const char(*)[400])hidden_notes : NULL);
         return rep.problem_count ? SL_EXIT_ERROR : SL_EXIT_FULL;

@@ -26,7 +26,7 @@ typedef struct _sl_options {
     uint32_t only_labs; /* 1 << lab of each --lab; 0: every lab */
     uint32_t stub_labs; /* 1 << lab of each --stub-labs: the handout's stubs, unchanged, neither built nor run */
     bool update, list, isolate, strict, hidden, progress, no_reference_cache;
-    const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
+    const char *seed, *probe_seed, *not_built, *gradebook, *build_logs, *submission_summary;
     /* with --gradebook: the LMS's roster, its due date (Moodle), and the grades written back in its format */
     const char *roster, *due, *export_format, *export_path, *assignment;
     bool missing_as_zero;

@@ -300,7 +300,8 @@ bool sl_probe_reference_write(const char *path, const sl_check *k, const double 
     sl_atomic_file file;
     if (!sl_atomic_open(&file, path, err, n)) return false;
     fprintf(file.f, "{\n  \"function\": \"%s\",\n  \"rows\": [\n", f->name);
-    for (int r = 0; r < k->rows; r++) {
+    int written = k->rows - k->generic_rows; /* generic rows are judged by the contract's formula, not kept */
+    for (int r = 0; r < written; r++) {
         fprintf(file.f, "    {\"inputs\": [");
         for (int i = 0; i < inputs; i++) fprintf(file.f, "%s%.9g", i ? ", " : "", (double)k->inputs[r][i]);
         fprintf(file.f, "], \"outputs\": [");
@@ -309,7 +310,7 @@ bool sl_probe_reference_write(const char *path, const sl_check *k, const double 
             if (isnan(v)) fprintf(file.f, "%snull", o ? ", " : "");
             else fprintf(file.f, "%s%.9g", o ? ", " : "", v);
         }
-        fprintf(file.f, "]}%s\n", r + 1 < k->rows ? "," : "");
+        fprintf(file.f, "]}%s\n", r + 1 < written ? "," : "");
     }
     fprintf(file.f, "  ]\n}\n");
     return sl_atomic_commit(&file, err, n);
@@ -327,9 +328,10 @@ bool sl_probe_reference_read(const char *path, const sl_check *k, double *output
     const cJSON *rows = cJSON_GetObjectItemCaseSensitive(json, "rows");
     bool ok = function && cJSON_IsArray(rows);
     if (!ok) snprintf(err, n, "reference corrupt: %s: expected \"function\" and \"rows\"", path);
-    bool same = ok && strcmp(function, f->name) == 0 && cJSON_GetArraySize(rows) == k->rows;
+    int written = k->rows - k->generic_rows;
+    bool same = ok && strcmp(function, f->name) == 0 && cJSON_GetArraySize(rows) == written;
     int inputs = sl_probe_input_count(f);
-    for (int r = 0; ok && same && r < k->rows; r++) {
+    for (int r = 0; ok && same && r < written; r++) {
         const cJSON *row = cJSON_GetArrayItem(rows, r);
         const cJSON *in = cJSON_GetObjectItemCaseSensitive(row, "inputs");
         const cJSON *o = cJSON_GetObjectItemCaseSensitive(row, "outputs");
