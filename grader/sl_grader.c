@@ -430,6 +430,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         static sl_probe_failure probe_failures[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
         int probe_failure_count = 0;
         uint64_t probes_graded = 0, probes_failed = 0; /* by sl_probe index: what a message may rule out */
+        uint64_t probes_written_only = 0;              /* a probe check of the function ran no generic row */
         for (int i = 0; i < count; i++)
             for (int k = 0; k < cases[i].check_count; k++) {
                 if (cases[i].checks[k].kind != SL_CHECK_PROBE) continue;
@@ -449,6 +450,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                 uint64_t bit = function >= 0 && function < 64 ? 1ull << function : 0;
                 if (!cr->reference_problem && !results[i].interrupted) probes_graded |= bit;
                 if (!cr->passed) probes_failed |= bit;
+                if (cases[i].checks[k].generic_rows == 0) probes_written_only |= bit;
                 if (sl_probe_failure_of(&cases[i], &cases[i].checks[k], cr, &probe_failures[probe_failure_count]))
                     probe_failure_count++;
             }
@@ -483,6 +485,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                                                     .probe_failures = probe_failures,
                                                     .probe_failure_count = probe_failure_count,
                                                     .probes_passed = probes_graded & ~probes_failed,
+                                                    .probes_generic = probes_graded & ~probes_failed & ~probes_written_only,
                                                     .lab_failures = lab_failures,
                                                     .lab_failure_count = lab_failure_count, .isolated = o.isolate};
                         sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k],

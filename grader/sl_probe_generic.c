@@ -73,8 +73,8 @@ static double _sl_map_at(sl_probe_map map, double u, double v) {
 static double _sl_in_texel(_sl_rng *r, int i) { return (i + 0.5 + _sl_uniform(r, -0.3, 0.3)) / SL_PROBE_MAP_SIZE; }
 
 /* A shadow coordinate (p * w, w) for a projected point p and a w that is not 1. */
-static void _sl_homogeneous(_sl_rng *r, const double p[3], double out[4]) {
-    double w = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 0.35, 0.8) : _sl_uniform(r, 1.4, 3.0);
+static void _sl_homogeneous(_sl_rng *r, bool below_one, const double p[3], double out[4]) {
+    double w = below_one ? _sl_uniform(r, 0.35, 0.8) : _sl_uniform(r, 1.4, 3.0);
     for (int j = 0; j < 3; j++) out[j] = p[j] * w;
     out[3] = w;
 }
@@ -137,16 +137,17 @@ static void _sl_draw_lookup(const sl_probe_function *f, _sl_rng *r, int index, f
     double p[3] = {_sl_in_texel(r, i), _sl_in_texel(r, _sl_integer(r, 4, SL_PROBE_MAP_SIZE - 5)),
                    _sl_uniform(r, 0.32, 0.82)};
     double bias = _sl_uniform(r, 0.001, 0.02), coord[4];
-    _sl_homogeneous(r, p, coord);
+    _sl_homogeneous(r, (index / 2) % 2 == 0, p, coord);
     _sl_set1(f, row, "shadow_map", map);
     _sl_set(f, row, "shadow_coord", coord);
     _sl_set1(f, row, "bias", bias);
     if (radius > 0) _sl_set1(f, row, "radius", radius);
-    size_t used = (size_t)snprintf(about, n, "generic: w = %.3g (the divide by w in x, y and z matters), the point at "
-                                             "(%.3g, %.3g, %.3g) after it, bias %.3g",
+    size_t used = (size_t)snprintf(about, n, "generic: w = %.3g, the point (%.3g, %.3g, %.3g) after the divide of x, "
+                                             "y and z by w, bias %.3g",
                                    coord[3], p[0], p[1], p[2], bias);
     if (radius > 0 && used < n)
-        snprintf(about + used, n - used, ", radius %d: a (2r+1)^2 grid one texel apart across the edge", radius);
+        snprintf(about + used, n - used, ", radius %d: a %dx%d grid one texel apart across the edge", radius,
+                 2 * radius + 1, 2 * radius + 1);
 }
 
 static void _sl_draw_compare(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
@@ -154,7 +155,8 @@ static void _sl_draw_compare(const sl_probe_function *f, _sl_rng *r, int index, 
 }
 
 static void _sl_draw_pcf_grid(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
-    _sl_draw_lookup(f, r, index, row, about, n, _sl_integer(r, 1, 4));
+    /* radii 1 to 5 in turn: past the 3 a loop of constant bounds stops at */
+    _sl_draw_lookup(f, r, index, row, about, n, 1 + index % 5);
 }
 
 /* The fraction of a (2r+1)^2 grid of nearest lookups, one texel apart, that are lit (radius 0: one). */
@@ -177,7 +179,9 @@ static void _sl_expect_pcf_grid(const sl_probe_function *f, const float *row, do
 
 /* lab 3: min(constant + slope * tan(theta), max_bias), cos(theta) = n_dot_l, every term non-zero */
 static void _sl_draw_slope_bias(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
-    double n_dot_l = _sl_uniform(r, 0.12, 0.97), constant = _sl_uniform(r, 2e-4, 3e-3);
+    /* one row in four near grazing (below 0.1) and still under max_bias, where a floor on cos of its own shows */
+    double n_dot_l = index % 4 == 0 ? _sl_uniform(r, 0.03, 0.1) : _sl_uniform(r, 0.1, 0.97);
+    double constant = _sl_uniform(r, 2e-4, 3e-3);
     double slope = _sl_uniform(r, 5e-4, 6e-3), tan_theta = sqrt(1 - n_dot_l * n_dot_l) / n_dot_l;
     double unclamped = constant + slope * tan_theta;
     /* most rows below the clamp (every term shows), one in four above it */
@@ -336,6 +340,36 @@ static void _sl_expect_splits(const sl_probe_function *f, const float *row, doub
     }
 }
 
+/* lab 6: the first cascade whose far split lies beyond the point's view depth (-z), the last one past them */
+static void _sl_draw_cascade_index(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                   size_t n) {
+    int count = 2 + index % 3;
+    double split[4] = {0, 0, 0, 0}, at = _sl_uniform(r, 0.3, 3);
+    for (int i = 0; i < count; i++) split[i] = at += _sl_uniform(r, 2, 40);
+    /* a depth inside a cascade drawn in turn, away from its ends */
+    int cascade = index % count;
+    double lo = cascade ? split[cascade - 1] : 0.2, hi = split[cascade];
+    double depth = lo + (hi - lo) * _sl_uniform(r, 0.1, 0.9);
+    double position[3] = {_sl_uniform(r, -0.8, 0.8) * depth, _sl_uniform(r, -0.6, 0.6) * depth, -depth};
+    _sl_set(f, row, "view_position", position);
+    _sl_set(f, row, "split_far", split);
+    _sl_set1(f, row, "count", count);
+    snprintf(about, n, "generic: %d cascades ending at %.4g, %.4g, %.4g, %.4g; a point %.4g in front of the camera, off "
+                       "its axis (x %.3g, y %.3g): cascade %d",
+             count, split[0], split[1], split[2], split[3], depth, position[0], position[1], cascade);
+}
+
+static void _sl_expect_cascade_index(const sl_probe_function *f, const float *row, double *out) {
+    double depth = -_sl_get(f, row, "view_position", 2);
+    int count = (int)_sl_get(f, row, "count", 0);
+    out[0] = count - 1;
+    for (int i = 0; i < count - 1; i++)
+        if (depth < _sl_get(f, row, "split_far", i)) {
+            out[0] = i;
+            break;
+        }
+}
+
 /* lab 6 (bonus): the weight of the next cascade across the last `band` of the slice */
 static void _sl_draw_blend(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
     (void)index;
@@ -429,6 +463,7 @@ static const _sl_generic _sl_generics[] = {
     {"chebyshev_upper_bound", _sl_draw_chebyshev, _sl_expect_chebyshev},
     {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding},
     {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits},
+    {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index},
     {"cascade_blend", _sl_draw_blend, _sl_expect_blend},
     {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection},
     {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow},

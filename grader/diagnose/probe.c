@@ -160,6 +160,18 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
              k->about[row]);
 }
 
+/* " (3 of 24 rows differ, 2 of them generic; TODO(...) in ...)": how many rows differ, and of those how many
+ * were drawn from the seed rather than written (sl_probe_generic.h). */
+static void _sl_rows_differ(sl_check_result *out, const sl_check *k, int failing, const char *todo, const char *file) {
+    int generic = 0;
+    for (int row = k->rows - k->generic_rows; row < k->rows; row++) generic += (out->failing_rows >> row) & 1u;
+    if (k->generic_rows > 0)
+        sl_diag_append(out, " (%d of %d rows differ, %d of them generic; %s in %s)", failing, k->rows, generic, todo,
+                       file);
+    else
+        sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
+}
+
 static bool _sl_probe_contract(const sl_check *k, const double *student, const double *expected, uint32_t *broken,
                                char *text, size_t n, int *shown) {
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(sl_probe_at(k->function)->lab);
@@ -246,7 +258,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         sl_diag_say(out, "%s(): %s. For example %s(%s)%s%s", f->name, verdict[0] ? verdict : "its contract is broken",
                     f->name, inputs, k->about[shown][0] ? " — " : "", k->about[shown]);
         sl_utf8_copy(out->summary, sizeof out->summary, verdict);
-        sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
+        _sl_rows_differ(out, k, failing, todo, file);
         return;
     }
     if (failing == 0) {
@@ -268,12 +280,18 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         out->settled = out->stub = true;
         return;
     }
-    /* What the rows say together, then the row that shows it (or the first that differs). */
+    /* What the rows say together, then the row that shows it (or the first that differs). The verdicts
+     * read the written rows, each there to tell mistakes apart; a generic row's failure (every term drawn
+     * at once) is shown as it is, in the contract's terms its "about" gives. */
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(f->lab);
-    shown = lab && lab->probe_verdict
-                ? lab->probe_verdict(k, cap->numbers, ref->numbers, out->failing_rows, verdict, sizeof verdict)
+    int written = k->rows - k->generic_rows;
+    uint32_t written_failing = written >= 32 ? out->failing_rows : out->failing_rows & ((1u << written) - 1u);
+    sl_verdict_rows written_rows = rows;
+    written_rows.failing = written_failing;
+    shown = written_failing && lab && lab->probe_verdict
+                ? lab->probe_verdict(k, cap->numbers, ref->numbers, written_failing, verdict, sizeof verdict)
                 : -1;
-    if (!verdict[0]) shown = sl_probe_verdict(&rows, verdict, sizeof verdict);
+    if (!verdict[0] && written_failing) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
     /* a verdict that named the mistake says what it shows, for every failing row */
     for (int row = 0; verdict[0] && verdict_predicts && row < k->rows; row++)
@@ -291,7 +309,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         if (equals) snprintf(out->summary, sizeof out->summary, "gives %s", equals + 4);
         else sl_utf8_copy(out->summary, sizeof out->summary, gives ? gives + 2 : evidence);
     }
-    sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
+    _sl_rows_differ(out, k, failing, todo, file);
 }
 
 bool sl_probe_reference_write(const char *path, const sl_check *k, const double *outputs, char *err, size_t n) {
