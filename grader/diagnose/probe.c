@@ -286,12 +286,20 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(f->lab);
     int written = k->rows - k->generic_rows;
     uint32_t written_failing = written >= 32 ? out->failing_rows : out->failing_rows & ((1u << written) - 1u);
+    sl_check *written_check = written_failing ? malloc(sizeof *written_check) : NULL; /* the check as written */
+    if (written_check) {
+        *written_check = *k;
+        written_check->rows = written;
+        written_check->generic_rows = 0;
+    }
     sl_verdict_rows written_rows = rows;
+    written_rows.k = written_check;
     written_rows.failing = written_failing;
-    shown = written_failing && lab && lab->probe_verdict
-                ? lab->probe_verdict(k, cap->numbers, ref->numbers, written_failing, verdict, sizeof verdict)
+    shown = written_check && lab && lab->probe_verdict
+                ? lab->probe_verdict(written_check, cap->numbers, ref->numbers, written_failing, verdict, sizeof verdict)
                 : -1;
-    if (!verdict[0] && written_failing) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
+    if (!verdict[0] && written_check) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
+    free(written_check);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
     /* a verdict that named the mistake says what it shows, for every failing row */
     for (int row = 0; verdict[0] && verdict_predicts && row < k->rows; row++)
