@@ -98,6 +98,9 @@ typedef struct sl_check {
     float inputs[SL_PROBE_MAX_ROWS][SL_PROBE_MAX_INPUTS];
     char about[SL_PROBE_MAX_ROWS][256];
     float row_tolerance[SL_PROBE_MAX_ROWS]; /* a row's own tolerance (0: the check's) */
+    /* the last generic_rows of the rows are drawn from a seed and judged by the contract's formula
+     * (grader/sl_probe_generic.h), not read from the case file or its reference */
+    int generic_rows;
     sl_probe_vary vary[SL_PROBE_MAX_PARAMS]; /* by parameter: how hidden variants change it ("vary") */
     uint32_t row_keep[SL_PROBE_MAX_ROWS];    /* 1 << parameter: the row keeps it as written ("keep") */
     double tolerance, relative; /* an output passes within tolerance + relative * |expected| */

@@ -19,9 +19,11 @@
 /* Every function the labs ask students to write, with its signature as the
  * stubs declare it. Outputs of matrices are column-major, as cglm and GLSL store them. */
 static const sl_probe_function _sl_functions[] = {
-    /* lab 1: the map as lab1_create_shadow_map makes it: its filtering, and what a lookup past its edge reads */
+    /* lab 1: the map as lab1_create_shadow_map makes it: its filtering, what a lookup past its edge reads,
+     * and its size (the argument's, not a constant's) */
     {.name = "lab1_create_shadow_map", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.1",
-     .outputs = "min filter,mag filter,wrap s,wrap t,border depth", .output_count = 5, .params = {_SL_I("size")},
+     .outputs = "min filter,mag filter,wrap s,wrap t,border depth,texture width,texture height", .output_count = 7,
+     .params = {_SL_I("size")},
      .param_count = 1, .stub_param = -1, .stub_value = NAN},
     /* lab 1: the depth pass's state, on a map the probe makes (its depth texture filled with 0.5) */
     {.name = "lab1_begin_depth_pass", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.3",

@@ -92,15 +92,17 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
 
 /* lab1_create_shadow_map(size): the map's filtering and wrapping, as glGet*
  * reports them: what a lookup of a later lab reads between texels and past
- * the map's edge. */
+ * the map's edge; and the texture's size, which must be the argument's. */
 static sl_status _sl_call_create_shadow_map(const sl_lab_functions *labs, int size, double *out) {
     sl_shadow_map map = {0};
     sl_status status = labs->lab1_create_shadow_map(size, &map);
     while (glGetError() != GL_NO_ERROR) {}
     if (map.depth_texture && glIsTexture(map.depth_texture)) {
-        GLint min = 0, mag = 0, s = 0, t = 0;
+        GLint min = 0, mag = 0, s = 0, t = 0, width = 0, height = 0;
         GLfloat border[4] = {0, 0, 0, 0};
         glBindTexture(GL_TEXTURE_2D, map.depth_texture);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &height);
         glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min);
         glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &mag);
         glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, &s);
@@ -113,6 +115,8 @@ static sl_status _sl_call_create_shadow_map(const sl_lab_functions *labs, int si
         out[3] = t;
         /* a depth texture reads its border's first component: only past the edge does it count */
         out[4] = s == GL_CLAMP_TO_BORDER || t == GL_CLAMP_TO_BORDER ? border[0] : -1;
+        out[5] = width;
+        out[6] = height;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (map.framebuffer) glDeleteFramebuffers(1, &map.framebuffer);

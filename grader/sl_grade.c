@@ -340,6 +340,14 @@ static bool _sl_probe_passed(const sl_grade_context *context, const char *functi
     return context && i >= 0 && i < 64 && ((context->probes_passed >> i) & 1u) && !_sl_failure_of(context, function);
 }
 
+/* Whether `function`'s passing probe ran generic rows too (sl_probe_generic.h): only then does it rule the
+ * function out of a symptom whose cause a term its written rows leave at 0 could be. */
+static bool _sl_probe_generic(const sl_grade_context *context, const char *function) {
+    const sl_probe_function *f = sl_probe_find(function);
+    int i = f ? sl_probe_index(f) : -1;
+    return context && i >= 0 && i < 64 && ((context->probes_generic >> i) & 1u);
+}
+
 /* Whether a diagnosis may give `function` as the cause: the case runs it,
  * and its probe, if graded, failed in a way that explains the symptoms. */
 static bool _sl_blame_allowed(const sl_case *c, const sl_check *k, const sl_grade_context *context,
@@ -357,8 +365,8 @@ static bool _sl_blame_allowed(const sl_case *c, const sl_check *k, const sl_grad
 static void _sl_candidates(const sl_case *c, const sl_check *k, const sl_case_result *r,
                            const sl_grade_context *context, const char *dropped, char *out, size_t n) {
     bool isolated = context && context->isolated;
-    char path[300], failing[400] = "", others[400] = "", ruled[500] = "";
-    int candidates = 0, ruled_count = 0;
+    char path[300], failing[400] = "", others[400] = "", ruled[500] = "", written_only[300] = "";
+    int candidates = 0, ruled_count = 0, written_only_count = 0;
     sl_case_path(c, r, path, sizeof path);
     for (int pass = 0; pass < 2; pass++)
         for (int lab = c->lab; lab >= 1; lab--)
@@ -368,7 +376,13 @@ static void _sl_candidates(const sl_case *c, const sl_check *k, const sl_case_re
                 bool passed = _sl_probe_passed(context, fn.name), fails = _sl_failure_of(context, fn.name) != NULL;
                 bool probe = sl_probe_find(fn.name) != NULL;
                 const char *suffix = probe ? "()" : "";
-                if (pass == 0 && passed) {
+                if (pass == 0 && passed && !_sl_probe_generic(context, fn.name)) {
+                    if (dropped && strcmp(dropped, fn.name) == 0) continue; /* said already, just before */
+                    /* its written rows alone: a term they leave at 0 may be the cause, so it is not ruled out */
+                    if (written_only_count++ < 4)
+                        snprintf(written_only + strlen(written_only), sizeof written_only - strlen(written_only), "%s%s%s",
+                                 written_only[0] ? ", " : "", fn.name, suffix);
+                } else if (pass == 0 && passed) {
                     if (ruled_count++ < 6)
                         snprintf(ruled + strlen(ruled), sizeof ruled - strlen(ruled), "%s%s%s", ruled[0] ? ", " : "",
                                  fn.name, suffix);
@@ -388,14 +402,22 @@ static void _sl_candidates(const sl_case *c, const sl_check *k, const sl_case_re
     if (path[0]) used += (size_t)snprintf(out + used, n - used, "This case ran %s. ", path);
     if (used < n && dropped && dropped[0])
         used += (size_t)snprintf(out + used, n - used, "%s(), which this symptom suggests, %s. ", dropped,
-                                 _sl_probe_passed(context, dropped) ? "passes its probe"
-                                                                    : "fails its probe in a way that does not explain it");
+                                 !_sl_probe_passed(context, dropped) ? "fails its probe in a way that does not explain it"
+                                 : _sl_probe_generic(context, dropped) ? "passes its probe, on generic inputs too"
+                                                                       : "passes its probe on its written inputs only");
     if (used < n && (failing[0] || others[0]))
         used += (size_t)snprintf(out + used, n - used, "Candidates: %s%s%s", failing, failing[0] && others[0] ? ", " : "",
                                  others);
     if (used < n && ruled[0])
         used += (size_t)snprintf(out + used, n - used, "%s: %s%s (%s)", failing[0] || others[0] ? "; ruled out" : "Ruled out",
-                                 ruled, ruled_count > 6 ? " and more" : "", ruled_count > 1 ? "their probes pass" : "its probe passes");
+                                 ruled, ruled_count > 6 ? " and more" : "",
+                                 ruled_count > 1 ? "their probes pass, on generic inputs too"
+                                                 : "its probe passes, on generic inputs too");
+    if (used < n && written_only[0])
+        used += (size_t)snprintf(out + used, n - used, "%s%s%s %s only on %s written inputs, not on generic ones: not "
+                                 "ruled out", failing[0] || others[0] || ruled[0] ? "; " : "", written_only, written_only_count > 4 ? " and more" : "",
+                                 written_only_count > 1 ? "pass their probes" : "passes its probe",
+                                 written_only_count > 1 ? "their" : "its");
     if (used > 0 && used < n && out[used - 1] != ' ') snprintf(out + used, n - used, ".");
 }
 
@@ -660,6 +682,11 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
         out->points = k->points;
         out->message[0] = '\0';
         out->cause[0] = '\0';
+        /* a passing probe says on which inputs it passed: what it can rule out is no more than that */
+        if (k->kind == SL_CHECK_PROBE && k->generic_rows > 0)
+            sl_diag_say(out, "passes on %d written and %d generic inputs", k->rows - k->generic_rows, k->generic_rows);
+        else if (k->kind == SL_CHECK_PROBE)
+            sl_diag_say(out, "passes on its %d written inputs (no generic ones)", k->rows);
         return;
     }
     out->symptoms |= _sl_measured_symptoms(c, k, r, ref);

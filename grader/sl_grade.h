@@ -39,6 +39,8 @@ typedef struct sl_grade_context {
     int probe_failure_count;
     /* functions (1 << sl_probe index) whose every probe check was graded and passed: ruled out */
     uint64_t probes_passed;
+    /* of those, the functions whose every probe check ran generic rows too (sl_probe_generic.h) */
+    uint64_t probes_generic;
     const sl_lab_failure *lab_failures; /* the earlier labs' failed checks, in lab order; NULL: unknown */
     int lab_failure_count;
     bool isolated;  /* --isolate: the solutions stand in for the other labs, whose failures do not show here */

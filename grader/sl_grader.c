@@ -27,6 +27,7 @@
 #include "sl_grader_options.h"
 #include "sl_grader_steps.h"
 #include "sl_hidden.h"
+#include "sl_probe_generic.h"
 #include "sl_manifest.h"
 #include "sl_report.h"
 #include "sl_run.h"
@@ -198,6 +199,15 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
     static char hidden_notes[_SL_MAX_CASES][400];
     if (o.hidden)
         for (int i = 0; i < count; i++) sl_hidden_derive(&cases[i], seed, hidden_notes[i], sizeof hidden_notes[i]);
+    /* every probe also runs on generic rows, drawn from the hidden seed when there is one (never when
+     * writing references: those hold the written rows alone) */
+    uint64_t probe_seed = o.hidden ? seed : SL_PROBE_GENERIC_DEFAULT_SEED;
+    if (o.probe_seed && !sl_hidden_parse_seed(o.probe_seed, &probe_seed)) {
+        fprintf(stderr, "shadowlab-grade: --probe-seed S takes a whole number, 0 to 2^64 - 1\n");
+        return SL_EXIT_ERROR;
+    }
+    if (!o.update)
+        for (int i = 0; i < count; i++) sl_probe_generic_add(&cases[i], probe_seed);
     if (o.list) {
         _sl_list_cases(cases, count, &rep, o.hidden ? (const char(*)[400])hidden_notes : NULL);
         return rep.problem_count ? SL_EXIT_ERROR : SL_EXIT_FULL;
@@ -423,6 +433,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
         static sl_probe_failure probe_failures[_SL_MAX_CASES * SL_CASE_MAX_CHECKS];
         int probe_failure_count = 0;
         uint64_t probes_graded = 0, probes_failed = 0; /* by sl_probe index: what a message may rule out */
+        uint64_t probes_written_only = 0;              /* a probe check of the function ran no generic row */
         for (int i = 0; i < count; i++)
             for (int k = 0; k < cases[i].check_count; k++) {
                 if (cases[i].checks[k].kind != SL_CHECK_PROBE) continue;
@@ -442,6 +453,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                 uint64_t bit = function >= 0 && function < 64 ? 1ull << function : 0;
                 if (!cr->reference_problem && !results[i].interrupted) probes_graded |= bit;
                 if (!cr->passed) probes_failed |= bit;
+                if (cases[i].checks[k].generic_rows == 0) probes_written_only |= bit;
                 if (sl_probe_failure_of(&cases[i], &cases[i].checks[k], cr, &probe_failures[probe_failure_count]))
                     probe_failure_count++;
             }
@@ -476,6 +488,7 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                                                     .probe_failures = probe_failures,
                                                     .probe_failure_count = probe_failure_count,
                                                     .probes_passed = probes_graded & ~probes_failed,
+                                                    .probes_generic = probes_graded & ~probes_failed & ~probes_written_only,
                                                     .lab_failures = lab_failures,
                                                     .lab_failure_count = lab_failure_count, .isolated = o.isolate};
                         sl_grade_check(&cases[i], &cases[i].checks[k], &results[i], &refs[i * SL_CASE_MAX_CHECKS + k],

@@ -71,6 +71,8 @@ static void _sl_usage(FILE *f) {
             "  --hidden --seed S    grade on hidden variants of the cases, drawn from the seed S (light,\n"
             "                       camera, objects, map size), with references rendered from the\n"
             "                       solutions for this run (needs a copy with solutions/)\n"
+            "  --probe-seed S       draw the function probes' generic rows from S (default: the --seed of\n"
+            "                       --hidden, else a fixed one); their expected outputs are the contracts'\n"
             "  --list               list the cases and exit (with --hidden: what each variant changes)\n"
             "  --not-built LOG      the labs did not compile: report every check as failed with the\n"
             "                       compiler's first error in the build log LOG (scripts/grade-submission)\n"
@@ -184,7 +186,7 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
         static const char *const with_value[] = {"--lab", "--case", "--exclude", "-j", "--jobs", "--report",
                                                  "--gradescope", "--prairielearn", "--junit", "--timeout",
                                                  "--cases", "--references", "--labs-dir", "--runners", "--backend",
-                                                 "--sandbox", "--memory", "--seed", "--not-built", "--gradebook",
+                                                 "--sandbox", "--memory", "--seed", "--probe-seed", "--not-built", "--gradebook",
                                                  "--build-logs", "--submission-summary", "--technique-dir",
                                                  "--stub-labs", "--bonus", "--experiment-budget",
                                                  "--experiment-builder"};
@@ -267,6 +269,7 @@ int _sl_parse(int argc, char **argv, _sl_options *o) {
         else if (strcmp(a, "--isolate") == 0) o->isolate = true;
         else if (strcmp(a, "--hidden") == 0) o->hidden = true;
         else if (strcmp(a, "--seed") == 0) o->seed = v;
+        else if (strcmp(a, "--probe-seed") == 0) o->probe_seed = v;
         else if (strcmp(a, "--not-built") == 0) o->not_built = v;
         else if (strcmp(a, "--gradebook") == 0) o->gradebook = v;
         else if (strcmp(a, "--build-logs") == 0) o->build_logs = v;
@@ -313,6 +316,7 @@ void _sl_describe_options(const _sl_options *o, const char *default_cases, const
     for (int i = 0; i < o->exclude_count; i++) _SL_ADD("--exclude %s", o->excludes[i]);
     if (o->isolate) _SL_ADD("--isolate");
     if (o->hidden) _SL_ADD("--hidden --seed %s", o->seed ? o->seed : "?");
+    if (o->probe_seed) _SL_ADD("--probe-seed %s", o->probe_seed);
     if (o->bonus_policy != SL_BONUS_APART) _SL_ADD("--bonus %s", sl_bonus_policy_name(o->bonus_policy));
     if (o->timeout > 0) _SL_ADD("--timeout %g", o->timeout);
     if (o->memory_mb > 0) _SL_ADD("--memory %g", o->memory_mb);

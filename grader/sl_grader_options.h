@@ -31,7 +31,7 @@ typedef struct _sl_options {
     bool no_experiments;
     double experiment_budget; /* seconds for every experiment of the grade; 0: the default */
     const char *experiment_builder; /* links a runner with a C function of the solution's (sl_experiment.h) */
-    const char *seed, *not_built, *gradebook, *build_logs, *submission_summary;
+    const char *seed, *probe_seed, *not_built, *gradebook, *build_logs, *submission_summary;
     /* with --gradebook: the LMS's roster, its due date (Moodle), and the grades written back in its format */
     const char *roster, *due, *export_format, *export_path, *assignment;
     bool missing_as_zero;

@@ -11,6 +11,7 @@
 #include "sl_files.h"
 #include "sl_json.h"
 #include "sl_probe.h"
+#include "sl_probe_generic.h"
 
 /* A reference must fit its case: an image of the camera's size, a depth map of the map's. */
 static bool _sl_reference_fits(sl_reference *ref, const sl_case *c, const sl_check *k) {
@@ -118,7 +119,11 @@ static void _sl_reference_load_main(sl_reference *ref, const char *dir, const sl
     }
     if (k->kind == SL_CHECK_PROBE) {
         if (!sl_probe_reference_read(ref->path, k, ref->numbers, ref->error, sizeof ref->error)) return;
-        ref->number_count = k->rows * sl_probe_at(k->function)->output_count;
+        int outputs = sl_probe_at(k->function)->output_count;
+        /* the generic rows' expected outputs: the contract's formula (sl_probe_generic.h), never a file's */
+        for (int row = k->rows - k->generic_rows; row < k->rows; row++)
+            sl_probe_generic_expected(k, row, &ref->numbers[row * outputs]);
+        ref->number_count = k->rows * outputs;
     } else if (k->kind == SL_CHECK_MATRICES) {
         char json_err[600] = "";
         cJSON *json = sl_json_load_file(ref->path, "reference", json_err, sizeof json_err);

@@ -158,7 +158,7 @@ void sl_report_print(const sl_grade_report *rep, FILE *out, bool color) {
                 snprintf(label, sizeof label, "%s / %s", g->c->name, g->c->checks[k].name);
                 fprintf(out, "  %s%s%s %4.1f/%-4.1f %s%s\n", cr->passed ? green : red, cr->passed ? "PASS" : "FAIL", reset,
                         cr->points, cr->max_points, label, cr->bonus ? " (bonus)" : "");
-                if (!cr->passed) _sl_print_message(out, cr->message);
+                if (!cr->passed || cr->message[0]) _sl_print_message(out, cr->message); /* a probe's: on which inputs */
                 if (cr->bonus) {
                     bonus += cr->points;
                 } else {

@@ -23,6 +23,7 @@
 #include "sl_glsl_functions.h"
 #include "sl_grade.h"
 #include "sl_hidden.h"
+#include "sl_probe_generic.h"
 #include "sl_mesh.h"
 #include "sl_scene.h"
 #include "sl_protocol.h"
@@ -1182,13 +1183,32 @@ static void test_grade_rules_out_once(void) {
     sl_case_result r = {.finished = true};
     add_capture(&r, sl_check_capture_name(&c, &c.checks[0]), square(64, 64, 0, 0, 0, 0, 0, 0));
     sl_reference ref = image_reference(square(64, 64, 1, 0, 0, 0, 32, 64)); /* cascade 1 on the left half */
-    sl_grade_context passed = {.probes_passed = ~0ull};
+    sl_grade_context passed = {.probes_passed = ~0ull, .probes_generic = ~0ull};
     sl_check_result out;
     sl_grade_check(&c, &c.checks[0], &r, &ref, &passed, &out);
     printf("  %s\n", out.message);
     CHECK(!out.passed && strstr(out.message, "Ruled out: ") != NULL);
     CHECK(strcasestr(out.message, "ruled out: ruled out") == NULL);
     CHECK(strstr(out.message, "Candidates") == NULL);
+    sl_image_free(&out.diff);
+    sl_case_result_free(&r);
+    sl_reference_free(&ref);
+}
+
+/* A function whose probe passed on its written rows alone (no generic row ran) is not ruled out: a term
+ * those rows leave at 0 may be the cause. The message says so instead. */
+static void test_grade_rules_out_only_on_generic_inputs(void) {
+    sl_case c = grade_case(6, SL_CHECK_CASCADE_INDEX);
+    sl_case_result r = {.finished = true};
+    add_capture(&r, sl_check_capture_name(&c, &c.checks[0]), square(64, 64, 0, 0, 0, 0, 0, 0));
+    sl_reference ref = image_reference(square(64, 64, 1, 0, 0, 0, 32, 64));
+    sl_grade_context written_only = {.probes_passed = ~0ull, .probes_generic = 0};
+    sl_check_result out;
+    sl_grade_check(&c, &c.checks[0], &r, &ref, &written_only, &out);
+    printf("  %s\n", out.message);
+    CHECK(!out.passed && strcasestr(out.message, "ruled out: ") == NULL);
+    CHECK(strstr(out.message, "only on its written inputs, not on generic ones: not ruled out") != NULL ||
+          strstr(out.message, "only on their written inputs, not on generic ones: not ruled out") != NULL);
     sl_image_free(&out.diff);
     sl_case_result_free(&r);
     sl_reference_free(&ref);
@@ -1257,6 +1277,61 @@ static void test_grade_compile_error_once(void) {
 /* Under --hidden --seed a probe's rows move as its "vary" says: one draw per
  * check and group, so rows keep their relations; kept parameters stay; two
  * seeds give two tables. */
+/* Generic probe rows: drawn from the seed (the same seed, the same rows), appended after the written ones,
+ * every term of the formula non-zero, and judged by the contract's formula. */
+static void test_probe_generic_rows(void) {
+    write_file("generic.json",
+               "{\"name\": \"g\", \"lab\": 4, \"checks\": ["
+               " {\"name\": \"bias\", \"kind\": \"probe\", \"points\": 1, \"function\": \"slope_scaled_bias\","
+               "  \"rows\": [{\"n_dot_l\": 1.0, \"constant_bias\": 0.0005, \"slope\": 0.0015, \"max_bias\": 0.01}]},"
+               " {\"name\": \"grid\", \"kind\": \"probe\", \"points\": 1, \"function\": \"pcf_grid\","
+               "  \"rows\": [{\"shadow_map\": \"step\", \"shadow_coord\": [0.5, 0.5, 0.5, 1], \"bias\": 0.005,"
+               "            \"radius\": 1}]},"
+               " {\"name\": \"poisson\", \"kind\": \"probe\", \"points\": 1, \"function\": \"pcf_poisson\","
+               "  \"rows\": [{\"shadow_map\": \"step\", \"shadow_coord\": [0.5, 0.5, 0.5, 1], \"bias\": 0.005,"
+               "            \"radius_texels\": 2, \"pixel\": [3, 4]}]}]}");
+    char path[512], err[2048];
+    snprintf(path, sizeof path, "%s/generic.json", tmp_dir);
+    sl_case written, a, b, c;
+    CHECK(sl_case_load(&written, path, err, sizeof err));
+    a = b = c = written;
+    int added = sl_probe_generic_add(&a, 1);
+    sl_probe_generic_add(&b, 1);
+    sl_probe_generic_add(&c, 2);
+    CHECK(added == 2 * SL_PROBE_GENERIC_ROWS); /* pcf_poisson has no formula here: no generic rows */
+    CHECK(a.checks[2].generic_rows == 0 && a.checks[2].rows == 1);
+    const sl_check *bias = &a.checks[0], *grid = &a.checks[1];
+    CHECK(bias->rows == 1 + SL_PROBE_GENERIC_ROWS && bias->generic_rows == SL_PROBE_GENERIC_ROWS);
+    CHECK(memcmp(bias->inputs[0], written.checks[0].inputs[0], sizeof bias->inputs[0]) == 0); /* written row kept */
+    CHECK(memcmp(a.checks[0].inputs, b.checks[0].inputs, sizeof a.checks[0].inputs) == 0);   /* same seed */
+    CHECK(memcmp(a.checks[0].inputs, c.checks[0].inputs, sizeof a.checks[0].inputs) != 0);   /* another seed */
+    CHECK(!sl_probe_generic_expected(bias, 0, (double[16]){0}));                              /* a written row */
+    bool clamped = false, unclamped = false;
+    for (int row = 1; row < bias->rows; row++) {
+        const float *in = bias->inputs[row];
+        for (int i = 0; i < 4; i++) CHECK(in[i] > 0); /* every term non-zero */
+        CHECK(in[0] < 1);
+        double e[16], tan_theta = sqrt(1.0 - (double)in[0] * in[0]) / in[0];
+        CHECK(sl_probe_generic_expected(bias, row, e));
+        double unclamped_bias = in[1] + in[2] * tan_theta;
+        CHECK(fabs(e[0] - fmin(unclamped_bias, in[3])) < 1e-6);
+        clamped |= unclamped_bias > in[3];
+        unclamped |= unclamped_bias < in[3];
+        CHECK(strncmp(bias->about[row], "generic: ", 9) == 0);
+    }
+    CHECK(clamped && unclamped);
+    /* the grid: w never 1, radii 1 to 5 all drawn, results between 0 and 1 */
+    uint32_t radii = 0;
+    for (int row = 1; row < grid->rows; row++) {
+        const float *in = grid->inputs[row];
+        CHECK(in[4] != 1.0f && in[4] > 0);
+        radii |= 1u << (int)in[6];
+        double e[16];
+        CHECK(sl_probe_generic_expected(grid, row, e) && e[0] >= 0 && e[0] <= 1);
+    }
+    CHECK(radii == 0x3eu);
+}
+
 static void test_hidden_varies_probe_inputs(void) {
     write_file("vary.json",
                "{\"name\": \"v\", \"lab\": 2, \"checks\": [{\"name\": \"m\", \"kind\": \"probe\", \"points\": 1,"
@@ -1568,6 +1643,8 @@ int main(int argc, char **argv) {
         {"grade_probe_verdicts", test_grade_probe_verdicts},
         {"grade_blames_on_evidence", test_grade_blames_on_evidence},
         {"grade_rules_out_once", test_grade_rules_out_once},
+        {"grade_rules_out_only_on_generic_inputs", test_grade_rules_out_only_on_generic_inputs},
+        {"probe_generic_rows", test_probe_generic_rows},
         {"grade_compile_error_once", test_grade_compile_error_once},
         {"hidden_varies_probe_inputs", test_hidden_varies_probe_inputs},
         {"grade_run_failures", test_grade_run_failures},

@@ -82,7 +82,17 @@ void sl_diagnose_depth(const sl_case *c, const sl_check *k, const sl_case_result
     const sl_image *s = &cap->image, *t = &ref->image;
     sl_compare_stats st = sl_compare_images(s, t, k->threshold, &out->diff);
     if (st.size_mismatch) {
+        /* the map's size is lab1_create_shadow_map's alone: the reference's is the size the case asked for */
         sl_diag_say(out, "the depth map is %dx%d, the reference %dx%d", s->width, s->height, t->width, t->height);
+        if (s->width == s->height)
+            sl_diag_append(out, ": lab1_create_shadow_map() made a %dx%d map when the case asked for size %d — a size "
+                                "of its own instead of its size argument? Use the size argument (TODO(lab1.1) in "
+                                "labs/lab1_depth_fbo/lab1.c)",
+                           s->width, s->height, t->width);
+        else
+            sl_diag_append(out, ": lab1_create_shadow_map() made a %dx%d map when the case asked for %dx%d — use the "
+                                "size argument for both sides (TODO(lab1.1) in labs/lab1_depth_fbo/lab1.c)",
+                           s->width, s->height, t->width, t->width);
         out->settled = true;
         return;
     }
@@ -158,8 +168,26 @@ bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *fn) { re
 
 /* ---- verdicts on its probes' rows (verdict.c asks by the probe's name) ---- */
 
-/* Outputs: min filter, mag filter, wrap S, wrap T, the border's depth (-1 without a border). */
+/* Outputs: min filter, mag filter, wrap S, wrap T, the border's depth (-1 without a border), the texture's
+ * width and height. */
 static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, size_t n) {
+    /* the size first: a map of a size of its own is wrong on every row whose size is not that one */
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 5))) continue;
+        double size = v->k->inputs[r][0], width = _sl_got(v, r, 5), height = _sl_got(v, r, 6);
+        if (width == size && height == size) continue;
+        bool constant = true; /* the same size whatever the argument, on every row */
+        for (int q = 0; q < v->k->rows; q++) constant &= _sl_got(v, q, 5) == width && _sl_got(v, q, 6) == height;
+        if (constant)
+            snprintf(text, n, "the map is %gx%g whatever its size argument (%g here): a size of its own, not the "
+                              "argument's — make the texture size x size (glTexImage2D(..., size, size, ...))",
+                     width, height, size);
+        else
+            snprintf(text, n, "the map is %gx%g, not size x size (%g): use the size argument for both sides of "
+                              "the texture", width, height, size);
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_GROSS);
+        return r;
+    }
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
         double wrap_s = _sl_got(v, r, 2), wrap_t = _sl_got(v, r, 3), border = _sl_got(v, r, 4);

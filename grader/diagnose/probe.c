@@ -160,6 +160,18 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
              k->about[row]);
 }
 
+/* " (3 of 24 rows differ, 2 of them generic; TODO(...) in ...)": how many rows differ, and of those how many
+ * were drawn from the seed rather than written (sl_probe_generic.h). */
+static void _sl_rows_differ(sl_check_result *out, const sl_check *k, int failing, const char *todo, const char *file) {
+    int generic = 0;
+    for (int row = k->rows - k->generic_rows; row < k->rows; row++) generic += (out->failing_rows >> row) & 1u;
+    if (k->generic_rows > 0)
+        sl_diag_append(out, " (%d of %d rows differ, %d of them generic; %s in %s)", failing, k->rows, generic, todo,
+                       file);
+    else
+        sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
+}
+
 static bool _sl_probe_contract(const sl_check *k, const double *student, const double *expected, uint32_t *broken,
                                char *text, size_t n, int *shown) {
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(sl_probe_at(k->function)->lab);
@@ -246,7 +258,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         sl_diag_say(out, "%s(): %s. For example %s(%s)%s%s", f->name, verdict[0] ? verdict : "its contract is broken",
                     f->name, inputs, k->about[shown][0] ? " — " : "", k->about[shown]);
         sl_utf8_copy(out->summary, sizeof out->summary, verdict);
-        sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
+        _sl_rows_differ(out, k, failing, todo, file);
         return;
     }
     if (failing == 0) {
@@ -271,12 +283,26 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         out->settled = out->stub = true;
         return;
     }
-    /* What the rows say together, then the row that shows it (or the first that differs). */
+    /* What the rows say together, then the row that shows it (or the first that differs). The verdicts
+     * read the written rows, each there to tell mistakes apart; a generic row's failure (every term drawn
+     * at once) is shown as it is, in the contract's terms its "about" gives. */
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(f->lab);
-    shown = lab && lab->probe_verdict
-                ? lab->probe_verdict(k, cap->numbers, ref->numbers, out->failing_rows, verdict, sizeof verdict)
+    int written = k->rows - k->generic_rows;
+    uint32_t written_failing = written >= 32 ? out->failing_rows : out->failing_rows & ((1u << written) - 1u);
+    sl_check *written_check = written_failing ? malloc(sizeof *written_check) : NULL; /* the check as written */
+    if (written_check) {
+        *written_check = *k;
+        written_check->rows = written;
+        written_check->generic_rows = 0;
+    }
+    sl_verdict_rows written_rows = rows;
+    written_rows.k = written_check;
+    written_rows.failing = written_failing;
+    shown = written_check && lab && lab->probe_verdict
+                ? lab->probe_verdict(written_check, cap->numbers, ref->numbers, written_failing, verdict, sizeof verdict)
                 : -1;
-    if (!verdict[0]) shown = sl_probe_verdict(&rows, verdict, sizeof verdict);
+    if (!verdict[0] && written_check) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
+    free(written_check);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
     /* a verdict that named the mistake says what it shows, for every failing row */
     for (int row = 0; verdict[0] && verdict_predicts && row < k->rows; row++)
@@ -294,7 +320,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         if (equals) snprintf(out->summary, sizeof out->summary, "gives %s", equals + 4);
         else sl_utf8_copy(out->summary, sizeof out->summary, gives ? gives + 2 : evidence);
     }
-    sl_diag_append(out, " (%d of %d rows differ; %s in %s)", failing, k->rows, todo, file);
+    _sl_rows_differ(out, k, failing, todo, file);
 }
 
 bool sl_probe_reference_write(const char *path, const sl_check *k, const double *outputs, char *err, size_t n) {
@@ -303,7 +329,8 @@ bool sl_probe_reference_write(const char *path, const sl_check *k, const double 
     sl_atomic_file file;
     if (!sl_atomic_open(&file, path, err, n)) return false;
     fprintf(file.f, "{\n  \"function\": \"%s\",\n  \"rows\": [\n", f->name);
-    for (int r = 0; r < k->rows; r++) {
+    int written = k->rows - k->generic_rows; /* generic rows are judged by the contract's formula, not kept */
+    for (int r = 0; r < written; r++) {
         fprintf(file.f, "    {\"inputs\": [");
         for (int i = 0; i < inputs; i++) fprintf(file.f, "%s%.9g", i ? ", " : "", (double)k->inputs[r][i]);
         fprintf(file.f, "], \"outputs\": [");
@@ -312,7 +339,7 @@ bool sl_probe_reference_write(const char *path, const sl_check *k, const double 
             if (isnan(v)) fprintf(file.f, "%snull", o ? ", " : "");
             else fprintf(file.f, "%s%.9g", o ? ", " : "", v);
         }
-        fprintf(file.f, "]}%s\n", r + 1 < k->rows ? "," : "");
+        fprintf(file.f, "]}%s\n", r + 1 < written ? "," : "");
     }
     fprintf(file.f, "  ]\n}\n");
     return sl_atomic_commit(&file, err, n);
@@ -330,9 +357,10 @@ bool sl_probe_reference_read(const char *path, const sl_check *k, double *output
     const cJSON *rows = cJSON_GetObjectItemCaseSensitive(json, "rows");
     bool ok = function && cJSON_IsArray(rows);
     if (!ok) snprintf(err, n, "reference corrupt: %s: expected \"function\" and \"rows\"", path);
-    bool same = ok && strcmp(function, f->name) == 0 && cJSON_GetArraySize(rows) == k->rows;
+    int written = k->rows - k->generic_rows;
+    bool same = ok && strcmp(function, f->name) == 0 && cJSON_GetArraySize(rows) == written;
     int inputs = sl_probe_input_count(f);
-    for (int r = 0; ok && same && r < k->rows; r++) {
+    for (int r = 0; ok && same && r < written; r++) {
         const cJSON *row = cJSON_GetArrayItem(rows, r);
         const cJSON *in = cJSON_GetObjectItemCaseSensitive(row, "inputs");
         const cJSON *o = cJSON_GetObjectItemCaseSensitive(row, "outputs");

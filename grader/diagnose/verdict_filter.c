@@ -51,7 +51,9 @@ static int _sl_homogeneous_differs(const sl_verdict_rows *v) {
     const sl_probe_function *f = v->f;
     int coord = _sl_param_offset(f, "shadow_coord"), floats = sl_probe_input_count(f), others = 0, lone = -1;
     if (coord < 0) return -1;
-    for (int a = 0; a < v->k->rows; a++) {
+    /* a generic row has w != 1 and every other term drawn too: its failure alone says nothing of the divide */
+    int written = v->k->rows - v->k->generic_rows;
+    for (int a = 0; a < written; a++) {
         if (!_sl_failed(v, a)) continue;
         _sl_filter_row fa = _sl_filter_row_of(f, v->k->inputs[a]);
         if (fa.kind != _SL_ROW_HOMOGENEOUS) {

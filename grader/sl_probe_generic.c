@@ -1,0 +1,509 @@
+#include "sl_probe_generic.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "sl_probe.h"
+
+/* GL's numbers for the state lab 1's map must have (the grader links no GL). */
+#define _SL_GL_NEAREST 0x2600
+#define _SL_GL_CLAMP_TO_BORDER 0x812D
+
+/* ---- splitmix64, one stream per case and check ---- */
+
+typedef struct _sl_rng {
+    uint64_t state;
+} _sl_rng;
+
+static uint64_t _sl_next(_sl_rng *r) {
+    uint64_t z = (r->state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+/* In [lo, hi). */
+static double _sl_uniform(_sl_rng *r, double lo, double hi) {
+    return lo + (hi - lo) * ((double)(_sl_next(r) >> 11) * 0x1.0p-53);
+}
+
+/* In lo..hi, both included. */
+static int _sl_integer(_sl_rng *r, int lo, int hi) { return lo + (int)(_sl_next(r) % (uint64_t)(hi - lo + 1)); }
+
+static _sl_rng _sl_stream(uint64_t seed, const sl_case *c, const sl_check *k) {
+    char key[256];
+    snprintf(key, sizeof key, "generic/%s/%s", c->name, k->name);
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (const unsigned char *p = (const unsigned char *)key; *p; p++) h = (h ^ *p) * 0x100000001b3ull;
+    _sl_rng r = {seed ^ h};
+    _sl_next(&r);
+    return r;
+}
+
+/* ---- a row's parameters by name ---- */
+
+static void _sl_set(const sl_probe_function *f, float *row, const char *name, const double *v) {
+    int offset = 0;
+    for (int i = 0; i < f->param_count; offset += sl_probe_type_size(f->params[i].type), i++)
+        if (strcmp(f->params[i].name, name) == 0)
+            for (int j = 0; j < sl_probe_type_size(f->params[i].type); j++) row[offset + j] = (float)v[j];
+}
+
+static void _sl_set1(const sl_probe_function *f, float *row, const char *name, double v) { _sl_set(f, row, name, &v); }
+
+static double _sl_get(const sl_probe_function *f, const float *row, const char *name, int j) {
+    const float *p = sl_probe_row_param(f, row, name);
+    return p ? (double)p[j] : NAN;
+}
+
+/* ---- the synthetic maps, read as the probe pass's textures are (64 texels, nearest) ---- */
+
+/* The texel a coordinate reads with GL_NEAREST, clamped to the edge. */
+static int _sl_texel(double u) {
+    int i = (int)floor(u * SL_PROBE_MAP_SIZE);
+    return i < 0 ? 0 : i >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : i;
+}
+
+static double _sl_map_at(sl_probe_map map, double u, double v) {
+    return (double)sl_probe_map_depth(map, _sl_texel(u), _sl_texel(v));
+}
+
+/* A coordinate inside texel i, away from its edges (so a lookup reads that texel on every renderer). */
+static double _sl_in_texel(_sl_rng *r, int i) { return (i + 0.5 + _sl_uniform(r, -0.3, 0.3)) / SL_PROBE_MAP_SIZE; }
+
+/* A shadow coordinate (p * w, w) for a projected point p and a w that is not 1. */
+static void _sl_homogeneous(_sl_rng *r, bool below_one, const double p[3], double out[4]) {
+    double w = below_one ? _sl_uniform(r, 0.35, 0.8) : _sl_uniform(r, 1.4, 3.0);
+    for (int j = 0; j < 3; j++) out[j] = p[j] * w;
+    out[3] = w;
+}
+
+/* ---- each function: its generic rows and its contract ---- */
+
+typedef struct _sl_generic {
+    const char *function;
+    /* fills row (all parameters) and its about; may use the row's index to cover cases in turn */
+    void (*draw)(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n);
+    void (*expect)(const sl_probe_function *f, const float *row, double *out);
+} _sl_generic;
+
+/* lab 1: a map of any size (never one a scene uses), with the lab's filtering and border */
+static void _sl_draw_create_shadow_map(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                       size_t n) {
+    (void)index;
+    int size = _sl_integer(r, 40, 700);
+    if ((size & (size - 1)) == 0) size += 3; /* no power of two: a constant size of its own shows */
+    _sl_set1(f, row, "size", size);
+    snprintf(about, n, "generic size %d (drawn, no scene's): a %dx%d map, GL_NEAREST, GL_CLAMP_TO_BORDER with border "
+                       "depth 1.0",
+             size, size, size);
+}
+
+static void _sl_expect_create_shadow_map(const sl_probe_function *f, const float *row, double *out) {
+    double size = _sl_get(f, row, "size", 0);
+    double want[7] = {_SL_GL_NEAREST, _SL_GL_NEAREST, _SL_GL_CLAMP_TO_BORDER, _SL_GL_CLAMP_TO_BORDER, 1.0, size, size};
+    memcpy(out, want, sizeof want);
+}
+
+/* lab 2: shadow_matrix * world_position, with a projective matrix and w != 1 */
+static void _sl_draw_shadow_coord(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                  size_t n) {
+    (void)index;
+    double m[16], p[4];
+    for (int i = 0; i < 16; i++) m[i] = _sl_uniform(r, -1.5, 1.5);
+    for (int i = 0; i < 3; i++) p[i] = _sl_uniform(r, -4, 4);
+    p[3] = _sl_uniform(r, 0.5, 2.0);
+    _sl_set(f, row, "shadow_matrix", m);
+    _sl_set(f, row, "world_position", p);
+    snprintf(about, n, "generic: a full projective matrix (no zero in its last row) and world_position.w = %.3g", p[3]);
+}
+
+static void _sl_expect_shadow_coord(const sl_probe_function *f, const float *row, double *out) {
+    const float *m = sl_probe_row_param(f, row, "shadow_matrix"), *p = sl_probe_row_param(f, row, "world_position");
+    for (int i = 0; i < 4; i++) {
+        out[i] = 0;
+        for (int j = 0; j < 4; j++) out[i] += (double)m[j * 4 + i] * (double)p[j];
+    }
+}
+
+/* lab 2 and 4: a lookup on the "step" (or "step_floor") map with w != 1, where dividing x and y by w
+ * or not reads different sides of the edge about half the time */
+static void _sl_draw_lookup(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n,
+                            int radius) {
+    sl_probe_map map = index % 2 ? SL_PROBE_MAP_STEP_FLOOR : SL_PROBE_MAP_STEP;
+    int half = SL_PROBE_MAP_SIZE / 2;
+    int i = radius > 0 ? _sl_integer(r, half - radius - 1, half + radius) : _sl_integer(r, 4, SL_PROBE_MAP_SIZE - 5);
+    double p[3] = {_sl_in_texel(r, i), _sl_in_texel(r, _sl_integer(r, 4, SL_PROBE_MAP_SIZE - 5)),
+                   _sl_uniform(r, 0.32, 0.82)};
+    double bias = _sl_uniform(r, 0.001, 0.02), coord[4];
+    _sl_homogeneous(r, (index / 2) % 2 == 0, p, coord);
+    _sl_set1(f, row, "shadow_map", map);
+    _sl_set(f, row, "shadow_coord", coord);
+    _sl_set1(f, row, "bias", bias);
+    if (radius > 0) _sl_set1(f, row, "radius", radius);
+    size_t used = (size_t)snprintf(about, n, "generic: w = %.3g, the point (%.3g, %.3g, %.3g) after the divide of x, "
+                                             "y and z by w, bias %.3g",
+                                   coord[3], p[0], p[1], p[2], bias);
+    if (radius > 0 && used < n)
+        snprintf(about + used, n - used, ", radius %d: a %dx%d grid one texel apart across the edge", radius,
+                 2 * radius + 1, 2 * radius + 1);
+}
+
+static void _sl_draw_compare(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    _sl_draw_lookup(f, r, index, row, about, n, 0);
+}
+
+static void _sl_draw_pcf_grid(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    /* radii 1 to 5 in turn: past the 3 a loop of constant bounds stops at */
+    _sl_draw_lookup(f, r, index, row, about, n, 1 + index % 5);
+}
+
+/* The fraction of a (2r+1)^2 grid of nearest lookups, one texel apart, that are lit (radius 0: one). */
+static double _sl_grid(const sl_probe_function *f, const float *row, int radius) {
+    sl_probe_map map = (sl_probe_map)(int)_sl_get(f, row, "shadow_map", 0);
+    double w = _sl_get(f, row, "shadow_coord", 3), bias = _sl_get(f, row, "bias", 0);
+    double u = _sl_get(f, row, "shadow_coord", 0) / w, v = _sl_get(f, row, "shadow_coord", 1) / w;
+    double z = _sl_get(f, row, "shadow_coord", 2) / w;
+    double lit = 0, texel = 1.0 / SL_PROBE_MAP_SIZE;
+    for (int y = -radius; y <= radius; y++)
+        for (int x = -radius; x <= radius; x++) lit += z - bias > _sl_map_at(map, u + x * texel, v + y * texel) ? 0 : 1;
+    return lit / ((2 * radius + 1) * (2 * radius + 1));
+}
+
+static void _sl_expect_compare(const sl_probe_function *f, const float *row, double *out) { out[0] = _sl_grid(f, row, 0); }
+
+static void _sl_expect_pcf_grid(const sl_probe_function *f, const float *row, double *out) {
+    out[0] = _sl_grid(f, row, (int)_sl_get(f, row, "radius", 0));
+}
+
+/* lab 3: min(constant + slope * tan(theta), max_bias), cos(theta) = n_dot_l, every term non-zero */
+static void _sl_draw_slope_bias(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    /* one row in four near grazing (below 0.1) and still under max_bias, where a floor on cos of its own shows */
+    double n_dot_l = index % 4 == 0 ? _sl_uniform(r, 0.03, 0.1) : _sl_uniform(r, 0.1, 0.97);
+    double constant = _sl_uniform(r, 2e-4, 3e-3);
+    double slope = _sl_uniform(r, 5e-4, 6e-3), tan_theta = sqrt(1 - n_dot_l * n_dot_l) / n_dot_l;
+    double unclamped = constant + slope * tan_theta;
+    /* most rows below the clamp (every term shows), one in four above it */
+    double max_bias = index % 4 == 3 ? unclamped * _sl_uniform(r, 0.5, 0.85) : unclamped * _sl_uniform(r, 1.2, 3.0);
+    _sl_set1(f, row, "n_dot_l", n_dot_l);
+    _sl_set1(f, row, "constant_bias", constant);
+    _sl_set1(f, row, "slope", slope);
+    _sl_set1(f, row, "max_bias", max_bias);
+    snprintf(about, n, "generic: n_dot_l %.3g (tan = %.3g), constant, slope and max_bias all non-zero, %s", n_dot_l,
+             tan_theta, index % 4 == 3 ? "the clamp to max_bias applies" : "below max_bias");
+}
+
+static void _sl_expect_slope_bias(const sl_probe_function *f, const float *row, double *out) {
+    double c = fmax(_sl_get(f, row, "n_dot_l", 0), 1e-4);
+    double bias = _sl_get(f, row, "constant_bias", 0) + _sl_get(f, row, "slope", 0) * sqrt(1 - c * c) / c;
+    out[0] = fmin(bias, _sl_get(f, row, "max_bias", 0));
+}
+
+/* lab 3: world_position + normal * texels * texel_world_size * (1 - n_dot_l) */
+static void _sl_draw_normal_offset(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                   size_t n) {
+    (void)index;
+    double p[3], normal[3], length = 0;
+    for (int j = 0; j < 3; j++) p[j] = _sl_uniform(r, -5, 5), normal[j] = _sl_uniform(r, -1, 1);
+    for (int j = 0; j < 3; j++) length += normal[j] * normal[j];
+    length = sqrt(length) + 1e-9;
+    for (int j = 0; j < 3; j++) normal[j] /= length;
+    double n_dot_l = _sl_uniform(r, 0.1, 0.9), texel = _sl_uniform(r, 0.01, 0.2), texels = _sl_uniform(r, 0.5, 3);
+    _sl_set(f, row, "world_position", p);
+    _sl_set(f, row, "normal", normal);
+    _sl_set1(f, row, "n_dot_l", n_dot_l);
+    _sl_set1(f, row, "texel_world_size", texel);
+    _sl_set1(f, row, "texels", texels);
+    snprintf(about, n, "generic: a slanted normal, n_dot_l %.3g, texel %.3g world units, %.3g texels", n_dot_l, texel,
+             texels);
+}
+
+static void _sl_expect_normal_offset(const sl_probe_function *f, const float *row, double *out) {
+    double k = _sl_get(f, row, "texels", 0) * _sl_get(f, row, "texel_world_size", 0) * (1 - _sl_get(f, row, "n_dot_l", 0));
+    for (int j = 0; j < 3; j++) out[j] = _sl_get(f, row, "world_position", j) + _sl_get(f, row, "normal", j) * k;
+}
+
+/* lab 5: (depth, depth^2) */
+static void _sl_draw_moments(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    (void)index;
+    double depth = _sl_uniform(r, 0.05, 0.95);
+    _sl_set1(f, row, "depth", depth);
+    snprintf(about, n, "generic depth %.3g: (depth, depth^2)", depth);
+}
+
+static void _sl_expect_moments(const sl_probe_function *f, const float *row, double *out) {
+    double d = _sl_get(f, row, "depth", 0);
+    out[0] = d;
+    out[1] = d * d;
+}
+
+/* lab 5: 2r+1 Gaussian taps one texel apart along direction, sigma = max(r/2, 0.5), normalised */
+static void _sl_draw_blur(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    bool along_x = index % 2 == 0;
+    sl_probe_map map = _sl_integer(r, 0, 1) ? SL_PROBE_MAP_MOMENTS_STEP_X : SL_PROBE_MAP_MOMENTS_STEP_Y;
+    int radius = _sl_integer(r, 2, 6), half = SL_PROBE_MAP_SIZE / 2;
+    /* the tap across the edge: within the radius of it along the direction the map changes */
+    int i = _sl_integer(r, half - radius, half + radius - 1), other = _sl_integer(r, 4, SL_PROBE_MAP_SIZE - 5);
+    bool edge_x = map == SL_PROBE_MAP_MOMENTS_STEP_X;
+    double uv[2] = {(edge_x ? i : other) + 0.5, (edge_x ? other : i) + 0.5};
+    uv[0] /= SL_PROBE_MAP_SIZE;
+    uv[1] /= SL_PROBE_MAP_SIZE;
+    double direction[2] = {along_x ? 1 : 0, along_x ? 0 : 1};
+    _sl_set1(f, row, "moments", map);
+    _sl_set(f, row, "uv", uv);
+    _sl_set(f, row, "direction", direction);
+    _sl_set1(f, row, "radius", radius);
+    snprintf(about, n, "generic: radius %d along %s, %s the edge of the \"%s\" map (uv %.4g, %.4g)", radius,
+             along_x ? "x" : "y", along_x == edge_x ? "across" : "beside", sl_probe_map_name(map), uv[0], uv[1]);
+}
+
+static void _sl_expect_blur(const sl_probe_function *f, const float *row, double *out) {
+    sl_probe_map map = (sl_probe_map)(int)_sl_get(f, row, "moments", 0);
+    int radius = (int)_sl_get(f, row, "radius", 0);
+    int x0 = (int)floor(_sl_get(f, row, "uv", 0) * SL_PROBE_MAP_SIZE);
+    int y0 = (int)floor(_sl_get(f, row, "uv", 1) * SL_PROBE_MAP_SIZE);
+    int dx = (int)_sl_get(f, row, "direction", 0), dy = (int)_sl_get(f, row, "direction", 1);
+    double sigma = fmax(radius * 0.5, 0.5), sum[2] = {0, 0}, weights = 0;
+    for (int i = -radius; i <= radius; i++) {
+        double w = exp(-(double)(i * i) / (2 * sigma * sigma));
+        int x = x0 + i * dx, y = y0 + i * dy;
+        x = x < 0 ? 0 : x >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : x;
+        y = y < 0 ? 0 : y >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : y;
+        double d = (double)sl_probe_moments_depth(map, x, y);
+        sum[0] += w * d;
+        sum[1] += w * d * d;
+        weights += w;
+    }
+    out[0] = sum[0] / weights;
+    out[1] = sum[1] / weights;
+}
+
+/* lab 5: Chebyshev's one-tailed bound, variance clamped below by min_variance */
+static void _sl_draw_chebyshev(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    double mu = _sl_uniform(r, 0.15, 0.7), variance = _sl_uniform(r, 4e-4, 0.02);
+    double t = index % 4 == 3 ? mu - _sl_uniform(r, 0.02, 0.1) : mu + _sl_uniform(r, 0.02, 0.25);
+    double min_variance = index % 4 == 2 ? variance * _sl_uniform(r, 1.5, 4) : variance * _sl_uniform(r, 0.05, 0.5);
+    double moments[2] = {mu, mu * mu + variance};
+    _sl_set(f, row, "moments", moments);
+    _sl_set1(f, row, "t", t);
+    _sl_set1(f, row, "min_variance", min_variance);
+    snprintf(about, n, "generic: mean %.3g, variance %.3g, t %.3g (%s), min_variance %.3g (%s)", mu, variance, t,
+             t <= mu ? "in front of the mean: lit" : "behind the mean", min_variance,
+             min_variance > variance ? "above the variance: it applies" : "below the variance");
+}
+
+static void _sl_expect_chebyshev(const sl_probe_function *f, const float *row, double *out) {
+    double mu = _sl_get(f, row, "moments", 0), m2 = _sl_get(f, row, "moments", 1), t = _sl_get(f, row, "t", 0);
+    if (t <= mu) {
+        out[0] = 1;
+        return;
+    }
+    double variance = fmax(m2 - mu * mu, _sl_get(f, row, "min_variance", 0)), d = t - mu;
+    out[0] = variance / (variance + d * d);
+}
+
+/* lab 5: linstep(amount, 1, p_max) */
+static void _sl_draw_bleeding(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    (void)index;
+    double amount = _sl_uniform(r, 0.1, 0.6), p_max = _sl_uniform(r, 0.0, 1.0);
+    _sl_set1(f, row, "p_max", p_max);
+    _sl_set1(f, row, "amount", amount);
+    snprintf(about, n, "generic: p_max %.3g, amount %.3g: (p_max - amount) / (1 - amount), clamped to [0, 1]", p_max,
+             amount);
+}
+
+static void _sl_expect_bleeding(const sl_probe_function *f, const float *row, double *out) {
+    double amount = _sl_get(f, row, "amount", 0), p = _sl_get(f, row, "p_max", 0);
+    out[0] = fmin(fmax((p - amount) / (1 - amount), 0), 1);
+}
+
+/* lab 6: lambda * near * (far/near)^(i/count) + (1 - lambda) * (near + (far - near) * i/count), unused 0 */
+static void _sl_draw_splits(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    (void)index;
+    double near = _sl_uniform(r, 0.2, 4.0), far = _sl_uniform(r, 30, 400), lambda = _sl_uniform(r, 0.15, 0.95);
+    int count = _sl_integer(r, 2, 4);
+    _sl_set1(f, row, "near", near);
+    _sl_set1(f, row, "far", far);
+    _sl_set1(f, row, "count", count);
+    _sl_set1(f, row, "lambda", lambda);
+    snprintf(about, n, "generic: near %.3g (not 1), far %.4g, %d cascades, lambda %.3g: both schemes count", near, far,
+             count, lambda);
+}
+
+static void _sl_expect_splits(const sl_probe_function *f, const float *row, double *out) {
+    double near = _sl_get(f, row, "near", 0), far = _sl_get(f, row, "far", 0), lambda = _sl_get(f, row, "lambda", 0);
+    int count = (int)_sl_get(f, row, "count", 0);
+    for (int i = 0; i < 5; i++) {
+        double t = (double)i / count;
+        out[i] = i > count ? 0 : lambda * near * pow(far / near, t) + (1 - lambda) * (near + (far - near) * t);
+    }
+}
+
+/* lab 6: the first cascade whose far split lies beyond the point's view depth (-z), the last one past them */
+static void _sl_draw_cascade_index(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                   size_t n) {
+    int count = 2 + index % 3;
+    double split[4] = {0, 0, 0, 0}, at = _sl_uniform(r, 0.3, 3);
+    for (int i = 0; i < count; i++) split[i] = at += _sl_uniform(r, 2, 40);
+    /* a depth inside a cascade drawn in turn, away from its ends */
+    int cascade = index % count;
+    double lo = cascade ? split[cascade - 1] : 0.2, hi = split[cascade];
+    double depth = lo + (hi - lo) * _sl_uniform(r, 0.1, 0.9);
+    double position[3] = {_sl_uniform(r, -0.8, 0.8) * depth, _sl_uniform(r, -0.6, 0.6) * depth, -depth};
+    _sl_set(f, row, "view_position", position);
+    _sl_set(f, row, "split_far", split);
+    _sl_set1(f, row, "count", count);
+    snprintf(about, n, "generic: %d cascades ending at %.4g, %.4g, %.4g, %.4g; a point %.4g in front of the camera, off "
+                       "its axis (x %.3g, y %.3g): cascade %d",
+             count, split[0], split[1], split[2], split[3], depth, position[0], position[1], cascade);
+}
+
+static void _sl_expect_cascade_index(const sl_probe_function *f, const float *row, double *out) {
+    double depth = -_sl_get(f, row, "view_position", 2);
+    int count = (int)_sl_get(f, row, "count", 0);
+    out[0] = count - 1;
+    for (int i = 0; i < count - 1; i++)
+        if (depth < _sl_get(f, row, "split_far", i)) {
+            out[0] = i;
+            break;
+        }
+}
+
+/* lab 6 (bonus): the weight of the next cascade across the last `band` of the slice */
+static void _sl_draw_blend(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    (void)index;
+    double split_near = _sl_uniform(r, 0.5, 20), split_far = split_near + _sl_uniform(r, 5, 60);
+    double band = _sl_uniform(r, 0.1, 0.4), start = split_far - band * (split_far - split_near);
+    double depth = _sl_uniform(r, 0, 1) < 0.75 ? _sl_uniform(r, start, split_far) : _sl_uniform(r, split_near, split_far);
+    _sl_set1(f, row, "view_depth", depth);
+    _sl_set1(f, row, "split_near", split_near);
+    _sl_set1(f, row, "split_far", split_far);
+    _sl_set1(f, row, "band", band);
+    snprintf(about, n, "generic: the slice %.4g..%.4g (its near end not 0), band %.3g of it, view depth %.4g",
+             split_near, split_far, band, depth);
+}
+
+static void _sl_expect_blend(const sl_probe_function *f, const float *row, double *out) {
+    double band = _sl_get(f, row, "band", 0), sn = _sl_get(f, row, "split_near", 0), sf = _sl_get(f, row, "split_far", 0);
+    if (band <= 0) {
+        out[0] = 0;
+        return;
+    }
+    double start = sf - band * (sf - sn);
+    out[0] = fmin(fmax((_sl_get(f, row, "view_depth", 0) - start) / (sf - start), 0), 1);
+}
+
+/* lab 7: a 90-degree square perspective, GL's depth range, any near and far */
+static void _sl_draw_face_projection(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                     size_t n) {
+    (void)index;
+    double near = _sl_uniform(r, 0.03, 2.0), far = _sl_uniform(r, 4, 120);
+    _sl_set1(f, row, "near", near);
+    _sl_set1(f, row, "far", far);
+    snprintf(about, n, "generic: near %.3g, far %.4g (a far plane other than the scenes')", near, far);
+}
+
+static void _sl_expect_face_projection(const sl_probe_function *f, const float *row, double *out) {
+    double near = _sl_get(f, row, "near", 0), far = _sl_get(f, row, "far", 0);
+    for (int i = 0; i < 16; i++) out[i] = 0;
+    out[0] = 1;  /* 1 / tan(45 degrees), aspect 1 */
+    out[5] = 1;
+    out[10] = (far + near) / (near - far);
+    out[11] = -1;
+    out[14] = 2 * far * near / (near - far);
+}
+
+/* lab 7: length(light_to_fragment) / far_plane - bias against the "cube_positive" map, a far plane
+ * other than the map's 10 */
+static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                  size_t n) {
+    (void)index;
+    double d[3];
+    int axis = _sl_integer(r, 0, 2);
+    for (int j = 0; j < 3; j++) d[j] = _sl_uniform(r, -0.6, 0.6);
+    d[axis] = _sl_uniform(r, 0, 1) < 0.5 ? -1 : 1; /* well inside one face */
+    double far = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 3, 8) : _sl_uniform(r, 14, 40), bias = _sl_uniform(r, 0.002, 0.02);
+    /* the point's stored-scale depth away from the occluder's 0.1 and the far wall's 1.0 */
+    double current = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 0.03, 0.07) : _sl_uniform(r, 0.14, 0.9);
+    double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), distance = (current + bias) * far;
+    for (int j = 0; j < 3; j++) d[j] *= distance / length;
+    _sl_set1(f, row, "cube_map", SL_PROBE_MAP_CUBE_POSITIVE);
+    _sl_set(f, row, "light_to_fragment", d);
+    _sl_set1(f, row, "far_plane", far);
+    _sl_set1(f, row, "bias", bias);
+    snprintf(about, n, "generic: far_plane %.3g (not the map's 10), the point %.3g from the light towards the %s%c "
+                       "face, bias %.3g",
+             far, distance, d[axis] > 0 ? "+" : "-", "xyz"[axis], bias);
+}
+
+static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row, double *out) {
+    double d[3], length = 0;
+    int axis = 0;
+    for (int j = 0; j < 3; j++) {
+        d[j] = _sl_get(f, row, "light_to_fragment", j);
+        length += d[j] * d[j];
+        if (fabs(d[j]) > fabs(d[axis])) axis = j;
+    }
+    double closest = d[axis] > 0 ? 0.1 : 1.0; /* "cube_positive": 0.1 on +X, +Y, +Z */
+    double current = sqrt(length) / _sl_get(f, row, "far_plane", 0) - _sl_get(f, row, "bias", 0);
+    out[0] = current > closest ? 0 : 1;
+}
+
+static const _sl_generic _sl_generics[] = {
+    {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map},
+    {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord},
+    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare},
+    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare},
+    {"slope_scaled_bias", _sl_draw_slope_bias, _sl_expect_slope_bias},
+    {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset},
+    {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid},
+    {"compute_moments", _sl_draw_moments, _sl_expect_moments},
+    {"blur_moments", _sl_draw_blur, _sl_expect_blur},
+    {"chebyshev_upper_bound", _sl_draw_chebyshev, _sl_expect_chebyshev},
+    {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding},
+    {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits},
+    {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index},
+    {"cascade_blend", _sl_draw_blend, _sl_expect_blend},
+    {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection},
+    {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow},
+};
+
+static const _sl_generic *_sl_find(const char *function) {
+    for (size_t i = 0; i < sizeof _sl_generics / sizeof _sl_generics[0]; i++)
+        if (strcmp(_sl_generics[i].function, function) == 0) return &_sl_generics[i];
+    return NULL;
+}
+
+bool sl_probe_generic_known(const char *function) { return _sl_find(function) != NULL; }
+
+int sl_probe_generic_add(sl_case *c, uint64_t seed) {
+    int added = 0;
+    for (int ki = 0; ki < c->check_count; ki++) {
+        sl_check *k = &c->checks[ki];
+        const sl_probe_function *f = k->kind == SL_CHECK_PROBE ? sl_probe_at(k->function) : NULL;
+        const _sl_generic *g = f ? _sl_find(f->name) : NULL;
+        if (!g || k->generic_rows > 0) continue;
+        int room = SL_PROBE_MAX_ROWS - k->rows, count = room < SL_PROBE_GENERIC_ROWS ? room : SL_PROBE_GENERIC_ROWS;
+        _sl_rng r = _sl_stream(seed, c, k);
+        for (int i = 0; i < count; i++) {
+            int row = k->rows + i;
+            memset(k->inputs[row], 0, sizeof k->inputs[row]);
+            k->row_tolerance[row] = 0;
+            k->row_keep[row] = 0;
+            g->draw(f, &r, i, k->inputs[row], k->about[row], sizeof k->about[row]);
+        }
+        k->rows += count;
+        k->generic_rows = count;
+        added += count;
+    }
+    return added;
+}
+
+bool sl_probe_generic_expected(const sl_check *k, int row, double *out) {
+    const sl_probe_function *f = sl_probe_at(k->function);
+    const _sl_generic *g = f ? _sl_find(f->name) : NULL;
+    if (!g || row < k->rows - k->generic_rows || row >= k->rows) return false;
+    g->expect(f, k->inputs[row], out);
+    return true;
+}

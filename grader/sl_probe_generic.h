@@ -1,0 +1,41 @@
+/* sl_probe_generic: probe rows on generic inputs.
+ *
+ * A probe's written rows are edge cases someone chose, and many of them sit
+ * where a term of the formula vanishes (w = 1, a radius of 1, a far plane of
+ * 10, a near plane of 1). A wrong function can pass them all. So each probed
+ * function that has a formula here also runs on rows drawn from a seed, where
+ * every term of its contract is non-zero and matters (w != 1, radii above 1,
+ * far planes and near planes of any size, sizes that are no scene's), and
+ * those rows are compared with the contract's formula, written here from the
+ * lab READMEs: never with the solution's numbers.
+ *
+ * The seed is the grading run's hidden seed (--hidden --seed S), so a student
+ * cannot tune to the rows; otherwise --probe-seed S, or a fixed one, so that a
+ * run can be repeated. The rows travel to the runner with the written ones,
+ * in the same probe pass; the references hold only the written rows. */
+#ifndef SL_PROBE_GENERIC_H
+#define SL_PROBE_GENERIC_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "sl_case.h"
+
+/* Rows drawn per check (fewer where the written rows leave less room). */
+#define SL_PROBE_GENERIC_ROWS 8
+/* The seed a run without --hidden or --probe-seed draws from. */
+#define SL_PROBE_GENERIC_DEFAULT_SEED 20260421u
+
+/* Whether `function` has a contract formula here (and so generic rows). */
+bool sl_probe_generic_known(const char *function);
+
+/* Appends generic rows to every probe check of c whose function has a formula, drawn from the seed (one
+ * stream per case and check, so a case's rows do not depend on which other cases run). Returns the rows
+ * added. The check's first rows - generic_rows rows stay the written ones. */
+int sl_probe_generic_add(sl_case *c, uint64_t seed);
+
+/* The contract's outputs for generic row `row` of check k (output_count numbers into out). False when
+ * the row is not a generic one. */
+bool sl_probe_generic_expected(const sl_check *k, int row, double *out);
+
+#endif
