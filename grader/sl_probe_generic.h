@@ -1,4 +1,5 @@
-/* sl_probe_generic: probe rows on generic inputs.
+/* sl_probe_generic: probe rows on generic inputs (staff builds: solutions/grader/sl_probe_generic.c;
+ * the handout's grader, without the formulas, has none: sl_probe_generic_none.c).
  *
  * A probe's written rows are edge cases someone chose, and many of them sit
  * where a term of the formula vanishes (w = 1, a radius of 1, a far plane of

@@ -14,6 +14,7 @@
 #include "sl_files.h"
 #include "sl_json.h"
 #include "sl_probe.h"
+#include "camera.h"
 #include "sl_verdict.h"
 #include "sl_utf8.h"
 
@@ -304,6 +305,9 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     if (!verdict[0] && written_check) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
     free(written_check);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
+    /* a matrix no verdict names: told as the camera it is (where it looks, its field of view, its box) */
+    if (!verdict[0] && f->output_count == 16)
+        sl_camera_differences(&cap->numbers[shown * 16], &ref->numbers[shown * 16], verdict, sizeof verdict);
     /* a verdict that named the mistake says what it shows, for every failing row */
     for (int row = 0; verdict[0] && verdict_predicts && row < k->rows; row++)
         if ((out->failing_rows >> row) & 1u) out->row_predicts[row] = verdict_predicts;
