@@ -24,6 +24,8 @@
 #include "sl_grade.h"
 #include "sl_hidden.h"
 #include "sl_probe_generic.h"
+#include "diagnose/camera.h"
+#include <cglm/cglm.h>
 #include "sl_mesh.h"
 #include "sl_scene.h"
 #include "sl_protocol.h"
@@ -1279,6 +1281,80 @@ static void test_grade_compile_error_once(void) {
  * seeds give two tables. */
 /* Generic probe rows: drawn from the seed (the same seed, the same rows), appended after the written ones,
  * every term of the formula non-zero, and judged by the contract's formula. */
+
+/* A matrix told as the camera it is: each kind of difference named in a camera's terms, none for the
+ * same camera or for a matrix that is no camera. */
+static void _sl_flat(mat4 m, double out[16]) {
+    for (int c = 0; c < 4; c++)
+        for (int r = 0; r < 4; r++) out[c * 4 + r] = m[c][r];
+}
+
+static void test_camera_differences(void) {
+    mat4 m;
+    double square[16], wide[16], ortho[16], ortho_far[16], view[16], backwards[16], shear[16];
+    char text[600];
+    glm_perspective(glm_rad(60.0f), 1.0f, 0.5f, 30.0f, m);
+    _sl_flat(m, square);
+    glm_perspective(glm_rad(60.0f), 2.0f, 0.5f, 30.0f, m);
+    _sl_flat(m, wide);
+    CHECK(sl_camera_differences(wide, square, text, sizeof text) && strstr(text, "aspect (width / height) is 2, expected 1"));
+    CHECK(!strstr(text, "field of view") && !strstr(text, "depth range"));
+    CHECK(!sl_camera_differences(square, square, text, sizeof text) && text[0] == '\0');
+    glm_ortho(-5, 5, -4, 4, 1, 20, m);
+    _sl_flat(m, ortho);
+    glm_ortho(-5, 5, -4, 4, 1, 40, m);
+    _sl_flat(m, ortho_far);
+    CHECK(sl_camera_differences(ortho_far, ortho, text, sizeof text) && strstr(text, "depth (near, far) [1, 40], expected [1, 20]"));
+    CHECK(!strstr(text, "spans x"));
+    CHECK(sl_camera_differences(square, ortho, text, sizeof text) && strstr(text, "a perspective projection, where an orthographic"));
+    glm_lookat((vec3){1, 8, 6}, (vec3){1, 7.2f, 5.4f}, (vec3){0, 1, 0}, m);
+    _sl_flat(m, view);
+    glm_lookat((vec3){1, 8, 6}, (vec3){1, 8.8f, 6.6f}, (vec3){0, 1, 0}, m);
+    _sl_flat(m, backwards);
+    CHECK(sl_camera_differences(backwards, view, text, sizeof text) && strstr(text, "it looks the opposite way"));
+    CHECK(!strstr(text, "eye is at")); /* the same eye */
+    memcpy(shear, view, sizeof shear);
+    shear[4] += 0.5; /* the rotation part no longer orthonormal: not a camera */
+    CHECK(sl_camera_differences(shear, view, text, sizeof text) && strstr(text, "no camera's matrix"));
+    CHECK(!sl_camera_differences(view, shear, text, sizeof text)); /* an expected matrix that is no camera: nothing */
+}
+
+/* A slip of one input that every row follows is named; a slip two readings fit is not. */
+static void test_probe_slips(void) {
+    write_file("slips.json",
+               "{\"name\": \"s\", \"lab\": 2, \"checks\": ["
+               " {\"name\": \"coord\", \"kind\": \"probe\", \"points\": 1, \"function\": \"shadow_coord\","
+               "  \"rows\": [{\"shadow_matrix\": [0.5,0,0,0, 0,0.5,0,0, 0,0,0.5,0, 0.5,0.5,0.5,1],"
+               "             \"world_position\": [1, 2, 3, 1]}]}]}");
+    char path[512], err[2048], text[300];
+    snprintf(path, sizeof path, "%s/slips.json", tmp_dir);
+    static sl_case c;
+    CHECK(sl_case_load(&c, path, err, sizeof err));
+    CHECK(sl_probe_generic_add(&c, 7) > 0);
+    static sl_check swapped;
+    swapped = c.checks[0];
+    swapped.generic_rows = swapped.rows; /* every row judged by the formula, to make the student's outputs */
+    int wp = 16; /* world_position follows the matrix's 16 floats */
+    double student[SL_PROBE_MAX_ROWS * 4];
+    for (int row = 0; row < swapped.rows; row++) {
+        float t = swapped.inputs[row][wp];
+        swapped.inputs[row][wp] = swapped.inputs[row][wp + 1];
+        swapped.inputs[row][wp + 1] = t;
+        CHECK(sl_probe_generic_expected(&swapped, row, &student[row * 4]));
+    }
+    CHECK(sl_probe_generic_slip(&c.checks[0], student, text, sizeof text) &&
+          strstr(text, "the x and y of world_position swapped"));
+    /* outputs of the contract itself: no slip */
+    static sl_check same;
+    same = c.checks[0];
+    same.generic_rows = same.rows;
+    for (int row = 0; row < same.rows; row++) CHECK(sl_probe_generic_expected(&same, row, &student[row * 4]));
+    CHECK(!sl_probe_generic_slip(&c.checks[0], student, text, sizeof text) && text[0] == '\0');
+    /* every output 0: negating w, zeroing it and more fit alike, so none is named */
+    memset(student, 0, sizeof student);
+    CHECK(!sl_probe_generic_slip(&c.checks[0], student, text, sizeof text));
+}
+
 static void test_probe_generic_rows(void) {
     write_file("generic.json",
                "{\"name\": \"g\", \"lab\": 4, \"checks\": ["
@@ -1644,6 +1720,8 @@ int main(int argc, char **argv) {
         {"grade_blames_on_evidence", test_grade_blames_on_evidence},
         {"grade_rules_out_once", test_grade_rules_out_once},
         {"grade_rules_out_only_on_generic_inputs", test_grade_rules_out_only_on_generic_inputs},
+        {"camera_differences", test_camera_differences},
+        {"probe_slips", test_probe_slips},
         {"probe_generic_rows", test_probe_generic_rows},
         {"grade_compile_error_once", test_grade_compile_error_once},
         {"hidden_varies_probe_inputs", test_hidden_varies_probe_inputs},

@@ -14,6 +14,7 @@
 #include "sl_files.h"
 #include "sl_json.h"
 #include "sl_probe.h"
+#include "sl_probe_generic.h"
 #include "camera.h"
 #include "sl_verdict.h"
 #include "sl_utf8.h"
@@ -305,6 +306,26 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     if (!verdict[0] && written_check) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
     free(written_check);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
+    /* a slip of one input that every row follows (staff builds: the contracts' formulas) */
+    if (!verdict[0] && sl_probe_generic_slip(k, cap->numbers, verdict, sizeof verdict)) shown = first;
+    /* the same answer on every row while the contract's vary: it does not follow its inputs at all */
+    if (!verdict[0] && f->output_count <= 4 && k->rows > 2) {
+        bool constant = true, expected_vary = false;
+        const double *s0 = &cap->numbers[0], *e0 = &ref->numbers[0];
+        for (int row = 1; row < k->rows; row++)
+            for (int o = 0; o < f->output_count; o++) {
+                double sv = cap->numbers[row * f->output_count + o], ev = ref->numbers[row * f->output_count + o];
+                constant &= isfinite(sv) && fabs(sv - s0[o]) <= 1e-6 * (1 + fabs(s0[o]));
+                expected_vary |= fabs(ev - e0[o]) > 1e-3 * (1 + fabs(e0[o]));
+            }
+        if (constant && expected_vary) {
+            char value[48];
+            _sl_value(s0[0], value, sizeof value);
+            snprintf(verdict, sizeof verdict, "it gives %s%s on all %d rows, whatever its inputs: the answer does not "
+                     "follow them", value, f->output_count > 1 ? " (first output)" : "", k->rows);
+            shown = first;
+        }
+    }
     /* a matrix no verdict names: told as the camera it is (where it looks, its field of view, its box) */
     if (!verdict[0] && f->output_count == 16)
         sl_camera_differences(&cap->numbers[shown * 16], &ref->numbers[shown * 16], verdict, sizeof verdict);

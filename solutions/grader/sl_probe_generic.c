@@ -507,3 +507,154 @@ bool sl_probe_generic_expected(const sl_check *k, int row, double *out) {
     g->expect(f, k->inputs[row], out);
     return true;
 }
+
+/* ---- a slip of one input: the contract's formula with that input changed ---- */
+
+typedef enum _sl_slip_kind {
+    _SL_SLIP_NEGATED,
+    _SL_SLIP_COMPONENT_NEGATED,
+    _SL_SLIP_COMPONENT_ZERO,
+    _SL_SLIP_XY_SWAPPED,
+    _SL_SLIP_DOUBLED,
+    _SL_SLIP_HALVED,
+    _SL_SLIP_ONE_MINUS,
+    _SL_SLIP_ZERO,
+    _SL_SLIP_ONE,
+    _SL_SLIP_PLUS_ONE,
+    _SL_SLIP_MINUS_ONE,
+    _SL_SLIP_SWAPPED_WITH,
+    _SL_SLIP_KINDS
+} _sl_slip_kind;
+
+/* Applies slip `kind` to parameter p (offset, size) of row; `component` and `other` (offset) as the kind needs.
+ * False when the slip does not apply to a parameter of that type. */
+static bool _sl_slip_apply(const sl_probe_function *f, int p, int offset, int size, _sl_slip_kind kind, int component,
+                           int other, float *row) {
+    bool is_int = f->params[p].type == SL_PROBE_INT;
+    float *v = row + offset;
+    switch (kind) {
+    case _SL_SLIP_NEGATED:
+        for (int j = 0; j < size; j++) v[j] = -v[j];
+        return !is_int;
+    case _SL_SLIP_COMPONENT_NEGATED:
+        if (size < 2 || component >= size) return false;
+        v[component] = -v[component];
+        return true;
+    case _SL_SLIP_COMPONENT_ZERO:
+        if (size < 2 || component >= size) return false;
+        v[component] = 0.0f;
+        return true;
+    case _SL_SLIP_XY_SWAPPED: {
+        if (size < 2) return false;
+        float t = v[0];
+        v[0] = v[1];
+        v[1] = t;
+        return true;
+    }
+    case _SL_SLIP_DOUBLED:
+    case _SL_SLIP_HALVED:
+        for (int j = 0; j < size; j++) v[j] *= kind == _SL_SLIP_DOUBLED ? 2.0f : 0.5f;
+        return !is_int;
+    case _SL_SLIP_ONE_MINUS:
+        if (size != 1 || is_int) return false;
+        v[0] = 1.0f - v[0];
+        return true;
+    case _SL_SLIP_ZERO:
+    case _SL_SLIP_ONE:
+        if (size != 1) return false;
+        v[0] = kind == _SL_SLIP_ZERO ? 0.0f : 1.0f;
+        return true;
+    case _SL_SLIP_PLUS_ONE:
+    case _SL_SLIP_MINUS_ONE:
+        if (!is_int) return false;
+        v[0] += kind == _SL_SLIP_PLUS_ONE ? 1.0f : -1.0f;
+        return true;
+    case _SL_SLIP_SWAPPED_WITH:
+        if (other < 0) return false;
+        for (int j = 0; j < size; j++) {
+            float t = v[j];
+            v[j] = row[other + j];
+            row[other + j] = t;
+        }
+        return true;
+    default:
+        return false;
+    }
+}
+
+static void _sl_slip_words(const sl_probe_function *f, int p, _sl_slip_kind kind, int component, int q, char *out,
+                           size_t n) {
+    const char *name = f->params[p].name, *axis = "xyzw";
+    switch (kind) {
+    case _SL_SLIP_NEGATED: snprintf(out, n, "%s negated", name); break;
+    case _SL_SLIP_COMPONENT_NEGATED: snprintf(out, n, "the %c of %s negated", axis[component], name); break;
+    case _SL_SLIP_COMPONENT_ZERO: snprintf(out, n, "the %c of %s left out (0)", axis[component], name); break;
+    case _SL_SLIP_XY_SWAPPED: snprintf(out, n, "the x and y of %s swapped", name); break;
+    case _SL_SLIP_DOUBLED: snprintf(out, n, "%s doubled", name); break;
+    case _SL_SLIP_HALVED: snprintf(out, n, "%s halved", name); break;
+    case _SL_SLIP_ONE_MINUS: snprintf(out, n, "1 - %s in place of %s", name, name); break;
+    case _SL_SLIP_ZERO: snprintf(out, n, "%s left out (0)", name); break;
+    case _SL_SLIP_ONE: snprintf(out, n, "1 in place of %s", name); break;
+    case _SL_SLIP_PLUS_ONE: snprintf(out, n, "%s + 1 in place of %s", name, name); break;
+    case _SL_SLIP_MINUS_ONE: snprintf(out, n, "%s - 1 in place of %s", name, name); break;
+    case _SL_SLIP_SWAPPED_WITH: snprintf(out, n, "%s and %s swapped", name, f->params[q].name); break;
+    default: out[0] = '\0';
+    }
+}
+
+static bool _sl_slip_close(double student, double expected) {
+    return isfinite(student) && isfinite(expected) && fabs(student - expected) <= 1e-3 + 1e-3 * fabs(expected);
+}
+
+bool sl_probe_generic_slip(const sl_check *k, const double *student, char *out, size_t n) {
+    const sl_probe_function *f = sl_probe_at(k->function);
+    const _sl_generic *g = f ? _sl_find(f->name) : NULL;
+    out[0] = '\0';
+    if (!g || k->rows < 1 || f->output_count > 16) return false;
+    int inputs = sl_probe_input_count(f), offsets[SL_PROBE_MAX_PARAMS];
+    for (int p = 0, offset = 0; p < f->param_count; offset += sl_probe_type_size(f->params[p].type), p++)
+        offsets[p] = offset;
+    int matches = 0;
+    char words[200] = "";
+    for (int p = 0; p < f->param_count; p++) {
+        sl_probe_type type = f->params[p].type;
+        if (SL_PROBE_IS_MAP(type) || type == SL_PROBE_MAT4) continue;
+        int size = sl_probe_type_size(type);
+        for (int kind = 0; kind < _SL_SLIP_KINDS; kind++)
+            for (int variant = 0; variant < f->param_count || variant < 4; variant++) {
+                /* the component a component slip takes, or the parameter a swap takes */
+                int component = variant, q = variant;
+                if (kind == _SL_SLIP_COMPONENT_NEGATED || kind == _SL_SLIP_COMPONENT_ZERO ? variant >= size
+                    : kind == _SL_SLIP_SWAPPED_WITH    ? variant >= f->param_count || q <= p ||
+                                                          f->params[q].type != type
+                                                       : variant > 0)
+                    continue;
+                int other = kind == _SL_SLIP_SWAPPED_WITH ? offsets[q] : -1;
+                /* every row must follow the slip, and it must explain at least one row the contract does not */
+                bool all = true, explains = false;
+                for (int row = 0; all && row < k->rows; row++) {
+                    float slipped[SL_PROBE_MAX_INPUTS];
+                    double as_given[16], as_slipped[16];
+                    memcpy(slipped, k->inputs[row], sizeof(float) * (size_t)inputs);
+                    if (!_sl_slip_apply(f, p, offsets[p], size, (_sl_slip_kind)kind, component, other, slipped)) {
+                        all = false;
+                        break;
+                    }
+                    g->expect(f, k->inputs[row], as_given);
+                    g->expect(f, slipped, as_slipped);
+                    for (int o = 0; all && o < f->output_count; o++) {
+                        double s = student[row * f->output_count + o];
+                        all = _sl_slip_close(s, as_slipped[o]);
+                        if (all && !_sl_slip_close(s, as_given[o])) explains = true;
+                    }
+                }
+                if (all && explains && matches++ == 0)
+                    _sl_slip_words(f, p, (_sl_slip_kind)kind, component, q, words, sizeof words);
+            }
+    }
+    /* two slips that both fit are a coincidence of the rows (a clamp both reach, an input both zero out):
+     * neither is named */
+    if (matches != 1) return false;
+    snprintf(out, n, "on every row it answers as the contract does with %s", words);
+    return true;
+}
