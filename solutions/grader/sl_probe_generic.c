@@ -152,6 +152,20 @@ static void _sl_draw_lookup(const sl_probe_function *f, _sl_rng *r, int index, f
 
 static void _sl_draw_compare(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
     _sl_draw_lookup(f, r, index, row, about, n, 0);
+    if (index < 4) return;
+    /* half the rows sit within 0.0015 of the occluder's depth plus the bias, in front or behind: a bias
+     * of one's own, or a comparison that adds it, turns these */
+    int half = SL_PROBE_MAP_SIZE / 2;
+    double coord[4], bias = _sl_get(f, row, "bias", 0), delta = _sl_uniform(r, 0.0004, 0.0015) * (index % 2 ? 1 : -1);
+    for (int j = 0; j < 4; j++) coord[j] = _sl_get(f, row, "shadow_coord", j);
+    double w = coord[3], u = _sl_in_texel(r, _sl_integer(r, 4, half - 5));
+    double depth = _sl_map_at(SL_PROBE_MAP_STEP, u, 0.5) + bias + delta;
+    coord[0] = u * w;
+    coord[2] = depth * w;
+    _sl_set1(f, row, "shadow_map", SL_PROBE_MAP_STEP);
+    _sl_set(f, row, "shadow_coord", coord);
+    snprintf(about, n, "generic: w = %.3g, on the occluder (depth 0.25), the point %.2g %s it beyond the bias %.3g",
+             w, fabs(delta), delta > 0 ? "behind" : "in front of", bias);
 }
 
 static void _sl_draw_pcf_grid(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
