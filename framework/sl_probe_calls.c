@@ -92,7 +92,8 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
 
 /* lab1_create_shadow_map(size): the map's filtering and wrapping, as glGet*
  * reports them: what a lookup of a later lab reads between texels and past
- * the map's edge; and the texture's size, which must be the argument's. */
+ * the map's edge; and the texture's size, which must be the argument's, as
+ * must map->size. */
 static sl_status _sl_call_create_shadow_map(const sl_lab_functions *labs, int size, double *out) {
     sl_shadow_map map = {0};
     sl_status status = labs->lab1_create_shadow_map(size, &map);
@@ -118,6 +119,7 @@ static sl_status _sl_call_create_shadow_map(const sl_lab_functions *labs, int si
         out[5] = width;
         out[6] = height;
     }
+    out[7] = map.size; /* what lab1_begin_depth_pass sizes the viewport by */
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (map.framebuffer) glDeleteFramebuffers(1, &map.framebuffer);
     if (map.depth_texture) glDeleteTextures(1, &map.depth_texture);

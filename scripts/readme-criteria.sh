@@ -145,7 +145,8 @@ defaults_stated() {
       continue                                   # no default of the table to state (a probe's are its own)
     fi
     echo "  $kind: says ${said:-no default}; the table in framework/sl_case.c: threshold ${thr[$kind]}, fail fraction ${fail_of[$kind]}, mean ${mean_of[$kind]}, epsilon ${eps[$kind]}"
-  done < <(awk -F'|' '/^\| `[a-z_]+` \|/ { k = $2; gsub(/[ `]/, "", k); print k "\t" $5 }' "$doc")
+  done < <(awk -F'|' '/^## / { kinds = ($0 == "## Check kinds") }   # the table of that section alone
+                      kinds && /^\| `[a-z_]+` \|/ { k = $2; gsub(/[ `]/, "", k); print k "\t" $5 }' "$doc")
 }
 
 fail=0

@@ -102,7 +102,8 @@ static void _sl_draw_create_shadow_map(const sl_probe_function *f, _sl_rng *r, i
 
 static void _sl_expect_create_shadow_map(const sl_probe_function *f, const float *row, double *out) {
     double size = _sl_get(f, row, "size", 0);
-    double want[7] = {_SL_GL_NEAREST, _SL_GL_NEAREST, _SL_GL_CLAMP_TO_BORDER, _SL_GL_CLAMP_TO_BORDER, 1.0, size, size};
+    double want[8] = {_SL_GL_NEAREST, _SL_GL_NEAREST, _SL_GL_CLAMP_TO_BORDER, _SL_GL_CLAMP_TO_BORDER, 1.0, size, size,
+                      size};
     memcpy(out, want, sizeof want);
 }
 
