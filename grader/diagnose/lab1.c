@@ -171,20 +171,6 @@ bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *fn) { re
 /* Outputs: min filter, mag filter, wrap S, wrap T, the border's depth (-1 without a border), the texture's
  * width and height, map->size. */
 static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, size_t n) {
-    /* map->size: the depth pass's viewport is sized by it, so a map whose texture is right but whose record
-     * is not draws into a viewport of the wrong size (0x0 when it is never set) */
-    for (int r = 0; r < v->k->rows; r++) {
-        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 7)) || _sl_got(v, r, 7) == _sl_want(v, r, 7)) continue;
-        if (_sl_got(v, r, 7) == 0)
-            snprintf(text, n, "map->size is never set (0, the size argument is %g): lab1_begin_depth_pass sizes the "
-                              "viewport by it, so the depth pass draws into 0x0 pixels and the map stays empty — "
-                              "map->size = size", _sl_want(v, r, 7));
-        else
-            snprintf(text, n, "map->size is %g, not the size argument %g: lab1_begin_depth_pass sizes the viewport by "
-                              "it — map->size = size", _sl_got(v, r, 7), _sl_want(v, r, 7));
-        sl_verdict_predicts(v, 1u << SL_SYMPTOM_GROSS);
-        return r;
-    }
     /* the size first: a map of a size of its own is wrong on every row whose size is not that one */
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 5))) continue;
@@ -199,6 +185,20 @@ static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, s
         else
             snprintf(text, n, "the map is %gx%g, not size x size (%g): use the size argument for both sides of "
                               "the texture", width, height, size);
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_GROSS);
+        return r;
+    }
+    /* then map->size: the depth pass's viewport is sized by it, so a map whose texture is right but whose record
+     * is not draws into a viewport of the wrong size (0x0 when it is never set) */
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 7)) || _sl_got(v, r, 7) == _sl_want(v, r, 7)) continue;
+        if (_sl_got(v, r, 7) == 0)
+            snprintf(text, n, "map->size is never set (0, the size argument is %g): lab1_begin_depth_pass sizes the "
+                              "viewport by it, so the depth pass draws into 0x0 pixels and the map stays empty — "
+                              "map->size = size", _sl_want(v, r, 7));
+        else
+            snprintf(text, n, "map->size is %g, not the size argument %g: lab1_begin_depth_pass sizes the viewport by "
+                              "it — map->size = size", _sl_got(v, r, 7), _sl_want(v, r, 7));
         sl_verdict_predicts(v, 1u << SL_SYMPTOM_GROSS);
         return r;
     }
