@@ -39,13 +39,16 @@ int sl_probe_generic_add(sl_case *c, uint64_t seed);
  * the row is not a generic one. */
 bool sl_probe_generic_expected(const sl_check *k, int row, double *out);
 
-/* A slip of one input that the student's outputs (rows x outputs, every row of k, written and generic)
- * follow: the contract's formula with that input negated, a component of it negated, its x and y
- * swapped, doubled, halved, 1 - it, 0 (or a component of it 0), 1, an integer off by one, or two inputs swapped, gives every
- * row's outputs, and explains at least one the contract as given does not, and no other slip does the
- * same (two that fit are a coincidence of the rows). Writes "on every row it
- * answers as the contract does with view_position negated" and returns true; false where no one slip
- * does (or the function has no formula here). */
-bool sl_probe_generic_slip(const sl_check *k, const double *student, char *out, size_t n);
+/* A slip that the student's outputs (rows x outputs, every row of k, written and generic) follow: either
+ * of one input (the contract's formula with that input negated, a component of it negated, its x and y
+ * swapped, doubled, halved, 1 - it, 0 (or a component of it 0), 1, an integer off by one, or two inputs
+ * swapped), or of the formula itself (each formula's own catalogue: a term dropped or not squared, sin
+ * for tan, a loop one short, a reversed comparison...). It must give every modelled row's outputs (the
+ * generic rows, and the written rows where the contract's formula gives `expected`, the reference's
+ * answers; NULL: all rows), explain at least one the contract does not, and be the only slip that does
+ * (two that fit are a coincidence of the rows). Writes "on every row it answers as the contract does
+ * with view_position negated" (or "... as if it computed X, where the contract says Y") and returns
+ * true; false where no one slip does (or the function has no formula here). */
+bool sl_probe_generic_slip(const sl_check *k, const double *student, const double *expected, char *out, size_t n);
 
 #endif

@@ -1342,17 +1342,45 @@ static void test_probe_slips(void) {
         swapped.inputs[row][wp + 1] = t;
         CHECK(sl_probe_generic_expected(&swapped, row, &student[row * 4]));
     }
-    CHECK(sl_probe_generic_slip(&c.checks[0], student, text, sizeof text) &&
+    CHECK(sl_probe_generic_slip(&c.checks[0], student, NULL, text, sizeof text) &&
           strstr(text, "the x and y of world_position swapped"));
     /* outputs of the contract itself: no slip */
     static sl_check same;
     same = c.checks[0];
     same.generic_rows = same.rows;
     for (int row = 0; row < same.rows; row++) CHECK(sl_probe_generic_expected(&same, row, &student[row * 4]));
-    CHECK(!sl_probe_generic_slip(&c.checks[0], student, text, sizeof text) && text[0] == '\0');
+    CHECK(!sl_probe_generic_slip(&c.checks[0], student, NULL, text, sizeof text) && text[0] == '\0');
     /* every output 0: negating w, zeroing it and more fit alike, so none is named */
     memset(student, 0, sizeof student);
-    CHECK(!sl_probe_generic_slip(&c.checks[0], student, text, sizeof text));
+    CHECK(!sl_probe_generic_slip(&c.checks[0], student, NULL, text, sizeof text));
+
+    /* a slip of the formula itself: sin(theta) for tan(theta) in the slope-scaled bias, clamped as asked */
+    write_file("slips_bias.json",
+               "{\"name\": \"b\", \"lab\": 3, \"checks\": ["
+               " {\"name\": \"bias\", \"kind\": \"probe\", \"points\": 1, \"function\": \"slope_scaled_bias\","
+               "  \"rows\": [{\"n_dot_l\": 0.5, \"constant_bias\": 0.0005, \"slope\": 0.0015, \"max_bias\": 0.01}]}]}");
+    snprintf(path, sizeof path, "%s/slips_bias.json", tmp_dir);
+    static sl_case b;
+    CHECK(sl_case_load(&b, path, err, sizeof err));
+    CHECK(sl_probe_generic_add(&b, 11) > 0);
+    const sl_check *bias = &b.checks[0];
+    const sl_probe_function *sb = sl_probe_at(bias->function);
+    for (int row = 0; row < bias->rows; row++) {
+        double cos_theta = sl_probe_row_param(sb, bias->inputs[row], "n_dot_l")[0];
+        double sum = sl_probe_row_param(sb, bias->inputs[row], "constant_bias")[0] +
+                     sl_probe_row_param(sb, bias->inputs[row], "slope")[0] * sqrt(1 - cos_theta * cos_theta);
+        student[row] = fmin(sum, sl_probe_row_param(sb, bias->inputs[row], "max_bias")[0]);
+    }
+    CHECK(sl_probe_generic_slip(bias, student, NULL, text, sizeof text) &&
+          strstr(text, "as if it computed sin(theta) in place of tan(theta)"));
+    /* the contract's own outputs: no slip */
+    for (int row = 0; row < bias->rows; row++) {
+        double cos_theta = sl_probe_row_param(sb, bias->inputs[row], "n_dot_l")[0];
+        double sum = sl_probe_row_param(sb, bias->inputs[row], "constant_bias")[0] +
+                     sl_probe_row_param(sb, bias->inputs[row], "slope")[0] * sqrt(1 - cos_theta * cos_theta) / cos_theta;
+        student[row] = fmin(sum, sl_probe_row_param(sb, bias->inputs[row], "max_bias")[0]);
+    }
+    CHECK(!sl_probe_generic_slip(bias, student, NULL, text, sizeof text));
 }
 
 static void test_probe_generic_rows(void) {

@@ -291,6 +291,13 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     const sl_lab_diagnoses *lab = sl_lab_diagnoses_of(f->lab);
     int written = k->rows - k->generic_rows;
     uint32_t written_failing = written >= 32 ? out->failing_rows : out->failing_rows & ((1u << written) - 1u);
+    /* A slip that every row the contract's formula models follows, and no other slip does (staff builds:
+     * the contracts' formulas): it reads every row, written and generic, so it leads over a verdict read
+     * from the written rows alone. */
+    if (sl_probe_generic_slip(k, cap->numbers, ref->numbers, verdict, sizeof verdict)) {
+        shown = first;
+        written_failing = 0;
+    }
     sl_check *written_check = written_failing ? malloc(sizeof *written_check) : NULL; /* the check as written */
     if (written_check) {
         *written_check = *k;
@@ -306,8 +313,6 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     if (!verdict[0] && written_check) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
     free(written_check);
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
-    /* a slip of one input that every row follows (staff builds: the contracts' formulas) */
-    if (!verdict[0] && sl_probe_generic_slip(k, cap->numbers, verdict, sizeof verdict)) shown = first;
     /* the same answer on every row while the contract's vary: it does not follow its inputs at all */
     if (!verdict[0] && f->output_count <= 4 && k->rows > 2) {
         bool constant = true, expected_vary = false;

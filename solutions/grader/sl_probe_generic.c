@@ -85,7 +85,10 @@ typedef struct _sl_generic {
     const char *function;
     /* fills row (all parameters) and its about; may use the row's index to cover cases in turn */
     void (*draw)(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n);
-    void (*expect)(const sl_probe_function *f, const float *row, double *out);
+    /* the contract's outputs for row (slip 0), or the outputs of the formula with slip `slip` (1..) made */
+    void (*expect)(const sl_probe_function *f, const float *row, int slip, double *out);
+    /* slip i (from 1) as "what the formula then computes", "what the contract says"; NULL-ended */
+    const char *const (*slips)[2];
 } _sl_generic;
 
 /* lab 1: a map of any size (never one a scene uses), with the lab's filtering and border */
@@ -100,7 +103,8 @@ static void _sl_draw_create_shadow_map(const sl_probe_function *f, _sl_rng *r, i
              size, size, size);
 }
 
-static void _sl_expect_create_shadow_map(const sl_probe_function *f, const float *row, double *out) {
+static void _sl_expect_create_shadow_map(const sl_probe_function *f, const float *row, int slip, double *out) {
+    (void)slip;
     double size = _sl_get(f, row, "size", 0);
     double want[8] = {_SL_GL_NEAREST, _SL_GL_NEAREST, _SL_GL_CLAMP_TO_BORDER, _SL_GL_CLAMP_TO_BORDER, 1.0, size, size,
                       size};
@@ -120,12 +124,26 @@ static void _sl_draw_shadow_coord(const sl_probe_function *f, _sl_rng *r, int in
     snprintf(about, n, "generic: a full projective matrix (no zero in its last row) and world_position.w = %.3g", p[3]);
 }
 
-static void _sl_expect_shadow_coord(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_shadow_coord_slips[][2] = {
+    {"", ""},
+    {"world_position * shadow_matrix (the matrix transposed)", "shadow_matrix * world_position"},
+    {"the matrix times (world_position.xyz, 1): its w taken as 1", "shadow_matrix * world_position, w as given"},
+    {"the product divided by its w", "shadow_matrix * world_position, undivided (the lookup divides)"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_shadow_coord(const sl_probe_function *f, const float *row, int slip, double *out) {
     const float *m = sl_probe_row_param(f, row, "shadow_matrix"), *p = sl_probe_row_param(f, row, "world_position");
     for (int i = 0; i < 4; i++) {
         out[i] = 0;
-        for (int j = 0; j < 4; j++) out[i] += (double)m[j * 4 + i] * (double)p[j];
+        for (int j = 0; j < 4; j++) {
+            double pj = slip == 2 && j == 3 ? 1.0 : (double)p[j];
+            out[i] += (slip == 1 ? (double)m[i * 4 + j] : (double)m[j * 4 + i]) * pj;
+        }
     }
+    if (slip == 3 && out[3] != 0)
+        for (int i = 0; i < 4; i++) out[i] /= i == 3 ? 1 : out[3];
+    if (slip == 3) out[3] = 1;
 }
 
 /* lab 2 and 4: a lookup on the "step" (or "step_floor") map with w != 1, where dividing x and y by w
@@ -174,22 +192,79 @@ static void _sl_draw_pcf_grid(const sl_probe_function *f, _sl_rng *r, int index,
     _sl_draw_lookup(f, r, index, row, about, n, 1 + index % 5);
 }
 
-/* The fraction of a (2r+1)^2 grid of nearest lookups, one texel apart, that are lit (radius 0: one). */
-static double _sl_grid(const sl_probe_function *f, const float *row, int radius) {
+/* How a grid lookup departs from the contract (one slip at a time). */
+typedef enum _sl_grid_slip {
+    _SL_GRID_CONTRACT,
+    _SL_GRID_REVERSED,
+    _SL_GRID_XY_NOT_DIVIDED,
+    _SL_GRID_Z_NOT_DIVIDED,
+    _SL_GRID_NO_FRUSTUM_TEST,
+    _SL_GRID_ONE_ROW,
+    _SL_GRID_ONE_SHORT,
+    _SL_GRID_ONE_SHORT_FULL_COUNT,
+    _SL_GRID_DIVIDED_BY_SIDE,
+    _SL_GRID_UV_STEPS,
+    _SL_GRID_TWO_TEXEL_STEPS,
+} _sl_grid_slip;
+
+static const char *const _sl_compare_slips[][2] = {
+    {"", ""},
+    {"the comparison reversed: lit where the point lies behind the stored depth", "p.z - bias > closest: shadowed"},
+    {"x and y not divided by w (the map read at shadow_coord.xy)", "p = shadow_coord.xyz / shadow_coord.w, then read at p.xy"},
+    {"z not divided by w (shadow_coord.z compared)", "p.z = shadow_coord.z / shadow_coord.w compared"},
+    {"no test for points outside the light's frustum (w <= 0, or p outside [0, 1]): they read the map", "outside the light's frustum: lit (1.0)"},
+    {NULL, NULL},
+};
+
+static const char *const _sl_grid_slips[][2] = {
+    {"", ""},
+    {"the comparison reversed: lit where the point lies behind the stored depth", "p.z - bias > closest: shadowed"},
+    {"x and y not divided by w (the map read around shadow_coord.xy)", "p = shadow_coord.xyz / shadow_coord.w"},
+    {"z not divided by w (shadow_coord.z compared)", "p.z = shadow_coord.z / shadow_coord.w compared"},
+    {"no test for points outside the light's frustum: they read the map", "outside the light's frustum: lit (1.0)"},
+    {"one row of the grid (y fixed at 0), averaged over (2r+1)^2", "a (2r+1) x (2r+1) grid: y from -radius to radius too"},
+    {"loops from -radius to radius - 1 (one short), averaged over the taps taken", "x and y from -radius to radius, both included"},
+    {"loops from -radius to radius - 1 (one short), divided by (2r+1)^2", "x and y from -radius to radius, both included"},
+    {"the sum divided by 2r+1, not by (2r+1)^2 taps", "the sum divided by (2r+1)^2, the number of taps"},
+    {"offsets in whole uv units (x, y), not in texels", "offsets (x, y) * texel, texel = 1.0 / textureSize(shadow_map, 0)"},
+    {"offsets two texels apart", "offsets one texel apart"},
+    {NULL, NULL},
+};
+
+/* The fraction of a (2r+1)^2 grid of nearest lookups, one texel apart, that are lit (radius 0: one); outside
+ * the light's frustum (w <= 0, or p outside [0, 1]) lit. */
+static double _sl_grid(const sl_probe_function *f, const float *row, int radius, _sl_grid_slip slip) {
     sl_probe_map map = (sl_probe_map)(int)_sl_get(f, row, "shadow_map", 0);
     double w = _sl_get(f, row, "shadow_coord", 3), bias = _sl_get(f, row, "bias", 0);
-    double u = _sl_get(f, row, "shadow_coord", 0) / w, v = _sl_get(f, row, "shadow_coord", 1) / w;
-    double z = _sl_get(f, row, "shadow_coord", 2) / w;
-    double lit = 0, texel = 1.0 / SL_PROBE_MAP_SIZE;
-    for (int y = -radius; y <= radius; y++)
-        for (int x = -radius; x <= radius; x++) lit += z - bias > _sl_map_at(map, u + x * texel, v + y * texel) ? 0 : 1;
-    return lit / ((2 * radius + 1) * (2 * radius + 1));
+    double xy_w = slip == _SL_GRID_XY_NOT_DIVIDED ? 1 : w, z_w = slip == _SL_GRID_Z_NOT_DIVIDED ? 1 : w;
+    double u = _sl_get(f, row, "shadow_coord", 0) / xy_w, v = _sl_get(f, row, "shadow_coord", 1) / xy_w;
+    double z = _sl_get(f, row, "shadow_coord", 2) / z_w;
+    double px = _sl_get(f, row, "shadow_coord", 0) / w, py = _sl_get(f, row, "shadow_coord", 1) / w;
+    double pz = _sl_get(f, row, "shadow_coord", 2) / w;
+    bool outside = w <= 0 || px < 0 || px > 1 || py < 0 || py > 1 || pz < 0 || pz > 1;
+    if (outside && slip != _SL_GRID_NO_FRUSTUM_TEST) return 1;
+    double texel = slip == _SL_GRID_UV_STEPS ? 1.0 : slip == _SL_GRID_TWO_TEXEL_STEPS ? 2.0 / SL_PROBE_MAP_SIZE
+                                                                                    : 1.0 / SL_PROBE_MAP_SIZE;
+    int hi = slip == _SL_GRID_ONE_SHORT || slip == _SL_GRID_ONE_SHORT_FULL_COUNT ? radius - 1 : radius;
+    int y0 = slip == _SL_GRID_ONE_ROW ? 0 : -radius, y1 = slip == _SL_GRID_ONE_ROW ? 0 : hi;
+    if (radius == 0) hi = y1 = 0;
+    double lit = 0, taps = 0;
+    for (int y = y0; y <= y1; y++)
+        for (int x = -radius; x <= hi; x++, taps++) {
+            bool behind = z - bias > _sl_map_at(map, u + x * texel, v + y * texel);
+            lit += behind == (slip == _SL_GRID_REVERSED) ? 1 : 0;
+        }
+    double side = 2 * radius + 1;
+    return slip == _SL_GRID_ONE_SHORT && taps > 0 ? lit / taps : slip == _SL_GRID_DIVIDED_BY_SIDE ? lit / side
+                                                                                               : lit / (side * side);
 }
 
-static void _sl_expect_compare(const sl_probe_function *f, const float *row, double *out) { out[0] = _sl_grid(f, row, 0); }
+static void _sl_expect_compare(const sl_probe_function *f, const float *row, int slip, double *out) {
+    out[0] = _sl_grid(f, row, 0, (_sl_grid_slip)slip);
+}
 
-static void _sl_expect_pcf_grid(const sl_probe_function *f, const float *row, double *out) {
-    out[0] = _sl_grid(f, row, (int)_sl_get(f, row, "radius", 0));
+static void _sl_expect_pcf_grid(const sl_probe_function *f, const float *row, int slip, double *out) {
+    out[0] = _sl_grid(f, row, (int)_sl_get(f, row, "radius", 0), (_sl_grid_slip)slip);
 }
 
 /* lab 3: min(constant + slope * tan(theta), max_bias), cos(theta) = n_dot_l, every term non-zero */
@@ -209,10 +284,29 @@ static void _sl_draw_slope_bias(const sl_probe_function *f, _sl_rng *r, int inde
              tan_theta, index % 4 == 3 ? "the clamp to max_bias applies" : "below max_bias");
 }
 
-static void _sl_expect_slope_bias(const sl_probe_function *f, const float *row, double *out) {
-    double c = fmax(_sl_get(f, row, "n_dot_l", 0), 1e-4);
-    double bias = _sl_get(f, row, "constant_bias", 0) + _sl_get(f, row, "slope", 0) * sqrt(1 - c * c) / c;
-    out[0] = fmin(bias, _sl_get(f, row, "max_bias", 0));
+static const char *const _sl_slope_bias_slips[][2] = {
+    {"", ""},
+    {"sin(theta) in place of tan(theta)", "tan(theta) = sqrt(1 - n_dot_l^2) / n_dot_l"},
+    {"1 / n_dot_l in place of tan(theta)", "tan(theta) = sqrt(1 - n_dot_l^2) / n_dot_l"},
+    {"the angle theta itself (radians) in place of tan(theta)", "tan(theta), theta = acos(n_dot_l)"},
+    {"tan(n_dot_l) in place of tan(acos(n_dot_l))", "tan(theta), theta = acos(n_dot_l)"},
+    {"n_dot_l (cos theta) in place of tan(theta)", "tan(theta) = sqrt(1 - n_dot_l^2) / n_dot_l"},
+    {"the clamp on the slope term alone: constant + min(slope * tan(theta), max_bias)",
+     "min(constant + slope * tan(theta), max_bias): the sum clamped"},
+    {"max in place of min: max_bias as a floor", "min(constant + slope * tan(theta), max_bias): max_bias a ceiling"},
+    {"no clamp to max_bias", "min(constant + slope * tan(theta), max_bias)"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_slope_bias(const sl_probe_function *f, const float *row, int slip, double *out) {
+    double c = fmax(_sl_get(f, row, "n_dot_l", 0), 1e-4), s = sqrt(fmax(1 - c * c, 0));
+    double term = slip == 1 ? s : slip == 2 ? 1 / c : slip == 3 ? acos(c) : slip == 4 ? tan(c) : slip == 5 ? c : s / c;
+    double constant = _sl_get(f, row, "constant_bias", 0), slope = _sl_get(f, row, "slope", 0);
+    double max_bias = _sl_get(f, row, "max_bias", 0);
+    out[0] = slip == 6 ? constant + fmin(slope * term, max_bias)
+           : slip == 7 ? fmax(constant + slope * term, max_bias)
+           : slip == 8 ? constant + slope * term
+                       : fmin(constant + slope * term, max_bias);
 }
 
 /* lab 3: world_position + normal * texels * texel_world_size * (1 - n_dot_l) */
@@ -234,7 +328,8 @@ static void _sl_draw_normal_offset(const sl_probe_function *f, _sl_rng *r, int i
              texels);
 }
 
-static void _sl_expect_normal_offset(const sl_probe_function *f, const float *row, double *out) {
+static void _sl_expect_normal_offset(const sl_probe_function *f, const float *row, int slip, double *out) {
+    (void)slip; /* its slips are slips of one input (n_dot_l as 1 - it, or 0; the normal negated) */
     double k = _sl_get(f, row, "texels", 0) * _sl_get(f, row, "texel_world_size", 0) * (1 - _sl_get(f, row, "n_dot_l", 0));
     for (int j = 0; j < 3; j++) out[j] = _sl_get(f, row, "world_position", j) + _sl_get(f, row, "normal", j) * k;
 }
@@ -247,10 +342,19 @@ static void _sl_draw_moments(const sl_probe_function *f, _sl_rng *r, int index, 
     snprintf(about, n, "generic depth %.3g: (depth, depth^2)", depth);
 }
 
-static void _sl_expect_moments(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_moments_slips[][2] = {
+    {"", ""},
+    {"(depth, depth): the second moment not squared", "(depth, depth * depth)"},
+    {"(depth * depth, depth): the moments swapped", "(depth, depth * depth)"},
+    {"the moments of 2 * depth - 1 (NDC depth)", "the moments of the window depth in [0, 1], as given"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_moments(const sl_probe_function *f, const float *row, int slip, double *out) {
     double d = _sl_get(f, row, "depth", 0);
-    out[0] = d;
-    out[1] = d * d;
+    if (slip == 3) d = 2 * d - 1;
+    out[0] = slip == 2 ? d * d : d;
+    out[1] = slip == 1 || slip == 2 ? d : d * d;
 }
 
 /* lab 5: 2r+1 Gaussian taps one texel apart along direction, sigma = max(r/2, 0.5), normalised */
@@ -273,16 +377,33 @@ static void _sl_draw_blur(const sl_probe_function *f, _sl_rng *r, int index, flo
              along_x ? "x" : "y", along_x == edge_x ? "across" : "beside", sl_probe_map_name(map), uv[0], uv[1]);
 }
 
-static void _sl_expect_blur(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_blur_slips[][2] = {
+    {"", ""},
+    {"weights not normalised: the sum not divided by the weights' total", "the weighted sum divided by the sum of the weights"},
+    {"equal weights (a box filter)", "Gaussian weights exp(-i^2 / (2 sigma^2))"},
+    {"sigma = radius", "sigma = max(radius / 2, 0.5)"},
+    {"taps from -radius to radius - 1 (one short)", "taps from -radius to radius, both included"},
+    {"taps two texels apart", "taps one texel apart along direction"},
+    {"taps a whole uv unit apart, not a texel", "taps one texel (1.0 / textureSize) apart along direction"},
+    {"only the first moment blurred (the second as read at uv)", "both moments blurred alike"},
+    {"always along x, whatever direction is", "taps along direction"},
+    {"always along y, whatever direction is", "taps along direction"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_blur(const sl_probe_function *f, const float *row, int slip, double *out) {
     sl_probe_map map = (sl_probe_map)(int)_sl_get(f, row, "moments", 0);
     int radius = (int)_sl_get(f, row, "radius", 0);
     int x0 = (int)floor(_sl_get(f, row, "uv", 0) * SL_PROBE_MAP_SIZE);
     int y0 = (int)floor(_sl_get(f, row, "uv", 1) * SL_PROBE_MAP_SIZE);
     int dx = (int)_sl_get(f, row, "direction", 0), dy = (int)_sl_get(f, row, "direction", 1);
-    double sigma = fmax(radius * 0.5, 0.5), sum[2] = {0, 0}, weights = 0;
-    for (int i = -radius; i <= radius; i++) {
-        double w = exp(-(double)(i * i) / (2 * sigma * sigma));
-        int x = x0 + i * dx, y = y0 + i * dy;
+    if (slip == 8) dx = 1, dy = 0;
+    if (slip == 9) dx = 0, dy = 1;
+    int step = slip == 5 ? 2 : slip == 6 ? SL_PROBE_MAP_SIZE : 1;
+    double sigma = slip == 3 ? fmax(radius, 0.5) : fmax(radius * 0.5, 0.5), sum[2] = {0, 0}, weights = 0;
+    for (int i = -radius; i <= (slip == 4 ? radius - 1 : radius); i++) {
+        double w = slip == 2 ? 1.0 : exp(-(double)(i * i) / (2 * sigma * sigma));
+        int x = x0 + i * dx * step, y = y0 + i * dy * step;
         x = x < 0 ? 0 : x >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : x;
         y = y < 0 ? 0 : y >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : y;
         double d = (double)sl_probe_moments_depth(map, x, y);
@@ -290,8 +411,13 @@ static void _sl_expect_blur(const sl_probe_function *f, const float *row, double
         sum[1] += w * d * d;
         weights += w;
     }
+    if (slip == 1) weights = 1;
     out[0] = sum[0] / weights;
     out[1] = sum[1] / weights;
+    if (slip == 7) {
+        double d = (double)sl_probe_moments_depth(map, x0, y0);
+        out[1] = d * d;
+    }
 }
 
 /* lab 5: Chebyshev's one-tailed bound, variance clamped below by min_variance */
@@ -308,14 +434,30 @@ static void _sl_draw_chebyshev(const sl_probe_function *f, _sl_rng *r, int index
              min_variance > variance ? "above the variance: it applies" : "below the variance");
 }
 
-static void _sl_expect_chebyshev(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_chebyshev_slips[][2] = {
+    {"", ""},
+    {"the variance as E[x^2] - mu, not E[x^2] - mu^2", "variance = moments.y - mu * mu"},
+    {"the variance not clamped below by min_variance", "variance = max(moments.y - mu * mu, min_variance)"},
+    {"min in place of max: min_variance as a ceiling on the variance", "variance = max(moments.y - mu * mu, min_variance)"},
+    {"min_variance added to the variance", "variance = max(moments.y - mu * mu, min_variance)"},
+    {"d not squared: variance / (variance + d)", "variance / (variance + d * d), d = t - mu"},
+    {"no lit test for t <= mu: the bound used in front of the mean too", "t <= mu: fully lit (1.0)"},
+    {"1 - p_max returned", "p_max = variance / (variance + d * d)"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_chebyshev(const sl_probe_function *f, const float *row, int slip, double *out) {
     double mu = _sl_get(f, row, "moments", 0), m2 = _sl_get(f, row, "moments", 1), t = _sl_get(f, row, "t", 0);
-    if (t <= mu) {
+    double min_variance = _sl_get(f, row, "min_variance", 0);
+    if (t <= mu && slip != 6) {
         out[0] = 1;
         return;
     }
-    double variance = fmax(m2 - mu * mu, _sl_get(f, row, "min_variance", 0)), d = t - mu;
-    out[0] = variance / (variance + d * d);
+    double raw = slip == 1 ? m2 - mu : m2 - mu * mu;
+    double variance = slip == 2 ? raw : slip == 3 ? fmin(raw, min_variance) : slip == 4 ? raw + min_variance
+                                                                                         : fmax(raw, min_variance);
+    double d = t - mu, p = variance / (variance + (slip == 5 ? d : d * d));
+    out[0] = slip == 7 ? 1 - p : p;
 }
 
 /* lab 5: linstep(amount, 1, p_max) */
@@ -328,9 +470,23 @@ static void _sl_draw_bleeding(const sl_probe_function *f, _sl_rng *r, int index,
              amount);
 }
 
-static void _sl_expect_bleeding(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_bleeding_slips[][2] = {
+    {"", ""},
+    {"linstep(0, amount, p_max): p_max / amount", "linstep(amount, 1, p_max) = (p_max - amount) / (1 - amount)"},
+    {"no clamp to [0, 1]", "(p_max - amount) / (1 - amount), clamped to [0, 1]"},
+    {"p_max - amount, not rescaled by 1 / (1 - amount)", "(p_max - amount) / (1 - amount)"},
+    {"(p_max - amount) / amount", "(p_max - amount) / (1 - amount)"},
+    {"smoothstep(amount, 1, p_max) in place of the linear ramp", "linstep(amount, 1, p_max) = (p_max - amount) / (1 - amount)"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_bleeding(const sl_probe_function *f, const float *row, int slip, double *out) {
     double amount = _sl_get(f, row, "amount", 0), p = _sl_get(f, row, "p_max", 0);
-    out[0] = fmin(fmax((p - amount) / (1 - amount), 0), 1);
+    double v = slip == 1 ? p / amount : slip == 3 ? p - amount : slip == 4 ? (p - amount) / amount
+                                                                         : (p - amount) / (1 - amount);
+    if (slip != 2) v = fmin(fmax(v, 0), 1);
+    if (slip == 5) v = v * v * (3 - 2 * v);
+    out[0] = v;
 }
 
 /* lab 6: lambda * near * (far/near)^(i/count) + (1 - lambda) * (near + (far - near) * i/count), unused 0 */
@@ -346,13 +502,31 @@ static void _sl_draw_splits(const sl_probe_function *f, _sl_rng *r, int index, f
              count, lambda);
 }
 
-static void _sl_expect_splits(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_splits_slips[][2] = {
+    {"", ""},
+    {"lambda on the linear scheme and 1 - lambda on the logarithmic one", "lambda * logarithmic + (1 - lambda) * linear"},
+    {"t = i / (count + 1)", "t = i / count"},
+    {"t = i / (count - 1)", "t = i / count"},
+    {"the linear scheme as near + far * t", "near + (far - near) * t"},
+    {"the logarithmic scheme as (far / near)^t, without the factor near", "near * (far / near)^t"},
+    {"the logarithmic scheme as near + (far - near)^t", "near * (far / near)^t"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_splits(const sl_probe_function *f, const float *row, int slip, double *out) {
     double near = _sl_get(f, row, "near", 0), far = _sl_get(f, row, "far", 0), lambda = _sl_get(f, row, "lambda", 0);
     int count = (int)_sl_get(f, row, "count", 0);
+    double parts = slip == 2 ? count + 1 : slip == 3 ? count - 1 : count;
     for (int i = 0; i < 5; i++) {
-        double t = (double)i / count;
-        out[i] = i > count ? 0 : lambda * near * pow(far / near, t) + (1 - lambda) * (near + (far - near) * t);
+        double t = parts > 0 ? i / parts : 0;
+        double logarithmic = slip == 5 ? pow(far / near, t) : slip == 6 ? near + pow(far - near, t) : near * pow(far / near, t);
+        double linear = slip == 4 ? near + far * t : near + (far - near) * t;
+        double l = slip == 1 ? 1 - lambda : lambda;
+        out[i] = i > count ? 0 : l * logarithmic + (1 - l) * linear;
     }
+    /* the ends are near and far exactly (a slip in between still pins them, as the lab's code does) */
+    out[0] = near;
+    if (count >= 0 && count < 5) out[count] = far;
 }
 
 /* lab 6: the first cascade whose far split lies beyond the point's view depth (-z), the last one past them */
@@ -374,10 +548,19 @@ static void _sl_draw_cascade_index(const sl_probe_function *f, _sl_rng *r, int i
              count, split[0], split[1], split[2], split[3], depth, position[0], position[1], cascade);
 }
 
-static void _sl_expect_cascade_index(const sl_probe_function *f, const float *row, double *out) {
-    double depth = -_sl_get(f, row, "view_position", 2);
+static const char *const _sl_cascade_index_slips[][2] = {
+    {"", ""},
+    {"the distance length(view_position) in place of the view depth -z", "the view depth -view_position.z"},
+    {"count (one past the last cascade) for a point beyond every split", "count - 1, the last cascade"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_cascade_index(const sl_probe_function *f, const float *row, int slip, double *out) {
+    double x = _sl_get(f, row, "view_position", 0), y = _sl_get(f, row, "view_position", 1);
+    double z = _sl_get(f, row, "view_position", 2);
+    double depth = slip == 1 ? sqrt(x * x + y * y + z * z) : -z;
     int count = (int)_sl_get(f, row, "count", 0);
-    out[0] = count - 1;
+    out[0] = slip == 2 ? count : count - 1;
     for (int i = 0; i < count - 1; i++)
         if (depth < _sl_get(f, row, "split_far", i)) {
             out[0] = i;
@@ -399,14 +582,26 @@ static void _sl_draw_blend(const sl_probe_function *f, _sl_rng *r, int index, fl
              split_near, split_far, band, depth);
 }
 
-static void _sl_expect_blend(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_blend_slips[][2] = {
+    {"", ""},
+    {"the weight reversed (1 at the band's start, 0 at the split)", "0 at the band's start, rising to 1 at split_far"},
+    {"band in metres of view depth, not a fraction of the slice", "the band's start split_far - band * (split_far - split_near)"},
+    {"the band measured from split_near: start = split_near + band * (split_far - split_near)",
+     "start = split_far - band * (split_far - split_near)"},
+    {"no clamp to [0, 1]", "clamped to [0, 1]"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_blend(const sl_probe_function *f, const float *row, int slip, double *out) {
     double band = _sl_get(f, row, "band", 0), sn = _sl_get(f, row, "split_near", 0), sf = _sl_get(f, row, "split_far", 0);
     if (band <= 0) {
         out[0] = 0;
         return;
     }
-    double start = sf - band * (sf - sn);
-    out[0] = fmin(fmax((_sl_get(f, row, "view_depth", 0) - start) / (sf - start), 0), 1);
+    double start = slip == 2 ? sf - band : slip == 3 ? sn + band * (sf - sn) : sf - band * (sf - sn);
+    double w = (_sl_get(f, row, "view_depth", 0) - start) / (sf - start);
+    if (slip != 4) w = fmin(fmax(w, 0), 1);
+    out[0] = slip == 1 ? 1 - w : w;
 }
 
 /* lab 7: a 90-degree square perspective, GL's depth range, any near and far */
@@ -419,14 +614,27 @@ static void _sl_draw_face_projection(const sl_probe_function *f, _sl_rng *r, int
     snprintf(about, n, "generic: near %.3g, far %.4g (a far plane other than the scenes')", near, far);
 }
 
-static void _sl_expect_face_projection(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_face_projection_slips[][2] = {
+    {"", ""},
+    {"depth mapped to [0, 1] (m22 = far / (near - far), m32 = near * far / (near - far))",
+     "GL's depth range [-1, 1]: m22 = (far + near) / (near - far), m32 = 2 * far * near / (near - far)"},
+    {"the matrix transposed (-1 in m32, the depth term in m23)", "-1 in m23, 2 * far * near / (near - far) in m32"},
+    {"a 45-degree field of view", "90 degrees: each face covers a quarter turn"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_face_projection(const sl_probe_function *f, const float *row, int slip, double *out) {
     double near = _sl_get(f, row, "near", 0), far = _sl_get(f, row, "far", 0);
     for (int i = 0; i < 16; i++) out[i] = 0;
-    out[0] = 1;  /* 1 / tan(45 degrees), aspect 1 */
-    out[5] = 1;
-    out[10] = (far + near) / (near - far);
+    out[0] = out[5] = slip == 3 ? 1 / tan(22.5 * 3.14159265358979323846 / 180) : 1; /* 1 / tan(fov / 2), aspect 1 */
+    out[10] = slip == 1 ? far / (near - far) : (far + near) / (near - far);
     out[11] = -1;
-    out[14] = 2 * far * near / (near - far);
+    out[14] = slip == 1 ? far * near / (near - far) : 2 * far * near / (near - far);
+    if (slip == 2) {
+        double t = out[11];
+        out[11] = out[14];
+        out[14] = t;
+    }
 }
 
 /* lab 7: length(light_to_fragment) / far_plane - bias against the "cube_positive" map, a far plane
@@ -452,7 +660,16 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
              far, distance, d[axis] > 0 ? "+" : "-", "xyz"[axis], bias);
 }
 
-static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row, double *out) {
+static const char *const _sl_point_shadow_slips[][2] = {
+    {"", ""},
+    {"the distance not divided by far_plane", "length(light_to_fragment) / far_plane, the stored scale"},
+    {"the squared distance (dot) in place of its length", "length(light_to_fragment) / far_plane"},
+    {"the largest component of light_to_fragment in place of its length", "length(light_to_fragment) / far_plane"},
+    {"the comparison reversed: lit where the point lies behind the stored distance", "current - bias > closest: shadowed"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row, int slip, double *out) {
     double d[3], length = 0;
     int axis = 0;
     for (int j = 0; j < 3; j++) {
@@ -461,27 +678,28 @@ static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row
         if (fabs(d[j]) > fabs(d[axis])) axis = j;
     }
     double closest = d[axis] > 0 ? 0.1 : 1.0; /* "cube_positive": 0.1 on +X, +Y, +Z */
-    double current = sqrt(length) / _sl_get(f, row, "far_plane", 0) - _sl_get(f, row, "bias", 0);
-    out[0] = current > closest ? 0 : 1;
+    double distance = slip == 2 ? length : slip == 3 ? fabs(d[axis]) : sqrt(length);
+    double current = distance / (slip == 1 ? 1 : _sl_get(f, row, "far_plane", 0)) - _sl_get(f, row, "bias", 0);
+    out[0] = (current > closest) == (slip == 4) ? 1 : 0;
 }
 
 static const _sl_generic _sl_generics[] = {
-    {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map},
-    {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord},
-    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare},
-    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare},
-    {"slope_scaled_bias", _sl_draw_slope_bias, _sl_expect_slope_bias},
-    {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset},
-    {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid},
-    {"compute_moments", _sl_draw_moments, _sl_expect_moments},
-    {"blur_moments", _sl_draw_blur, _sl_expect_blur},
-    {"chebyshev_upper_bound", _sl_draw_chebyshev, _sl_expect_chebyshev},
-    {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding},
-    {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits},
-    {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index},
-    {"cascade_blend", _sl_draw_blend, _sl_expect_blend},
-    {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection},
-    {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow},
+    {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map, NULL},
+    {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord, _sl_shadow_coord_slips},
+    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips},
+    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips},
+    {"slope_scaled_bias", _sl_draw_slope_bias, _sl_expect_slope_bias, _sl_slope_bias_slips},
+    {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset, NULL},
+    {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid, _sl_grid_slips},
+    {"compute_moments", _sl_draw_moments, _sl_expect_moments, _sl_moments_slips},
+    {"blur_moments", _sl_draw_blur, _sl_expect_blur, _sl_blur_slips},
+    {"chebyshev_upper_bound", _sl_draw_chebyshev, _sl_expect_chebyshev, _sl_chebyshev_slips},
+    {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding, _sl_bleeding_slips},
+    {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits, _sl_splits_slips},
+    {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index, _sl_cascade_index_slips},
+    {"cascade_blend", _sl_draw_blend, _sl_expect_blend, _sl_blend_slips},
+    {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection, _sl_face_projection_slips},
+    {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow, _sl_point_shadow_slips},
 };
 
 static const _sl_generic *_sl_find(const char *function) {
@@ -519,7 +737,7 @@ bool sl_probe_generic_expected(const sl_check *k, int row, double *out) {
     const sl_probe_function *f = sl_probe_at(k->function);
     const _sl_generic *g = f ? _sl_find(f->name) : NULL;
     if (!g || row < k->rows - k->generic_rows || row >= k->rows) return false;
-    g->expect(f, k->inputs[row], out);
+    g->expect(f, k->inputs[row], 0, out);
     return true;
 }
 
@@ -621,16 +839,70 @@ static bool _sl_slip_close(double student, double expected) {
     return isfinite(student) && isfinite(expected) && fabs(student - expected) <= 1e-3 + 1e-3 * fabs(expected);
 }
 
-bool sl_probe_generic_slip(const sl_check *k, const double *student, char *out, size_t n) {
+/* A candidate explanation of the student's outputs: the contract with one input slipped (input_kind >= 0),
+ * or the formula with one of its own slips (formula_slip > 0). */
+typedef struct _sl_slip_candidate {
+    int p, kind, component, q, other, formula_slip;
+} _sl_slip_candidate;
+
+/* Whether every modelled row of k follows the candidate, and at least one differs from the contract. */
+static bool _sl_slip_fits(const _sl_generic *g, const sl_probe_function *f, const sl_check *k, const double *student,
+                          const bool *modelled, const int *offsets, const _sl_slip_candidate *c) {
+    int inputs = sl_probe_input_count(f);
+    bool explains = false;
+    for (int row = 0; row < k->rows; row++) {
+        if (!modelled[row]) continue;
+        float slipped[SL_PROBE_MAX_INPUTS];
+        double as_given[16], as_slipped[16];
+        memcpy(slipped, k->inputs[row], sizeof(float) * (size_t)inputs);
+        if (c->formula_slip == 0 &&
+            !_sl_slip_apply(f, c->p, offsets[c->p], sl_probe_type_size(f->params[c->p].type), (_sl_slip_kind)c->kind,
+                            c->component, c->other, slipped))
+            return false;
+        g->expect(f, k->inputs[row], 0, as_given);
+        g->expect(f, slipped, c->formula_slip, as_slipped);
+        for (int o = 0; o < f->output_count; o++) {
+            double s = student[row * f->output_count + o];
+            if (!_sl_slip_close(s, as_slipped[o])) return false;
+            if (!_sl_slip_close(s, as_given[o])) explains = true;
+        }
+    }
+    return explains;
+}
+
+bool sl_probe_generic_slip(const sl_check *k, const double *student, const double *expected, char *out, size_t n) {
     const sl_probe_function *f = sl_probe_at(k->function);
     const _sl_generic *g = f ? _sl_find(f->name) : NULL;
     out[0] = '\0';
     if (!g || k->rows < 1 || f->output_count > 16) return false;
-    int inputs = sl_probe_input_count(f), offsets[SL_PROBE_MAX_PARAMS];
+    int offsets[SL_PROBE_MAX_PARAMS];
     for (int p = 0, offset = 0; p < f->param_count; offset += sl_probe_type_size(f->params[p].type), p++)
         offsets[p] = offset;
+    /* the rows the formula models: every generic row, and each written row where the contract's formula
+     * gives the reference's answer (a written edge case the formula leaves out says nothing of a slip) */
+    bool modelled[SL_PROBE_MAX_ROWS];
+    int modelled_rows = 0;
+    for (int row = 0; row < k->rows; row++) {
+        double as_given[16];
+        g->expect(f, k->inputs[row], 0, as_given);
+        bool agrees = true;
+        for (int o = 0; expected && o < f->output_count; o++)
+            agrees &= _sl_slip_close(expected[row * f->output_count + o], as_given[o]);
+        modelled[row] = agrees;
+        modelled_rows += agrees;
+    }
+    if (modelled_rows < 3) return false;
+    /* every slip that fits; a few that fit alike are listed (the rows cannot tell them apart), more are a
+     * coincidence of the rows (a clamp all reach, an input all zero out) and none is named */
+    enum { listed = 4 };
+    _sl_slip_candidate found[listed];
     int matches = 0;
-    char words[200] = "";
+    /* slips of the formula itself first: a term dropped, squared or not, the wrong function, loop bounds */
+    for (int s = 1; g->slips && g->slips[s][0]; s++) {
+        _sl_slip_candidate c = {0, 0, 0, 0, -1, s};
+        if (_sl_slip_fits(g, f, k, student, modelled, offsets, &c) && matches++ < listed) found[matches - 1] = c;
+    }
+    /* slips of one input */
     for (int p = 0; p < f->param_count; p++) {
         sl_probe_type type = f->params[p].type;
         if (SL_PROBE_IS_MAP(type) || type == SL_PROBE_MAT4) continue;
@@ -644,32 +916,31 @@ bool sl_probe_generic_slip(const sl_check *k, const double *student, char *out, 
                                                           f->params[q].type != type
                                                        : variant > 0)
                     continue;
-                int other = kind == _SL_SLIP_SWAPPED_WITH ? offsets[q] : -1;
-                /* every row must follow the slip, and it must explain at least one row the contract does not */
-                bool all = true, explains = false;
-                for (int row = 0; all && row < k->rows; row++) {
-                    float slipped[SL_PROBE_MAX_INPUTS];
-                    double as_given[16], as_slipped[16];
-                    memcpy(slipped, k->inputs[row], sizeof(float) * (size_t)inputs);
-                    if (!_sl_slip_apply(f, p, offsets[p], size, (_sl_slip_kind)kind, component, other, slipped)) {
-                        all = false;
-                        break;
-                    }
-                    g->expect(f, k->inputs[row], as_given);
-                    g->expect(f, slipped, as_slipped);
-                    for (int o = 0; all && o < f->output_count; o++) {
-                        double s = student[row * f->output_count + o];
-                        all = _sl_slip_close(s, as_slipped[o]);
-                        if (all && !_sl_slip_close(s, as_given[o])) explains = true;
-                    }
-                }
-                if (all && explains && matches++ == 0)
-                    _sl_slip_words(f, p, (_sl_slip_kind)kind, component, q, words, sizeof words);
+                _sl_slip_candidate c = {p, kind, component, q, kind == _SL_SLIP_SWAPPED_WITH ? offsets[q] : -1, 0};
+                if (_sl_slip_fits(g, f, k, student, modelled, offsets, &c) && matches++ < listed)
+                    found[matches - 1] = c;
             }
     }
-    /* two slips that both fit are a coincidence of the rows (a clamp both reach, an input both zero out):
-     * neither is named */
-    if (matches != 1) return false;
-    snprintf(out, n, "on every row it answers as the contract does with %s", words);
+    if (matches < 1 || matches > listed) return false;
+    char words[listed][300];
+    for (int i = 0; i < matches; i++) {
+        if (found[i].formula_slip > 0)
+            snprintf(words[i], sizeof words[i], "%s, where the contract says %s", g->slips[found[i].formula_slip][0],
+                     g->slips[found[i].formula_slip][1]);
+        else
+            _sl_slip_words(f, found[i].p, (_sl_slip_kind)found[i].kind, found[i].component, found[i].q, words[i],
+                           sizeof words[i]);
+    }
+    if (matches == 1) {
+        snprintf(out, n, found[0].formula_slip > 0 ? "on every row it answers as if it computed %s"
+                                                   : "on every row it answers as the contract does with %s",
+                 words[0]);
+        return true;
+    }
+    size_t used = (size_t)snprintf(out, n, "on every row its answers fit each of %d slips, which these rows cannot tell "
+                                           "apart: ",
+                                   matches);
+    for (int i = 0; i < matches && used < n; i++)
+        used += (size_t)snprintf(out + used, n - used, "%s%s", i ? "; or " : "", words[i]);
     return true;
 }
