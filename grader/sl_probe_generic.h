@@ -45,10 +45,25 @@ bool sl_probe_generic_expected(const sl_check *k, int row, double *out);
  * swapped), or of the formula itself (each formula's own catalogue: a term dropped or not squared, sin
  * for tan, a loop one short, a reversed comparison...). It must give every modelled row's outputs (the
  * generic rows, and the written rows where the contract's formula gives `expected`, the reference's
- * answers; NULL: all rows), explain at least one the contract does not, and be the only slip that does
- * (two that fit are a coincidence of the rows). Writes "on every row it answers as the contract does
- * with view_position negated" (or "... as if it computed X, where the contract says Y") and returns
- * true; false where no one slip does (or the function has no formula here). */
-bool sl_probe_generic_slip(const sl_check *k, const double *student, const double *expected, char *out, size_t n);
+ * answers; NULL: all rows), explain at least one the contract does not. Where the formula is written in
+ * sl_probe_formula's language, every one-edit variant of it is a slip too. Slips that give the same
+ * outputs on rows the check never saw are one formula, named once. Writes "on every row it answers as
+ * the contract does with view_position negated" (or "... as if it computed X, where the contract says
+ * Y"; or, where two to four fit alike, a list of them) and says which; SL_PROBE_SLIP_NONE where none or
+ * more than four fit (or the function has no formula here). */
+typedef enum sl_probe_slip {
+    SL_PROBE_SLIP_NONE,      /* nothing written */
+    SL_PROBE_SLIP_LIST,      /* two to four slips fit alike: listed */
+    SL_PROBE_SLIP_OF_INPUT,  /* one slip of one input (the formula right, an input wrong) */
+    SL_PROBE_SLIP_OF_FORMULA, /* one slip of the formula in its catalogue (most have a verdict of their own) */
+    SL_PROBE_SLIP_EDIT       /* one edit of the formula that no catalogue lists: a mistake no one wrote down */
+} sl_probe_slip;
+sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, const double *expected, char *out,
+                                    size_t n);
+
+/* Whether every contract formula written in sl_probe_formula's language parses and gives the contract's
+ * outputs on rows drawn as the generic rows are (a formula that does not is never edited; this names
+ * it: the function and the row). True where there are none (the handout). */
+bool sl_probe_generic_formulas_agree(char *err, size_t n);
 
 #endif

@@ -1371,7 +1371,7 @@ static void test_probe_slips(void) {
                      sl_probe_row_param(sb, bias->inputs[row], "slope")[0] * sqrt(1 - cos_theta * cos_theta);
         student[row] = fmin(sum, sl_probe_row_param(sb, bias->inputs[row], "max_bias")[0]);
     }
-    CHECK(sl_probe_generic_slip(bias, student, NULL, text, sizeof text) &&
+    CHECK(sl_probe_generic_slip(bias, student, NULL, text, sizeof text) == SL_PROBE_SLIP_OF_FORMULA &&
           strstr(text, "as if it computed sin(theta) in place of tan(theta)"));
     /* the contract's own outputs: no slip */
     for (int row = 0; row < bias->rows; row++) {
@@ -1381,6 +1381,57 @@ static void test_probe_slips(void) {
         student[row] = fmin(sum, sl_probe_row_param(sb, bias->inputs[row], "max_bias")[0]);
     }
     CHECK(!sl_probe_generic_slip(bias, student, NULL, text, sizeof text));
+
+    /* every formula written for its edits gives the contract's outputs */
+    CHECK(sl_probe_generic_formulas_agree(err, sizeof err));
+    if (err[0]) fprintf(stderr, "  %s\n", err);
+    /* an edit no catalogue lists: the parentheses moved, (constant + slope) * tan(theta) */
+    for (int row = 0; row < bias->rows; row++) {
+        double cos_theta = sl_probe_row_param(sb, bias->inputs[row], "n_dot_l")[0];
+        double sum = (sl_probe_row_param(sb, bias->inputs[row], "constant_bias")[0] +
+                      sl_probe_row_param(sb, bias->inputs[row], "slope")[0]) *
+                     sqrt(1 - cos_theta * cos_theta) / cos_theta;
+        student[row] = fmin(sum, sl_probe_row_param(sb, bias->inputs[row], "max_bias")[0]);
+    }
+    CHECK(sl_probe_generic_slip(bias, student, NULL, text, sizeof text) == SL_PROBE_SLIP_EDIT &&
+          strstr(text, "(constant_bias + slope) * tan_theta") && strstr(text, "the parentheses moved"));
+    /* and cot(theta) for tan(theta): the division's operands swapped */
+    for (int row = 0; row < bias->rows; row++) {
+        double cos_theta = sl_probe_row_param(sb, bias->inputs[row], "n_dot_l")[0];
+        double sum = sl_probe_row_param(sb, bias->inputs[row], "constant_bias")[0] +
+                     sl_probe_row_param(sb, bias->inputs[row], "slope")[0] * cos_theta / sqrt(1 - cos_theta * cos_theta);
+        student[row] = fmin(sum, sl_probe_row_param(sb, bias->inputs[row], "max_bias")[0]);
+    }
+    CHECK(sl_probe_generic_slip(bias, student, NULL, text, sizeof text) == SL_PROBE_SLIP_EDIT &&
+          strstr(text, "tan_theta = n_dot_l / sqrt(1 - n_dot_l * n_dot_l)"));
+    if (!strstr(text, "tan_theta = n_dot_l")) fprintf(stderr, "  cot: %s\n", text);
+
+    /* the split scheme's t = i / count divided as integers: every inner split at near */
+    write_file("slips_splits.json",
+               "{\"name\": \"p\", \"lab\": 6, \"checks\": ["
+               " {\"name\": \"splits\", \"kind\": \"probe\", \"points\": 1, \"function\": \"lab6_split_distances\","
+               "  \"rows\": [{\"near\": 0.3, \"far\": 300, \"count\": 4, \"lambda\": 0.8}]}]}");
+    snprintf(path, sizeof path, "%s/slips_splits.json", tmp_dir);
+    static sl_case p;
+    CHECK(sl_case_load(&p, path, err, sizeof err));
+    CHECK(sl_probe_generic_add(&p, 13) > 0);
+    const sl_check *splits = &p.checks[0];
+    const sl_probe_function *sf = sl_probe_at(splits->function);
+    CHECK(sf && sf->output_count == 5);
+    for (int row = 0; sf && row < splits->rows; row++) {
+        double near = sl_probe_row_param(sf, splits->inputs[row], "near")[0];
+        double far = sl_probe_row_param(sf, splits->inputs[row], "far")[0];
+        double lambda = sl_probe_row_param(sf, splits->inputs[row], "lambda")[0];
+        int count = (int)sl_probe_row_param(sf, splits->inputs[row], "count")[0];
+        for (int i = 0; i < 5; i++) {
+            double t = (double)(i / count); /* the slip */
+            double split = lambda * near * pow(far / near, t) + (1 - lambda) * (near + (far - near) * t);
+            student[row * 5 + i] = i > count ? 0 : i == 0 ? near : i == count ? far : split;
+        }
+    }
+    CHECK(sl_probe_generic_slip(splits, student, NULL, text, sizeof text) == SL_PROBE_SLIP_EDIT &&
+          strstr(text, "a division of integers"));
+    if (!strstr(text, "a division of integers")) fprintf(stderr, "  splits: %s\n", text);
 }
 
 static void test_probe_generic_rows(void) {

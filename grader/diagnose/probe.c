@@ -300,18 +300,30 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     sl_verdict_rows written_rows = rows;
     written_rows.k = written_check;
     written_rows.failing = written_failing;
-    shown = written_check && lab && lab->probe_verdict
+    /* One edit of the contract's formula that every modelled row follows, and that no catalogue lists
+     * (staff builds: the contracts' formulas), read from every row, written and generic, says what the
+     * code computes where no verdict was written for it: it leads (a verdict would name a mistake it
+     * was written for, "lambda is ignored" for splits divided as integers). A catalogued slip (most
+     * have their verdict too), a slip of one input, or several that fit alike come after the written
+     * rows' verdicts, each written to tell apart mistakes such slips confuse (a bias left out and one
+     * negated fit the same rows). Code still the stub's is "not implemented", never a slip. */
+    bool stub_shader = f->glsl && sl_diag_still_the_stub(f->file, f->name) == 1;
+    char slip[sizeof verdict];
+    sl_probe_slip slip_kind = stub_shader ? SL_PROBE_SLIP_NONE
+                                          : sl_probe_generic_slip(k, cap->numbers, ref->numbers, slip, sizeof slip);
+    if (slip_kind == SL_PROBE_SLIP_EDIT) {
+        snprintf(verdict, sizeof verdict, "%s", slip);
+        shown = first;
+    } else
+        shown = written_check && lab && lab->probe_verdict
                 ? lab->probe_verdict(written_check, cap->numbers, ref->numbers, written_failing, verdict, sizeof verdict)
                 : -1;
     if (!verdict[0] && written_check) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
     free(written_check);
-    /* Where the written rows' verdicts name nothing, a slip that every row the contract's formula models
-     * follows (staff builds: the contracts' formulas), read from every row, written and generic. The
-     * verdicts lead: each was written to tell apart mistakes these rows' slips can confuse (a bias left
-     * out and one negated fit the same rows). Code still the stub's is "not implemented", never a slip. */
-    if (!verdict[0] && !(f->glsl && sl_diag_still_the_stub(f->file, f->name) == 1) &&
-        sl_probe_generic_slip(k, cap->numbers, ref->numbers, verdict, sizeof verdict))
+    if (!verdict[0] && slip_kind != SL_PROBE_SLIP_NONE) {
+        snprintf(verdict, sizeof verdict, "%s", slip);
         shown = first;
+    }
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
     /* the same answer on every row while the contract's vary: it does not follow its inputs at all */
     if (!verdict[0] && f->output_count <= 4 && k->rows > 2) {

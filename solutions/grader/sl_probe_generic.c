@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "sl_probe.h"
+#include "sl_probe_formula.h"
 
 /* GL's numbers for the state lab 1's map must have (the grader links no GL). */
 #define _SL_GL_NEAREST 0x2600
@@ -89,6 +90,9 @@ typedef struct _sl_generic {
     void (*expect)(const sl_probe_function *f, const float *row, int slip, double *out);
     /* slip i (from 1) as "what the formula then computes", "what the contract says"; NULL-ended */
     const char *const (*slips)[2];
+    /* the contract's formula in sl_probe_formula's language (NULL: a loop or a texture the language does
+     * not hold); its one-edit variants are slips no catalogue has to list */
+    const char *formula;
 } _sl_generic;
 
 /* lab 1: a map of any size (never one a scene uses), with the lab's filtering and border */
@@ -388,6 +392,7 @@ static const char *const _sl_blur_slips[][2] = {
     {"only the first moment blurred (the second as read at uv)", "both moments blurred alike"},
     {"always along x, whatever direction is", "taps along direction"},
     {"always along y, whatever direction is", "taps along direction"},
+    {"Gaussian weights exp(-i^2 / (2 sigma)): sigma not squared", "exp(-i^2 / (2 sigma^2))"},
     {NULL, NULL},
 };
 
@@ -402,7 +407,7 @@ static void _sl_expect_blur(const sl_probe_function *f, const float *row, int sl
     int step = slip == 5 ? 2 : slip == 6 ? SL_PROBE_MAP_SIZE : 1;
     double sigma = slip == 3 ? fmax(radius, 0.5) : fmax(radius * 0.5, 0.5), sum[2] = {0, 0}, weights = 0;
     for (int i = -radius; i <= (slip == 4 ? radius - 1 : radius); i++) {
-        double w = slip == 2 ? 1.0 : exp(-(double)(i * i) / (2 * sigma * sigma));
+        double w = slip == 2 ? 1.0 : exp(-(double)(i * i) / (2 * sigma * (slip == 10 ? 1 : sigma)));
         int x = x0 + i * dx * step, y = y0 + i * dy * step;
         x = x < 0 ? 0 : x >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : x;
         y = y < 0 ? 0 : y >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : y;
@@ -552,6 +557,8 @@ static const char *const _sl_cascade_index_slips[][2] = {
     {"", ""},
     {"the distance length(view_position) in place of the view depth -z", "the view depth -view_position.z"},
     {"count (one past the last cascade) for a point beyond every split", "count - 1, the last cascade"},
+    {"the comparison reversed: the first cascade whose far split lies in front of the point (depth > split)",
+     "the first cascade whose far split lies beyond the point (depth < split_far[i])"},
     {NULL, NULL},
 };
 
@@ -562,7 +569,7 @@ static void _sl_expect_cascade_index(const sl_probe_function *f, const float *ro
     int count = (int)_sl_get(f, row, "count", 0);
     out[0] = slip == 2 ? count : count - 1;
     for (int i = 0; i < count - 1; i++)
-        if (depth < _sl_get(f, row, "split_far", i)) {
+        if (slip == 3 ? depth > _sl_get(f, row, "split_far", i) : depth < _sl_get(f, row, "split_far", i)) {
             out[0] = i;
             break;
         }
@@ -684,22 +691,33 @@ static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row
 }
 
 static const _sl_generic _sl_generics[] = {
-    {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map, NULL},
-    {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord, _sl_shadow_coord_slips},
-    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips},
-    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips},
-    {"slope_scaled_bias", _sl_draw_slope_bias, _sl_expect_slope_bias, _sl_slope_bias_slips},
-    {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset, NULL},
-    {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid, _sl_grid_slips},
-    {"compute_moments", _sl_draw_moments, _sl_expect_moments, _sl_moments_slips},
-    {"blur_moments", _sl_draw_blur, _sl_expect_blur, _sl_blur_slips},
-    {"chebyshev_upper_bound", _sl_draw_chebyshev, _sl_expect_chebyshev, _sl_chebyshev_slips},
-    {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding, _sl_bleeding_slips},
-    {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits, _sl_splits_slips},
-    {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index, _sl_cascade_index_slips},
-    {"cascade_blend", _sl_draw_blend, _sl_expect_blend, _sl_blend_slips},
-    {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection, _sl_face_projection_slips},
-    {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow, _sl_point_shadow_slips},
+    {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map, NULL, NULL},
+    {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord, _sl_shadow_coord_slips, NULL},
+    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL},
+    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL},
+    {"slope_scaled_bias", _sl_draw_slope_bias, _sl_expect_slope_bias, _sl_slope_bias_slips,
+     "tan_theta = sqrt(1 - n_dot_l * n_dot_l) / n_dot_l; min(constant_bias + slope * tan_theta, max_bias)"},
+    {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset, NULL,
+     "world_position[i] + normal[i] * texels * texel_world_size * (1 - n_dot_l)"},
+    {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid, _sl_grid_slips, NULL},
+    {"compute_moments", _sl_draw_moments, _sl_expect_moments, _sl_moments_slips, "if(i == 0, depth, depth * depth)"},
+    {"blur_moments", _sl_draw_blur, _sl_expect_blur, _sl_blur_slips, NULL},
+    {"chebyshev_upper_bound", _sl_draw_chebyshev, _sl_expect_chebyshev, _sl_chebyshev_slips,
+     "mu = moments[0]; variance = max(moments[1] - mu * mu, min_variance); d = t - mu; "
+     "if(t <= mu, 1, variance / (variance + d * d))"},
+    {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding, _sl_bleeding_slips,
+     "clamp((p_max - amount) / (1 - amount), 0, 1)"},
+    {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits, _sl_splits_slips,
+     "t = i / count; logarithmic = near * pow(far / near, t); linear = near + (far - near) * t; "
+     "if(i > count, 0, if(i == 0, near, if(i == count, far, lambda * logarithmic + (1 - lambda) * linear)))"},
+    {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index, _sl_cascade_index_slips, NULL},
+    {"cascade_blend", _sl_draw_blend, _sl_expect_blend, _sl_blend_slips,
+     "start = split_far - band * (split_far - split_near); "
+     "if(band <= 0, 0, clamp((view_depth - start) / (split_far - start), 0, 1))"},
+    {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection, _sl_face_projection_slips, NULL},
+    {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow, _sl_point_shadow_slips,
+     "current = length(light_to_fragment) / far_plane - bias; closest = if(major_positive(light_to_fragment), 0.1, 1); "
+     "if(current > closest, 0, 1)"},
 };
 
 static const _sl_generic *_sl_find(const char *function) {
@@ -835,74 +853,217 @@ static void _sl_slip_words(const sl_probe_function *f, int p, _sl_slip_kind kind
     }
 }
 
-static bool _sl_slip_close(double student, double expected) {
-    return isfinite(student) && isfinite(expected) && fabs(student - expected) <= 1e-3 + 1e-3 * fabs(expected);
+/* Whether two answers agree: within a ten-thousandth of the size the function's answers have on this check
+ * (`scale`: the largest contract answer of that output) and a thousandth of the answer. Where answers are
+ * small (a bias of 0.003), a fixed tolerance would take tan and cot for one another. */
+static bool _sl_slip_close(double student, double expected, double scale) {
+    return isfinite(student) && isfinite(expected) && fabs(student - expected) <= 1e-4 * scale + 1e-3 * fabs(expected);
 }
 
-/* A candidate explanation of the student's outputs: the contract with one input slipped (input_kind >= 0),
- * or the formula with one of its own slips (formula_slip > 0). */
+/* A candidate explanation of the student's outputs: the contract with one input slipped (formula_slip 0,
+ * edit 0), the formula with one of its catalogued slips (formula_slip > 0), or the formula one edit away
+ * (edit > 0). */
 typedef struct _sl_slip_candidate {
-    int p, kind, component, q, other, formula_slip;
+    int p, kind, component, q, other, formula_slip, edit;
 } _sl_slip_candidate;
 
-/* Whether every modelled row of k follows the candidate, and at least one differs from the contract. */
-static bool _sl_slip_fits(const _sl_generic *g, const sl_probe_function *f, const sl_check *k, const double *student,
-                          const bool *modelled, const int *offsets, const _sl_slip_candidate *c) {
+/* What the formula's names mean on one row: the function's parameters. */
+typedef struct _sl_row_inputs {
+    const sl_probe_function *f;
+    const float *row;
+} _sl_row_inputs;
+
+static int _sl_param(const sl_probe_function *f, const char *name, int *offset) {
+    int at = 0;
+    for (int p = 0; p < f->param_count; at += sl_probe_type_size(f->params[p].type), p++)
+        if (strcmp(f->params[p].name, name) == 0) {
+            *offset = at;
+            return p;
+        }
+    return -1;
+}
+
+static bool _sl_row_value(const void *context, const char *name, int component, double *out) {
+    const _sl_row_inputs *in = context;
+    int offset, p = _sl_param(in->f, name, &offset);
+    if (p < 0 || component < 0 || component >= sl_probe_type_size(in->f->params[p].type)) return false;
+    *out = in->row[offset + component];
+    return true;
+}
+
+static int _sl_row_size(const void *context, const char *name) {
+    const _sl_row_inputs *in = context;
+    int offset, p = _sl_param(in->f, name, &offset);
+    return p < 0 ? 0 : sl_probe_type_size(in->f->params[p].type);
+}
+
+static void _sl_formula_outputs(const sl_formula *formula, const sl_probe_function *f, const float *row, double *out) {
+    _sl_row_inputs context = {f, row};
+    sl_formula_inputs in = {&context, _sl_row_value, _sl_row_size};
+    for (int o = 0; o < f->output_count; o++) out[o] = sl_formula_eval(formula, &in, o);
+}
+
+/* The candidate's outputs on `count` rows (out[row * output_count + o]); false where it does not apply. */
+static bool _sl_candidate_outputs(const _sl_generic *g, const sl_probe_function *f, const int *offsets,
+                                  const sl_formula *formula, const _sl_slip_candidate *c,
+                                  const float (*rows)[SL_PROBE_MAX_INPUTS], int count, double *out) {
+    static sl_formula edited;
+    if (c->edit > 0 && !sl_formula_edited(formula, c->edit, &edited)) return false;
     int inputs = sl_probe_input_count(f);
-    bool explains = false;
-    for (int row = 0; row < k->rows; row++) {
-        if (!modelled[row]) continue;
+    for (int row = 0; row < count; row++) {
+        double *at = out + row * f->output_count;
+        if (c->edit > 0) {
+            _sl_formula_outputs(&edited, f, rows[row], at);
+            continue;
+        }
         float slipped[SL_PROBE_MAX_INPUTS];
-        double as_given[16], as_slipped[16];
-        memcpy(slipped, k->inputs[row], sizeof(float) * (size_t)inputs);
+        memcpy(slipped, rows[row], sizeof(float) * (size_t)inputs);
         if (c->formula_slip == 0 &&
             !_sl_slip_apply(f, c->p, offsets[c->p], sl_probe_type_size(f->params[c->p].type), (_sl_slip_kind)c->kind,
                             c->component, c->other, slipped))
             return false;
-        g->expect(f, k->inputs[row], 0, as_given);
-        g->expect(f, slipped, c->formula_slip, as_slipped);
+        g->expect(f, slipped, c->formula_slip, at);
+    }
+    return true;
+}
+
+/* Whether every modelled row of k follows the candidate, and at least one differs from the contract
+ * (contract: the contract's outputs on every row of k). */
+static bool _sl_slip_fits(const _sl_generic *g, const sl_probe_function *f, const sl_check *k, const double *student,
+                          const double *contract, const double *scale, const bool *modelled, const int *offsets,
+                          const sl_formula *formula, const _sl_slip_candidate *c) {
+    static double slipped[SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS];
+    if (!_sl_candidate_outputs(g, f, offsets, formula, c, (const float (*)[SL_PROBE_MAX_INPUTS])k->inputs, k->rows,
+                               slipped))
+        return false;
+    bool explains = false;
+    for (int row = 0; row < k->rows; row++) {
+        if (!modelled[row]) continue;
         for (int o = 0; o < f->output_count; o++) {
-            double s = student[row * f->output_count + o];
-            if (!_sl_slip_close(s, as_slipped[o])) return false;
-            if (!_sl_slip_close(s, as_given[o])) explains = true;
+            int at = row * f->output_count + o;
+            if (!_sl_slip_close(student[at], slipped[at], scale[o])) return false;
+            if (!_sl_slip_close(student[at], contract[at], scale[o])) explains = true;
         }
     }
     return explains;
 }
 
-bool sl_probe_generic_slip(const sl_check *k, const double *student, const double *expected, char *out, size_t n) {
+/* Rows of the function's own kind that the check never saw: two slips that give the same outputs on them
+ * are one formula written two ways (a catalogue entry and the edit it is), not two explanations. */
+enum { _SL_FRESH_ROWS = 24 };
+
+static bool _sl_same_formula(const double *a, const double *b, int count) {
+    for (int i = 0; i < count; i++) {
+        if (isnan(a[i]) && isnan(b[i])) continue;
+        if (!(fabs(a[i] - b[i]) <= 1e-6 + 1e-6 * fabs(b[i])) && !(isinf(a[i]) && a[i] == b[i])) return false;
+    }
+    return true;
+}
+
+static void _sl_candidate_words(const _sl_generic *g, const sl_probe_function *f, const sl_formula *formula,
+                                const _sl_slip_candidate *c, char *out, size_t n) {
+    if (c->formula_slip > 0) {
+        snprintf(out, n, "%s, where the contract says %s", g->slips[c->formula_slip][0], g->slips[c->formula_slip][1]);
+    } else if (c->edit > 0) {
+        char computed[300], contract[300];
+        sl_formula_edit_words(formula, c->edit, computed, contract, sizeof computed);
+        snprintf(out, n, "%s, where the contract says %s", computed, contract);
+    } else {
+        _sl_slip_words(f, c->p, (_sl_slip_kind)c->kind, c->component, c->q, out, n);
+    }
+}
+
+/* Collects c into the groups of fitting candidates (one per distinct formula); false once there are more
+ * than `most` groups. */
+typedef struct _sl_slip_groups {
+    _sl_slip_candidate first[4];
+    double fresh[4][_SL_FRESH_ROWS * SL_PROBE_MAX_OUTPUTS];
+    int count;
+} _sl_slip_groups;
+
+static void _sl_group(_sl_slip_groups *groups, const _sl_generic *g, const sl_probe_function *f, const int *offsets,
+                      const sl_formula *formula, const float (*fresh)[SL_PROBE_MAX_INPUTS],
+                      const _sl_slip_candidate *c) {
+    static double outputs[_SL_FRESH_ROWS * SL_PROBE_MAX_OUTPUTS];
+    int size = _SL_FRESH_ROWS * f->output_count;
+    if (!_sl_candidate_outputs(g, f, offsets, formula, c, fresh, _SL_FRESH_ROWS, outputs)) return;
+    for (int i = 0; i < groups->count && i < 4; i++)
+        if (_sl_same_formula(outputs, groups->fresh[i], size)) {
+            /* one formula: its catalogue or input words stand; among edits, the likeliest names it */
+            const _sl_slip_candidate *first = &groups->first[i];
+            if (first->edit > 0 && c->edit > 0 && sl_formula_edit_rank(c->edit) < sl_formula_edit_rank(first->edit))
+                groups->first[i] = *c;
+            return;
+        }
+    if (groups->count < 4) {
+        groups->first[groups->count] = *c;
+        memcpy(groups->fresh[groups->count], outputs, sizeof(double) * (size_t)size);
+    }
+    groups->count++;
+}
+
+sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, const double *expected, char *out,
+                                    size_t n) {
     const sl_probe_function *f = sl_probe_at(k->function);
     const _sl_generic *g = f ? _sl_find(f->name) : NULL;
     out[0] = '\0';
-    if (!g || k->rows < 1 || f->output_count > 16) return false;
+    if (!g || k->rows < 1 || f->output_count > SL_PROBE_MAX_OUTPUTS) return SL_PROBE_SLIP_NONE;
     int offsets[SL_PROBE_MAX_PARAMS];
     for (int p = 0, offset = 0; p < f->param_count; offset += sl_probe_type_size(f->params[p].type), p++)
         offsets[p] = offset;
     /* the rows the formula models: every generic row, and each written row where the contract's formula
      * gives the reference's answer (a written edge case the formula leaves out says nothing of a slip) */
+    static double contract[SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS];
+    double scale[SL_PROBE_MAX_OUTPUTS] = {0};
+    for (int row = 0; row < k->rows; row++) {
+        g->expect(f, k->inputs[row], 0, contract + row * f->output_count);
+        for (int o = 0; o < f->output_count; o++) {
+            double size = fabs(contract[row * f->output_count + o]);
+            if (isfinite(size) && size > scale[o]) scale[o] = size;
+        }
+    }
+    for (int o = 0; o < f->output_count; o++)
+        if (scale[o] < 1e-6) scale[o] = 1; /* an output the contract keeps at 0: its size is the unit's */
     bool modelled[SL_PROBE_MAX_ROWS];
     int modelled_rows = 0;
     for (int row = 0; row < k->rows; row++) {
-        double as_given[16];
-        g->expect(f, k->inputs[row], 0, as_given);
+        const double *as_given = contract + row * f->output_count;
         bool agrees = true;
         for (int o = 0; expected && o < f->output_count; o++)
-            agrees &= _sl_slip_close(expected[row * f->output_count + o], as_given[o]);
+            agrees &= _sl_slip_close(expected[row * f->output_count + o], as_given[o], scale[o]);
         modelled[row] = agrees;
         modelled_rows += agrees;
     }
-    if (modelled_rows < 3) return false;
-    /* every slip that fits; a few that fit alike are listed (the rows cannot tell them apart), more are a
-     * coincidence of the rows (a clamp all reach, an input all zero out) and none is named */
-    enum { listed = 4 };
-    _sl_slip_candidate found[listed];
-    int matches = 0;
-    /* slips of the formula itself first: a term dropped, squared or not, the wrong function, loop bounds */
-    for (int s = 1; g->slips && g->slips[s][0]; s++) {
-        _sl_slip_candidate c = {0, 0, 0, 0, -1, s};
-        if (_sl_slip_fits(g, f, k, student, modelled, offsets, &c) && matches++ < listed) found[matches - 1] = c;
+    if (modelled_rows < 3) return SL_PROBE_SLIP_NONE;
+    /* the formula's edits, where the formula gives the contract's outputs on every modelled row */
+    static sl_formula formula;
+    char err[160];
+    bool edits = g->formula && sl_formula_parse(&formula, g->formula, err, sizeof err);
+    for (int row = 0; edits && row < k->rows; row++) {
+        double as_written[SL_PROBE_MAX_OUTPUTS];
+        _sl_formula_outputs(&formula, f, k->inputs[row], as_written);
+        for (int o = 0; modelled[row] && o < f->output_count; o++)
+            edits &= _sl_slip_close(as_written[o], contract[row * f->output_count + o], scale[o]);
     }
-    /* slips of one input */
+    /* fresh rows of the function's kind, to tell one formula written two ways from two formulas */
+    static float fresh[_SL_FRESH_ROWS][SL_PROBE_MAX_INPUTS];
+    _sl_rng r = {0x5eed5eedu};
+    for (int i = 0; i < _SL_FRESH_ROWS; i++) {
+        char about[200];
+        memset(fresh[i], 0, sizeof fresh[i]);
+        g->draw(f, &r, i, fresh[i], about, sizeof about);
+    }
+    /* every slip that fits, grouped by the formula it is; a few groups that fit alike are listed (the rows
+     * cannot tell them apart), more are a coincidence of the rows (a clamp all reach, an input all zero
+     * out) and none is named. Catalogued slips first, then slips of one input, then edits: where one
+     * formula is all three, its catalogue words are the ones shown. */
+    static _sl_slip_groups groups;
+    groups.count = 0;
+    for (int s = 1; g->slips && g->slips[s][0]; s++) {
+        _sl_slip_candidate c = {0, 0, 0, 0, -1, s, 0};
+        if (_sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &c))
+            _sl_group(&groups, g, f, offsets, &formula, (const float (*)[SL_PROBE_MAX_INPUTS])fresh, &c);
+    }
     for (int p = 0; p < f->param_count; p++) {
         sl_probe_type type = f->params[p].type;
         if (SL_PROBE_IS_MAP(type) || type == SL_PROBE_MAT4) continue;
@@ -916,31 +1077,68 @@ bool sl_probe_generic_slip(const sl_check *k, const double *student, const doubl
                                                           f->params[q].type != type
                                                        : variant > 0)
                     continue;
-                _sl_slip_candidate c = {p, kind, component, q, kind == _SL_SLIP_SWAPPED_WITH ? offsets[q] : -1, 0};
-                if (_sl_slip_fits(g, f, k, student, modelled, offsets, &c) && matches++ < listed)
-                    found[matches - 1] = c;
+                _sl_slip_candidate c = {p, kind, component, q, kind == _SL_SLIP_SWAPPED_WITH ? offsets[q] : -1, 0, 0};
+                if (_sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &c))
+                    _sl_group(&groups, g, f, offsets, &formula, (const float (*)[SL_PROBE_MAX_INPUTS])fresh, &c);
             }
     }
-    if (matches < 1 || matches > listed) return false;
-    char words[listed][300];
-    for (int i = 0; i < matches; i++) {
-        if (found[i].formula_slip > 0)
-            snprintf(words[i], sizeof words[i], "%s, where the contract says %s", g->slips[found[i].formula_slip][0],
-                     g->slips[found[i].formula_slip][1]);
-        else
-            _sl_slip_words(f, found[i].p, (_sl_slip_kind)found[i].kind, found[i].component, found[i].q, words[i],
-                           sizeof words[i]);
+    for (int e = 1; edits && e <= sl_formula_edit_count(&formula); e++) {
+        _sl_slip_candidate c = {0, 0, 0, 0, -1, 0, e};
+        if (_sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &c))
+            _sl_group(&groups, g, f, offsets, &formula, (const float (*)[SL_PROBE_MAX_INPUTS])fresh, &c);
     }
-    if (matches == 1) {
-        snprintf(out, n, found[0].formula_slip > 0 ? "on every row it answers as if it computed %s"
-                                                   : "on every row it answers as the contract does with %s",
+    if (groups.count < 1 || groups.count > 4) return SL_PROBE_SLIP_NONE;
+    char words[4][640];
+    for (int i = 0; i < groups.count; i++)
+        _sl_candidate_words(g, f, &formula, &groups.first[i], words[i], sizeof words[i]);
+    if (groups.count == 1) {
+        bool formula_slip = groups.first[0].formula_slip > 0 || groups.first[0].edit > 0;
+        snprintf(out, n, formula_slip ? "on every row it answers as if it computed %s"
+                                      : "on every row it answers as the contract does with %s",
                  words[0]);
-        return true;
+        return groups.first[0].edit > 0 ? SL_PROBE_SLIP_EDIT
+             : formula_slip              ? SL_PROBE_SLIP_OF_FORMULA
+                                         : SL_PROBE_SLIP_OF_INPUT;
     }
     size_t used = (size_t)snprintf(out, n, "on every row its answers fit each of %d slips, which these rows cannot tell "
                                            "apart: ",
-                                   matches);
-    for (int i = 0; i < matches && used < n; i++)
+                                   groups.count);
+    for (int i = 0; i < groups.count && used < n; i++)
         used += (size_t)snprintf(out + used, n - used, "%s%s", i ? "; or " : "", words[i]);
+    return SL_PROBE_SLIP_LIST;
+}
+
+bool sl_probe_generic_formulas_agree(char *err, size_t n) {
+    static sl_formula formula;
+    err[0] = '\0';
+    for (size_t i = 0; i < sizeof _sl_generics / sizeof _sl_generics[0]; i++) {
+        const _sl_generic *g = &_sl_generics[i];
+        const sl_probe_function *f = g->formula ? sl_probe_find(g->function) : NULL;
+        if (!g->formula) continue;
+        if (!f) {
+            snprintf(err, n, "%s: no such probed function", g->function);
+            return false;
+        }
+        char parse_err[160];
+        if (!sl_formula_parse(&formula, g->formula, parse_err, sizeof parse_err)) {
+            snprintf(err, n, "%s: %s", g->function, parse_err);
+            return false;
+        }
+        _sl_rng r = {0xa9ee5u + i};
+        for (int row = 0; row < 64; row++) {
+            float inputs[SL_PROBE_MAX_INPUTS] = {0};
+            char about[200];
+            double written[SL_PROBE_MAX_OUTPUTS], contract[SL_PROBE_MAX_OUTPUTS];
+            g->draw(f, &r, row, inputs, about, sizeof about);
+            _sl_formula_outputs(&formula, f, inputs, written);
+            g->expect(f, inputs, 0, contract);
+            for (int o = 0; o < f->output_count; o++)
+                if (!_sl_slip_close(written[o], contract[o], fmax(fabs(contract[o]), 1e-3))) {
+                    snprintf(err, n, "%s: output %d is %.6g by the formula, %.6g by the contract, on %s", g->function, o,
+                             written[o], contract[o], about);
+                    return false;
+                }
+        }
+    }
     return true;
 }
