@@ -631,6 +631,24 @@ static void test_grade_probe_verdicts(void) {
     CHECK(strstr(out.message, "a hand-tuned constant") != NULL);
     grade_probe("slope_scaled_bias", 4, rows, expected, expected, &out);
     CHECK(out.passed);
+
+    /* where no verdict names it, the relation the answers keep to the contract's: negated values */
+    static const float states[][SL_PROBE_MAX_INPUTS] = {{3, 2.0f, 4.0f, -1}, {3, 1.5f, 3.0f, -1}, {0, 2.0f, 4.0f, -1}};
+    double state_want[15] = {1, 2, 4, 0, 0x405, 1, 1.5, 3, 0, 0x405, 0, 0, 0, 0, 0x405};
+    double state_got[15];
+    memcpy(state_got, state_want, sizeof state_got);
+    state_got[1] = -2, state_got[2] = -4, state_got[6] = -1.5, state_got[7] = -3;
+    grade_probe("lab3_depth_pass_state", 3, states, state_got, state_want, &out);
+    CHECK(!out.passed && strstr(out.message, "factor and units come out negated on every row that differs"));
+    if (!strstr(out.message, "negated")) fprintf(stderr, "  negated: %s\n", out.message);
+    /* one factor on every value that differs (a sum over 20 samples divided by 16) */
+    static const float soft[][SL_PROBE_MAX_INPUTS] = {{SL_PROBE_MAP_CUBE_LIT, 1.5f, 2, 0.5f, 10, 0.005f, 1},
+                                                      {SL_PROBE_MAP_CUBE_LIT, -2, 1, 0.5f, 10, 0.005f, 1},
+                                                      {SL_PROBE_MAP_CUBE_LIT, 0.5f, -1, 2, 10, 0.005f, 1}};
+    double soft_want[3] = {1, 0.5, 0.25}, soft_got[3] = {1.25, 0.625, 0.3125};
+    grade_probe("point_shadow_soft", 3, soft, soft_got, soft_want, &out);
+    CHECK(!out.passed && strstr(out.message, "1.25 times the contract's"));
+    if (!strstr(out.message, "1.25 times")) fprintf(stderr, "  scaled: %s\n", out.message);
 }
 
 /* A failed check's diagnosis is the same for every student it fits, whatever

@@ -162,6 +162,137 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
              k->about[row]);
 }
 
+/* ---- what the failing rows' answers are, read against the contract's answers on every row ----
+ * Where no verdict names the mistake, three relations that hold on every failing row (its outputs that
+ * differ) are told as what they are, for any function: the answers negated, the answers scaled by one
+ * factor, or the answers the contract gives another row whose inputs differ in one parameter (a
+ * condition reversed, two branches exchanged). Each is said only when it holds on every failing row. */
+
+/* The parameter in which rows a and b differ, if exactly one does (-1: none or several). */
+static int _sl_one_param_apart(const sl_probe_function *f, const sl_check *k, int a, int b) {
+    int offset = 0, differs = -1;
+    for (int p = 0; p < f->param_count; p++) {
+        int size = sl_probe_type_size(f->params[p].type);
+        bool same = memcmp(&k->inputs[a][offset], &k->inputs[b][offset], sizeof(float) * (size_t)size) == 0;
+        offset += size;
+        if (same) continue;
+        if (differs >= 0) return -1;
+        differs = p;
+    }
+    return differs;
+}
+
+/* Appends "name" of output o to a list of names, once. */
+static void _sl_name_once(const sl_probe_function *f, int o, char *names, size_t n, int *count) {
+    char name[64];
+    _sl_output_name(f, o, name, sizeof name);
+    if (!name[0] || strstr(names, name)) return;
+    size_t used = strlen(names);
+    if (*count < 4) snprintf(names + used, n - used, "%s%s", *count ? ", " : "", name);
+    (*count)++;
+}
+
+static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
+                             uint32_t failing, const uint32_t *differs, char *out, size_t n) {
+    int outputs = f->output_count;
+    if (outputs == 16) return false; /* a matrix: told as the camera it is */
+    /* negated, or scaled by one factor, on every output that differs */
+    bool negated = true, scaled = true, any = false;
+    double factor = NAN;
+    int values = 0;
+    char names[200] = "";
+    int named = 0, example_row = -1, example_output = -1;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        for (int o = 0; o < outputs; o++) {
+            if (!((differs[row] >> o) & 1u)) continue;
+            char name[64];
+            _sl_output_name(f, o, name, sizeof name);
+            double a = s[row * outputs + o], b = e[row * outputs + o];
+            bool usable = isfinite(a) && isfinite(b) && fabs(b) > 1e-9 && !_sl_output_is_enum(name);
+            negated &= usable && fabs(a + b) <= 1e-4 * fabs(b) + 1e-7;
+            double ratio = usable ? a / b : NAN;
+            if (isnan(factor)) factor = ratio;
+            scaled &= usable && fabs(ratio - factor) <= 1e-3 * fabs(factor);
+            any = true;
+            values++;
+            _sl_name_once(f, o, names, sizeof names, &named);
+            if (example_row < 0) example_row = row, example_output = o;
+        }
+    }
+    /* "factor, units" as "factor and units" */
+    char *last = strrchr(names, ',');
+    if (last && named <= 4 && strlen(names) + 4 < sizeof names) {
+        memmove(last + 4, last + 1, strlen(last + 1) + 1);
+        memcpy(last, " and", 4);
+    }
+    if (any && (negated || scaled) && !(scaled && (fabs(factor - 1) < 1e-3 || fabs(factor) < 1e-3))) {
+        char a[48], b[48];
+        _sl_value(s[example_row * outputs + example_output], a, sizeof a);
+        _sl_value(e[example_row * outputs + example_output], b, sizeof b);
+        if (negated)
+            snprintf(out, n, "its %s come%s out negated on every row that differs (%s where %s is expected): a sign "
+                     "flipped",
+                     names, named == 1 && values == 1 ? "s" : "", a, b);
+        else if (values >= 2)
+            snprintf(out, n, "on every row that differs, its %s %s %.4g times the contract's (%s where %s is "
+                     "expected): a factor of its own, or a wrong divisor",
+                     names, named == 1 ? "is" : "are", factor, a, b);
+        else
+            return false; /* one value: any two numbers have a ratio */
+        return true;
+    }
+    /* the contract's answers for another row, one parameter apart */
+    int pairs = 0, first_row = -1, first_other = -1, param = -1;
+    bool mutual = true;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        int found = -1;
+        for (int other = 0; other < k->rows && found < 0; other++) {
+            if (other == row) continue;
+            int p = _sl_one_param_apart(f, k, row, other);
+            if (p < 0 || (param >= 0 && p != param)) continue;
+            bool as_other = true, other_differs = false;
+            for (int o = 0; o < outputs && as_other; o++) {
+                if (!((differs[row] >> o) & 1u)) continue;
+                double a = s[row * outputs + o], b = e[other * outputs + o], own = e[row * outputs + o];
+                as_other = isfinite(a) && isfinite(b) && fabs(a - b) <= 1e-5 * (1 + fabs(b));
+                other_differs |= fabs(b - own) > 1e-5 * (1 + fabs(own));
+            }
+            if (as_other && other_differs) found = other, param = p;
+        }
+        if (found < 0) return false;
+        if (first_row < 0) first_row = row, first_other = found;
+        mutual &= ((failing >> found) & 1u) != 0;
+        pairs++;
+    }
+    if (pairs == 0 || param < 0) return false;
+    char a[600], b[600];
+    const sl_probe_function *fp = f;
+    _sl_inputs(fp, k->inputs[first_row], a, sizeof a);
+    _sl_inputs(fp, k->inputs[first_other], b, sizeof b);
+    /* the one parameter's value in each row, from its "name = value" in the inputs */
+    char here[120] = "", there[120] = "";
+    const char *name = f->params[param].name;
+    for (int side = 0; side < 2; side++) {
+        const char *text = side ? b : a, *at = text;
+        size_t length = strlen(name);
+        while ((at = strstr(at, name)) && !(at[length] == ' ' && at[length + 1] == '=' && (at == text || at[-1] == ' ')))
+            at += length;
+        if (!at) return false;
+        size_t value = strcspn(at, ",)");
+        if (at[length + 3] == '(') value = strcspn(at, ")") + 1; /* a vector: up to its parenthesis */
+        snprintf(side ? there : here, 120, "%.*s", (int)value, at);
+    }
+    if (mutual && pairs >= 2)
+        snprintf(out, n, "with %s it answers as the contract does with %s, and the other way round: the two cases "
+                 "are exchanged (a condition reversed, or two branches swapped)", here, there);
+    else
+        snprintf(out, n, "with %s it gives what the contract gives with %s: a copy of that case, or a condition "
+                 "that catches both", here, there);
+    return true;
+}
+
 /* " (3 of 24 rows differ, 2 of them generic; TODO(...) in ...)": how many rows differ, and of those how many
  * were drawn from the seed rather than written (sl_probe_generic.h). */
 static void _sl_rows_differ(sl_check_result *out, const sl_check *k, int failing, const char *todo, const char *file) {
@@ -302,11 +433,12 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     written_rows.failing = written_failing;
     /* One edit of the contract's formula that every modelled row follows, and that no catalogue lists
      * (staff builds: the contracts' formulas), read from every row, written and generic, says what the
-     * code computes where no verdict was written for it: it leads (a verdict would name a mistake it
-     * was written for, "lambda is ignored" for splits divided as integers). A catalogued slip (most
-     * have their verdict too), a slip of one input, or several that fit alike come after the written
-     * rows' verdicts, each written to tell apart mistakes such slips confuse (a bias left out and one
-     * negated fit the same rows). Code still the stub's is "not implemented", never a slip. */
+     * code computes where no verdict was written for it: it leads (a verdict would name the mistake it
+     * was written for: "lambda is ignored" for splits divided as integers). A catalogued slip (most have
+     * a verdict of their own, in the README's words), a slip of one input, or several that fit alike
+     * come after the written rows' verdicts, each written to tell apart mistakes such slips confuse (a
+     * bias left out and one negated fit the same rows). Code still the stub's is "not implemented",
+     * never a slip. */
     bool stub_shader = f->glsl && sl_diag_still_the_stub(f->file, f->name) == 1;
     char slip[sizeof verdict];
     sl_probe_slip slip_kind = stub_shader ? SL_PROBE_SLIP_NONE
@@ -325,6 +457,16 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         shown = first;
     }
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
+    if (!verdict[0]) {
+        uint32_t differs[SL_PROBE_MAX_ROWS] = {0};
+        for (int row = 0; row < k->rows; row++)
+            for (int o = 0; o < f->output_count; o++)
+                if (((out->failing_rows >> row) & 1u) &&
+                    !_sl_close_enough(k, row, o, cap->numbers[row * f->output_count + o],
+                                      ref->numbers[row * f->output_count + o]))
+                    differs[row] |= 1u << o;
+        _sl_row_relation(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict);
+    }
     /* the same answer on every row while the contract's vary: it does not follow its inputs at all */
     if (!verdict[0] && f->output_count <= 4 && k->rows > 2) {
         bool constant = true, expected_vary = false;

@@ -271,8 +271,11 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     if (kernel && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0 && _sl_got(v, row, 0) <= 0.05) return row;
     if (kernel && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
         double sum = _sl_got(v, row, 0);
+        /* a sum off 1 is a divisor that is not the count of samples taken: none, the wrong count, or loops
+         * that take fewer (or more) samples than the count divided by */
         snprintf(text, n, "the weights sum to %.4g, not 1 (nothing in front gives %.4g): the kernel is not normalised "
-                          "— divide the sum of the results by the number of samples", sum, sum);
+                          "— divide the sum of the results by the number of samples the loops take (every offset "
+                          "from -radius to radius, both ends included)", sum, sum);
         return row;
     }
     /* the bias decides the own-surface rows alone: with an empty map failing too, something else shadows */
