@@ -165,8 +165,9 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
 /* ---- what the failing rows' answers are, read against the contract's answers on every row ----
  * Where no verdict names the mistake, three relations that hold on every failing row (its outputs that
  * differ) are told as what they are, for any function: the answers negated, the answers scaled by one
- * factor, or the answers the contract gives another row whose inputs differ in one parameter (a
- * condition reversed, two branches exchanged). Each is said only when it holds on every failing row. */
+ * factor (over at least two different expected values: one value has every ratio), or the answers the
+ * contract gives another row whose inputs differ in one parameter. Each is said only when it holds on
+ * every failing row, and as the fact it is: the code behind it is the student's to find. */
 
 /* The parameter in which rows a and b differ, if exactly one does (-1: none or several). */
 static int _sl_one_param_apart(const sl_probe_function *f, const sl_check *k, int a, int b) {
@@ -198,7 +199,8 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
     if (outputs == 16) return false; /* a matrix: told as the camera it is */
     /* negated, or scaled by one factor, on every output that differs */
     bool negated = true, scaled = true, any = false;
-    double factor = NAN;
+    double factor = NAN, wanted = NAN;
+    bool wanted_vary = false; /* two different expected values at least: one value has every ratio */
     int values = 0;
     char names[200] = "";
     int named = 0, example_row = -1, example_output = -1;
@@ -213,6 +215,8 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
             negated &= usable && fabs(a + b) <= 1e-4 * fabs(b) + 1e-7;
             double ratio = usable ? a / b : NAN;
             if (isnan(factor)) factor = ratio;
+            if (isnan(wanted)) wanted = b;
+            wanted_vary |= usable && fabs(fabs(b) - fabs(wanted)) > 1e-4 * fabs(wanted);
             scaled &= usable && fabs(ratio - factor) <= 1e-3 * fabs(factor);
             any = true;
             values++;
@@ -226,7 +230,7 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
         memmove(last + 4, last + 1, strlen(last + 1) + 1);
         memcpy(last, " and", 4);
     }
-    if (any && (negated || scaled) && !(scaled && (fabs(factor - 1) < 1e-3 || fabs(factor) < 1e-3))) {
+    if (any && wanted_vary && (negated || scaled) && !(scaled && (fabs(factor - 1) < 1e-3 || fabs(factor) < 1e-3))) {
         char a[48], b[48];
         _sl_value(s[example_row * outputs + example_output], a, sizeof a);
         _sl_value(e[example_row * outputs + example_output], b, sizeof b);
@@ -285,11 +289,10 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
         snprintf(side ? there : here, 120, "%.*s", (int)value, at);
     }
     if (mutual && pairs >= 2)
-        snprintf(out, n, "with %s it answers as the contract does with %s, and the other way round: the two cases "
-                 "are exchanged (a condition reversed, or two branches swapped)", here, there);
+        snprintf(out, n, "with %s it answers as the contract does with %s, and the other way round: the two cases' "
+                 "answers are exchanged", here, there);
     else
-        snprintf(out, n, "with %s it gives what the contract gives with %s: a copy of that case, or a condition "
-                 "that catches both", here, there);
+        snprintf(out, n, "with %s it gives what the contract gives with %s", here, there);
     return true;
 }
 

@@ -285,8 +285,8 @@ int sl_formula_edit_count(const sl_formula *f) { return f->node_count * _SL_EDIT
 int sl_formula_edit_rank(int edit) {
     static const int rank[_SL_EDITS] = {
         [_SL_EDIT_TRUNCATE] = 0, [_SL_EDIT_REGROUP] = 1,  [_SL_EDIT_SWAP] = 2,     [_SL_EDIT_OPERATOR] = 3,
-        [_SL_EDIT_FUNCTION] = 4, [_SL_EDIT_SQUARE] = 5,   [_SL_EDIT_LEFT] = 6,     [_SL_EDIT_RIGHT] = 6,
-        [_SL_EDIT_UNWRAP] = 7,   [_SL_EDIT_INPUT] = 8,    [_SL_EDIT_ONE_MINUS] = 9, [_SL_EDIT_NEGATE] = 10,
+        [_SL_EDIT_FUNCTION] = 4, [_SL_EDIT_UNWRAP] = 5,   [_SL_EDIT_SQUARE] = 6,   [_SL_EDIT_LEFT] = 7,
+        [_SL_EDIT_RIGHT] = 7,    [_SL_EDIT_INPUT] = 8,    [_SL_EDIT_ONE_MINUS] = 9, [_SL_EDIT_NEGATE] = 10,
         [_SL_EDIT_NUMBER] = 11,  [_SL_EDIT_CONSTANT] = 12};
     return edit < 1 ? _SL_EDITS : rank[(edit - 1) / _SL_VARIANTS % _SL_EDITS];
 }
