@@ -1437,15 +1437,12 @@ static void test_probe_slips(void) {
     const sl_probe_function *sf = sl_probe_at(splits->function);
     CHECK(sf && sf->output_count == 5);
     for (int row = 0; sf && row < splits->rows; row++) {
+        /* with t = 0 every inner split is the near plane, in both schemes (no scheme written out here: the
+         * handout holds this file) */
         double near = sl_probe_row_param(sf, splits->inputs[row], "near")[0];
         double far = sl_probe_row_param(sf, splits->inputs[row], "far")[0];
-        double lambda = sl_probe_row_param(sf, splits->inputs[row], "lambda")[0];
         int count = (int)sl_probe_row_param(sf, splits->inputs[row], "count")[0];
-        for (int i = 0; i < 5; i++) {
-            double t = (double)(i / count); /* the slip */
-            double split = lambda * near * pow(far / near, t) + (1 - lambda) * (near + (far - near) * t);
-            student[row * 5 + i] = i > count ? 0 : i == 0 ? near : i == count ? far : split;
-        }
+        for (int i = 0; i < 5; i++) student[row * 5 + i] = i > count ? 0 : i == count ? far : near;
     }
     CHECK(sl_probe_generic_slip(splits, student, NULL, text, sizeof text) == SL_PROBE_SLIP_EDIT &&
           strstr(text, "a division of integers"));
