@@ -449,6 +449,17 @@ static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_resul
     /* An experiment's answer is evidence no probe gives: it leads alone, and no function
      * it did not find fixing this check is blamed beside it. */
     if (!out->settled && context && context->experiment_lead && context->experiment_lead[0]) {
+        /* the diagnosis' own cause stays where it blames the function the experiment found: the concept
+         * beside the evidence (a cause in another function would contradict the experiment) */
+        const char *found = context->experiment_function ? context->experiment_function : "";
+        const char *found_base = strrchr(found, '/') ? strrchr(found, '/') + 1 : found;
+        bool cause_agrees = out->cause[0] && out->blamed[0] && found_base[0] &&
+                            strncmp(out->blamed, found_base, strcspn(found_base, "( ")) == 0 &&
+                            strlen(out->blamed) == strcspn(found_base, "( ");
+        if (cause_agrees) {
+            size_t used = strlen(symptom);
+            snprintf(symptom + used, sizeof symptom - used, "; in %s: %s", out->blamed, out->cause);
+        }
         size_t len = strlen(symptom);
         bool ends_sentence = len > 0 && strchr(".?!", symptom[len - 1]) != NULL;
         snprintf(out->message, sizeof out->message, "%s. What the check measured: %s%s", context->experiment_lead,
@@ -716,9 +727,10 @@ void sl_grade_require_evidence(const sl_case *c, sl_check_result *results) {
                              "(see there); staff: repair that reference and grade again", c->checks[k].name, c->name,
                         c->checks[unproved].name);
         else if (unproved >= 0)
-            sl_diag_say(out, "the %s's state looks right, but the picture that would show it used, %s / %s, fails "
-                             "(see there): the state alone earns no point", c->checks[k].name, c->name,
-                        c->checks[unproved].name);
+            /* what that picture's check found, said here too: the state's check comes first in the report */
+            sl_diag_say(out, "the %s's state looks right, but the picture that would show it used, %s / %s, fails, "
+                             "and the state alone earns no point. There: %s", c->checks[k].name, c->name,
+                        c->checks[unproved].name, results[unproved].message);
         else
             sl_diag_say(out, "the %s's state looks right, but this case has no picture that shows it was used, and "
                              "the state alone earns no point", c->checks[k].name);

@@ -631,6 +631,21 @@ static void test_grade_probe_verdicts(void) {
     CHECK(strstr(out.message, "a hand-tuned constant") != NULL);
     grade_probe("slope_scaled_bias", 4, rows, expected, expected, &out);
     CHECK(out.passed);
+    /* a cap at half of max_bias: said as the multiple it is over two different max_bias, not a factor from
+     * the one row where the slope term could be read */
+    static const float capped_rows[][SL_PROBE_MAX_INPUTS] = {
+        {1.0f, 0.0005f, 0.0015f, 0.01f}, {0.5f, 0.0005f, 0.0015f, 0.01f}, {0.1f, 0.0005f, 0.0015f, 0.01f},
+        {0.5f, 0.0005f, 0.0015f, 0.004f}};
+    double capped_want[4], capped_got[4];
+    for (int i = 0; i < 4; i++) {
+        double cos_t = capped_rows[i][0], tan_t = sqrt(1 - cos_t * cos_t) / cos_t;
+        double open = capped_rows[i][1] + capped_rows[i][2] * tan_t;
+        capped_want[i] = fmin(open, capped_rows[i][3]);
+        capped_got[i] = fmin(open, 0.5 * capped_rows[i][3]);
+    }
+    grade_probe("slope_scaled_bias", 4, capped_rows, capped_got, capped_want, &out);
+    CHECK(!out.passed && strstr(out.message, "caps the bias at 0.5 times max_bias") && !strstr(out.message, "factor"));
+    if (!strstr(out.message, "caps the bias")) fprintf(stderr, "  capped: %s\n", out.message);
 
     /* where no verdict names it, the relation the answers keep to the contract's: negated values */
     static const float states[][SL_PROBE_MAX_INPUTS] = {{3, 2.0f, 4.0f, -1}, {3, 1.5f, 3.0f, -1}, {0, 2.0f, 4.0f, -1}};

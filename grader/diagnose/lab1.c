@@ -70,6 +70,36 @@ void sl_diagnose_fbo(const sl_case *c, const sl_case_result *r, sl_check_result 
     }
 }
 
+/* Whether the student's depths are one affine function a d + b of the reference's d, on texels written in
+ * both, with the reference's texels written: the geometry in its place, its depth remapped. A least-squares fit, held to a quarter of the check's threshold everywhere. */
+static bool _sl_depth_remapped(const sl_image *s, const sl_image *t, double threshold, double *scale, double *offset) {
+    long n = (long)s->width * s->height, both = 0, missing = 0;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, lo = 1, hi = 0;
+    for (long i = 0; i < n; i++) {
+        double x = t->data[i], y = s->data[i];
+        bool written_t = x < 1 - 1e-6, written_s = y < 1 - 1e-6;
+        if (!isfinite(y)) return false;
+        missing += written_t && !written_s;
+        if (!written_t || !written_s) continue;
+        both++;
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+        lo = fmin(lo, x), hi = fmax(hi, x);
+    }
+    /* a range of depths to fit over, and the reference's texels written (a remap past 1 drops a few; one
+     * that brings geometry past the far plane into range writes texels the reference leaves at 1.0) */
+    if (both < 100 || hi - lo < 0.05 || missing > both / 50) return false;
+    double d = both * sxx - sx * sx;
+    if (fabs(d) < 1e-12) return false;
+    double a = (both * sxy - sx * sy) / d, b = (sy - a * sx) / both;
+    if (fabs(a - 1) < 0.01 && fabs(b) < threshold) return false; /* the reference's depths, near enough */
+    for (long i = 0; i < n; i++) {
+        double x = t->data[i], y = s->data[i];
+        if (x < 1 - 1e-6 && y < 1 - 1e-6 && fabs(a * x + b - y) > threshold / 4) return false;
+    }
+    *scale = a, *offset = b;
+    return true;
+}
+
 void sl_diagnose_depth(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                             sl_check_result *out) {
     const sl_capture *cap = sl_result_capture(r, "depth_map");
@@ -113,6 +143,7 @@ void sl_diagnose_depth(const sl_case *c, const sl_check *k, const sl_case_result
         farther += d > k->threshold;
     }
     double near_fraction = (double)nearer / (double)n, far_fraction = (double)farther / (double)n;
+    double scale = 1, offset = 0;
     if (stu_empty > 0.999 && ref_empty < 0.99) {
         sl_diag_say(out, "the depth map is empty (all 1.0): nothing was written into it");
         sl_diag_cause_in(out, "depth.vert", "no fragment reached it — shaders/depth.vert must output u_light_view_projection * u_model * "
@@ -127,6 +158,12 @@ void sl_diagnose_depth(const sl_case *c, const sl_check *k, const sl_case_result
                     s->height);
         sl_diag_cause_in(out, "lab1_begin_depth_pass", "the viewport is still the window's — call glViewport(0, 0, size, size) in "
                            "lab1_begin_depth_pass (TODO lab1.3)");
+    } else if (_sl_depth_remapped(s, t, k->threshold, &scale, &offset)) {
+        sl_diag_say(out, "every written texel holds %.3g d + %.3g (to within %.2g) where the reference holds d: the map covers the reference's "
+                         "texels, but each depth is remapped", scale, offset, k->threshold / 4);
+        sl_diag_cause_in(out, "depth.vert", "gl_Position must be the clip-space u_light_view_projection * u_model * "
+                           "position, its z unchanged: the [-1, 1] to [0, 1] mapping of depth is glDepthRange's, "
+                           "after the divide (shaders/depth.vert, TODO lab1.4)");
     } else if (nearer > 20 * (farther + 1) && near_fraction > k->fail_fraction) {
         /* stale depths from earlier frames: many texels nearer than they should be, few farther */
         out->symptoms |= 1u << SL_SYMPTOM_STALE_DEPTH;
@@ -202,6 +239,23 @@ static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, s
         sl_verdict_predicts(v, 1u << SL_SYMPTOM_GROSS);
         return r;
     }
+    /* every parameter where a new texture has it (filters, wraps and border all GL's defaults, each not the
+     * contract's): not one choice wrong, but calls that set another texture, or none */
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
+        /* the border reads -1 where no wrap mode uses it (sl_probe_calls.c), as with a new texture's GL_REPEAT */
+        const double defaults[5] = {GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPEAT, -1};
+        bool all_defaults = true;
+        for (int o = 0; o < 5; o++)
+            all_defaults &= _sl_got(v, r, o) == defaults[o] && _sl_want(v, r, o) != defaults[o];
+        if (!all_defaults) break;
+        snprintf(text, n, "none of the texture's parameters took: filters, wrap modes and border are all a new "
+                          "texture's defaults (GL_NEAREST_MIPMAP_LINEAR, GL_REPEAT, border 0) — glTexParameter* "
+                          "changes the texture bound to GL_TEXTURE_2D when it is called: set them while "
+                          "map->depth_texture is bound");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_GROSS);
+        return r;
+    }
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
         double wrap_s = _sl_got(v, r, 2), wrap_t = _sl_got(v, r, 3), border = _sl_got(v, r, 4);
@@ -259,8 +313,10 @@ static int _sl_verdict_begin_depth_pass(const sl_verdict_rows *v, char *text, si
         } else if (!_sl_got(v, r, 5)) {
             snprintf(text, n, "depth writes are off: glDepthMask(GL_TRUE), before the clear too (glClear respects it)");
         } else if (_sl_got(v, r, 6) != 1) {
+            /* the probe starts with depth writes off: a clear before glDepthMask(GL_TRUE) clears nothing */
             snprintf(text, n, "the depths are not cleared to 1.0 at the start of the pass: glClear(GL_DEPTH_BUFFER_BIT) "
-                              "after binding the map's framebuffer, every pass");
+                              "after binding the map's framebuffer and after glDepthMask(GL_TRUE) (glClear writes no "
+                              "depth while depth writes are off, as they are when this probe starts), every pass");
         } else {
             continue;
         }

@@ -31,6 +31,79 @@ static void _sl_mul(const double *a, const double *b, double *out) { /* column-m
         }
 }
 
+/* Inverse of a column-major 4x4 (Gauss-Jordan, partial pivoting); false when singular. */
+static bool _sl_invert(const double *m, double *out) {
+    double a[4][8];
+    for (int row = 0; row < 4; row++)
+        for (int col = 0; col < 8; col++) a[row][col] = col < 4 ? m[col * 4 + row] : (col - 4 == row);
+    for (int col = 0; col < 4; col++) {
+        int pivot = col;
+        for (int row = col + 1; row < 4; row++)
+            if (fabs(a[row][col]) > fabs(a[pivot][col])) pivot = row;
+        if (fabs(a[pivot][col]) < 1e-12) return false;
+        for (int k = 0; k < 8; k++) {
+            double t = a[col][k];
+            a[col][k] = a[pivot][k];
+            a[pivot][k] = t;
+        }
+        double d = a[col][col];
+        for (int k = 0; k < 8; k++) a[col][k] /= d;
+        for (int row = 0; row < 4; row++) {
+            if (row == col) continue;
+            double f = a[row][col];
+            for (int k = 0; k < 8; k++) a[row][k] -= f * a[col][k];
+        }
+    }
+    for (int row = 0; row < 4; row++)
+        for (int col = 0; col < 4; col++) out[col * 4 + row] = a[row][col + 4];
+    return true;
+}
+
+/* The bias matrix a shadow matrix holds, W' = S * (Lp Lv)^-1, read row by row: each of x, y, z mapped to
+ * "a coordinate + b w", w to "c w". Said only when W' has that form (any other matrix is an order or a
+ * product, which the callers tell apart), and only of the rows that differ from W's 0.5 c + 0.5 w. */
+static bool _sl_describe_bias_matrix(const double *sm, const double *pv, char *text, size_t n) {
+    double inv[16], w[16];
+    if (!_sl_invert(pv, inv)) return false;
+    _sl_mul(sm, inv, w);
+    const double tolerance = 1e-3;
+    for (int row = 0; row < 4; row++)
+        for (int col = 0; col < 3; col++)
+            if (col != row && fabs(w[col * 4 + row]) > tolerance) return false; /* a coordinate from another */
+    if (fabs(w[3 * 4 + 3]) < tolerance) return false;
+    static const char axis[] = "xyzw";
+    char rows[400] = "";
+    size_t used = 0;
+    int differ = 0;
+    for (int row = 0; row < 4; row++) {
+        double a = w[row * 4 + row], b = w[3 * 4 + row];
+        bool wrong = row < 3 ? fabs(a - 0.5) > tolerance || fabs(b - 0.5) > tolerance : fabs(b - 1) > tolerance;
+        if (!wrong) continue;
+        if (row < 3)
+            used += (size_t)snprintf(rows + used, sizeof rows - used, "%s%c' = %.3g %c + %.3g w", differ ? ", " : "",
+                                     axis[row], fabs(a) < tolerance ? 0.0 : a, axis[row], fabs(b) < tolerance ? 0.0 : b);
+        else
+            used += (size_t)snprintf(rows + used, sizeof rows - used, "%sw' = %.3g w", differ ? ", " : "", b);
+        differ++;
+        if (used >= sizeof rows) return false;
+    }
+    if (differ == 0) return false;
+    bool identity = differ == 4 - (fabs(w[15] - 1) <= tolerance);
+    for (int row = 0; row < 3 && identity; row++)
+        identity = fabs(w[row * 4 + row] - 1) <= tolerance && fabs(w[12 + row]) <= tolerance && fabs(w[15] - 1) <= tolerance;
+    if (identity) {
+        snprintf(text, n, "the shadow matrix is Lp * Lv without the bias matrix W: coordinates stay in [-1,1] instead of [0,1]");
+        return true;
+    }
+    if (differ == 1 && rows[0] != 'w')
+        snprintf(text, n, "the shadow matrix's bias matrix is not W: %s, where W gives %c' = 0.5 %c + 0.5 w (mapping [-1, 1] to "
+                          "[0, 1])", rows, rows[0], rows[0]);
+    else
+        snprintf(text, n, "the shadow matrix's bias matrix is not W: %s, where W gives 0.5 c + 0.5 w for each of x, y and z, and "
+                          "w' = w (mapping [-1, 1] to [0, 1])", rows);
+    return true;
+}
+
 void sl_diagnose_matrices(const sl_case *c, const sl_check *k, const sl_case_result *r, const sl_reference *ref,
                                sl_check_result *out) {
     const sl_capture *cap = sl_result_capture(r, "matrices");
@@ -85,6 +158,7 @@ void sl_diagnose_matrices(const sl_case *c, const sl_check *k, const sl_case_res
     } else {
         static const double transposed[16] = {0.5, 0, 0, 0.5, 0, 0.5, 0, 0.5, 0, 0, 0.5, 0.5, 0, 0, 0, 1};
         double twvp[16];
+        char tmp_text[600];
         _sl_mul(transposed, pv, twvp);
         _sl_mul(pv, bias, tmp);
         if (_sl_matrix_error(sm, tmp) <= k->epsilon)
@@ -92,6 +166,8 @@ void sl_diagnose_matrices(const sl_case *c, const sl_check *k, const sl_case_res
         else if (_sl_matrix_error(sm, twvp) <= k->epsilon)
             sl_diag_say(out, "the bias matrix W is transposed: its translation (0.5, 0.5, 0.5) ends up in the bottom row. "
                          "cglm's initialiser lists columns, so the translation is the last of the four {...} (TODO lab2.3)");
+        else if (_sl_describe_bias_matrix(sm, pv, tmp_text, sizeof tmp_text))
+            sl_diag_say(out, "%s (TODO lab2.3)", tmp_text);
         else
             sl_diag_say(out, "the shadow matrix differs from W * Lp * Lv (largest error %.3g) (TODO lab2.3)", em);
     }
@@ -190,6 +266,32 @@ static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, si
     return -1;
 }
 
+/* The probe's rows: Lp Lv is W^-1 times the contract's answer, so the student's W is theirs times that. */
+static int _sl_verdict_shadow_matrix(const sl_verdict_rows *v, char *text, size_t n) {
+    static const double w_inverse[16] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, -1, -1, -1, 1};
+    char first_text[600] = "";
+    int first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double s[16], e[16], pv[16];
+        for (int o = 0; o < 16; o++) {
+            s[o] = _sl_got(v, r, o);
+            e[o] = _sl_want(v, r, o);
+        }
+        _sl_mul(w_inverse, e, pv);
+        char said[600];
+        if (!_sl_describe_bias_matrix(s, pv, said, sizeof said)) return -1;
+        if (first < 0) {
+            first = r;
+            snprintf(first_text, sizeof first_text, "%s", said);
+        } else if (strcmp(said, first_text) != 0) {
+            return -1; /* one W on every row, or none to tell */
+        }
+    }
+    if (first >= 0) snprintf(text, n, "%s", first_text);
+    return first;
+}
+
 /* ---- what lab 2's cases run ---- */
 
 static bool _sl_is_matrix_function(const char *fn) {
@@ -220,7 +322,8 @@ void sl_lab2_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 /* ---- lab 2 in the diagnosis table (diagnose/table.c) ---- */
 const sl_lab_diagnoses sl_lab2_diagnoses = {
     .lab = 2,
-    .functions = {{"lab2_light_projection", _sl_verdict_light_projection}},
+    .functions = {{"lab2_light_projection", _sl_verdict_light_projection},
+                  {"lab2_shadow_matrix", _sl_verdict_shadow_matrix}},
     .lookup_function = sl_lab2_lookup_function,
     .checks = {{SL_CHECK_MATRICES, sl_diagnose_matrices}},
     .visibility = sl_diagnose_lab2_visibility,

@@ -239,6 +239,34 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
             return r;
         }
     }
+    /* a cap below the contract's on every failing row: one constant of its own, or one multiple of max_bias */
+    int capped = 0, same_value = 0, same_share = 0, first_capped = -1;
+    bool max_bias_varies = false;
+    for (int r = 0; r < rows && failing_rows >= 2; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double max_bias = *_sl_param(f, v->k->inputs[r], "max_bias"), s = _sl_got(v, r, 0);
+        if (!(s < _sl_want(v, r, 0)) || max_bias <= 0) break;
+        if (first_capped < 0) first_capped = r;
+        double first_s = _sl_got(v, first_capped, 0);
+        double first_max = *_sl_param(f, v->k->inputs[first_capped], "max_bias");
+        capped++;
+        same_value += _sl_near(s, first_s, 1e-3 * first_s + 1e-9);
+        same_share += _sl_near(s / max_bias, first_s / first_max, 1e-3 * first_s / first_max);
+        max_bias_varies |= !_sl_near(max_bias, first_max, 1e-9);
+    }
+    if (capped == failing_rows && capped >= 2 && (same_value == capped || same_share == capped)) {
+        const float *in = v->k->inputs[first_capped];
+        double s = _sl_got(v, first_capped, 0), max_bias = *_sl_param(f, in, "max_bias");
+        if (same_share == capped && (max_bias_varies || same_value != capped))
+            snprintf(text, n, "it caps the bias at %.3g times max_bias on every row that differs (%.4g where max_bias "
+                              "is %.4g): the cap is max_bias itself — min(constant + slope * tan(theta), max_bias)",
+                     s / max_bias, s, max_bias);
+        else
+            snprintf(text, n, "it caps the bias at %.4g on every row that differs (%.3g times max_bias %.4g)%s — "
+                              "min(constant + slope * tan(theta), max_bias), with the max_bias given",
+                     s, s / max_bias, max_bias, max_bias_varies ? ": a cap of its own where max_bias belongs" : "");
+        return first_capped;
+    }
     /* Where the clamp does not act: which function of the angle does the slope term follow? */
     int rows_seen = 0, as_sin = 0, as_angle = 0, as_one_minus = 0, as_max_one_minus = 0, first = -1;
     double ratio_lo = INFINITY, ratio_hi = -INFINITY, term_lo = INFINITY, term_hi = -INFINITY;
@@ -289,12 +317,13 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
                           "from the light — min(constant + slope * tan(theta), max_bias)");
         return first;
     }
-    if (term_hi - term_lo <= 0.03 * fabs(term_hi)) {
+    /* a factor from one row is any ratio at all */
+    if (rows_seen >= 2 && term_hi - term_lo <= 0.03 * fabs(term_hi)) {
         snprintf(text, n, "the slope term is %.3g times slope * tan(theta): a factor inside the clamp? The bias is "
                           "min(constant + slope * tan(theta), max_bias)", term_lo);
         return first;
     }
-    if (ratio_hi - ratio_lo <= 0.03 * fabs(ratio_hi)) {
+    if (rows_seen >= 2 && ratio_hi - ratio_lo <= 0.03 * fabs(ratio_hi)) {
         snprintf(text, n, "%.3g times the expected bias wherever the clamp does not act: a factor inside the clamp? The "
                           "bias is min(constant + slope * tan(theta), max_bias)", ratio_lo);
         return first;

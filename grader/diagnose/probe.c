@@ -183,6 +183,14 @@ static int _sl_one_param_apart(const sl_probe_function *f, const sl_check *k, in
     return differs;
 }
 
+/* Whether rows a and b give parameter p the same value. */
+static bool _sl_same_param(const sl_probe_function *f, const sl_check *k, int p, int a, int b) {
+    int offset = 0;
+    for (int q = 0; q < p; q++) offset += sl_probe_type_size(f->params[q].type);
+    int size = sl_probe_type_size(f->params[p].type);
+    return memcmp(&k->inputs[a][offset], &k->inputs[b][offset], sizeof(float) * (size_t)size) == 0;
+}
+
 /* Appends "name" of output o to a list of names, once. */
 static void _sl_name_once(const sl_probe_function *f, int o, char *names, size_t n, int *count) {
     char name[64];
@@ -248,7 +256,7 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
     }
     /* the contract's answers for another row, one parameter apart */
     int pairs = 0, first_row = -1, first_other = -1, param = -1;
-    bool mutual = true;
+    bool mutual = true, unique = true, consistent = true;
     for (int row = 0; row < k->rows; row++) {
         if (!((failing >> row) & 1u)) continue;
         int found = -1;
@@ -266,11 +274,24 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
             if (as_other && other_differs) found = other, param = p;
         }
         if (found < 0) return false;
+        /* the answers of one row alone: values many rows share (a coverage of 0 or 0.25) tell nothing */
+        int rows_alike = 0;
+        for (int other = 0; other < k->rows; other++) {
+            bool alike = other != row;
+            for (int o = 0; o < outputs && alike; o++)
+                alike = !((differs[row] >> o) & 1u) ||
+                        fabs(s[row * outputs + o] - e[other * outputs + o]) <= 1e-5 * (1 + fabs(e[other * outputs + o]));
+            rows_alike += alike;
+        }
+        unique &= rows_alike == 1;
         if (first_row < 0) first_row = row, first_other = found;
+        /* one exchange of two values of the parameter, not a row found anywhere for each row */
+        consistent &= (_sl_same_param(f, k, param, row, first_row) && _sl_same_param(f, k, param, found, first_other)) ||
+                      (_sl_same_param(f, k, param, row, first_other) && _sl_same_param(f, k, param, found, first_row));
         mutual &= ((failing >> found) & 1u) != 0;
         pairs++;
     }
-    if (pairs == 0 || param < 0) return false;
+    if (pairs == 0 || param < 0 || !consistent || (!unique && !(mutual && pairs >= 2))) return false;
     char a[600], b[600];
     const sl_probe_function *fp = f;
     _sl_inputs(fp, k->inputs[first_row], a, sizeof a);

@@ -225,6 +225,62 @@ static int _sl_grid_spacing(const sl_verdict_rows *v, char *text, size_t n) {
     return first;
 }
 
+/* Shadowed on every row of the empty map (every stored depth 1.0, the far plane) while an occluder's rows
+ * are right: each comparison found a stored depth nearer than p.z - bias where the map holds 1.0. Said of a
+ * sampler2D's reads only (a sampler2DShadow compares in the texture unit, by its own state). */
+static int _sl_empty_map_shadowed(const sl_verdict_rows *v, char *text, size_t n) {
+    const char *name = v->f->name;
+    /* PCSS's empty map is its no-blocker branch, told apart below */
+    if (strcmp(name, "shadow_compare_hardware") == 0 || strcmp(name, "pcf_hardware") == 0 || strcmp(name, "pcss") == 0)
+        return -1;
+    int empty = 0, dark = 0, first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[r]);
+        /* an occluder's rows right and the outside's lit: it can answer both ways, so not a constant 0 */
+        if ((fr.kind == _SL_ROW_OCCLUDED || fr.kind == _SL_ROW_OUTSIDE) && _sl_failed(v, r)) return -1;
+        if (fr.kind != _SL_ROW_EMPTY_MAP) continue;
+        empty++;
+        if (_sl_got(v, r, 0) <= 0.001 && _sl_want(v, r, 0) >= 0.999) {
+            dark++;
+            if (first < 0) first = r;
+        }
+    }
+    if (empty < 1 || dark != empty) return -1;
+    _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[first]);
+    snprintf(text, n, "shadowed with nothing in the map: every stored depth is 1.0 (the far plane), yet at p.z - bias "
+                      "= %.3g it finds a nearer one — the depth it compares with is not the map's: a depth texture read "
+                      "through a sampler2D holds it in .r, texture(shadow_map, p.xy).r (.g and .b read 0)",
+             fr.p[2] - fr.bias);
+    sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_GROSS);
+    return first;
+}
+
+/* PCSS across an edge, every failing row on one side of the contract's answer: a penumbra too wide blends
+ * farther from the edge (results farther from a single comparison's 0 or 1), one too narrow stays closer.
+ * Rows with other mistakes mixed in (some wider, some narrower) say nothing of the width. */
+static int _sl_pcss_width(const sl_verdict_rows *v, char *text, size_t n) {
+    int narrow = 0, wide = 0, other = 0, first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[r]);
+        double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
+        double here = fabs(_sl_got(v, r, 0) - fr.centre), there = fabs(_sl_want(v, r, 0) - fr.centre);
+        if (fr.kind != _SL_ROW_EDGE) other++;
+        else if (here > there + tolerance) wide++;
+        else if (here < there - tolerance) narrow++;
+        else other++;
+        if (first < 0) first = r;
+    }
+    if (other > 0 || (wide > 0) == (narrow > 0)) return -1;
+    snprintf(text, n, "the penumbra is too %s: on every row that differs, across an occluder's edge, it %s — the "
+                      "width is (d_receiver - d_blocker) * light_size_uv / d_blocker, projected onto the map with "
+                      "* near / d_receiver, every distance from pcf_linear_depth(d, near, far)",
+             wide ? "wide" : "narrow",
+             wide ? "blends farther from the edge than the contract's" : "stays closer to a single comparison's 0 or 1");
+    sl_verdict_predicts(v, 1u << (wide ? SL_SYMPTOM_WIDE_PENUMBRA : SL_SYMPTOM_NARROW_PENUMBRA) | 1u << SL_SYMPTOM_GROSS);
+    return first;
+}
+
 int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     const sl_probe_function *f = v->f;
     bool kernel = strcmp(f->name, "pcf_grid") == 0 || strcmp(f->name, "pcf_poisson") == 0;
@@ -259,6 +315,7 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
                                    1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_GROSS);
         return row;
     }
+    if ((row = _sl_empty_map_shadowed(v, text, n)) >= 0) return row;
     if (pcss && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
         snprintf(text, n, "no blocker found must mean fully lit: with nothing in the map in front of the point, the "
                           "blocker search finds none, and pcss() returns 1.0");
@@ -285,7 +342,9 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
                           "is shadow acne — compare p.z - bias with the stored depth");
         return row;
     }
-    if ((row = _sl_first_failing(v, _SL_ROW_OCCLUDED)) >= 0 && _sl_got(v, row, 0) > _sl_want(v, row, 0)) {
+    /* no blocker found is exactly 1.0: a penumbra too wide also lights an occluded point, partly */
+    if ((row = _sl_first_failing(v, _SL_ROW_OCCLUDED)) >= 0 && _sl_got(v, row, 0) > _sl_want(v, row, 0) &&
+        (!pcss || _sl_got(v, row, 0) >= 0.999)) {
         if (pcss)
             snprintf(text, n, "the blocker search finds no blockers where an occluder covers the whole map: stored "
                               "depths nearer than p.z - bias are the blockers");
@@ -296,7 +355,8 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
         return row;
     }
     if (pcss && (row = _sl_verdict_pcss_search(v, text, n)) >= 0) return row;
-    if (!kernel) return -1; /* PCSS and single lookups: their rows say the rest */
+    if (pcss) return _sl_pcss_width(v, text, n);
+    if (!kernel) return -1; /* single lookups: their rows say the rest */
     /* Across the edge: hard 0/1 results where soft ones are expected, then the width */
     int soft = 0, hard = 0, as_centre = 0, narrow = 0, wide = 0, first_soft = -1, first_width = -1;
     for (int r = 0; r < v->k->rows; r++) {
