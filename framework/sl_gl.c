@@ -54,6 +54,9 @@ const char *sl_gl_enum_name(GLenum value) {
     case GL_RGBA16F: return "GL_RGBA16F";
     case GL_RGBA32F: return "GL_RGBA32F";
     case GL_R32F: return "GL_R32F";
+    case GL_R16F: return "GL_R16F";
+    case GL_R16: return "GL_R16";
+    case GL_R8: return "GL_R8";
     case GL_NEAREST: return "GL_NEAREST";
     case GL_LINEAR: return "GL_LINEAR";
     case GL_NEAREST_MIPMAP_NEAREST: return "GL_NEAREST_MIPMAP_NEAREST";

@@ -449,17 +449,6 @@ static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_resul
     /* An experiment's answer is evidence no probe gives: it leads alone, and no function
      * it did not find fixing this check is blamed beside it. */
     if (!out->settled && context && context->experiment_lead && context->experiment_lead[0]) {
-        /* the diagnosis' own cause stays where it blames the function the experiment found: the concept
-         * beside the evidence (a cause in another function would contradict the experiment) */
-        const char *found = context->experiment_function ? context->experiment_function : "";
-        const char *found_base = strrchr(found, '/') ? strrchr(found, '/') + 1 : found;
-        bool cause_agrees = out->cause[0] && out->blamed[0] && found_base[0] &&
-                            strncmp(out->blamed, found_base, strcspn(found_base, "( ")) == 0 &&
-                            strlen(out->blamed) == strcspn(found_base, "( ");
-        if (cause_agrees) {
-            size_t used = strlen(symptom);
-            snprintf(symptom + used, sizeof symptom - used, "; in %s: %s", out->blamed, out->cause);
-        }
         size_t len = strlen(symptom);
         bool ends_sentence = len > 0 && strchr(".?!", symptom[len - 1]) != NULL;
         snprintf(out->message, sizeof out->message, "%s. What the check measured: %s%s", context->experiment_lead,

@@ -159,11 +159,13 @@ void sl_diagnose_depth(const sl_case *c, const sl_check *k, const sl_case_result
         sl_diag_cause_in(out, "lab1_begin_depth_pass", "the viewport is still the window's — call glViewport(0, 0, size, size) in "
                            "lab1_begin_depth_pass (TODO lab1.3)");
     } else if (_sl_depth_remapped(s, t, k->threshold, &scale, &offset)) {
-        sl_diag_say(out, "every written texel holds %.3g d + %.3g (to within %.2g) where the reference holds d: the map covers the reference's "
-                         "texels, but each depth is remapped", scale, offset, k->threshold / 4);
-        sl_diag_cause_in(out, "depth.vert", "gl_Position must be the clip-space u_light_view_projection * u_model * "
-                           "position, its z unchanged: the [-1, 1] to [0, 1] mapping of depth is glDepthRange's, "
-                           "after the divide (shaders/depth.vert, TODO lab1.4)");
+        /* the fit is the evidence: the geometry in place, its depth not as the projection gives it */
+        sl_diag_say(out, "every written texel holds %.3g d + %.3g (to within %.2g) where the reference holds d: the "
+                         "map covers the reference's texels, but each depth is remapped — gl_Position's z changed "
+                         "after the projection? depth.vert's gl_Position is the clip-space u_light_view_projection * "
+                         "u_model * position, z unchanged: glDepthRange maps depth to [0, 1] after the divide",
+                    scale, offset, k->threshold / 4);
+        sl_diag_cause_in(out, "depth.vert", "look at the z of gl_Position in shaders/depth.vert (TODO lab1.4)");
     } else if (nearer > 20 * (farther + 1) && near_fraction > k->fail_fraction) {
         /* stale depths from earlier frames: many texels nearer than they should be, few farther */
         out->symptoms |= 1u << SL_SYMPTOM_STALE_DEPTH;

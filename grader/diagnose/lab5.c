@@ -61,6 +61,15 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
         return false;
     }
     if (red >= 32 && green >= 32 && is_float) return true;
+    if (green == 0) { /* one channel: not a precision, a moment lost */
+        sl_diag_say(out, "the moments are stored as %s, which has no green channel: the second moment E[x^2] is "
+                         "dropped (it reads 0), so the variance E[x^2] - E[x]^2 comes out negative and the bound has "
+                         "nothing to work with — two channels, the depth in red and its square in green",
+                    sl_gl_enum_name(format));
+        sl_diag_cause_in(out, "lab5_create_moments_target", "create moments[0] and moments[1] as GL_RG32F, format GL_RG "
+                           "(TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
+        return false;
+    }
     sl_diag_say(out, "the moments are stored as %s (%d-bit %s per channel): the variance E[x^2] - E[x]^2 is the "
                      "difference of two nearly equal numbers, and %d bits round it away, so shadows show bands and "
                      "light leaks where the variance comes out wrong (precision)",

@@ -256,7 +256,7 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
     }
     /* the contract's answers for another row, one parameter apart */
     int pairs = 0, first_row = -1, first_other = -1, param = -1;
-    bool mutual = true, unique = true, consistent = true;
+    bool mutual = true, unique = true, consistent = true, hub_first = true, hub_other = true;
     for (int row = 0; row < k->rows; row++) {
         if (!((failing >> row) & 1u)) continue;
         int found = -1;
@@ -288,10 +288,14 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
         /* one exchange of two values of the parameter, not a row found anywhere for each row */
         consistent &= (_sl_same_param(f, k, param, row, first_row) && _sl_same_param(f, k, param, found, first_other)) ||
                       (_sl_same_param(f, k, param, row, first_other) && _sl_same_param(f, k, param, found, first_row));
+        /* or one value against all the others (a test inverted: mode 1's answers for every other mode) */
+        hub_first &= _sl_same_param(f, k, param, row, first_row) || _sl_same_param(f, k, param, found, first_row);
+        hub_other &= _sl_same_param(f, k, param, row, first_other) || _sl_same_param(f, k, param, found, first_other);
         mutual &= ((failing >> found) & 1u) != 0;
         pairs++;
     }
-    if (pairs == 0 || param < 0 || !consistent || (!unique && !(mutual && pairs >= 2))) return false;
+    bool hub = !consistent && (hub_first || hub_other) && mutual && pairs >= 3;
+    if (pairs == 0 || param < 0 || !(consistent || hub) || (!unique && !(mutual && pairs >= 2))) return false;
     char a[600], b[600];
     const sl_probe_function *fp = f;
     _sl_inputs(fp, k->inputs[first_row], a, sizeof a);
@@ -309,7 +313,11 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
         if (at[length + 3] == '(') value = strcspn(at, ")") + 1; /* a vector: up to its parenthesis */
         snprintf(side ? there : here, 120, "%.*s", (int)value, at);
     }
-    if (mutual && pairs >= 2)
+    if (hub)
+        snprintf(out, n, "with %s it answers as the contract does with the other values of %s, and with those as "
+                 "the contract does with %s: the two sides' answers are exchanged", hub_first ? here : there, name,
+                 hub_first ? here : there);
+    else if (mutual && pairs >= 2)
         snprintf(out, n, "with %s it answers as the contract does with %s, and the other way round: the two cases' "
                  "answers are exchanged", here, there);
     else
