@@ -696,6 +696,28 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
 
 bool sl_check_is_state(const sl_check *k) { return k->kind == SL_CHECK_FBO; }
 
+/* A state check whose picture fails: what that picture's check found, said here too (the state's check comes
+ * first in the report). */
+static void _sl_say_unbacked(const sl_case *c, int k, int unproved, sl_check_result *results) {
+    sl_diag_say(&results[k], "the %s's state looks right, but the picture that would show it used, %s / %s, fails, "
+                              "and the state alone earns no point. There: %s", c->checks[k].name, c->name,
+                c->checks[unproved].name, results[unproved].message);
+}
+
+void sl_grade_quote_evidence(const sl_case *c, sl_check_result *results) {
+    for (int k = 0; k < c->check_count; k++) {
+        char backed[160];
+        snprintf(backed, sizeof backed, "the %s's state is not backed by its picture", c->checks[k].name);
+        if (!sl_check_is_state(&c->checks[k]) || results[k].passed || strcmp(results[k].summary, backed) != 0) continue;
+        for (int e = 0; e < c->check_count; e++) {
+            if (e == k || sl_check_is_state(&c->checks[e]) || c->checks[e].bonus || results[e].passed) continue;
+            _sl_say_unbacked(c, k, e, results);
+            _sl_clean_in_place(results[k].message, sizeof results[k].message);
+            break;
+        }
+    }
+}
+
 void sl_grade_require_evidence(const sl_case *c, sl_check_result *results) {
     for (int k = 0; k < c->check_count; k++) {
         sl_check_result *out = &results[k];
@@ -716,10 +738,7 @@ void sl_grade_require_evidence(const sl_case *c, sl_check_result *results) {
                              "(see there); staff: repair that reference and grade again", c->checks[k].name, c->name,
                         c->checks[unproved].name);
         else if (unproved >= 0)
-            /* what that picture's check found, said here too: the state's check comes first in the report */
-            sl_diag_say(out, "the %s's state looks right, but the picture that would show it used, %s / %s, fails, "
-                             "and the state alone earns no point. There: %s", c->checks[k].name, c->name,
-                        c->checks[unproved].name, results[unproved].message);
+            _sl_say_unbacked(c, k, unproved, results);
         else
             sl_diag_say(out, "the %s's state looks right, but this case has no picture that shows it was used, and "
                              "the state alone earns no point", c->checks[k].name);

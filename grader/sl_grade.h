@@ -63,6 +63,9 @@ bool sl_check_is_state(const sl_check *k);
  * its points only when the case's pictures prove the state was used (every other regular check of
  * the case passed); otherwise it fails, saying which picture does not back it. */
 void sl_grade_require_evidence(const sl_case *c, sl_check_result *results);
+/* After experiments have said their checks again: a state check not backed by its picture quotes that
+ * picture's check as it now reads. */
+void sl_grade_quote_evidence(const sl_case *c, sl_check_result *results);
 /* A graded probe check's failure, for the context of later checks; false if it passed. */
 bool sl_probe_failure_of(const sl_case *c, const sl_check *k, const sl_check_result *result, sl_probe_failure *out);
 

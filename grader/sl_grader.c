@@ -545,6 +545,8 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                                    &context, &graded[i].checks[k]);
                 }
         }
+        if (experiments)
+            for (int i = 0; i < count; i++) sl_grade_quote_evidence(&cases[i], graded[i].checks);
         /* Each shader's compile error quoted once, at the first check it stopped, in the reports' order. */
         static sl_compile_errors_said said;
         said.count = 0;

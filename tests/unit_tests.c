@@ -657,13 +657,21 @@ static void test_grade_probe_verdicts(void) {
     CHECK(!out.passed && strstr(out.message, "factor and units come out negated on every row that differs"));
     if (!strstr(out.message, "negated")) fprintf(stderr, "  negated: %s\n", out.message);
     /* one factor on every value that differs (a sum over 20 samples divided by 16) */
-    static const float soft[][SL_PROBE_MAX_INPUTS] = {{SL_PROBE_MAP_CUBE_LIT, 1.5f, 2, 0.5f, 10, 0.005f, 1},
-                                                      {SL_PROBE_MAP_CUBE_LIT, -2, 1, 0.5f, 10, 0.005f, 1},
-                                                      {SL_PROBE_MAP_CUBE_LIT, 0.5f, -1, 2, 10, 0.005f, 1}};
+    /* (on a map other than the empty one, where lab 7's own verdict reads the same answers as a weight sum) */
+    static const float soft[][SL_PROBE_MAX_INPUTS] = {{SL_PROBE_MAP_CUBE_POSITIVE, 1.5f, 2, 0.5f, 10, 0.005f, 1},
+                                                      {SL_PROBE_MAP_CUBE_POSITIVE, -2, 1, 0.5f, 10, 0.005f, 1},
+                                                      {SL_PROBE_MAP_CUBE_POSITIVE, 0.5f, -1, 2, 10, 0.005f, 1}};
     double soft_want[3] = {1, 0.5, 0.25}, soft_got[3] = {1.25, 0.625, 0.3125};
     grade_probe("point_shadow_soft", 3, soft, soft_got, soft_want, &out);
     CHECK(!out.passed && strstr(out.message, "1.25 times the contract's"));
     if (!strstr(out.message, "1.25 times")) fprintf(stderr, "  scaled: %s\n", out.message);
+    /* the same answers on the empty map: the weights' sum, said as such */
+    static const float empty[][SL_PROBE_MAX_INPUTS] = {{SL_PROBE_MAP_CUBE_LIT, 1.5f, 2, 0.5f, 10, 0.005f, 1},
+                                                       {SL_PROBE_MAP_CUBE_LIT, -2, 1, 0.5f, 10, 0.005f, 1}};
+    double empty_want[2] = {1, 1}, empty_got[2] = {1.25, 1.25};
+    grade_probe("point_shadow_soft", 2, empty, empty_got, empty_want, &out);
+    CHECK(!out.passed && strstr(out.message, "the weights sum to 1.25, not 1"));
+    if (!strstr(out.message, "weights sum")) fprintf(stderr, "  weight sum: %s\n", out.message);
 }
 
 /* A failed check's diagnosis is the same for every student it fits, whatever

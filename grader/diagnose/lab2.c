@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "camera.h"
 #include "sl_compare.h"
 #include "sl_diag_words.h"
 #include "verdict_rows.h"
@@ -266,6 +267,50 @@ static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, si
     return -1;
 }
 
+/* A view whose eye is the contract's but which looks elsewhere: towards which point of its inputs. A spot light
+ * looks from its position along its direction (target = position + direction), so a target that is one of
+ * these points on its own (the direction read as a point, the origin, the scene's centre) is the slip. */
+static int _sl_verdict_light_view(const sl_verdict_rows *v, char *text, size_t n) {
+    static const char *const named[] = {
+        "towards direction read as a point: the target is position + direction, a point along the light's "
+        "direction",
+        "towards the world's origin, not along the light's direction",
+        "towards the scene box's centre, not along the light's direction (a spot light looks where it points)"};
+    int explained = -1, first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double s[16], e[16];
+        for (int o = 0; o < 16; o++) s[o] = _sl_got(v, r, o), e[o] = _sl_want(v, r, o);
+        sl_camera_reading cs = sl_camera_read(s), ce = sl_camera_read(e);
+        if (cs.kind != SL_CAMERA_VIEW || ce.kind != SL_CAMERA_VIEW) return -1;
+        for (int i = 0; i < 3; i++)
+            if (fabs(cs.eye[i] - ce.eye[i]) > 1e-3 * fmax(1, fabs(ce.eye[i]))) return -1; /* the eye: said otherwise */
+        double same = 0;
+        for (int i = 0; i < 3; i++) same += cs.forward[i] * ce.forward[i];
+        if (same > 1 - 1e-6) return -1; /* it looks the right way: its up is what differs */
+        const float *in = v->k->inputs[r];
+        const float *dir = _sl_param(v->f, in, "direction"), *lo = _sl_param(v->f, in, "bounds_min");
+        const float *hi = _sl_param(v->f, in, "bounds_max");
+        if (!dir || !lo || !hi) return -1;
+        double points[3][3] = {{dir[0], dir[1], dir[2]}, {0, 0, 0},
+                               {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}};
+        int fits = -1;
+        for (int c = 0; c < 3 && fits < 0; c++) {
+            double to[3], length = 0, along = 0;
+            for (int i = 0; i < 3; i++) to[i] = points[c][i] - cs.eye[i], length += to[i] * to[i];
+            if (length < 1e-12) continue;
+            for (int i = 0; i < 3; i++) along += to[i] / sqrt(length) * cs.forward[i];
+            if (along > 1 - 1e-6) fits = c;
+        }
+        if (fits < 0 || (explained >= 0 && fits != explained)) return -1;
+        explained = fits;
+        if (first < 0) first = r;
+    }
+    if (first < 0) return -1;
+    snprintf(text, n, "its eye is right, but it looks %s", named[explained]);
+    return first;
+}
+
 /* The probe's rows: Lp Lv is W^-1 times the contract's answer, so the student's W is theirs times that. */
 static int _sl_verdict_shadow_matrix(const sl_verdict_rows *v, char *text, size_t n) {
     static const double w_inverse[16] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, -1, -1, -1, 1};
@@ -322,7 +367,8 @@ void sl_lab2_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 /* ---- lab 2 in the diagnosis table (diagnose/table.c) ---- */
 const sl_lab_diagnoses sl_lab2_diagnoses = {
     .lab = 2,
-    .functions = {{"lab2_light_projection", _sl_verdict_light_projection},
+    .functions = {{"lab2_light_view", _sl_verdict_light_view},
+                  {"lab2_light_projection", _sl_verdict_light_projection},
                   {"lab2_shadow_matrix", _sl_verdict_shadow_matrix}},
     .lookup_function = sl_lab2_lookup_function,
     .checks = {{SL_CHECK_MATRICES, sl_diagnose_matrices}},

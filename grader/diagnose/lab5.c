@@ -117,6 +117,11 @@ static bool _sl_blur_targets_ok(const sl_case_result *r, sl_check_result *out) {
 
 /* Where nothing is drawn the moments must say "nothing in front", (1, 1); cleared to (0, 0) they say "an
  * occluder at the light". Exactly (0, 0) survives the blur inside such a region, so the blurred moments show it. */
+/* what a clear to (1, 1) takes: the colour is the one set when glClear runs, and the colour bit */
+#define _SL_CLEAR_RULE                                                                                              \
+    "glClearColor(1, 1, 0, 0) before glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT), which clears with the "  \
+    "colour set when it runs"
+
 static double _sl_zero_share(const sl_image *m) {
     long n = (long)m->width * m->height, zero = 0;
     for (long i = 0; i < n; i++) zero += m->data[2 * i] == 0.0f && m->data[2 * i + 1] == 0.0f;
@@ -132,8 +137,9 @@ static bool _sl_cleared_to_zero(const sl_case_result *r, sl_check_result *out) {
     double zero = _sl_zero_share(&m->image);
     if (zero < 0.02) return false;
     sl_diag_say(out, "the moments hold exactly (0, 0) on %.0f%% of the map: \"an occluder at the light\" wherever "
-                     "nothing is drawn, so everything outside the objects' footprint seen from the light is shadowed",
-                100 * zero);
+                     "nothing is drawn, so everything outside the objects' footprint seen from the light is shadowed "
+                     "— the colour clear did not write (1, 1) there: %s",
+                100 * zero, _SL_CLEAR_RULE);
     sl_diag_cause_in(out, "lab5_begin_moments_pass", "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1), the "
                        "moments of \"nothing in front\" (glClearColor(1, 1, 0, 0); TODO(lab5.2) in labs/lab5_vsm/lab5.c)");
     return true;
@@ -490,7 +496,8 @@ void sl_diagnose_moments(const sl_case *c, const sl_check *k, const sl_case_resu
         }
     if (empty > n / 100 && zeroed > empty / 2 && (!blurred || _sl_moments_pass_cleared_to_zero(r))) {
         sl_diag_say(out, "%.0f%% of the texels where nothing is drawn hold (0, 0), the reference (1, 1): \"an occluder "
-                         "at the light\" instead of \"nothing in front\"", 100.0 * (double)zeroed / (double)empty);
+                         "at the light\" instead of \"nothing in front\" — the colour clear did not write (1, 1) there: "
+                         "%s", 100.0 * (double)zeroed / (double)empty, _SL_CLEAR_RULE);
         sl_diag_cause_in(out, "lab5_begin_moments_pass", "the moments target is cleared to (0, 0): lab5_begin_moments_pass() clears it to (1, 1) "
                            "(glClearColor(1, 1, 0, 0); TODO(lab5.2) in labs/lab5_vsm/lab5.c)");
         return;

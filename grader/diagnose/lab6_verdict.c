@@ -120,7 +120,9 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
 }
 
 /* The solution's sphere of a slice, for comparisons (the probe's camera, GL conventions). */
-static void _sl_sphere(const float *in, double split_near, double split_far, double out[4]) {
+/* The sphere around the slice whose corners lie at fractions ta and tb of each frustum edge (near corner 0,
+ * far corner 1): the contract's, from the split distances (_sl_sphere), or a slip's fractions. */
+static void _sl_sphere_at(const float *in, double ta, double tb, double out[4]) {
     sl_camera cam = {.fov_deg = in[6], .near = in[8], .far = in[9]};
     glm_vec3_copy((float *)in, cam.position);
     glm_vec3_copy((float *)in + 3, cam.target);
@@ -134,7 +136,6 @@ static void _sl_sphere(const float *in, double split_near, double split_far, dou
         vec4 a = {(i & 1) ? 1.f : -1.f, (i & 2) ? 1.f : -1.f, -1, 1}, b = {a[0], a[1], 1, 1}, wa, wb;
         glm_mat4_mulv(inv, a, wa);
         glm_mat4_mulv(inv, b, wb);
-        double ta = (split_near - cam.near) / (cam.far - cam.near), tb = (split_far - cam.near) / (cam.far - cam.near);
         for (int k = 0; k < 3; k++) {
             double cn = wa[k] / wa[3], cf = wb[k] / wb[3];
             corners[i][k] = cn + (cf - cn) * ta;
@@ -151,6 +152,33 @@ static void _sl_sphere(const float *in, double split_near, double split_far, dou
     }
     for (int k = 0; k < 3; k++) out[k] = centre[k];
     out[3] = radius;
+}
+
+static void _sl_sphere(const float *in, double split_near, double split_far, double out[4]) {
+    double near = in[8], far = in[9];
+    _sl_sphere_at(in, (split_near - near) / (far - near), (split_far - near) / (far - near), out);
+}
+
+/* Fractions along the frustum's edges other than the contract's (split - near) / (far - near), each a slip
+ * of one term: which one every failing row's sphere is. */
+static int _sl_sphere_fraction_slip(const sl_verdict_rows *v) {
+    int fits = -1;
+    for (int slip = 0; slip < 3 && fits < 0; slip++) {
+        bool all = true, any = false;
+        for (int r = 0; r < v->k->rows && all; r++) {
+            if (!_sl_failed(v, r)) continue;
+            const float *in = v->k->inputs[r];
+            double near = in[8], far = in[9], a = in[10], b = in[11], ta, tb, sphere[4];
+            if (slip == 0) ta = a / far, tb = b / far;
+            else if (slip == 1) ta = (a - near) / far, tb = (b - near) / far;
+            else ta = a / (far - near), tb = b / (far - near);
+            _sl_sphere_at(in, ta, tb, sphere);
+            for (int i = 0; i < 4; i++) all &= fabs(_sl_got(v, r, i) - sphere[i]) <= 1e-3 * fmax(1, fabs(sphere[i]));
+            any = true;
+        }
+        if (all && any) fits = slip;
+    }
+    return fits;
 }
 
 static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
@@ -187,6 +215,14 @@ static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
     if (whole == failing) {
         snprintf(text, n, "the sphere is fitted to the whole frustum, not to the slice between split_near and split_far "
                           "(move each corner along its edge to t = (split - near) / (far - near))");
+        return first;
+    }
+    static const char *const fractions[] = {"split / far", "(split - near) / far", "split / (far - near)"};
+    int slip = _sl_sphere_fraction_slip(v);
+    if (slip >= 0) {
+        snprintf(text, n, "the slice's corners lie at t = %s along each frustum edge: the view depth runs from near "
+                          "(t = 0) to far (t = 1) along an edge, so t = (split - near) / (far - near)",
+                 fractions[slip]);
         return first;
     }
     if (too_small == failing) {

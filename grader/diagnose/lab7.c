@@ -650,8 +650,8 @@ static int _sl_projection_verdict(const sl_check *k, const double *s, const doub
 
 static double _sl_length3(const float *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
-static int _sl_lookup_verdict(const sl_check *k, const double *s, const double *e, uint32_t failing, char *text,
-                              size_t n) {
+static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, const double *e, uint32_t failing,
+                              char *text, size_t n) {
     /* rows of the lit map inside the far plane: a lookup that forgets to divide the distance by far shadows them */
     int lit_rows = 0, lit_dark = 0, first_lit = -1;
     /* rows of the cube_positive map, where light_to_fragment and its opposite give different answers */
@@ -693,6 +693,20 @@ static int _sl_lookup_verdict(const sl_check *k, const double *s, const double *
                           "units with the stored distance / far — divide it by far_plane too (the far plane is "
                           "missing on the lookup's side)");
         return first_lit;
+    }
+    /* the empty map's answer is the weights' sum: the same value off 1 on every such row */
+    int sum_rows = 0, sum_same = 0, first_sum = -1;
+    for (int row = 0; soft && row < k->rows; row++) {
+        double distance = _sl_length3(&k->inputs[row][1]), far = k->inputs[row][4];
+        if ((sl_probe_map)(int)k->inputs[row][0] != SL_PROBE_MAP_CUBE_LIT || distance >= far || e[row] < 0.999) continue;
+        sum_rows++;
+        if (first_sum < 0) first_sum = row;
+        sum_same += fabs(s[row] - s[first_sum]) <= 1e-4 && fabs(s[row] - 1) > 0.01 && s[row] > 0.05;
+    }
+    if (sum_rows > 0 && sum_same == sum_rows) {
+        snprintf(text, n, "the weights sum to %.4g, not 1 (an empty map gives %.4g): divide the sum of the results by "
+                          "the number of samples taken, all 20 directions", s[first_sum], s[first_sum]);
+        return first_sum;
     }
     if (pos_rows > 0 && pos_flipped == pos_rows && pos_flipped == failing_count) {
         snprintf(text, n, "the lookup reads the opposite side of the cube map: its direction is reversed — sample with "
@@ -753,7 +767,7 @@ int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double
     if (strcmp(f->name, "lab7_face_projection") == 0)
         return _sl_projection_verdict(k, student, expected, failing, text, n);
     if (strcmp(f->name, "point_shadow") == 0 || strcmp(f->name, "point_shadow_soft") == 0)
-        return _sl_lookup_verdict(k, student, expected, failing, text, n);
+        return _sl_lookup_verdict(k, strcmp(f->name, "point_shadow_soft") == 0, student, expected, failing, text, n);
     return -1;
 }
 

@@ -201,6 +201,51 @@ static void _sl_name_once(const sl_probe_function *f, int o, char *names, size_t
     (*count)++;
 }
 
+/* What the contract asks of one state a C function sets, where that state alone is wrong: the GL rule
+ * behind it, for the outputs whose rule is not their name. */
+static const struct {
+    const char *output, *rule;
+} _sl_state_rules[] = {
+    {"depth after the call", "a clear writes to the framebuffer bound, and the texture attached, when it runs, and "
+                             "writes no depth while depth writes are off: bind (and attach), glDepthMask(GL_TRUE), "
+                             "then glClear(GL_DEPTH_BUFFER_BIT)"},
+    {"faces with storage", "each of the six faces needs its own glTexImage2D, at GL_TEXTURE_CUBE_MAP_POSITIVE_X + i "
+                           "for i = 0 to 5"},
+    {"min filter", "the minification filter is its own parameter, glTexParameteri(..., GL_TEXTURE_MIN_FILTER, ...)"},
+    {"mag filter", "the magnification filter is its own parameter, glTexParameteri(..., GL_TEXTURE_MAG_FILTER, ...)"},
+    {"border depth", "a lookup past the edge reads the border colour's first component: GL_TEXTURE_BORDER_COLOR "
+                     "(1, 1, 1, 1), with GL_CLAMP_TO_BORDER"},
+};
+
+/* One state alone wrong: the same single output differs on every failing row of a C function that sets
+ * several (GL state, a sphere's radius), everything else it sets right. Said as that fact, with the GL
+ * rule behind the output where it has one. */
+static bool _sl_single_output(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
+                              uint32_t failing, const uint32_t *differs, char *out, size_t n) {
+    int outputs = f->output_count;
+    if (f->glsl || outputs < 2 || outputs == 16) return false;
+    uint32_t mask = 0;
+    int rows = 0, example = -1;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        if (rows == 0) mask = differs[row], example = row;
+        if (differs[row] != mask) return false;
+        rows++;
+    }
+    if (rows == 0 || mask == 0 || (mask & (mask - 1)) != 0) return false; /* exactly one output */
+    int o = __builtin_ctz(mask);
+    char name[64], got[48], want[48];
+    _sl_output_name(f, o, name, sizeof name);
+    _sl_value_named(s[example * outputs + o], _sl_output_is_enum(name), got, sizeof got);
+    _sl_value_named(e[example * outputs + o], _sl_output_is_enum(name), want, sizeof want);
+    const char *rule = NULL;
+    for (size_t i = 0; i < sizeof _sl_state_rules / sizeof _sl_state_rules[0]; i++)
+        if (strcmp(_sl_state_rules[i].output, name) == 0) rule = _sl_state_rules[i].rule;
+    snprintf(out, n, "of everything it sets, only its %s is wrong, on every row that differs (%s where the contract "
+             "gives %s)%s%s", name, got, want, rule ? ": " : "", rule ? rule : "");
+    return true;
+}
+
 static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
                              uint32_t failing, const uint32_t *differs, char *out, size_t n) {
     int outputs = f->output_count;
@@ -259,20 +304,25 @@ static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, cons
     bool mutual = true, unique = true, consistent = true, hub_first = true, hub_other = true;
     for (int row = 0; row < k->rows; row++) {
         if (!((failing >> row) & 1u)) continue;
-        int found = -1;
-        for (int other = 0; other < k->rows && found < 0; other++) {
+        /* the row whose answers these are; of several, one that answers as this row should (an exchange) */
+        int found = -1, found_param = -1;
+        for (int other = 0; other < k->rows; other++) {
             if (other == row) continue;
             int p = _sl_one_param_apart(f, k, row, other);
             if (p < 0 || (param >= 0 && p != param)) continue;
-            bool as_other = true, other_differs = false;
+            bool as_other = true, other_differs = false, back = ((failing >> other) & 1u) != 0;
             for (int o = 0; o < outputs && as_other; o++) {
                 if (!((differs[row] >> o) & 1u)) continue;
                 double a = s[row * outputs + o], b = e[other * outputs + o], own = e[row * outputs + o];
                 as_other = isfinite(a) && isfinite(b) && fabs(a - b) <= 1e-5 * (1 + fabs(b));
                 other_differs |= fabs(b - own) > 1e-5 * (1 + fabs(own));
+                back &= fabs(s[other * outputs + o] - own) <= 1e-5 * (1 + fabs(own));
             }
-            if (as_other && other_differs) found = other, param = p;
+            if (!as_other || !other_differs) continue;
+            if (found < 0 || back) found = other, found_param = p;
+            if (back) break;
         }
+        if (found >= 0) param = found_param;
         if (found < 0) return false;
         /* the answers of one row alone: values many rows share (a coverage of 0 or 0.25) tell nothing */
         int rows_alike = 0;
@@ -497,7 +547,8 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
                     !_sl_close_enough(k, row, o, cap->numbers[row * f->output_count + o],
                                       ref->numbers[row * f->output_count + o]))
                     differs[row] |= 1u << o;
-        _sl_row_relation(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict);
+        if (!_sl_row_relation(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict))
+            _sl_single_output(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict);
     }
     /* the same answer on every row while the contract's vary: it does not follow its inputs at all */
     if (!verdict[0] && f->output_count <= 4 && k->rows > 2) {

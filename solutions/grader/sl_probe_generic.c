@@ -209,7 +209,21 @@ typedef enum _sl_grid_slip {
     _SL_GRID_DIVIDED_BY_SIDE,
     _SL_GRID_UV_STEPS,
     _SL_GRID_TWO_TEXEL_STEPS,
+    _SL_GRID_BIAS_OVER_W,  /* textureProj(map, vec4(xy, z - bias, w)): the divide takes the bias too */
+    _SL_GRID_BIAS_TIMES_W, /* the bias scaled by w after the divide */
+    _SL_GRID_BIAS_ON_XY,   /* vec3(p.xy, p.z) - bias: the lookup moved as well */
+    _SL_GRID_NO_BIAS,
+    _SL_GRID_BIAS_ADDED,
 } _sl_grid_slip;
+
+/* The bias's slips, in _sl_grid_slip's order from _SL_GRID_BIAS_OVER_W. */
+#define _SL_BIAS_SLIPS                                                                                              \
+    {"the bias divided by w (z - bias inside the divide, as textureProj(map, vec4(xy, z - bias, w)) does)",        \
+     "p.z - bias after the divide (inside textureProj: z - bias * w)"},                                            \
+        {"the bias multiplied by w", "p.z - bias after the divide"},                                              \
+        {"the bias subtracted from x and y too (vec3(p.xy, p.z) - bias): the lookup moves",                        \
+         "the map read at p.xy, compared with p.z - bias"},                                                       \
+        {"no bias", "p.z - bias compared"}, {"the bias added", "p.z - bias compared"}
 
 static const char *const _sl_compare_slips[][2] = {
     {"", ""},
@@ -217,8 +231,15 @@ static const char *const _sl_compare_slips[][2] = {
     {"x and y not divided by w (the map read at shadow_coord.xy)", "p = shadow_coord.xyz / shadow_coord.w, then read at p.xy"},
     {"z not divided by w (shadow_coord.z compared)", "p.z = shadow_coord.z / shadow_coord.w compared"},
     {"no test for points outside the light's frustum (w <= 0, or p outside [0, 1]): they read the map", "outside the light's frustum: lit (1.0)"},
+    _SL_BIAS_SLIPS,
     {NULL, NULL},
 };
+
+/* The compare catalogue's slips as the grid's (the grid's own kernel slips have no meaning for one lookup). */
+static const _sl_grid_slip _sl_compare_as_grid[] = {
+    _SL_GRID_CONTRACT,    _SL_GRID_REVERSED,     _SL_GRID_XY_NOT_DIVIDED, _SL_GRID_Z_NOT_DIVIDED,
+    _SL_GRID_NO_FRUSTUM_TEST, _SL_GRID_BIAS_OVER_W, _SL_GRID_BIAS_TIMES_W, _SL_GRID_BIAS_ON_XY,
+    _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED};
 
 static const char *const _sl_grid_slips[][2] = {
     {"", ""},
@@ -232,6 +253,7 @@ static const char *const _sl_grid_slips[][2] = {
     {"the sum divided by 2r+1, not by (2r+1)^2 taps", "the sum divided by (2r+1)^2, the number of taps"},
     {"offsets in whole uv units (x, y), not in texels", "offsets (x, y) * texel, texel = 1.0 / textureSize(shadow_map, 0)"},
     {"offsets two texels apart", "offsets one texel apart"},
+    _SL_BIAS_SLIPS,
     {NULL, NULL},
 };
 
@@ -243,6 +265,11 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     double xy_w = slip == _SL_GRID_XY_NOT_DIVIDED ? 1 : w, z_w = slip == _SL_GRID_Z_NOT_DIVIDED ? 1 : w;
     double u = _sl_get(f, row, "shadow_coord", 0) / xy_w, v = _sl_get(f, row, "shadow_coord", 1) / xy_w;
     double z = _sl_get(f, row, "shadow_coord", 2) / z_w;
+    if (slip == _SL_GRID_BIAS_OVER_W) bias /= w;
+    if (slip == _SL_GRID_BIAS_TIMES_W) bias *= w;
+    if (slip == _SL_GRID_BIAS_ON_XY) u -= bias, v -= bias;
+    if (slip == _SL_GRID_NO_BIAS) bias = 0;
+    if (slip == _SL_GRID_BIAS_ADDED) bias = -bias;
     double px = _sl_get(f, row, "shadow_coord", 0) / w, py = _sl_get(f, row, "shadow_coord", 1) / w;
     double pz = _sl_get(f, row, "shadow_coord", 2) / w;
     bool outside = w <= 0 || px < 0 || px > 1 || py < 0 || py > 1 || pz < 0 || pz > 1;
@@ -264,7 +291,7 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
 }
 
 static void _sl_expect_compare(const sl_probe_function *f, const float *row, int slip, double *out) {
-    out[0] = _sl_grid(f, row, 0, (_sl_grid_slip)slip);
+    out[0] = _sl_grid(f, row, 0, _sl_compare_as_grid[slip]);
 }
 
 static void _sl_expect_pcf_grid(const sl_probe_function *f, const float *row, int slip, double *out) {
@@ -332,9 +359,20 @@ static void _sl_draw_normal_offset(const sl_probe_function *f, _sl_rng *r, int i
              texels);
 }
 
+/* The angle's factor written as another function of it: published normal offsets scale by 1 - N.L, by sin
+ * or by tan of the angle; the contract's is 1 - N.L. (Slips of one input, n_dot_l as 1 - it or 0, or the
+ * normal negated, are found without a catalogue.) */
+static const char *const _sl_normal_offset_slips[][2] = {
+    {"", ""},
+    {"sin(theta) = sqrt(1 - n_dot_l^2) in place of 1 - n_dot_l", "the offset scaled by 1 - n_dot_l"},
+    {"tan(theta) = sqrt(1 - n_dot_l^2) / n_dot_l in place of 1 - n_dot_l", "the offset scaled by 1 - n_dot_l"},
+    {NULL, NULL},
+};
+
 static void _sl_expect_normal_offset(const sl_probe_function *f, const float *row, int slip, double *out) {
-    (void)slip; /* its slips are slips of one input (n_dot_l as 1 - it, or 0; the normal negated) */
-    double k = _sl_get(f, row, "texels", 0) * _sl_get(f, row, "texel_world_size", 0) * (1 - _sl_get(f, row, "n_dot_l", 0));
+    double n_dot_l = _sl_get(f, row, "n_dot_l", 0), sin_theta = sqrt(fmax(0, 1 - n_dot_l * n_dot_l));
+    double angle = slip == 1 ? sin_theta : slip == 2 ? sin_theta / n_dot_l : 1 - n_dot_l;
+    double k = _sl_get(f, row, "texels", 0) * _sl_get(f, row, "texel_world_size", 0) * angle;
     for (int j = 0; j < 3; j++) out[j] = _sl_get(f, row, "world_position", j) + _sl_get(f, row, "normal", j) * k;
 }
 
@@ -448,6 +486,7 @@ static const char *const _sl_chebyshev_slips[][2] = {
     {"d not squared: variance / (variance + d)", "variance / (variance + d * d), d = t - mu"},
     {"no lit test for t <= mu: the bound used in front of the mean too", "t <= mu: fully lit (1.0)"},
     {"1 - p_max returned", "p_max = variance / (variance + d * d)"},
+    {"min_variance added to the variance clamped at 0: max(variance, 0) + min_variance", "variance = max(moments.y - mu * mu, min_variance)"},
     {NULL, NULL},
 };
 
@@ -460,7 +499,7 @@ static void _sl_expect_chebyshev(const sl_probe_function *f, const float *row, i
     }
     double raw = slip == 1 ? m2 - mu : m2 - mu * mu;
     double variance = slip == 2 ? raw : slip == 3 ? fmin(raw, min_variance) : slip == 4 ? raw + min_variance
-                                                                                         : fmax(raw, min_variance);
+                    : slip == 8 ? fmax(raw, 0) + min_variance : fmax(raw, min_variance);
     double d = t - mu, p = variance / (variance + (slip == 5 ? d : d * d));
     out[0] = slip == 7 ? 1 - p : p;
 }
@@ -648,14 +687,19 @@ static void _sl_expect_face_projection(const sl_probe_function *f, const float *
  * other than the map's 10 */
 static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
                                   size_t n) {
-    (void)index;
     double d[3];
     int axis = _sl_integer(r, 0, 2);
-    for (int j = 0; j < 3; j++) d[j] = _sl_uniform(r, -0.6, 0.6);
+    /* one row in three just behind the occluder, far off the face's axis: there the distance must be the
+     * vector's length (at least 1.18 times its largest component), or the point comes out lit */
+    bool off_axis = index % 3 == 0;
+    for (int j = 0; j < 3; j++)
+        d[j] = off_axis ? (_sl_uniform(r, 0, 1) < 0.5 ? -1 : 1) * _sl_uniform(r, 0.45, 0.6) : _sl_uniform(r, -0.6, 0.6);
     d[axis] = _sl_uniform(r, 0, 1) < 0.5 ? -1 : 1; /* well inside one face */
+    if (off_axis) d[axis] = 1; /* a face the occluder covers */
     double far = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 3, 8) : _sl_uniform(r, 14, 40), bias = _sl_uniform(r, 0.002, 0.02);
     /* the point's stored-scale depth away from the occluder's 0.1 and the far wall's 1.0 */
-    double current = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 0.03, 0.07) : _sl_uniform(r, 0.14, 0.9);
+    double current = off_axis ? _sl_uniform(r, 0.105, 0.115)
+                              : _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 0.03, 0.07) : _sl_uniform(r, 0.14, 0.9);
     double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), distance = (current + bias) * far;
     for (int j = 0; j < 3; j++) d[j] *= distance / length;
     _sl_set1(f, row, "cube_map", SL_PROBE_MAP_CUBE_POSITIVE);
@@ -663,8 +707,10 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
     _sl_set1(f, row, "far_plane", far);
     _sl_set1(f, row, "bias", bias);
     snprintf(about, n, "generic: far_plane %.3g (not the map's 10), the point %.3g from the light towards the %s%c "
-                       "face, bias %.3g",
-             far, distance, d[axis] > 0 ? "+" : "-", "xyz"[axis], bias);
+                       "face%s, bias %.3g",
+             far, distance, d[axis] > 0 ? "+" : "-", "xyz"[axis],
+             off_axis ? ", far off its axis, just behind the occluder (the distance is the length, not a component)" : "",
+             bias);
 }
 
 static const char *const _sl_point_shadow_slips[][2] = {
@@ -684,7 +730,13 @@ static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row
         length += d[j] * d[j];
         if (fabs(d[j]) > fabs(d[axis])) axis = j;
     }
-    double closest = d[axis] > 0 ? 0.1 : 1.0; /* "cube_positive": 0.1 on +X, +Y, +Z */
+    /* the model knows the "cube_positive" map alone (0.1 on +X, +Y, +Z): a written row on another map is
+     * not modelled, or its walls would be taken for that map's */
+    if ((sl_probe_map)(int)_sl_get(f, row, "cube_map", 0) != SL_PROBE_MAP_CUBE_POSITIVE) {
+        out[0] = NAN;
+        return;
+    }
+    double closest = d[axis] > 0 ? 0.1 : 1.0;
     double distance = slip == 2 ? length : slip == 3 ? fabs(d[axis]) : sqrt(length);
     double current = distance / (slip == 1 ? 1 : _sl_get(f, row, "far_plane", 0)) - _sl_get(f, row, "bias", 0);
     out[0] = (current > closest) == (slip == 4) ? 1 : 0;
@@ -697,7 +749,7 @@ static const _sl_generic _sl_generics[] = {
     {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL},
     {"slope_scaled_bias", _sl_draw_slope_bias, _sl_expect_slope_bias, _sl_slope_bias_slips,
      "tan_theta = sqrt(1 - n_dot_l * n_dot_l) / n_dot_l; min(constant_bias + slope * tan_theta, max_bias)"},
-    {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset, NULL,
+    {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset, _sl_normal_offset_slips,
      "world_position[i] + normal[i] * texels * texel_world_size * (1 - n_dot_l)"},
     {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid, _sl_grid_slips, NULL},
     {"compute_moments", _sl_draw_moments, _sl_expect_moments, _sl_moments_slips, "if(i == 0, depth, depth * depth)"},
