@@ -197,7 +197,8 @@ static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
         bool larger = _sl_got(v, r, 3) > _sl_want(v, r, 3);
         failing++;
         whole += is_whole;
-        too_small += _sl_got(v, r, 3) < _sl_want(v, r, 3) * 0.999;
+        /* a radius too small says "to the farthest corner" only about the slice's own centre */
+        too_small += centred && _sl_got(v, r, 3) < _sl_want(v, r, 3) * 0.999;
         rounded += centred && larger && !is_whole;
         if (centred && larger && (most < 0 || _sl_got(v, r, 3) - _sl_want(v, r, 3) > _sl_got(v, most, 3) - _sl_want(v, most, 3)))
             most = r;
