@@ -220,6 +220,26 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
     int clamped_rows = 0;
     for (int r = 0; r < rows; r++)
         clamped_rows += _sl_failed(v, r) && _sl_near(_sl_want(v, r, 0), *_sl_param(f, v->k->inputs[r], "max_bias"), 1e-7);
+    /* the clamp on the slope term alone, constant + min(slope * tan, max_bias): above max_bias by exactly
+     * the constant on every failing row */
+    int term_clamped = 0;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double max_bias = *_sl_param(f, in, "max_bias"), c = *_sl_param(f, in, "constant_bias");
+        double cos_t = fmax(*_sl_param(f, in, "n_dot_l"), 1e-4);
+        double slope_term = *_sl_param(f, in, "slope") * sqrt(1 - cos_t * cos_t) / cos_t;
+        double fit = c + fmin(slope_term, max_bias);
+        term_clamped += c > 0 && _sl_near(_sl_got(v, r, 0), fit, 0.002 * fit + 1e-7);
+    }
+    if (clamped_wrong >= 0 && term_clamped == failing_rows) {
+        const float *in = v->k->inputs[clamped_wrong];
+        snprintf(text, n, "the clamp acts on the slope term alone: where the reference is clamped to max_bias %.4g "
+                          "(n_dot_l = %g), it gives %.4g, max_bias plus the constant — clamp the sum, "
+                          "min(constant + slope * tan(theta), max_bias)",
+                 (double)*_sl_param(f, in, "max_bias"), (double)*_sl_param(f, in, "n_dot_l"), _sl_got(v, clamped_wrong, 0));
+        return clamped_wrong;
+    }
     /* only the clamped rows fail, not all as without a clamp: the clamp is there, at another value */
     if (clamped_wrong >= 0 && clamped_rows == failing_rows && unclamped_rows < failing_rows) {
         const float *in = v->k->inputs[clamped_wrong];
