@@ -31,6 +31,11 @@ static const sl_probe_function _sl_functions[] = {
      .outputs = "map's framebuffer bound,viewport width,viewport height,depth test,depth function,depth writes,"
                 "depth after the call",
      .output_count = 7, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
+    /* lab 1: the depth pass's vertex shader, on its own: gl_Position for a vertex, a model and a light */
+    {.name = "depth.vert", .lab = 1, .glsl = true, .stage = SL_PROBE_VERTEX_MAIN,
+     .file = "lab1_depth_fbo/shaders/depth.vert", .todo = "lab1.4", .outputs = "x,y,z,w", .output_count = 4,
+     .params = {_SL_V3("a_position"), _SL_M4("u_model"), _SL_M4("u_light_view_projection")}, .param_count = 3,
+     .stub_param = -1, .stub_value = NAN, .stub_outputs = (const double[]){0.0, 0.0, 2.0, 1.0}},
     /* lab 2 */
     {.name = "lab2_light_view", .lab = 2, .file = "lab2_projective/lab2.c", .todo = "lab2.1",
      .outputs = _SL_MATRIX_OUT, .output_count = 16,
@@ -165,6 +170,13 @@ static const sl_probe_function _sl_functions[] = {
     {.name = "lab7_face_projection", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.4",
      .outputs = _SL_MATRIX_OUT, .output_count = 16, .params = {_SL_F("near"), _SL_F("far")}, .param_count = 2,
      .stub_param = -1, .stub_value = NAN},
+    /* lab 7: the depth pass's fragment shader, on its own: the depth it writes for a fragment at a world
+     * position, drawn at a depth (gl_FragCoord.z) of the probe's */
+    {.name = "cube_depth.frag", .lab = 7, .glsl = true, .stage = SL_PROBE_FRAGMENT_MAIN,
+     .file = "lab7_cube/shaders/cube_depth.frag", .todo = "lab7.5", .outputs = "gl_FragDepth", .output_count = 1,
+     .stage_inputs = "Vertex { vec3 world_position; }",
+     .params = {_SL_V3("world_position"), _SL_V3("u_light_position"), _SL_F("u_light_far"), _SL_F("gl_FragCoord.z")},
+     .param_count = 4, .stub_param = 3},
     {.name = "point_shadow", .lab = 7, .glsl = true, .file = "lab7_cube/shaders/point_shadow.glsl", .todo = "lab7.6",
      .outputs = "visibility", .output_count = 1,
      .params = {_SL_CUBE("cube_map"), _SL_V3("light_to_fragment"), _SL_F("far_plane"), _SL_F("bias")},
@@ -189,6 +201,10 @@ const sl_probe_function *sl_probe_find(const char *name) {
         if (strcmp(_sl_described[i].name, name) == 0) return &_sl_described[i];
     return NULL;
 }
+
+const char *sl_probe_parens(const char *name) { return name && strchr(name, '.') ? "" : "()"; }
+
+const char *sl_probe_entry(const sl_probe_function *f) { return f->stage == SL_PROBE_FUNCTION ? f->name : "main"; }
 
 const sl_probe_function *sl_probe_describe(const sl_probe_function *f) {
     for (int i = 0; i < _SL_FUNCTION_COUNT; i++)

@@ -10,7 +10,7 @@
 #include <stdbool.h>
 
 #define SL_PROBE_MAX_ROWS 32
-#define SL_PROBE_MAX_INPUTS 32  /* floats per row */
+#define SL_PROBE_MAX_INPUTS 40  /* floats per row (a vertex stage takes a vec3 and two mat4) */
 #define SL_PROBE_MAX_OUTPUTS 16 /* numbers per row */
 #define SL_PROBE_MAX_PARAMS 12
 
@@ -62,8 +62,18 @@ typedef struct sl_probe_param {
     sl_probe_type type;
 } sl_probe_param;
 
+/* What a GLSL probe calls: a function of a lab file, or the main() of a whole shader stage, whose
+ * parameters are then its inputs by name (attributes a_*, uniforms u_*, the rest the varyings of
+ * stage_inputs' block) and whose outputs are what the stage writes (gl_Position, gl_FragDepth). */
+typedef enum sl_probe_stage {
+    SL_PROBE_FUNCTION,      /* a function of a lab file, called in a full-screen pass */
+    SL_PROBE_VERTEX_MAIN,   /* a vertex shader: one point a row, its gl_Position by transform feedback */
+    SL_PROBE_FRAGMENT_MAIN, /* a fragment shader: one fragment a row, its gl_FragDepth (the last
+                             * parameter is gl_FragCoord.z as the probe draws the fragment) */
+} sl_probe_stage;
+
 typedef struct sl_probe_function {
-    const char *name;   /* as students write it: "slope_scaled_bias" */
+    const char *name;   /* as students write it: "slope_scaled_bias", or a stage's file ("depth.vert") */
     int lab;
     bool glsl;          /* GLSL (called in a full-screen pass) or C (called in the runner) */
     const char *file;   /* GLSL: the include path under the labs tree; C: the lab's .c file */
@@ -78,7 +88,16 @@ typedef struct sl_probe_function {
     double stub_value;
     int stub_param;
     bool bonus;         /* an extension's function */
+    sl_probe_stage stage;
+    const char *stage_inputs; /* SL_PROBE_FRAGMENT_MAIN: the interface block its varyings arrive in */
+    const double *stub_outputs; /* a stub that returns a vector of constants: one for each output */
 } sl_probe_function;
+
+/* What follows a probed name where it is said as a call: "()" for a function, "" for a whole stage
+ * ("depth.vert", a file). */
+const char *sl_probe_parens(const char *name);
+/* The GLSL function a probe of f calls: "main" for a whole stage, else f's name. */
+const char *sl_probe_entry(const sl_probe_function *f);
 
 /* The function of that name, or NULL: the course's (this file's table) or one described since. */
 const sl_probe_function *sl_probe_find(const char *name);

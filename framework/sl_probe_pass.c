@@ -320,6 +320,157 @@ static bool _sl_run_glsl(const sl_probe_function *f, const sl_probe_table *t, co
     return true;
 }
 
+/* ---- whole shader stages ---- */
+
+/* A stage's inputs of one row, set by name: a_* as the vertex's attribute (no array enabled: the generic
+ * value), u_* as uniforms, the others (sl_v_*) as the probe's own uniforms that feed the varyings. */
+static void _sl_stage_inputs(const sl_probe_function *f, const sl_program *program, const float *row) {
+    int offset = 0;
+    for (int i = 0; i < f->param_count; i++) {
+        const char *name = f->params[i].name;
+        const float *v = row + offset;
+        offset += sl_probe_type_size(f->params[i].type);
+        if (strncmp(name, "a_", 2) == 0) {
+            GLint at = glGetAttribLocation(program->id, name);
+            if (at >= 0) glVertexAttrib4f((GLuint)at, v[0], f->params[i].type >= SL_PROBE_VEC2 ? v[1] : 0,
+                                          f->params[i].type >= SL_PROBE_VEC3 ? v[2] : 0,
+                                          f->params[i].type >= SL_PROBE_VEC4 ? v[3] : 1);
+            continue;
+        }
+        char uniform[96];
+        snprintf(uniform, sizeof uniform, "%s%s", strncmp(name, "u_", 2) == 0 ? "" : "sl_v_", name);
+        for (char *c = uniform; *c; c++)
+            if (*c == '.') *c = '_';
+        GLint at = sl_program_uniform(program, uniform);
+        switch (f->params[i].type) {
+        case SL_PROBE_INT: glUniform1i(at, (int)v[0]); break;
+        case SL_PROBE_VEC2: glUniform2fv(at, 1, v); break;
+        case SL_PROBE_VEC3: glUniform3fv(at, 1, v); break;
+        case SL_PROBE_VEC4: glUniform4fv(at, 1, v); break;
+        case SL_PROBE_MAT4: glUniformMatrix4fv(at, 1, GL_FALSE, v); break;
+        default: glUniform1f(at, v[0]); break;
+        }
+    }
+}
+
+/* The fragment stage's vertex shader: one point, at the row's gl_FragCoord.z (the last parameter), with the
+ * row's varyings in the block the stage reads (its name and members as the stage declares them). */
+static char *_sl_fragment_stage_vertex(const sl_probe_function *f) {
+    _sl_text t = {0};
+    _sl_add(&t, "#version 330 core\nout %s sl_out;\nuniform float sl_v_gl_FragCoord_z;\n", f->stage_inputs);
+    for (int i = 0; i + 1 < f->param_count; i++)
+        if (strncmp(f->params[i].name, "u_", 2) != 0)
+            _sl_add(&t, "uniform %s sl_v_%s;\n", _sl_glsl_type(f->params[i].type), f->params[i].name);
+    _sl_add(&t, "void main() {\n");
+    for (int i = 0; i + 1 < f->param_count; i++)
+        if (strncmp(f->params[i].name, "u_", 2) != 0)
+            _sl_add(&t, "    sl_out.%s = sl_v_%s;\n", f->params[i].name, f->params[i].name);
+    _sl_add(&t, "    gl_Position = vec4(0.0, 0.0, 2.0 * sl_v_gl_FragCoord_z - 1.0, 1.0);\n    gl_PointSize = 1.0;\n}\n");
+    return t.data;
+}
+
+static const char _sl_no_colour_fragment[] = "#version 330 core\nvoid main() {\n}\n";
+
+static bool _sl_run_stage(const sl_probe_function *f, const sl_probe_table *t, const char *labs_dir,
+                          const char *framework_dir, double *outputs, char *err, size_t n) {
+    bool vertex = f->stage == SL_PROBE_VERTEX_MAIN;
+    char shaders[SL_PATH_MAX], student[SL_PATH_MAX + 64], ours[SL_PATH_MAX + 64];
+    snprintf(shaders, sizeof shaders, "%s/shaders", framework_dir);
+    snprintf(student, sizeof student, "%s/%s", labs_dir, f->file);
+    snprintf(ours, sizeof ours, "%s/probe_%s_%s", shaders, vertex ? "fragment_for" : "vertex_for", f->name);
+    char *vertex_source = vertex ? NULL : _sl_fragment_stage_vertex(f);
+    if (!vertex && !vertex_source) {
+        snprintf(err, n, "out of memory");
+        return false;
+    }
+    sl_program program;
+    sl_shader_desc desc = {.vertex_path = vertex ? student : ours, .fragment_path = vertex ? ours : student,
+                           .vertex_source = vertex_source, .fragment_source = vertex ? _sl_no_colour_fragment : NULL,
+                           .search_dirs = {labs_dir, shaders}};
+    bool ok = sl_program_build(&program, &desc, err, n);
+    free(vertex_source);
+    if (ok && vertex) { /* gl_Position itself, captured before clipping */
+        const char *varyings[] = {"gl_Position"};
+        glTransformFeedbackVaryings(program.id, 1, varyings, GL_INTERLEAVED_ATTRIBS);
+        glLinkProgram(program.id);
+        GLint linked = 0;
+        glGetProgramiv(program.id, GL_LINK_STATUS, &linked);
+        if (!linked) {
+            char log[2048] = {0};
+            glGetProgramInfoLog(program.id, sizeof log, NULL, log);
+            snprintf(err, n, "GLSL link error (%s, capturing gl_Position):\n%s", student, log);
+            ok = false;
+        }
+    }
+    if (!ok) {
+        sl_program_destroy(&program);
+        return false;
+    }
+    GLuint vao, buffer = 0, depth = 0, framebuffer = 0;
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glUseProgram(program.id);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    if (vertex) {
+        glGenBuffers(1, &buffer);
+        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffer);
+        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 4 * sizeof(float), NULL, GL_STREAM_READ);
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
+        glEnable(GL_RASTERIZER_DISCARD);
+    } else {
+        glGenTextures(1, &depth);
+        glBindTexture(GL_TEXTURE_2D, depth);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, 1, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glGenFramebuffers(1, &framebuffer);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+        glDrawBuffer(GL_NONE);
+        glReadBuffer(GL_NONE);
+        glViewport(0, 0, 1, 1);
+        glDepthRange(0.0, 1.0);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_ALWAYS); /* whatever it writes is kept */
+        glDepthMask(GL_TRUE);
+    }
+    for (int r = 0; r < t->rows; r++) {
+        double *out = outputs + r * f->output_count;
+        _sl_stage_inputs(f, &program, t->inputs[r]);
+        float got[4] = {NAN, NAN, NAN, NAN};
+        if (vertex) {
+            glBeginTransformFeedback(GL_POINTS);
+            glDrawArrays(GL_POINTS, 0, 1);
+            glEndTransformFeedback();
+            glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, sizeof got, got);
+        } else {
+            glClearDepth(1.0);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            glDrawArrays(GL_POINTS, 0, 1);
+            glPixelStorei(GL_PACK_ALIGNMENT, 4);
+            glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, got);
+        }
+        for (int o = 0; o < f->output_count; o++) out[o] = got[o];
+    }
+    if (vertex) {
+        glDisable(GL_RASTERIZER_DISCARD);
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+        glDeleteBuffers(1, &buffer);
+    } else {
+        glDepthFunc(GL_LESS);
+        glDisable(GL_DEPTH_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDeleteFramebuffers(1, &framebuffer);
+        glDeleteTextures(1, &depth);
+    }
+    glBindVertexArray(0);
+    glDeleteVertexArrays(1, &vao);
+    glUseProgram(0);
+    sl_program_destroy(&program);
+    return true;
+}
+
 const sl_probe_function *sl_probe_pass_function(const char *name) {
     const sl_probe_function *f = sl_probe_find(name);
     for (int lab = 0; !f && lab <= SL_LAB_COUNT; lab++) {
@@ -356,6 +507,7 @@ bool sl_probe_pass_run_function(const sl_probe_function *f, const sl_probe_table
         snprintf(err, n, "a malformed probe table");
         return false;
     }
+    if (f->glsl && f->stage != SL_PROBE_FUNCTION) return _sl_run_stage(f, t, labs_dir, framework_dir, outputs, err, n);
     if (f->glsl) return _sl_run_glsl(f, t, labs_dir, framework_dir, outputs, err, n);
     /* C functions: the row runner of the technique of the function's lab (sl_technique.h) */
     const sl_technique_probe *probe = sl_technique_probe_of(f->lab, f->name);

@@ -329,7 +329,9 @@ static GLuint _sl_compile(GLenum stage, const char *path, const sl_program *prog
     for (int i = 0; i < SL_SHADER_MAX_DIRS && program->search_dirs[i][0]; i++) dirs[i] = program->search_dirs[i];
     char files[SL_SHADER_MAX_FILES][SL_PATH_MAX];
     int count = 0;
-    const char *text = stage == GL_FRAGMENT_SHADER ? program->fragment_source : NULL;
+    const char *text = stage == GL_FRAGMENT_SHADER ? program->fragment_source
+                       : stage == GL_VERTEX_SHADER ? program->vertex_source
+                                                   : NULL;
     char *source = sl_shader_preprocess_text(path, text, dirs, program->defines, files, &count, err, err_size);
     if (!source) return 0;
     for (int i = 0; i < count && *total_files < SL_SHADER_MAX_FILES; i++)
@@ -421,6 +423,7 @@ bool sl_program_build(sl_program *program, const sl_shader_desc *desc, char *err
     for (int i = 0; i < SL_SHADER_MAX_DIRS && desc->search_dirs[i]; i++)
         snprintf(program->search_dirs[i], SL_PATH_MAX, "%s", desc->search_dirs[i]);
     if (desc->defines) snprintf(program->defines, sizeof program->defines, "%s", desc->defines);
+    if (desc->vertex_source) program->vertex_source = strdup(desc->vertex_source);
     if (desc->fragment_source) program->fragment_source = strdup(desc->fragment_source);
     return _sl_build_from_paths(program, err, err_size);
 }
@@ -445,6 +448,8 @@ bool sl_program_reload_if_changed(sl_program *program, char *err, size_t err_siz
 void sl_program_destroy(sl_program *program) {
     if (program->id) glDeleteProgram(program->id);
     program->id = 0;
+    free(program->vertex_source);
+    program->vertex_source = NULL;
     free(program->fragment_source);
     program->fragment_source = NULL;
 }

@@ -28,8 +28,9 @@ typedef struct sl_shader_desc {
     const char *geometry_path;                 /* optional */
     const char *search_dirs[SL_SHADER_MAX_DIRS]; /* for #include; NULL-terminated */
     const char *defines;                       /* optional lines inserted after #version */
-    /* optional: the fragment stage's text itself, instead of reading
-     * fragment_path (which then only names it and places its #includes) */
+    /* optional: a stage's text itself, instead of reading its path (which
+     * then only names it and places its #includes) */
+    const char *vertex_source;
     const char *fragment_source;
 } sl_shader_desc;
 
@@ -38,6 +39,7 @@ typedef struct sl_program {
     char stage_paths[3][SL_PATH_MAX];
     char search_dirs[SL_SHADER_MAX_DIRS][SL_PATH_MAX];
     char defines[512];
+    char *vertex_source;   /* owned copy of sl_shader_desc.vertex_source, or NULL */
     char *fragment_source; /* owned copy of sl_shader_desc.fragment_source, or NULL */
     /* every file read for the current program, with its time stamp */
     char files[SL_SHADER_MAX_FILES][SL_PATH_MAX];

@@ -281,8 +281,9 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
         if (!sl_lab_shows(c->lab, lab)) continue;
         const sl_probe_failure *f = _sl_explaining_failure(c, k, context, lab, symptoms);
         if (f) {
-            snprintf(lead, n, "needs lab %d first: %s() is wrong on its own (%s: %s)", lab,
-                     sl_probe_at(f->function)->name, f->where, f->summary);
+            snprintf(lead, n, "needs lab %d first: %s%s is wrong on its own (%s: %s)", lab,
+                     sl_probe_at(f->function)->name, sl_probe_parens(sl_probe_at(f->function)->name), f->where,
+                     f->summary);
             sl_diag_set_cause(out, sl_probe_at(f->function)->name, f->stub ? SL_CAUSE_STUB : SL_CAUSE_WRONG);
             return true;
         }
@@ -320,8 +321,8 @@ static bool _sl_root_cause(const sl_case *c, const sl_check *k, const sl_grade_c
     const sl_probe_failure *f = _sl_explaining_failure(c, k, context, c->lab, symptoms);
     if (!f) return false;
     if (f->stub) snprintf(lead, n, "%s (%s)", f->summary, f->where);
-    else snprintf(lead, n, "%s() is wrong on its own (%s: %s): fix it first", sl_probe_at(f->function)->name, f->where,
-                  f->summary);
+    else snprintf(lead, n, "%s%s is wrong on its own (%s: %s): fix it first", sl_probe_at(f->function)->name,
+                  sl_probe_parens(sl_probe_at(f->function)->name), f->where, f->summary);
     sl_diag_set_cause(out, sl_probe_at(f->function)->name, f->stub ? SL_CAUSE_STUB : SL_CAUSE_WRONG);
     return true;
 }
@@ -375,7 +376,7 @@ static void _sl_candidates(const sl_case *c, const sl_check *k, const sl_case_re
                 if (fn.lab != lab || !sl_function_may_be_blamed(c, k, fn.name, isolated)) continue;
                 bool passed = _sl_probe_passed(context, fn.name), fails = _sl_failure_of(context, fn.name) != NULL;
                 bool probe = sl_probe_find(fn.name) != NULL;
-                const char *suffix = probe ? "()" : "";
+                const char *suffix = probe ? sl_probe_parens(fn.name) : "";
                 if (pass == 0 && passed && !_sl_probe_generic(context, fn.name)) {
                     if (dropped && strcmp(dropped, fn.name) == 0) continue; /* said already, just before */
                     /* its written rows alone: a term they leave at 0 may be the cause, so it is not ruled out */
@@ -389,19 +390,20 @@ static void _sl_candidates(const sl_case *c, const sl_check *k, const sl_case_re
                 } else if (pass == 0 && fails) {
                     if (candidates++ < 4)
                         snprintf(failing + strlen(failing), sizeof failing - strlen(failing),
-                                 "%s%s() (its probe fails, though not in a way that shows here alone)",
-                                 failing[0] ? ", " : "", fn.name);
+                                 "%s%s%s (its probe fails, though not in a way that shows here alone)",
+                                 failing[0] ? ", " : "", fn.name, sl_probe_parens(fn.name));
                 } else if (pass == 1 && !passed && !fails) {
                     if (candidates++ < 4)
                         snprintf(others + strlen(others), sizeof others - strlen(others), "%s%s%s", others[0] ? ", " : "",
-                                 fn.name, probe ? "()" : "");
+                                 fn.name, probe ? sl_probe_parens(fn.name) : "");
                 }
             }
     size_t used = 0;
     out[0] = '\0';
     if (path[0]) used += (size_t)snprintf(out + used, n - used, "This case ran %s. ", path);
     if (used < n && dropped && dropped[0])
-        used += (size_t)snprintf(out + used, n - used, "%s(), which this symptom suggests, %s. ", dropped,
+        used += (size_t)snprintf(out + used, n - used, "%s%s, which this symptom suggests, %s. ", dropped,
+                                 sl_probe_parens(dropped),
                                  !_sl_probe_passed(context, dropped) ? "fails its probe in a way that does not explain it"
                                  : _sl_probe_generic(context, dropped) ? "passes its probe, on generic inputs too"
                                                                        : "passes its probe on its written inputs only");
@@ -620,7 +622,7 @@ static void _sl_grade_and_name(const sl_case *c, const sl_check *k, const sl_cas
     const sl_probe_function *f = k->kind == SL_CHECK_PROBE ? sl_probe_at(k->function) : NULL;
     if (f && !out->not_compiled[0] && strncmp(what, f->name, strlen(f->name)) != 0) {
         char named[sizeof out->summary + 80];
-        snprintf(named, sizeof named, "%s(): %s", f->name, what); /* one verdict, told apart per function */
+        snprintf(named, sizeof named, "%s%s: %s", f->name, sl_probe_parens(f->name), what); /* one verdict, told apart per function */
         _sl_name_diagnosis(out, named, false);
     } else {
         _sl_name_diagnosis(out, what, false);

@@ -31,7 +31,8 @@ void _sl_protocol_error(_sl_stream *s, const char *fmt, ...) {
 static bool _sl_valid_name(const char *name, size_t n) {
     for (size_t i = 0; i < n; i++) {
         char ch = name[i];
-        if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_')) return false;
+        /* a '.' for a shader stage probed whole ("depth.vert") */
+        if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '.')) return false;
     }
     return true;
 }

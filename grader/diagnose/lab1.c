@@ -343,7 +343,6 @@ const sl_lab_diagnoses sl_lab1_diagnoses = {
      * lookups call a point off the map lit before they read it */
     .functions = {{"lab1_create_shadow_map", _sl_verdict_create_shadow_map, .edge_outputs = 0x1Cu},
                   {"lab1_begin_depth_pass", _sl_verdict_begin_depth_pass}},
-    .unprobed = {{"depth.vert", 1, "TODO(lab1.4)", false}},
     .checks = {{SL_CHECK_FBO, _sl_diagnose_fbo_check}, {SL_CHECK_DEPTH_MAP, sl_diagnose_depth}},
     .case_runs = sl_lab1_case_runs,
     .same_path = _sl_lab1_same_path,

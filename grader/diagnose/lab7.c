@@ -807,7 +807,6 @@ static void _sl_lab7_lookup_function(const sl_case *c, const char **function, co
 const sl_lab_diagnoses sl_lab7_diagnoses = {
     .lab = 7,
     .lookup_function = _sl_lab7_lookup_function,
-    .unprobed = {{"cube_depth.frag", 7, "TODO(lab7.5)", false}},
     .checks = {{SL_CHECK_CUBE_FACE, sl_diagnose_cube_face}},
     .visibility = sl_diagnose_lab7_visibility,
     .case_runs = sl_lab7_case_runs,

@@ -96,6 +96,7 @@ static bool _sl_close_enough(const sl_check *k, int row, int output, double stud
 
 /* What the stub of f returns for output o of a row. */
 static double _sl_stub_output(const sl_probe_function *f, const float *in, int o) {
+    if (f->stub_outputs) return f->stub_outputs[o];
     if (f->stub_param < 0) return f->stub_value;
     int offset = 0;
     for (int i = 0; i < f->stub_param; i++) offset += sl_probe_type_size(f->params[i].type);
@@ -402,7 +403,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     sl_diag_stub_location(f->name, &todo, &file);
     for (int i = 0; i < r->not_implemented_count; i++)
         if (strcmp(r->not_implemented[i], f->name) == 0) {
-            sl_diag_say(out, "not implemented: %s() still returns SL_NOT_IMPLEMENTED (%s in %s)", f->name, todo, file);
+            sl_diag_say(out, "not implemented: %s%s still returns SL_NOT_IMPLEMENTED (%s in %s)", f->name, sl_probe_parens(f->name), todo, file);
             sl_utf8_copy(out->summary, sizeof out->summary, out->message);
             out->settled = out->stub = true;
             return;
@@ -416,11 +417,11 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         if (own[0] && sl_diag_compile_error(out, own))
             return;
         else if (own[0])
-            sl_diag_say(out, "%s() could not be called: %s", f->name, own);
+            sl_diag_say(out, "%s%s could not be called: %s", f->name, sl_probe_parens(f->name), own);
         else if (strncmp(r->capture_error, capture, len) == 0 && r->capture_error[len] == ':')
-            sl_diag_say(out, "%s() could not be called:%s", f->name, r->capture_error + len + 1);
+            sl_diag_say(out, "%s%s could not be called:%s", f->name, sl_probe_parens(f->name), r->capture_error + len + 1);
         else
-            sl_diag_say(out, "%s() was not called: the case ended before its probe", f->name);
+            sl_diag_say(out, "%s%s was not called: the case ended before its probe", f->name, sl_probe_parens(f->name));
         sl_utf8_copy(out->summary, sizeof out->summary, out->message);
         out->settled = true;
         return;
@@ -470,7 +471,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         if (shown < 0 || !((broken >> shown) & 1u)) shown = first;
         char inputs[600];
         _sl_inputs(f, k->inputs[shown], inputs, sizeof inputs);
-        sl_diag_say(out, "%s(): %s. For example %s(%s)%s%s", f->name, verdict[0] ? verdict : "its contract is broken",
+        sl_diag_say(out, "%s%s: %s. For example %s(%s)%s%s", f->name, sl_probe_parens(f->name), verdict[0] ? verdict : "its contract is broken",
                     f->name, inputs, k->about[shown][0] ? " — " : "", k->about[shown]);
         sl_utf8_copy(out->summary, sizeof out->summary, verdict);
         _sl_rows_differ(out, k, failing, todo, file);
@@ -488,12 +489,27 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         if ((out->failing_rows >> row) & 1u) out->row_predicts[row] = sl_probe_row_predicts(&rows, row);
     /* The stub's answers on every row, from code that is not the stub's (as handed out, up to comments and
      * spaces): written, but answering as the stub does; never "not implemented". */
-    if (all_stub && f->glsl && sl_diag_still_the_stub(f->file, f->name) == 0) all_stub = false;
+    if (all_stub && f->glsl && sl_diag_still_the_stub(f->file, sl_probe_entry(f)) == 0) all_stub = false;
     if (all_stub && f->glsl) {
-        char stub[64];
-        if (f->stub_param >= 0) snprintf(stub, sizeof stub, "its parameter %s unchanged", f->params[f->stub_param].name);
-        else snprintf(stub, sizeof stub, "the stub's %g", f->stub_value);
-        sl_diag_say(out, "not implemented: %s() still returns %s (%s in %s)", f->name, stub, todo, file);
+        char stub[96];
+        const char *writes = f->stage == SL_PROBE_VERTEX_MAIN     ? " gl_Position ="
+                             : f->stage == SL_PROBE_FRAGMENT_MAIN ? " gl_FragDepth ="
+                                                                  : "";
+        if (f->stub_outputs) {
+            size_t used = (size_t)snprintf(stub, sizeof stub, "the stub's%s (", writes);
+            for (int o = 0; o < f->output_count && used < sizeof stub; o++)
+                used += (size_t)snprintf(stub + used, sizeof stub - used, "%s%g", o ? ", " : "", f->stub_outputs[o]);
+            if (used < sizeof stub) snprintf(stub + used, sizeof stub - used, ")");
+        } else if (f->stub_param >= 0) {
+            snprintf(stub, sizeof stub, "%s%s %s unchanged", *writes ? "the stub's" : "its parameter", writes,
+                     f->params[f->stub_param].name);
+        } else {
+            snprintf(stub, sizeof stub, "the stub's%s %g", writes, f->stub_value);
+        }
+        if (f->stage == SL_PROBE_FUNCTION)
+            sl_diag_say(out, "not implemented: %s() still returns %s (%s in %s)", f->name, stub, todo, file);
+        else
+            sl_diag_say(out, "not implemented: %s still writes %s (%s in %s)", f->name, stub, todo, file);
         sl_utf8_copy(out->summary, sizeof out->summary, out->message);
         out->settled = out->stub = true;
         return;
@@ -578,7 +594,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     _sl_row_evidence(f, k, shown, &cap->numbers[shown * f->output_count], &ref->numbers[shown * f->output_count],
                      evidence, sizeof evidence);
     if (verdict[0]) {
-        sl_diag_say(out, "%s(): %s. For example %s", f->name, verdict, evidence);
+        sl_diag_say(out, "%s%s: %s. For example %s", f->name, sl_probe_parens(f->name), verdict, evidence);
         sl_utf8_copy(out->summary, sizeof out->summary, verdict);
     } else {
         sl_diag_say(out, "%s", evidence);

@@ -115,6 +115,135 @@ static void _sl_expect_create_shadow_map(const sl_probe_function *f, const float
     memcpy(out, want, sizeof want);
 }
 
+/* lab 1: depth.vert's gl_Position = u_light_view_projection * u_model * (a_position, 1), with a model that
+ * turns, scales unevenly and moves, and a projective light matrix (w != 1), so every product shows */
+static void _sl_draw_depth_vert(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    (void)index;
+    double p[3], model[16] = {0}, light[16], axis[3], length = 0;
+    for (int j = 0; j < 3; j++) p[j] = _sl_uniform(r, -2, 2), axis[j] = _sl_uniform(r, -1, 1);
+    for (int j = 0; j < 3; j++) length += axis[j] * axis[j];
+    length = sqrt(length) + 1e-9;
+    for (int j = 0; j < 3; j++) axis[j] /= length;
+    double angle = _sl_uniform(r, 0.4, 2.6), c = cos(angle), s = sin(angle), scale[3];
+    for (int j = 0; j < 3; j++) scale[j] = _sl_uniform(r, 0.5, 2.0);
+    /* column-major: column j is the rotated axis j, scaled (Rodrigues' rotation), then the translation */
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++) {
+            double rot = (i == j ? c : 0) + (1 - c) * axis[i] * axis[j];
+            int k = 3 - i - j; /* the third axis, for the cross-product term */
+            if (i != j) rot += ((i + 1) % 3 == j ? -1 : 1) * s * axis[k];
+            model[j * 4 + i] = rot * scale[j];
+        }
+    for (int i = 0; i < 3; i++) model[12 + i] = _sl_uniform(r, -4, 4);
+    model[15] = 1;
+    for (int i = 0; i < 16; i++) light[i] = _sl_uniform(r, -1.5, 1.5);
+    _sl_set(f, row, "a_position", p);
+    _sl_set(f, row, "u_model", model);
+    _sl_set(f, row, "u_light_view_projection", light);
+    snprintf(about, n, "generic: a model that turns, scales unevenly and moves, and a projective light matrix (its w "
+                       "is not 1)");
+}
+
+static const char *const _sl_depth_vert_slips[][2] = {
+    {"", ""},
+    {"u_light_view_projection * (a_position, 1): u_model left out", "u_light_view_projection * u_model * (a_position, 1)"},
+    {"u_model * u_light_view_projection * (a_position, 1): the matrices in the other order",
+     "u_light_view_projection * u_model * (a_position, 1): the model first, then the light"},
+    {"the matrices times (a_position, 0): a direction, whose translations are lost",
+     "(a_position, 1): a vertex is a point, w = 1"},
+    {"u_model * (a_position, 1): u_light_view_projection left out", "u_light_view_projection * u_model * (a_position, 1)"},
+    {"(a_position, 1) * u_model * u_light_view_projection: a row vector, the matrices transposed",
+     "u_light_view_projection * u_model * (a_position, 1): GLSL's matrices multiply column vectors"},
+    {"gl_Position divided by its w", "gl_Position as the product gives it: the GPU divides by w after the vertex shader"},
+    {NULL, NULL},
+};
+
+static void _sl_times(const float *m, bool transposed, const double *v, double *out) {
+    for (int i = 0; i < 4; i++) {
+        out[i] = 0;
+        for (int j = 0; j < 4; j++) out[i] += (double)(transposed ? m[i * 4 + j] : m[j * 4 + i]) * v[j];
+    }
+}
+
+static void _sl_expect_depth_vert(const sl_probe_function *f, const float *row, int slip, double *out) {
+    const float *p = sl_probe_row_param(f, row, "a_position"), *model = sl_probe_row_param(f, row, "u_model"),
+                *light = sl_probe_row_param(f, row, "u_light_view_projection");
+    double v[4] = {p[0], p[1], p[2], slip == 3 ? 0.0 : 1.0}, m[4];
+    if (slip == 2) { /* the light first, then the model */
+        _sl_times(light, false, v, m);
+        _sl_times(model, false, m, out);
+        return;
+    }
+    if (slip == 5) { /* v * M * L = L^T (M^T v) */
+        _sl_times(model, true, v, m);
+        _sl_times(light, true, m, out);
+        return;
+    }
+    if (slip == 1) memcpy(m, v, sizeof m);
+    else _sl_times(model, false, v, m);
+    if (slip == 4) memcpy(out, m, sizeof m);
+    else _sl_times(light, false, m, out);
+    if (slip == 6 && out[3] != 0) {
+        for (int i = 0; i < 3; i++) out[i] /= out[3];
+        out[3] = 1;
+    }
+}
+
+/* lab 7: cube_depth.frag's gl_FragDepth = length(world_position - u_light_position) / u_light_far, for a
+ * light off the origin, a far plane other than the scenes' and a fragment drawn at the depth its face's
+ * perspective camera gives it (what gl_FragCoord.z holds in the depth pass) */
+static double _sl_face_depth(const double d[3], double near, double far) {
+    double axis = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    double ndc = (far + near) / (far - near) - 2 * far * near / ((far - near) * axis);
+    return ndc * 0.5 + 0.5;
+}
+
+static void _sl_draw_cube_depth(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    (void)index;
+    double light[3], d[3], far = _sl_uniform(r, 8, 60), near = _sl_uniform(r, 0.05, 0.5), length = 0;
+    for (int j = 0; j < 3; j++) light[j] = _sl_uniform(r, -3, 3), d[j] = _sl_uniform(r, -1, 1);
+    for (int j = 0; j < 3; j++) length += d[j] * d[j];
+    length = sqrt(length) + 1e-9;
+    /* one row in three within a unit of the light, where a distance left undivided is still below 1 */
+    double distance = index % 3 == 0 ? _sl_uniform(r, 0.3, 0.95) : _sl_uniform(r, 0.15, 0.85) * far, world[3];
+    for (int j = 0; j < 3; j++) d[j] *= distance / length, world[j] = light[j] + d[j];
+    _sl_set(f, row, "world_position", world);
+    _sl_set(f, row, "u_light_position", light);
+    _sl_set1(f, row, "u_light_far", far);
+    _sl_set1(f, row, "gl_FragCoord.z", _sl_face_depth(d, near, far));
+    snprintf(about, n, "generic: a light off the origin, far %.3g, the fragment %.3g of the way to it, off its face's "
+                       "axis",
+             far, distance / far);
+}
+
+static const char *const _sl_cube_depth_slips[][2] = {
+    {"", ""},
+    {"the distance from the origin, length(world_position) / u_light_far", "the distance from the light, "
+                                                                           "length(world_position - u_light_position)"},
+    {"the distance along the face's axis (the largest |component|) / u_light_far", "the length of the light-to-fragment "
+                                                                                   "vector / u_light_far"},
+    {"the squared distance / u_light_far^2", "the distance itself / u_light_far: linear in the distance"},
+    {"gl_FragCoord.z: the face camera's non-linear depth", "length(world_position - u_light_position) / u_light_far: "
+                                                           "the lookup has only a direction and a distance"},
+    {"the distance not divided by u_light_far (the depth buffer keeps at most 1.0)", "the distance / u_light_far, in "
+                                                                                     "[0, 1]"},
+    {"the distance times u_light_far", "the distance divided by u_light_far"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_cube_depth(const sl_probe_function *f, const float *row, int slip, double *out) {
+    double d[3], length = 0, axis = 0, far = _sl_get(f, row, "u_light_far", 0);
+    for (int j = 0; j < 3; j++) {
+        d[j] = _sl_get(f, row, "world_position", j) - (slip == 1 ? 0 : _sl_get(f, row, "u_light_position", j));
+        length += d[j] * d[j];
+        axis = fmax(axis, fabs(d[j]));
+    }
+    double depth = slip == 2 ? axis / far : slip == 3 ? length / (far * far) : slip == 5 ? sqrt(length)
+                   : slip == 6 ? sqrt(length) * far : sqrt(length) / far;
+    if (slip == 4) depth = _sl_get(f, row, "gl_FragCoord.z", 0);
+    out[0] = fmin(fmax(depth, 0), 1); /* the depth buffer keeps [0, 1] */
+}
+
 /* lab 2: shadow_matrix * world_position, with a projective matrix and w != 1 */
 static void _sl_draw_shadow_coord(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
                                   size_t n) {
@@ -744,6 +873,7 @@ static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row
 
 static const _sl_generic _sl_generics[] = {
     {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map, NULL, NULL},
+    {"depth.vert", _sl_draw_depth_vert, _sl_expect_depth_vert, _sl_depth_vert_slips, NULL},
     {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord, _sl_shadow_coord_slips, NULL},
     {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL},
     {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL},
@@ -767,6 +897,7 @@ static const _sl_generic _sl_generics[] = {
      "start = split_far - band * (split_far - split_near); "
      "if(band <= 0, 0, clamp((view_depth - start) / (split_far - start), 0, 1))"},
     {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection, _sl_face_projection_slips, NULL},
+    {"cube_depth.frag", _sl_draw_cube_depth, _sl_expect_cube_depth, _sl_cube_depth_slips, NULL},
     {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow, _sl_point_shadow_slips,
      "current = length(light_to_fragment) / far_plane - bias; closest = if(major_positive(light_to_fragment), 0.1, 1); "
      "if(current > closest, 0, 1)"},
