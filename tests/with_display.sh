@@ -33,7 +33,9 @@ for _ in $(seq 1 40); do
   rm -f "$dir/ready"
   mkfifo "$dir/ready"
   # shellcheck disable=SC2086 # the server's arguments are words
-  Xvfb ":$number" $server_args -nolisten tcp -auth "$auth" -displayfd 3 3>"$dir/ready" 2>"$dir/server.log" &
+  # -noreset: by default the server resets whenever its last client leaves, and refuses connections
+  # meanwhile; runners come and go one after another, so a runner starting then would find no display
+  Xvfb ":$number" $server_args -noreset -nolisten tcp -auth "$auth" -displayfd 3 3>"$dir/ready" 2>"$dir/server.log" &
   server=$!
   # the display's number arrives once the server accepts clients; nothing when it gave up
   shown=""
