@@ -434,6 +434,20 @@ void sl_context_destroy(sl_context *ctx) {
 
 sl_backend sl_context_backend(const sl_context *ctx) { return ctx->backend; }
 
+sl_context_gl_fn sl_context_proc(const sl_context *ctx, const char *name) {
+    switch (ctx->backend) {
+#ifdef SL_HAVE_OSMESA
+    case SL_BACKEND_OSMESA: return _sl_osmesa_get_proc(name);
+#endif
+#ifdef SL_HAVE_EGL
+    case SL_BACKEND_EGL: return _sl_egl_get_proc(name);
+#endif
+    case SL_BACKEND_GLFW:
+    case SL_BACKEND_WINDOW: return _sl_glfw_get_proc(name);
+    default: return NULL;
+    }
+}
+
 void sl_context_framebuffer_size(const sl_context *ctx, int *width, int *height) {
     if (ctx->backend == SL_BACKEND_GLFW) {
         glfwGetFramebufferSize(ctx->window, width, height);

@@ -58,6 +58,9 @@ typedef struct sl_context sl_context;
 sl_context *sl_context_create(const sl_context_desc *desc, char *err, size_t err_size);
 void sl_context_destroy(sl_context *ctx);
 
+/* An entry point of the context's GL beyond the loader's 3.3 core (an extension's), or NULL. */
+typedef void (*sl_context_gl_fn)(void);
+sl_context_gl_fn sl_context_proc(const sl_context *ctx, const char *name);
 /* The backend in use (never SL_BACKEND_DEFAULT_HEADLESS). */
 sl_backend sl_context_backend(const sl_context *ctx);
 /* Size of the default framebuffer in pixels. */

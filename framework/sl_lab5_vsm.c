@@ -8,6 +8,7 @@
 #include "sl_renderer.h"
 #include "sl_shader.h"
 #include "sl_overlay.h"
+#include "sl_probe_calls.h"
 #include "sl_technique.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -355,4 +356,5 @@ const sl_technique sl_lab5_technique = {
     .settings_text = _sl_lab5_settings_text,
     .switched_off_text = "switched off with P",
     .overlay_lines = _sl_lab5_overlay_lines,
+    .probes = sl_lab5_probes,
 };

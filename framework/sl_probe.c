@@ -107,6 +107,13 @@ static const sl_probe_function _sl_functions[] = {
                 _SL_F("far")},
      .param_count = 6, .stub_param = -1, .stub_value = 1.0},
     /* lab 5 */
+    /* lab 5: the two moments targets as lab5_create_moments_target makes them */
+    {.name = "lab5_create_moments_target", .lab = 5, .file = "lab5_vsm/lab5.c", .todo = "lab5.1",
+     .outputs = "moments[0] internal format,moments[1] internal format,texture width,moments[0] min filter,"
+                "moments[0] mag filter,moments[0] wrap s,moments[0] wrap t,moments[1] min filter,moments[1] mag filter,"
+                "moments[1] wrap s,moments[1] wrap t,each framebuffer's own texture at GL_COLOR_ATTACHMENT0,"
+                "a depth buffer on framebuffer[0],framebuffers complete,target->size",
+     .output_count = 15, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
     {.name = "compute_moments", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/moments.glsl", .todo = "lab5.3",
      .outputs = "first moment,second moment", .output_count = 2, .params = {_SL_F("depth")}, .param_count = 1,
      .stub_param = -1, .stub_value = 1.0},

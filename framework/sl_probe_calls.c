@@ -419,6 +419,68 @@ static sl_status _sl_row_lab4_configure_shadow_texture(const float *in, double *
     return status;
 }
 
+/* lab5_create_moments_target(size): each moments texture's format, size, filters and wrap modes, whether
+ * each framebuffer holds its own texture at GL_COLOR_ATTACHMENT0, framebuffer[0]'s depth, as glGet* reports
+ * them. */
+static void _sl_moments_texture_state(GLuint texture, double *format, double *width, double *params) {
+    *format = 0;
+    for (int i = 0; i < 4; i++) params[i] = 0;
+    if (!texture || !glIsTexture(texture)) return;
+    glBindTexture(GL_TEXTURE_2D, texture);
+    if (glGetError() != GL_NO_ERROR) return; /* not a 2D texture */
+    GLint f = 0, w = 0, v[4] = {0};
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &f);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &v[0]);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &v[1]);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, &v[2]);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, &v[3]);
+    *format = f;
+    if (width) *width = w;
+    for (int i = 0; i < 4; i++) params[i] = v[i];
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+static sl_status _sl_row_lab5_create_moments_target(const float *in, double *out) {
+    int size = (int)in[0];
+    sl_moments_target target = {0};
+    sl_status status = sl_build_lab_functions.lab5_create_moments_target(size, &target);
+    while (glGetError() != GL_NO_ERROR) {}
+    for (int o = 0; o < 15; o++) out[o] = 0;
+    _sl_moments_texture_state(target.moments[0], &out[0], &out[2], &out[3]);
+    _sl_moments_texture_state(target.moments[1], &out[1], NULL, &out[7]);
+    bool own[2] = {false, false};
+    for (int i = 0; i < 2; i++) {
+        if (!target.framebuffer[i] || !glIsFramebuffer(target.framebuffer[i])) continue;
+        glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer[i]);
+        GLint type = 0, name = 0;
+        glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                              GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+        if (type == GL_TEXTURE)
+            glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                                  GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+        own[i] = type == GL_TEXTURE && (GLuint)name == target.moments[i] && target.moments[i] != 0;
+        if (i == 0) {
+            GLint depth_type = 0, bits = 0;
+            glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                                  GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &depth_type);
+            if (depth_type != GL_NONE)
+                glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                                      GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+            out[12] = bits >= 16; /* any depth the moments pass can test with: 16, 24 or 32 bits */
+        }
+        out[13] += glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    }
+    out[11] = own[0] && own[1];
+    out[14] = target.size;
+    while (glGetError() != GL_NO_ERROR) {}
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(2, target.framebuffer);
+    glDeleteTextures(2, target.moments);
+    if (target.depth) glDeleteRenderbuffers(1, &target.depth);
+    return status;
+}
+
 /* ---- each lab's list, for its technique's descriptor ---- */
 
 const sl_technique_probe sl_lab1_probes[] = {
@@ -438,6 +500,10 @@ const sl_technique_probe sl_lab3_probes[] = {
 };
 const sl_technique_probe sl_lab4_probes[] = {
     {.function = "lab4_configure_shadow_texture", .run_row = _sl_row_lab4_configure_shadow_texture},
+    {0},
+};
+const sl_technique_probe sl_lab5_probes[] = {
+    {.function = "lab5_create_moments_target", .run_row = _sl_row_lab5_create_moments_target},
     {0},
 };
 const sl_technique_probe sl_lab6_probes[] = {

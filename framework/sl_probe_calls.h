@@ -8,11 +8,12 @@
 
 #include "sl_technique.h"
 
-/* Ended by an entry whose function is NULL. Lab 5 has no C function. */
+/* Ended by an entry whose function is NULL. */
 extern const sl_technique_probe sl_lab1_probes[];
 extern const sl_technique_probe sl_lab2_probes[];
 extern const sl_technique_probe sl_lab3_probes[];
 extern const sl_technique_probe sl_lab4_probes[];
+extern const sl_technique_probe sl_lab5_probes[];
 extern const sl_technique_probe sl_lab6_probes[];
 extern const sl_technique_probe sl_lab7_probes[];
 

@@ -25,7 +25,8 @@
 #include "sl_scene.h"
 
 #define SL_JOB_MAGIC 0x424a4c53u /* "SLJB" */
-#define SL_PROTOCOL_VERSION 4 /* 3: probe tables name their function (sl_probe_table); 4: lab 5's passes */
+#define SL_PROTOCOL_VERSION 5 /* 3: probe tables name their function (sl_probe_table); 4: lab 5's passes;
+                                * 5: GL_ERROR */
 #define SL_JOB_MAX_FRAMES 16
 #define SL_JOB_MAX_PROBES 8   /* a case's checks: each may be a probe */
 #define SL_CHANNEL_FD 3
@@ -108,6 +109,7 @@ typedef enum sl_message_type {
     SL_MSG_NUMBERS,         /* name: a capture; payload: doubles */
     SL_MSG_RENDER_TIME,     /* payload: one double, the CPU seconds the case's frames took */
     SL_MSG_DONE,            /* every capture was sent */
+    SL_MSG_GL_ERROR,        /* name: a lab function; payload: the first error GL reported while it ran */
     SL_MSG_TYPE_END
 } sl_message_type;
 
@@ -119,6 +121,8 @@ typedef struct sl_message_header {
 
 #define SL_MSG_NAME_MAX 63
 #define SL_MSG_TEXT_MAX 16384      /* ERROR, CAPTURE_ERROR and HELLO payloads */
+#define SL_MSG_GL_ERROR_MAX 400    /* a GL_ERROR's text */
+#define SL_MSG_GL_ERRORS 8         /* GL_ERROR messages a runner sends at most, one per function */
 #define SL_MSG_NUMBERS_MAX (SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS)
 #define SL_IMAGE_SIDE_MAX 4096     /* shadow maps and camera images */
 #define SL_IMAGE_HEADER_BYTES 12   /* int32 width, height, channels */

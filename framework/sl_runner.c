@@ -65,8 +65,52 @@ static void _sl_send_numbers(int kind, const double *v, int count) {
  * (GL work, the lab shaders' included, is done there: a shader loop that does
  * not end stops the runner in a draw, a readback or glFinish). */
 static char _sl_draw_stage[32];
+/* The lab function running now ("" between them), for the errors GL reports meanwhile. */
+static char _sl_running[SL_MSG_NAME_MAX + 1];
 static void _sl_stage_hook(const char *function) {
+    snprintf(_sl_running, sizeof _sl_running, "%s", function ? function : "");
     _sl_send(SL_MSG_STAGE, function ? function : _sl_draw_stage, NULL, 0);
+}
+
+/* ---- what GL says about a lab function's calls ----
+ * The first error GL's debug output (KHR_debug, which Mesa has in every context) reports while each lab
+ * function runs, in GL's own words ("GL_INVALID_VALUE in glTexImage2D(border=1)"): a message can then
+ * say which call went wrong and why. Sent once the case is done; errors outside lab functions are the
+ * framework's, never reported as the student's. */
+typedef struct _sl_gl_error {
+    char function[SL_MSG_NAME_MAX + 1];
+    char text[SL_MSG_GL_ERROR_MAX];
+} _sl_gl_error;
+static _sl_gl_error _sl_gl_errors[SL_MSG_GL_ERRORS];
+static int _sl_gl_error_count;
+
+static void APIENTRY _sl_gl_debug(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                                  const GLchar *message, const void *user) {
+    (void)source, (void)id, (void)severity, (void)user;
+    if (type != GL_DEBUG_TYPE_ERROR || !_sl_running[0] || !message) return;
+    for (int i = 0; i < _sl_gl_error_count; i++)
+        if (strcmp(_sl_gl_errors[i].function, _sl_running) == 0) return; /* its first error only */
+    if (_sl_gl_error_count == SL_MSG_GL_ERRORS) return;
+    _sl_gl_error *e = &_sl_gl_errors[_sl_gl_error_count++];
+    snprintf(e->function, sizeof e->function, "%s", _sl_running);
+    int n = length >= 0 && length < (GLsizei)sizeof e->text ? (int)length : (int)sizeof e->text - 1;
+    snprintf(e->text, sizeof e->text, "%.*s", n, message);
+}
+
+static void _sl_gl_debug_start(const sl_context *ctx) {
+    PFNGLDEBUGMESSAGECALLBACKPROC callback =
+        (PFNGLDEBUGMESSAGECALLBACKPROC)sl_context_proc(ctx, "glDebugMessageCallback");
+    if (!callback) return; /* a GL without debug output: messages keep to what they measure */
+    while (glGetError() != GL_NO_ERROR) {}
+    glEnable(GL_DEBUG_OUTPUT);
+    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS); /* reported inside the call, while its function still runs */
+    callback(_sl_gl_debug, NULL);
+    while (glGetError() != GL_NO_ERROR) {}
+}
+
+static void _sl_gl_debug_send(void) {
+    for (int i = 0; i < _sl_gl_error_count; i++)
+        _sl_send(SL_MSG_GL_ERROR, _sl_gl_errors[i].function, _sl_gl_errors[i].text, strlen(_sl_gl_errors[i].text));
 }
 
 /* What the FBO check needs to know about lab 1's framebuffer and texture. */
@@ -348,6 +392,18 @@ static void _sl_run_probes(const sl_job *job, _sl_missing *missing) {
     }
 }
 
+/* Object names of different kinds never coincide here: GL hands out each kind's names from 1, so a
+ * texture's name passed where a framebuffer's belongs (or the reverse) would often name the right object
+ * by luck. Reserved, never bound: no object is made. */
+static void _sl_separate_object_names(void) {
+    enum { _SL_RESERVED = 100 };
+    GLuint names[4 * _SL_RESERVED];
+    glGenTextures(_SL_RESERVED, names);
+    glGenRenderbuffers(2 * _SL_RESERVED, names);
+    glGenBuffers(3 * _SL_RESERVED, names);
+    glGenVertexArrays(4 * _SL_RESERVED, names);
+}
+
 static int _sl_run_job(const sl_job *job) {
     char err[8192];
     /* software_only: llvmpipe even where EGL finds a GPU, as the references were rendered */
@@ -361,11 +417,14 @@ static int _sl_run_job(const sl_job *job) {
     char hello[512];
     snprintf(hello, sizeof hello, "%s\n%s", sl_backend_name(sl_context_backend(ctx)), sl_context_renderer_name());
     _sl_send_text(SL_MSG_HELLO, NULL, hello);
+    _sl_separate_object_names();
+    _sl_gl_debug_start(ctx);
     sl_lab_call_hook = _sl_stage_hook;
     _sl_missing missing = {0};
     if (job->frame_count > 0 && !_sl_render_case(job, &missing)) return 1;
     _sl_run_probes(job, &missing);
     for (int i = 0; i < missing.count; i++) _sl_send(SL_MSG_NOT_IMPLEMENTED, missing.names[i], NULL, 0);
+    _sl_gl_debug_send();
     sl_lab_call_hook = NULL;
     sl_context_destroy(ctx);
     _sl_send(SL_MSG_DONE, NULL, NULL, 0);

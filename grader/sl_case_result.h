@@ -41,6 +41,10 @@ typedef struct sl_case_result {
     char not_implemented[16][64];
     int not_implemented_count;
     char failed[64];      /* lab function that returned SL_FAILED */
+    /* the first error GL reported while a lab function ran, in GL's words, for each function it named */
+    char gl_error_function[SL_MSG_GL_ERRORS][64];
+    char gl_error[SL_MSG_GL_ERRORS][SL_MSG_GL_ERROR_MAX];
+    int gl_error_count;
     sl_capture captures[SL_RUN_MAX_CAPTURES];
     int capture_count;
     double seconds;       /* wall clock, start to end */
@@ -54,6 +58,8 @@ typedef struct sl_case_result {
 
 /* The capture of that name, or NULL. */
 const sl_capture *sl_result_capture(const sl_case_result *r, const char *name);
+/* What GL reported while `function` ran (its first error, in GL's words), or NULL. */
+const char *sl_result_gl_error(const sl_case_result *r, const char *function);
 /* Frees the captures' images. */
 void sl_case_result_free(sl_case_result *r);
 

@@ -127,6 +127,14 @@ int sl_diag_function_lab(const char *function) {
     return strncmp(function, "lab", 3) == 0 ? atoi(function + 3) : 0;
 }
 
+void sl_diag_gl_error(sl_check_result *out, const sl_case_result *r, const char *function) {
+    const char *said = sl_result_gl_error(r, function);
+    if (!said || !said[0] || strstr(out->message, "GL reported")) return;
+    /* GL's words, as its debug output gave them: they name the call and the value it refused */
+    sl_diag_append(out, "%sGL reported, while %s%s ran: \"%s\"", out->message[0] ? ". " : "", function,
+                   sl_probe_parens(function), said);
+}
+
 /* "not implemented" for this lab's stubs first, then "needs lab K". */
 bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check_result *out) {
     for (int pass = 0; pass < 2; pass++) {
@@ -148,7 +156,8 @@ bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check
     }
     if (r->failed[0]) {
         sl_diag_say(out, "%s() returned SL_FAILED", r->failed);
-        if (strcmp(r->failed, "lab1_create_shadow_map") == 0)
+        if (sl_result_gl_error(r, r->failed)) sl_diag_gl_error(out, r, r->failed);
+        else if (strcmp(r->failed, "lab1_create_shadow_map") == 0)
             sl_diag_append(out, " (is the framebuffer complete? glCheckFramebufferStatus tells why not)");
         sl_diag_set_cause(out, r->failed, SL_CAUSE_WRONG);
         out->cause[0] = '\0';

@@ -109,6 +109,8 @@ void sl_diag_cause_in(sl_check_result *out, const char *function, const char *fm
 void sl_diag_hint(sl_check_result *out, const char *hint);
 /* "not implemented" for this lab's stubs first, then "needs lab K"; false if no stub is in the way. */
 bool sl_diag_explain_missing(const sl_case *c, const sl_case_result *r, sl_check_result *out);
+/* Appends what GL's debug output reported while `function` ran (its first error), where it reported one. */
+void sl_diag_gl_error(sl_check_result *out, const sl_case_result *r, const char *function);
 /* An image check's verdict from its comparison: few enough pixels off, none
  * NaN, and a mean difference within the check's mean tolerance. When only
  * the mean is off, says so (a small error everywhere) and returns false. */

@@ -674,6 +674,7 @@ static void _sl_grade_check(const sl_case *c, const sl_check *k, const sl_case_r
         sl_diagnose_probe(c, k, r, ref, out);
         /* a function its shader's compile error kept from running is not wrong: it was not reached */
         if (!out->passed && !out->not_compiled[0]) sl_diag_set_cause(out, sl_probe_at(k->function)->name, out->stub ? SL_CAUSE_STUB : SL_CAUSE_WRONG);
+        if (!out->passed && !out->stub && !out->not_compiled[0]) sl_diag_gl_error(out, r, sl_probe_at(k->function)->name);
         break;
     default:
         if (lab_diagnosis) lab_diagnosis(c, k, r, ref, out);

@@ -49,6 +49,7 @@ static uint64_t _sl_payload_limit(const _sl_stream *s, uint32_t type, int captur
     case SL_MSG_HELLO:
     case SL_MSG_ERROR:
     case SL_MSG_CAPTURE_ERROR: return SL_MSG_TEXT_MAX;
+    case SL_MSG_GL_ERROR: return SL_MSG_GL_ERROR_MAX;
     case SL_MSG_NUMBERS: return SL_MSG_NUMBERS_MAX * sizeof(double);
     case SL_MSG_RENDER_TIME: return sizeof(double);
     case SL_MSG_IMAGE:
@@ -176,6 +177,12 @@ static void _sl_take_message(_sl_stream *s, const sl_message_header *h, const ch
             snprintf(r->not_implemented[r->not_implemented_count++], sizeof r->not_implemented[0], "%s", name);
         break;
     case SL_MSG_FAILED: snprintf(r->failed, sizeof r->failed, "%s", name); break;
+    case SL_MSG_GL_ERROR: /* GL's words about a lab function's call: shown in a message, never graded */
+        if (!name[0] || r->gl_error_count == SL_MSG_GL_ERRORS || sl_result_gl_error(r, name)) break;
+        snprintf(r->gl_error_function[r->gl_error_count], sizeof r->gl_error_function[0], "%s", name);
+        sl_utf8_clean(r->gl_error[r->gl_error_count], sizeof r->gl_error[0], payload, (size_t)h->payload_length, 0);
+        r->gl_error_count++;
+        break;
     /* text lab code may have written: made valid UTF-8 without controls here, where it comes in */
     case SL_MSG_ERROR:
         sl_utf8_clean(r->error, sizeof r->error, payload, (size_t)h->payload_length,

@@ -312,8 +312,84 @@ static int _sl_verdict_light_view(const sl_verdict_rows *v, char *text, size_t n
 }
 
 /* The probe's rows: Lp Lv is W^-1 times the contract's answer, so the student's W is theirs times that. */
+/* The shadow matrix's three factors for a row of lab2_shadow_matrix's probe, as the contract defines them:
+ * W (the bias matrix), Lp = ortho(left, right, bottom, top, near, far), Lv = lookAt(eye, target, up). */
+static void _sl_shadow_factors(const float *in, double factors[3][16]) {
+    static const double w[16] = {0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 0.5, 0.5, 0.5, 1};
+    memcpy(factors[0], w, sizeof w);
+    double l = in[0], r = in[1], b = in[2], t = in[3], zn = in[4], zf = in[5];
+    double *p = factors[1];
+    memset(p, 0, 16 * sizeof *p);
+    p[0] = 2 / (r - l), p[5] = 2 / (t - b), p[10] = -2 / (zf - zn);
+    p[12] = -(r + l) / (r - l), p[13] = -(t + b) / (t - b), p[14] = -(zf + zn) / (zf - zn), p[15] = 1;
+    double f[3], sd[3], u[3], up[3] = {in[12], in[13], in[14]}, length = 0;
+    for (int i = 0; i < 3; i++) f[i] = in[9 + i] - in[6 + i], length += f[i] * f[i];
+    for (int i = 0; i < 3; i++) f[i] /= sqrt(length) + 1e-30;
+    sd[0] = f[1] * up[2] - f[2] * up[1], sd[1] = f[2] * up[0] - f[0] * up[2], sd[2] = f[0] * up[1] - f[1] * up[0];
+    length = sqrt(sd[0] * sd[0] + sd[1] * sd[1] + sd[2] * sd[2]) + 1e-30;
+    for (int i = 0; i < 3; i++) sd[i] /= length;
+    u[0] = sd[1] * f[2] - sd[2] * f[1], u[1] = sd[2] * f[0] - sd[0] * f[2], u[2] = sd[0] * f[1] - sd[1] * f[0];
+    double *m = factors[2];
+    memset(m, 0, 16 * sizeof *m);
+    for (int i = 0; i < 3; i++) m[i * 4 + 0] = sd[i], m[i * 4 + 1] = u[i], m[i * 4 + 2] = -f[i];
+    m[12] = -(sd[0] * in[6] + sd[1] * in[7] + sd[2] * in[8]);
+    m[13] = -(u[0] * in[6] + u[1] * in[7] + u[2] * in[8]);
+    m[14] = f[0] * in[6] + f[1] * in[7] + f[2] * in[8];
+    m[15] = 1;
+}
+
+/* The shadow matrix as another product of the contract's factors (one left out, or their order changed), or
+ * one of them transposed: the same product on every failing row, said as what it is. */
+static bool _sl_shadow_product(const sl_verdict_rows *v, char *text, size_t n, int *first_row) {
+    static const char *const names[3] = {"W", "Lp", "Lv"};
+    static const int orders[][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0},
+                                    {0, 1, -1}, {0, 2, -1}, {1, 2, -1}, {1, 0, -1}, {2, 0, -1}, {2, 1, -1},
+                                    {1, -1, -1}, {2, -1, -1}};
+    for (size_t o = 0; o < sizeof orders / sizeof orders[0]; o++)
+        for (int transposed = 0; transposed < 2; transposed++) {
+            if (o == 0 && !transposed) continue; /* the contract itself */
+            if (o == 8 && !transposed) continue; /* Lp * Lv: the bias-matrix reading below says it, rows written out */
+            bool all = true, any = false;
+            int first = -1;
+            for (int r = 0; r < v->k->rows && all; r++) {
+                if (!_sl_failed(v, r)) continue;
+                double factors[3][16], product[16], next[16];
+                _sl_shadow_factors(v->k->inputs[r], factors);
+                memcpy(product, factors[orders[o][0]], sizeof product);
+                for (int j = 1; j < 3 && orders[o][j] >= 0; j++) {
+                    _sl_mul(product, factors[orders[o][j]], next);
+                    memcpy(product, next, sizeof product);
+                }
+                for (int i = 0; i < 16 && all; i++) {
+                    double got = _sl_got(v, r, transposed ? (i % 4) * 4 + i / 4 : i);
+                    all &= fabs(got - product[i]) <= 1e-3 * (1 + fabs(product[i]));
+                }
+                any = true;
+                if (first < 0) first = r;
+            }
+            if (!all || !any) continue;
+            char said[40] = "";
+            size_t used = 0;
+            for (int j = 0; j < 3 && orders[o][j] >= 0; j++)
+                used += (size_t)snprintf(said + used, sizeof said - used, "%s%s", j ? " * " : "", names[orders[o][j]]);
+            int count = orders[o][2] >= 0 ? 3 : orders[o][1] >= 0 ? 2 : 1;
+            const char *missing = count == 3 ? "" : count == 1 ? " (two factors left out)"
+                                  : orders[o][0] != 0 && orders[o][1] != 0 ? " (the bias matrix W left out)"
+                                  : orders[o][0] != 1 && orders[o][1] != 1 ? " (the light's projection Lp left out)"
+                                                                          : " (the light's view Lv left out)";
+            snprintf(text, n, "it is %s%s%s%s, where the contract says W * Lp * Lv: the bias matrix, then the light's "
+                              "projection, then its view (the first to act on a point is the rightmost)",
+                     transposed ? "(" : "", said, transposed ? ") transposed" : "", missing);
+            *first_row = first;
+            return true;
+        }
+    return false;
+}
+
 static int _sl_verdict_shadow_matrix(const sl_verdict_rows *v, char *text, size_t n) {
     static const double w_inverse[16] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, -1, -1, -1, 1};
+    int product_row = -1;
+    if (_sl_shadow_product(v, text, n, &product_row)) return product_row;
     char first_text[600] = "";
     int first = -1;
     for (int r = 0; r < v->k->rows; r++) {

@@ -288,7 +288,7 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         return first_capped;
     }
     /* Where the clamp does not act: which function of the angle does the slope term follow? */
-    int rows_seen = 0, as_sin = 0, as_angle = 0, as_one_minus = 0, as_max_one_minus = 0, first = -1;
+    int rows_seen = 0, as_sin = 0, as_angle = 0, as_one_minus = 0, as_max_one_minus = 0, as_converted = 0, first = -1;
     double ratio_lo = INFINITY, ratio_hi = -INFINITY, term_lo = INFINITY, term_hi = -INFINITY;
     for (int r = 0; r < rows; r++) {
         const float *in = v->k->inputs[r];
@@ -304,6 +304,9 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         rows_seen++;
         as_sin += _sl_near(term, sin_t, 0.02 * sin_t + 1e-4);
         as_angle += _sl_near(term, tan(cos_t), 0.02 * tan(cos_t) + 1e-4) || _sl_near(term, acos(cos_t), 0.02);
+        /* acos's angle, in radians already, converted again as if it were in degrees */
+        double converted = tan(acos(cos_t) * 3.14159265358979323846 / 180.0);
+        as_converted += _sl_near(term, converted, 0.03 * converted + 1e-5);
         /* 1 - N.L: LearnOpenGL's bias, max(0.05 * (1 - N.L), 0.005), or that term added to the constant */
         double one_minus = slope * (1 - cos_t);
         as_one_minus += _sl_near(s, c + one_minus, 0.02 * (c + one_minus) + 1e-7);
@@ -332,7 +335,14 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         snprintf(text, n, "N.L used as an angle: n_dot_l is cos(theta) already; tan(theta) = sqrt(1 - cos^2) / cos");
         return first;
     }
-    if (fabs(term_hi) <= 0.02 && fabs(term_lo) <= 0.02) {
+    if (as_converted == rows_seen && rows_seen >= 2) {
+        snprintf(text, n, "the angle is converted as if it were in degrees: the slope term is tan(radians(acos(N.L))), "
+                          "about 57 times too small, where acos already gives radians — tan(acos(N.L)), or "
+                          "sqrt(1 - cos^2) / cos");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+        return first;
+    }
+    if (fabs(term_hi) <= 0.003 && fabs(term_lo) <= 0.003) {
         snprintf(text, n, "the slope term is missing: the constant alone, too small where the surface turns away "
                           "from the light — min(constant + slope * tan(theta), max_bias)");
         return first;

@@ -715,8 +715,7 @@ static void _sl_lab5_lookup_function(const sl_case *c, const char **function, co
 const sl_lab_diagnoses sl_lab5_diagnoses = {
     .lab = 5,
     .lookup_function = _sl_lab5_lookup_function,
-    .unprobed = {{"lab5_create_moments_target", 5, "TODO(lab5.1)", false},
-                 {"lab5_begin_moments_pass", 5, "TODO(lab5.2)", false},
+    .unprobed = {{"lab5_begin_moments_pass", 5, "TODO(lab5.2)", false},
                  {"lab5_begin_blur_pass", 5, "TODO(lab5.4)", false},
                  {"lab5_filter_moments", 5, "TODO(lab5.6)", false}},
     .filtered_lookup = true,

@@ -205,6 +205,37 @@ static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
         if (first < 0) first = r;
     }
     if (!failing) return -1;
+    /* a radius that is the farthest corner's squared distance (a squared length, cglm's glm_vec3_distance2) */
+    int squared = 0;
+    double factor_lo = INFINITY, factor_hi = -INFINITY;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double own[4];
+        _sl_sphere(in, in[10], in[11], own);
+        squared += fabs(_sl_got(v, r, 3) - own[3] * own[3]) <= 1e-3 * own[3] * own[3] + (double)v->k->above[3];
+        /* the centre as a multiple of the corners' mean (a sum divided by another count) */
+        for (int i = 0; i < 3; i++)
+            if (fabs(own[i]) > 0.1) {
+                factor_lo = fmin(factor_lo, _sl_got(v, r, i) / own[i]);
+                factor_hi = fmax(factor_hi, _sl_got(v, r, i) / own[i]);
+            }
+    }
+    if (squared == failing) {
+        snprintf(text, n, "the radius is the squared distance to the farthest corner (%.4g where that corner is %.4g m "
+                          "away): a squared length, as cglm's glm_vec3_distance2 gives — take its square root, or "
+                          "glm_vec3_distance", _sl_got(v, first, 3), sqrt(_sl_got(v, first, 3)));
+        return first;
+    }
+    if (factor_lo <= factor_hi && fabs(factor_hi - factor_lo) <= 1e-3 * fabs(factor_hi) && fabs(factor_lo - 1) > 0.01) {
+        double count = 8 / factor_lo;
+        char divisor[80] = "";
+        if (count >= 1 && fabs(count - round(count)) <= 1e-3 * count)
+            snprintf(divisor, sizeof divisor, ": the sum of the 8 corners divided by %.0f, not by 8", round(count));
+        snprintf(text, n, "the centre is %.4g times the corners' mean%s — the centre is the mean of the slice's 8 "
+                          "corners", factor_lo, divisor);
+        return first;
+    }
     if (rounded == failing && v->k->above[3] > 0) {
         snprintf(text, n, "the radius is %.3g m larger than the farthest corner's distance, and the lab lets it be "
                           "rounded up by %g m at most: round up to a multiple of 1/%g m (ceil(r * %g) / %g) or not "

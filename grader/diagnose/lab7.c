@@ -703,6 +703,12 @@ static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, con
         if (first_sum < 0) first_sum = row;
         sum_same += fabs(s[row] - s[first_sum]) <= 1e-4 && fabs(s[row] - 1) > 0.01 && s[row] > 0.05;
     }
+    if (sum_rows > 0 && sum_same == sum_rows && fabs(s[first_sum] * 20 - 1) <= 0.005) {
+        snprintf(text, n, "only one sample counts: an empty map gives %.4g = 1/20, one lit sample divided by the 20 "
+                          "directions' count — the sum is overwritten in the loop (= where += belongs) "
+                          "or reset inside it", s[first_sum]);
+        return first_sum;
+    }
     if (sum_rows > 0 && sum_same == sum_rows) {
         snprintf(text, n, "the weights sum to %.4g, not 1 (an empty map gives %.4g): divide the sum of the results by "
                           "the number of samples taken, all 20 directions", s[first_sum], s[first_sum]);

@@ -41,7 +41,8 @@ static void _sl_value(double v, char *out, size_t n) { _sl_value_named(v, false,
 
 /* Outputs that hold GL enums: a filter, a face, a function, a wrap mode. */
 static bool _sl_output_is_enum(const char *name) {
-    return strstr(name, "filter") || strstr(name, "face") || strstr(name, "function") || strstr(name, "wrap");
+    return strstr(name, "filter") || strstr(name, "face") || strstr(name, "function") || strstr(name, "wrap") ||
+           strstr(name, "internal format");
 }
 
 /* "n_dot_l = 0.05, constant_bias = 0.0005, shadow_map = step" */
@@ -216,6 +217,10 @@ static const struct {
     {"mag filter", "the magnification filter is its own parameter, glTexParameteri(..., GL_TEXTURE_MAG_FILTER, ...)"},
     {"border depth", "a lookup past the edge reads the border colour's first component: GL_TEXTURE_BORDER_COLOR "
                      "(1, 1, 1, 1), with GL_CLAMP_TO_BORDER"},
+    {"a depth buffer on framebuffer[0]", "the moments pass tests depth on its own: a depth renderbuffer at "
+                                     "GL_DEPTH_ATTACHMENT of framebuffer[0], attached while framebuffer[0] is bound"},
+    {"each framebuffer's own texture at GL_COLOR_ATTACHMENT0", "a framebuffer draws into the attachment its draw "
+                                                               "buffer names, GL_COLOR_ATTACHMENT0 for both"},
 };
 
 /* One state alone wrong: the same single output differs on every failing row of a C function that sets
@@ -537,7 +542,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
      * come after the written rows' verdicts, each written to tell apart mistakes such slips confuse (a
      * bias left out and one negated fit the same rows). Code still the stub's is "not implemented",
      * never a slip. */
-    bool stub_shader = f->glsl && sl_diag_still_the_stub(f->file, f->name) == 1;
+    bool stub_shader = f->glsl && sl_diag_still_the_stub(f->file, sl_probe_entry(f)) == 1;
     char slip[sizeof verdict];
     sl_probe_slip slip_kind = stub_shader ? SL_PROBE_SLIP_NONE
                                           : sl_probe_generic_slip(k, cap->numbers, ref->numbers, slip, sizeof slip);
@@ -553,6 +558,18 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     if (!verdict[0] && slip_kind != SL_PROBE_SLIP_NONE) {
         snprintf(verdict, sizeof verdict, "%s", slip);
         shown = first;
+    }
+    if (!verdict[0] && !f->glsl) {
+        /* a C function answers every output NaN only where it did not return SL_OK */
+        bool all_failed = failing > 0;
+        for (int row = 0; row < k->rows && all_failed; row++)
+            for (int o = 0; (out->failing_rows >> row) & 1u && o < f->output_count; o++)
+                all_failed &= isnan(cap->numbers[row * f->output_count + o]);
+        const char *gl = sl_result_gl_error(r, f->name);
+        if (all_failed)
+            snprintf(verdict, sizeof verdict, "it returned SL_FAILED on %s, where the contract makes %s and returns SL_OK%s%s%s",
+                     failing == k->rows ? "every row" : "every row that differs", k->rows > 1 ? "them" : "it",
+                     gl ? "; GL reported, while it ran: \"" : "", gl ? gl : "", gl ? "\"" : "");
     }
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
     if (!verdict[0]) {

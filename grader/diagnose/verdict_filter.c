@@ -332,7 +332,14 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
      * width all read a working comparison); the row that shows it is quoted as measured */
     if (kernel && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0 && _sl_got(v, row, 0) <= 0.05) return row;
     if (kernel && (row = _sl_first_failing(v, _SL_ROW_EMPTY_MAP)) >= 0) {
-        double sum = _sl_got(v, row, 0);
+        double sum = _sl_got(v, row, 0), count = sum > 0 ? 1 / sum : 0;
+        /* exactly one over a whole count: one sample's result divided by the count of them all */
+        if (count >= 5 && fabs(count - round(count)) <= 0.005 * count) {
+            snprintf(text, n, "only one sample counts: nothing in front gives %.4g = 1/%.0f, one lit sample divided by "
+                              "the %.0f samples' count — the sum is overwritten in the loop (= where += belongs) "
+                              "or reset inside it", sum, round(count), round(count));
+            return row;
+        }
         /* a sum off 1 is a divisor that is not the count of samples taken: none, the wrong count, or loops
          * that take fewer (or more) samples than the count divided by */
         snprintf(text, n, "the weights sum to %.4g, not 1 (nothing in front gives %.4g): the kernel is not normalised "

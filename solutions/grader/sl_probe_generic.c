@@ -155,6 +155,10 @@ static const char *const _sl_depth_vert_slips[][2] = {
     {"(a_position, 1) * u_model * u_light_view_projection: a row vector, the matrices transposed",
      "u_light_view_projection * u_model * (a_position, 1): GLSL's matrices multiply column vectors"},
     {"gl_Position divided by its w", "gl_Position as the product gives it: the GPU divides by w after the vertex shader"},
+    {"the product with its w set to 1 (a perspective's divide lost)", "gl_Position as the product gives it, its w "
+                                                                       "included: the GPU divides by w"},
+    {"x and y moved to [0, 1] (0.5 * v + 0.5): texture space", "clip space: the rasterizer maps x and y in [-w, w] "
+                                                               "onto the viewport itself"},
     {NULL, NULL},
 };
 
@@ -187,6 +191,9 @@ static void _sl_expect_depth_vert(const sl_probe_function *f, const float *row, 
         for (int i = 0; i < 3; i++) out[i] /= out[3];
         out[3] = 1;
     }
+    if (slip == 7) out[3] = 1;
+    if (slip == 8)
+        for (int i = 0; i < 2; i++) out[i] = 0.5 * out[i] + 0.5;
 }
 
 /* lab 7: cube_depth.frag's gl_FragDepth = length(world_position - u_light_position) / u_light_far, for a
@@ -616,6 +623,8 @@ static const char *const _sl_chebyshev_slips[][2] = {
     {"no lit test for t <= mu: the bound used in front of the mean too", "t <= mu: fully lit (1.0)"},
     {"1 - p_max returned", "p_max = variance / (variance + d * d)"},
     {"min_variance added to the variance clamped at 0: max(variance, 0) + min_variance", "variance = max(moments.y - mu * mu, min_variance)"},
+    {"sigma = sqrt(variance) where the bound takes the variance itself: sigma / (sigma + d * d)",
+     "p_max = sigma^2 / (sigma^2 + d^2): the variance, not the standard deviation"},
     {NULL, NULL},
 };
 
@@ -629,6 +638,7 @@ static void _sl_expect_chebyshev(const sl_probe_function *f, const float *row, i
     double raw = slip == 1 ? m2 - mu : m2 - mu * mu;
     double variance = slip == 2 ? raw : slip == 3 ? fmin(raw, min_variance) : slip == 4 ? raw + min_variance
                     : slip == 8 ? fmax(raw, 0) + min_variance : fmax(raw, min_variance);
+    if (slip == 9) variance = sqrt(variance);
     double d = t - mu, p = variance / (variance + (slip == 5 ? d : d * d));
     out[0] = slip == 7 ? 1 - p : p;
 }
