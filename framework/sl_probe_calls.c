@@ -481,11 +481,64 @@ static sl_status _sl_row_lab5_create_moments_target(const float *in, double *out
     return status;
 }
 
+/* lab1_destroy_shadow_map and lab7_destroy_cube_map on objects the probe makes (a framebuffer with a texture
+ * attached, size x size), with a texture and a framebuffer of the probe's own beside them: whether the
+ * map's objects are gone, whether its fields are 0, and whether the others are untouched. */
+static sl_status _sl_call_destroy(int lab, int size, double *out) {
+    GLuint bystanders[2] = {0}, framebuffer = 0, texture = 0;
+    GLenum target = lab == 7 ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    glGenTextures(1, &bystanders[0]);
+    glBindTexture(GL_TEXTURE_2D, bystanders[0]);
+    glGenFramebuffers(1, &bystanders[1]);
+    glBindFramebuffer(GL_FRAMEBUFFER, bystanders[1]);
+    glGenTextures(1, &texture);
+    glBindTexture(target, texture);
+    for (int face = 0; face < (lab == 7 ? 6 : 1); face++)
+        glTexImage2D(lab == 7 ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face : GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24,
+                     size, size, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                           lab == 7 ? GL_TEXTURE_CUBE_MAP_POSITIVE_X : GL_TEXTURE_2D, texture, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindTexture(target, 0);
+    bool zeroed;
+    if (lab == 7) {
+        sl_cube_map map = {.framebuffer = framebuffer, .depth_cube = texture, .size = size};
+        sl_build_lab_functions.lab7_destroy_cube_map(&map);
+        zeroed = map.framebuffer == 0 && map.depth_cube == 0 && map.size == 0;
+    } else {
+        sl_shadow_map map = {.framebuffer = framebuffer, .depth_texture = texture, .size = size};
+        sl_build_lab_functions.lab1_destroy_shadow_map(&map);
+        zeroed = map.framebuffer == 0 && map.depth_texture == 0 && map.size == 0;
+    }
+    while (glGetError() != GL_NO_ERROR) {}
+    out[0] = !glIsFramebuffer(framebuffer);
+    out[1] = !glIsTexture(texture);
+    out[2] = zeroed;
+    out[3] = glIsTexture(bystanders[0]) && glIsFramebuffer(bystanders[1]);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &texture);
+    glDeleteFramebuffers(1, &bystanders[1]);
+    glDeleteTextures(1, &bystanders[0]);
+    return SL_OK; /* a void function: what it did is all there is to read */
+}
+
+static sl_status _sl_row_lab1_destroy_shadow_map(const float *in, double *out) {
+    return _sl_call_destroy(1, (int)in[0], out);
+}
+
+static sl_status _sl_row_lab7_destroy_cube_map(const float *in, double *out) {
+    return _sl_call_destroy(7, (int)in[0], out);
+}
+
 /* ---- each lab's list, for its technique's descriptor ---- */
 
 const sl_technique_probe sl_lab1_probes[] = {
     {.function = "lab1_create_shadow_map", .run_row = _sl_row_lab1_create_shadow_map},
     {.function = "lab1_begin_depth_pass", .run_row = _sl_row_lab1_begin_depth_pass},
+    {.function = "lab1_destroy_shadow_map", .run_row = _sl_row_lab1_destroy_shadow_map},
     {0},
 };
 const sl_technique_probe sl_lab2_probes[] = {
@@ -517,5 +570,6 @@ const sl_technique_probe sl_lab7_probes[] = {
     {.function = "lab7_begin_cube_pass", .run_row = _sl_row_lab7_begin_cube_pass},
     {.function = "lab7_face_view", .run_row = _sl_row_lab7_face_view},
     {.function = "lab7_face_projection", .run_row = _sl_row_lab7_face_projection},
+    {.function = "lab7_destroy_cube_map", .run_row = _sl_row_lab7_destroy_cube_map},
     {0},
 };

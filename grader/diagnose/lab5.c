@@ -14,6 +14,7 @@
 #include "sl_gl.h"
 #include "sl_probe.h"
 #include "sl_verdict.h"
+#include "verdict_rows.h"
 
 /* One channel of an image, as an image of its own (the compare's threshold then holds per channel). */
 static sl_image _sl_channel(const sl_image *img, int channel) {
@@ -76,6 +77,39 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
                 sl_gl_enum_name(format), red, is_float ? "float" : "fixed point", red);
     sl_diag_cause_in(out, "lab5_create_moments_target", "create moments[0] and moments[1] as GL_RG32F (TODO(lab5.1) in labs/lab5_vsm/lab5.c)");
     return false;
+}
+
+/* lab5_create_moments_target's probe: its textures' internal formats alone wrong, said as the moments' capture
+ * says them (a lost channel, or too few bits for the variance). */
+static int _sl_verdict_moments_target(const sl_verdict_rows *v, char *text, size_t n) {
+    int first = -1;
+    GLenum format = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        for (int o = 2; o < v->f->output_count; o++)
+            if (fabs(_sl_got(v, r, o) - _sl_want(v, r, o)) > 1e-6) return -1; /* more than the format */
+        for (int o = 0; o < 2; o++)
+            if (_sl_got(v, r, o) != _sl_want(v, r, o) && !format) format = (GLenum)_sl_got(v, r, o);
+        if (first < 0) first = r;
+    }
+    if (first < 0 || !format) return -1;
+    int bits = format == GL_RG16F || format == GL_RG16 || format == GL_R16F || format == GL_R16 ? 16
+               : format == GL_RG8 || format == GL_R8                                           ? 8
+                                                                                                : 0;
+    bool one_channel = format == GL_R32F || format == GL_R16F || format == GL_R16 || format == GL_R8;
+    if (one_channel)
+        snprintf(text, n, "the moments are stored as %s, which has no green channel: the second moment E[x^2] is "
+                          "dropped — create moments[0] and moments[1] as GL_RG32F, format GL_RG",
+                 sl_gl_enum_name(format));
+    else if (bits)
+        snprintf(text, n, "the moments are stored as %s (%d-bit %s per channel): the variance E[x^2] - E[x]^2 is the "
+                          "difference of two nearly equal numbers, and %d bits round it away (precision): create "
+                          "moments[0] and moments[1] as GL_RG32F",
+                 sl_gl_enum_name(format), bits, format == GL_RG16F || format == GL_R16F ? "float" : "fixed point", bits);
+    else
+        snprintf(text, n, "the moments are stored as %s: create moments[0] and moments[1] as GL_RG32F, two 32-bit "
+                          "float channels for the depth and its square", sl_gl_enum_name(format));
+    return first;
 }
 
 static bool _sl_mipmapped(double filter) {
@@ -715,6 +749,7 @@ static void _sl_lab5_lookup_function(const sl_case *c, const char **function, co
 const sl_lab_diagnoses sl_lab5_diagnoses = {
     .lab = 5,
     .lookup_function = _sl_lab5_lookup_function,
+    .functions = {{"lab5_create_moments_target", _sl_verdict_moments_target}},
     .unprobed = {{"lab5_begin_moments_pass", 5, "TODO(lab5.2)", false},
                  {"lab5_begin_blur_pass", 5, "TODO(lab5.4)", false},
                  {"lab5_filter_moments", 5, "TODO(lab5.6)", false}},

@@ -94,6 +94,22 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
                  y_wrong ? "x" : "y", y_wrong ? "(0, 1)" : "(1, 0)", y_wrong ? "(1, 0)" : "(0, 1)");
         return y_wrong ? first_y : first_x;
     }
+    /* every failing row gives the moments of the map's corner texel, wherever uv is (one of them where its
+     * own texel holds another): the lookup does not follow uv */
+    int at_corner = 0, elsewhere = 0;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        double corner = sl_probe_moments_depth((sl_probe_map)(int)in[0], 0, 0);
+        at_corner += fabs(_sl_got(v, r, 0) - corner) < 1e-5 && fabs(_sl_got(v, r, 1) - corner * corner) < 1e-5;
+        elsewhere += fabs(_sl_centre_texel(in) - corner) > 1e-3;
+    }
+    if (at_corner == failing && elsewhere > 0) {
+        snprintf(text, n, "it reads the map's corner, texel (0, 0), wherever uv is: every failing row gives the moments "
+                          "stored there — uv made an integer before it is scaled to texels? ivec2(uv * size), not "
+                          "ivec2(uv) * size (or sample at uv, not at a constant)");
+        return first;
+    }
     /* rows that differ in the radius alone, the same answer where the solution's differ: on every such pair */
     bool radius_free = true;
     for (int a = 0; a < rows; a++)

@@ -217,6 +217,13 @@ static const struct {
     {"mag filter", "the magnification filter is its own parameter, glTexParameteri(..., GL_TEXTURE_MAG_FILTER, ...)"},
     {"border depth", "a lookup past the edge reads the border colour's first component: GL_TEXTURE_BORDER_COLOR "
                      "(1, 1, 1, 1), with GL_CLAMP_TO_BORDER"},
+    {"map's depth texture deleted", "glDeleteTextures gives a texture back, glDeleteFramebuffers a framebuffer: each "
+                                    "kind of object has names of its own"},
+    {"map's cube map deleted", "glDeleteTextures gives a texture back, glDeleteFramebuffers a framebuffer: each kind "
+                               "of object has names of its own"},
+    {"map's framebuffer deleted", "glDeleteFramebuffers(1, &map->framebuffer) gives the framebuffer back"},
+    {"map's fields zeroed", "after the objects are deleted their names are stale: set the fields to 0, so nothing "
+                            "uses them again"},
     {"a depth buffer on framebuffer[0]", "the moments pass tests depth on its own: a depth renderbuffer at "
                                      "GL_DEPTH_ATTACHMENT of framebuffer[0], attached while framebuffer[0] is bound"},
     {"each framebuffer's own texture at GL_COLOR_ATTACHMENT0", "a framebuffer draws into the attachment its draw "
@@ -494,7 +501,14 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         if ((out->failing_rows >> row) & 1u) out->row_predicts[row] = sl_probe_row_predicts(&rows, row);
     /* The stub's answers on every row, from code that is not the stub's (as handed out, up to comments and
      * spaces): written, but answering as the stub does; never "not implemented". */
-    if (all_stub && f->glsl && sl_diag_still_the_stub(f->file, sl_probe_entry(f)) == 0) all_stub = false;
+    bool measured_stub = f->glsl || f->stub_outputs; /* a C stub that returns no status: what it did */
+    if (all_stub && measured_stub && sl_diag_still_the_stub(f->file, sl_probe_entry(f)) == 0) all_stub = false;
+    if (all_stub && !f->glsl && measured_stub) {
+        sl_diag_say(out, "not implemented: %s() still does what its stub does, nothing (%s in %s)", f->name, todo, file);
+        sl_utf8_copy(out->summary, sizeof out->summary, out->message);
+        out->settled = out->stub = true;
+        return;
+    }
     if (all_stub && f->glsl) {
         char stub[96];
         const char *writes = f->stage == SL_PROBE_VERTEX_MAIN     ? " gl_Position ="

@@ -66,7 +66,9 @@ static int _sl_texel(double u) {
     return i < 0 ? 0 : i >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : i;
 }
 
+/* The synthetic map as the probe binds it: past its edge, the border's depth 1.0 (GL_CLAMP_TO_BORDER) */
 static double _sl_map_at(sl_probe_map map, double u, double v) {
+    if (u < 0 || u >= 1 || v < 0 || v >= 1) return 1.0;
     return (double)sl_probe_map_depth(map, _sl_texel(u), _sl_texel(v));
 }
 
@@ -93,6 +95,8 @@ typedef struct _sl_generic {
     /* the contract's formula in sl_probe_formula's language (NULL: a loop or a texture the language does
      * not hold); its one-edit variants are slips no catalogue has to list */
     const char *formula;
+    /* catalogued slips (bit i: slip i) no written-row verdict names: they lead, as an edit of the formula does */
+    uint64_t leading;
 } _sl_generic;
 
 /* lab 1: a map of any size (never one a scene uses), with the lab's filtering and border */
@@ -214,6 +218,9 @@ static void _sl_draw_cube_depth(const sl_probe_function *f, _sl_rng *r, int inde
     /* one row in three within a unit of the light, where a distance left undivided is still below 1 */
     double distance = index % 3 == 0 ? _sl_uniform(r, 0.3, 0.95) : _sl_uniform(r, 0.15, 0.85) * far, world[3];
     for (int j = 0; j < 3; j++) d[j] *= distance / length, world[j] = light[j] + d[j];
+    /* the face camera's near plane in front of the fragment, or the fragment is clipped and writes nothing */
+    double axis = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    near = fmin(near, 0.5 * axis);
     _sl_set(f, row, "world_position", world);
     _sl_set(f, row, "u_light_position", light);
     _sl_set1(f, row, "u_light_far", far);
@@ -350,6 +357,7 @@ typedef enum _sl_grid_slip {
     _SL_GRID_BIAS_ON_XY,   /* vec3(p.xy, p.z) - bias: the lookup moved as well */
     _SL_GRID_NO_BIAS,
     _SL_GRID_BIAS_ADDED,
+    _SL_GRID_CENTRE_DRIFTS, /* p.xy += offset in the loop: each sample from where the last one was */
 } _sl_grid_slip;
 
 /* The bias's slips, in _sl_grid_slip's order from _SL_GRID_BIAS_OVER_W. */
@@ -390,6 +398,8 @@ static const char *const _sl_grid_slips[][2] = {
     {"offsets in whole uv units (x, y), not in texels", "offsets (x, y) * texel, texel = 1.0 / textureSize(shadow_map, 0)"},
     {"offsets two texels apart", "offsets one texel apart"},
     _SL_BIAS_SLIPS,
+    {"the centre moved by each offset in the loop (p.xy += offset): the samples wander along a running sum",
+     "every sample at p.xy + (x, y) * texel, around the same centre"},
     {NULL, NULL},
 };
 
@@ -415,10 +425,15 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     int hi = slip == _SL_GRID_ONE_SHORT || slip == _SL_GRID_ONE_SHORT_FULL_COUNT ? radius - 1 : radius;
     int y0 = slip == _SL_GRID_ONE_ROW ? 0 : -radius, y1 = slip == _SL_GRID_ONE_ROW ? 0 : hi;
     if (radius == 0) hi = y1 = 0;
-    double lit = 0, taps = 0;
+    double lit = 0, taps = 0, drift_u = 0, drift_v = 0;
     for (int y = y0; y <= y1; y++)
         for (int x = -radius; x <= hi; x++, taps++) {
-            bool behind = z - bias > _sl_map_at(map, u + x * texel, v + y * texel);
+            double su = u + x * texel, sv = v + y * texel;
+            if (slip == _SL_GRID_CENTRE_DRIFTS) {
+                drift_u += x * texel, drift_v += y * texel;
+                su = u + drift_u, sv = v + drift_v;
+            }
+            bool behind = z - bias > _sl_map_at(map, su, sv);
             lit += behind == (slip == _SL_GRID_REVERSED) ? 1 : 0;
         }
     double side = 2 * radius + 1;
@@ -882,35 +897,35 @@ static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row
 }
 
 static const _sl_generic _sl_generics[] = {
-    {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map, NULL, NULL},
-    {"depth.vert", _sl_draw_depth_vert, _sl_expect_depth_vert, _sl_depth_vert_slips, NULL},
-    {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord, _sl_shadow_coord_slips, NULL},
-    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL},
-    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL},
+    {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map, NULL, NULL, 0},
+    {"depth.vert", _sl_draw_depth_vert, _sl_expect_depth_vert, _sl_depth_vert_slips, NULL, 0},
+    {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord, _sl_shadow_coord_slips, NULL, 0},
+    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL, 0},
+    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL, 0},
     {"slope_scaled_bias", _sl_draw_slope_bias, _sl_expect_slope_bias, _sl_slope_bias_slips,
-     "tan_theta = sqrt(1 - n_dot_l * n_dot_l) / n_dot_l; min(constant_bias + slope * tan_theta, max_bias)"},
+     "tan_theta = sqrt(1 - n_dot_l * n_dot_l) / n_dot_l; min(constant_bias + slope * tan_theta, max_bias)", 0},
     {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset, _sl_normal_offset_slips,
-     "world_position[i] + normal[i] * texels * texel_world_size * (1 - n_dot_l)"},
-    {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid, _sl_grid_slips, NULL},
-    {"compute_moments", _sl_draw_moments, _sl_expect_moments, _sl_moments_slips, "if(i == 0, depth, depth * depth)"},
-    {"blur_moments", _sl_draw_blur, _sl_expect_blur, _sl_blur_slips, NULL},
+     "world_position[i] + normal[i] * texels * texel_world_size * (1 - n_dot_l)", 0},
+    {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid, _sl_grid_slips, NULL, 1ull << _SL_GRID_CENTRE_DRIFTS},
+    {"compute_moments", _sl_draw_moments, _sl_expect_moments, _sl_moments_slips, "if(i == 0, depth, depth * depth)", 0},
+    {"blur_moments", _sl_draw_blur, _sl_expect_blur, _sl_blur_slips, NULL, 0},
     {"chebyshev_upper_bound", _sl_draw_chebyshev, _sl_expect_chebyshev, _sl_chebyshev_slips,
      "mu = moments[0]; variance = max(moments[1] - mu * mu, min_variance); d = t - mu; "
-     "if(t <= mu, 1, variance / (variance + d * d))"},
+     "if(t <= mu, 1, variance / (variance + d * d))", 0},
     {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding, _sl_bleeding_slips,
-     "clamp((p_max - amount) / (1 - amount), 0, 1)"},
+     "clamp((p_max - amount) / (1 - amount), 0, 1)", 0},
     {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits, _sl_splits_slips,
      "t = i / count; logarithmic = near * pow(far / near, t); linear = near + (far - near) * t; "
-     "if(i > count, 0, if(i == 0, near, if(i == count, far, lambda * logarithmic + (1 - lambda) * linear)))"},
-    {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index, _sl_cascade_index_slips, NULL},
+     "if(i > count, 0, if(i == 0, near, if(i == count, far, lambda * logarithmic + (1 - lambda) * linear)))", 0},
+    {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index, _sl_cascade_index_slips, NULL, 0},
     {"cascade_blend", _sl_draw_blend, _sl_expect_blend, _sl_blend_slips,
      "start = split_far - band * (split_far - split_near); "
-     "if(band <= 0, 0, clamp((view_depth - start) / (split_far - start), 0, 1))"},
-    {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection, _sl_face_projection_slips, NULL},
-    {"cube_depth.frag", _sl_draw_cube_depth, _sl_expect_cube_depth, _sl_cube_depth_slips, NULL},
+     "if(band <= 0, 0, clamp((view_depth - start) / (split_far - start), 0, 1))", 0},
+    {"lab7_face_projection", _sl_draw_face_projection, _sl_expect_face_projection, _sl_face_projection_slips, NULL, 0},
+    {"cube_depth.frag", _sl_draw_cube_depth, _sl_expect_cube_depth, _sl_cube_depth_slips, NULL, 0},
     {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow, _sl_point_shadow_slips,
      "current = length(light_to_fragment) / far_plane - bias; closest = if(major_positive(light_to_fragment), 0.1, 1); "
-     "if(current > closest, 0, 1)"},
+     "if(current > closest, 0, 1)", 0},
 };
 
 static const _sl_generic *_sl_find(const char *function) {
@@ -1289,7 +1304,9 @@ sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, co
         snprintf(out, n, formula_slip ? "on every row it answers as if it computed %s"
                                       : "on every row it answers as the contract does with %s",
                  words[0]);
-        return groups.first[0].edit > 0 ? SL_PROBE_SLIP_EDIT
+        bool leads = groups.first[0].formula_slip > 0 && groups.first[0].formula_slip < 64 &&
+                     ((g->leading >> groups.first[0].formula_slip) & 1u);
+        return groups.first[0].edit > 0 || leads ? SL_PROBE_SLIP_EDIT
              : formula_slip              ? SL_PROBE_SLIP_OF_FORMULA
                                          : SL_PROBE_SLIP_OF_INPUT;
     }
