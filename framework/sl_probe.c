@@ -29,8 +29,8 @@ static const sl_probe_function _sl_functions[] = {
     /* lab 1: the depth pass's state, on a map the probe makes (its depth texture filled with 0.5) */
     {.name = "lab1_begin_depth_pass", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.3",
      .outputs = "map's framebuffer bound,viewport width,viewport height,depth test,depth function,depth writes,"
-                "depth after the call",
-     .output_count = 7, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
+                "depth after the call,culling on",
+     .output_count = 8, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
     /* lab 1: the map given back, beside objects of the probe's own; the stub does nothing */
     {.name = "lab1_destroy_shadow_map", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.5",
      .outputs = "map's framebuffer deleted,map's depth texture deleted,map's fields zeroed,other objects untouched",

@@ -64,6 +64,7 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_FALSE);
+    _sl_neutral_depth_state(); /* no culling: a pass that switches it on culls faces lab 1 draws */
     sl_status status = labs->lab1_begin_depth_pass(&map);
     GLint bound = 0, viewport[4] = {0}, func = 0;
     GLboolean writes = GL_FALSE;
@@ -81,6 +82,8 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     glBindFramebuffer(GL_READ_FRAMEBUFFER, map.framebuffer);
     glReadPixels(size / 2, size / 2, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
     out[6] = depth;
+    out[7] = glIsEnabled(GL_CULL_FACE);
+    _sl_neutral_depth_state();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &map.framebuffer);
     glDeleteRenderbuffers(2, renderbuffers);

@@ -217,6 +217,8 @@ static const struct {
     {"mag filter", "the magnification filter is its own parameter, glTexParameteri(..., GL_TEXTURE_MAG_FILTER, ...)"},
     {"border depth", "a lookup past the edge reads the border colour's first component: GL_TEXTURE_BORDER_COLOR "
                      "(1, 1, 1, 1), with GL_CLAMP_TO_BORDER"},
+    {"culling on", "lab 1's depth pass draws every face it is given: whether to cull is lab 3's choice "
+                   "(lab3_depth_pass_state), and a culled face writes no depth"},
     {"map's depth texture deleted", "glDeleteTextures gives a texture back, glDeleteFramebuffers a framebuffer: each "
                                     "kind of object has names of its own"},
     {"map's cube map deleted", "glDeleteTextures gives a texture back, glDeleteFramebuffers a framebuffer: each kind "
