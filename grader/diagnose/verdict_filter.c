@@ -362,7 +362,8 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
                               "depths nearer than p.z - bias are the blockers");
         else
             snprintf(text, n, "samples land off the map: with an occluder over the whole map it still gives %.3g lit — "
-                              "the kernel is far too wide; scale the offsets by the texel size, 1.0 / textureSize(map, 0)",
+                              "the kernel is far too wide, or not around p.xy: offsets scaled by the texel size, "
+                              "1.0 / textureSize(map, 0), and added to p.xy (the point itself unmoved, unrotated)",
                      _sl_got(v, row, 0));
         return row;
     }
