@@ -484,9 +484,10 @@ static sl_status _sl_row_lab5_create_moments_target(const float *in, double *out
     return status;
 }
 
-/* lab1_destroy_shadow_map and lab7_destroy_cube_map on objects the probe makes (a framebuffer with a texture
- * attached, size x size), with a texture and a framebuffer of the probe's own beside them: whether the
- * map's objects are gone, whether its fields are 0, and whether the others are untouched. */
+/* lab1_destroy_shadow_map and lab7_destroy_cube_map on objects the probe makes (a framebuffer and a texture
+ * of the map's kind, made by binding them: how a map is made is the create steps' to write, and this file
+ * ships to students), with a texture and a framebuffer of the probe's own beside them: whether the map's
+ * objects are gone, whether its fields are 0, and whether the others are untouched. */
 static sl_status _sl_call_destroy(int lab, int size, double *out) {
     GLuint bystanders[2] = {0}, framebuffer = 0, texture = 0;
     GLenum target = lab == 7 ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
@@ -496,13 +497,8 @@ static sl_status _sl_call_destroy(int lab, int size, double *out) {
     glBindFramebuffer(GL_FRAMEBUFFER, bystanders[1]);
     glGenTextures(1, &texture);
     glBindTexture(target, texture);
-    for (int face = 0; face < (lab == 7 ? 6 : 1); face++)
-        glTexImage2D(lab == 7 ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face : GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24,
-                     size, size, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
     glGenFramebuffers(1, &framebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
-                           lab == 7 ? GL_TEXTURE_CUBE_MAP_POSITIVE_X : GL_TEXTURE_2D, texture, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindTexture(target, 0);
     bool zeroed;

@@ -419,14 +419,14 @@ static bool _sl_run_stage(const sl_probe_function *f, const sl_probe_table *t, c
         glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
         glEnable(GL_RASTERIZER_DISCARD);
     } else {
-        glGenTextures(1, &depth);
-        glBindTexture(GL_TEXTURE_2D, depth);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, 1, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        /* a renderbuffer: what lab 1 makes (a depth texture attached) stays lab 1's to write */
+        glGenRenderbuffers(1, &depth);
+        glBindRenderbuffer(GL_RENDERBUFFER, depth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, 1, 1);
+        glBindRenderbuffer(GL_RENDERBUFFER, 0);
         glGenFramebuffers(1, &framebuffer);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
         glDrawBuffer(GL_NONE);
         glReadBuffer(GL_NONE);
         glViewport(0, 0, 1, 1);
@@ -462,7 +462,7 @@ static bool _sl_run_stage(const sl_probe_function *f, const sl_probe_table *t, c
         glDisable(GL_DEPTH_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glDeleteFramebuffers(1, &framebuffer);
-        glDeleteTextures(1, &depth);
+        glDeleteRenderbuffers(1, &depth);
     }
     glBindVertexArray(0);
     glDeleteVertexArrays(1, &vao);
