@@ -38,6 +38,85 @@ static double _sl_blur_model(const float *in, int dx, int dy, double sigma) {
     return sum / weights;
 }
 
+/* The sigmas (0.1 to 20 texels) with which the contract's Gaussian gives a row's first moment within 1e-4:
+ * false where none does. Scanned, then refined, not solved: the far side's share need not be monotonic in
+ * sigma for every tap position, and a row far from the edge fits a whole range. */
+static bool _sl_implied_sigma(const float *in, double got, double *lo, double *hi) {
+    int dx = (int)in[3], dy = (int)in[4];
+    double best = -1, best_error = INFINITY, step = pow(200.0, 1 / 400.0);
+    *lo = INFINITY, *hi = -INFINITY;
+    for (int k = 0; k <= 400; k++) {
+        double sigma = 0.1 * pow(step, k), error = fabs(_sl_blur_model(in, dx, dy, sigma) - got);
+        if (error < best_error) best_error = error, best = sigma;
+        if (error < 1e-4) *lo = fmin(*lo, sigma), *hi = fmax(*hi, sigma);
+    }
+    /* refined between the scan's neighbours of the best: the error is smooth there */
+    double a = best / step, b = best * step;
+    for (int k = 0; k < 60; k++) {
+        double p = a + (b - a) / 3, q = b - (b - a) / 3;
+        if (fabs(_sl_blur_model(in, dx, dy, p) - got) < fabs(_sl_blur_model(in, dx, dy, q) - got)) b = q;
+        else a = p;
+    }
+    double refined = 0.5 * (a + b);
+    if (fabs(_sl_blur_model(in, dx, dy, refined) - got) < 1e-4) *lo = fmin(*lo, refined), *hi = fmax(*hi, refined);
+    return *lo <= *hi;
+}
+
+/* Every failing row a Gaussian blur of the map with a sigma of its own, one sigma per radius: the kernel's
+ * width is said by radius, beside the contract's; and where each is 1 / the contract's, the sigma is
+ * multiplied where it should divide. Rows that fit a wide range of sigmas (far from the edge) only have to
+ * agree; at least two that pin sigma down say it. */
+static bool _sl_blur_sigma_by_radius(const sl_verdict_rows *v, char *text, size_t n, int *row) {
+    double lo[16], hi[16];
+    for (int i = 0; i < 16; i++) lo[i] = 0, hi[i] = INFINITY;
+    int pinned = 0, first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        int radius = (int)in[5];
+        double a, b;
+        if (radius < 1 || radius >= 16 || !_sl_implied_sigma(in, _sl_got(v, r, 0), &a, &b)) return false;
+        lo[radius] = fmax(lo[radius], a * 0.98);
+        hi[radius] = fmin(hi[radius], b * 1.02);
+        if (lo[radius] > hi[radius]) return false;
+        if (b <= a * 1.1) {
+            pinned++;
+            if (first < 0) first = r;
+        }
+    }
+    if (pinned < 2) return false;
+    char said[400] = "";
+    size_t used = 0;
+    int listed = 0, inverse = 0, narrow = 0;
+    double ratio_lo = INFINITY, ratio_hi = 0;
+    for (int radius = 1; radius < 16; radius++) {
+        if (!(hi[radius] <= lo[radius] * 1.25)) continue; /* pinned down for this radius */
+        double sigma = sqrt(lo[radius] * hi[radius]), contract = fmax(radius * 0.5, 0.5);
+        inverse += fabs(sigma - 1 / contract) <= 0.05 / contract;
+        ratio_lo = fmin(ratio_lo, sigma / contract);
+        ratio_hi = fmax(ratio_hi, sigma / contract);
+        narrow++;
+        if (listed < 4 && used < sizeof said) {
+            used += (size_t)snprintf(said + used, sizeof said - used, "%sradius %d like sigma %.2g (the contract's %.2g)",
+                                     listed ? ", " : "", radius, sigma, contract);
+            listed++;
+        }
+    }
+    if (!listed) return false;
+    char why[300];
+    if (inverse == narrow && narrow >= 2)
+        snprintf(why, sizeof why, "each sigma is 1 / the contract's, as exp(-i * i / 2.0 * sigma * sigma) gives it: "
+                                  "the sigma^2 belongs in the divisor, exp(-i^2 / (2.0 * sigma * sigma))");
+    else if (narrow >= 2 && ratio_hi <= ratio_lo * 1.05 && fabs(ratio_lo - 1) > 0.05)
+        snprintf(why, sizeof why, "each sigma is %.2g times the contract's%s: sigma = max(float(radius) * 0.5, 0.5)",
+                 sqrt(ratio_lo * ratio_hi), fabs(sqrt(ratio_lo * ratio_hi) - 2) < 0.05 ? " (sigma = radius)" : "");
+    else
+        snprintf(why, sizeof why, "the weights are exp(-i^2 / (2 sigma^2)) with sigma = max(float(radius) * 0.5, 0.5)");
+    snprintf(text, n, "the kernel is a Gaussian of another width: %s — %s", said, why);
+    *row = first;
+    return true;
+}
+
 /* blur_moments(moments, uv, direction, radius): inputs map, uv.x, uv.y, direction.x, direction.y, radius. */
 static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
     int rows = v->k->rows, failing = 0, first = -1, as_stub = 0;
@@ -162,6 +241,8 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
                  (int)v->k->inputs[first_integer][5], (int)v->k->inputs[first_integer][5] / 2);
         return first_integer;
     }
+    /* a Gaussian of another width: the sigma each failing row's answer implies, by radius */
+    if (_sl_blur_sigma_by_radius(v, text, n, &first)) return first;
     /* across the edges: too little or too much of the other side */
     int narrow = 0, wide = 0, first_width = -1;
     for (int r = 0; r < rows; r++) {

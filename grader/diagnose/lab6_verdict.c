@@ -122,7 +122,9 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
 /* The solution's sphere of a slice, for comparisons (the probe's camera, GL conventions). */
 /* The sphere around the slice whose corners lie at fractions ta and tb of each frustum edge (near corner 0,
  * far corner 1): the contract's, from the split distances (_sl_sphere), or a slip's fractions. */
-static void _sl_sphere_at(const float *in, double ta, double tb, double out[4]) {
+/* The 8 corners of the slice whose corners lie at fractions ta and tb of each frustum edge (near corner 0,
+ * far corner 1), in world space (the probe's camera, GL conventions). */
+static void _sl_slice_corners(const float *in, double ta, double tb, double corners[8][3]) {
     sl_camera cam = {.fov_deg = in[6], .near = in[8], .far = in[9]};
     glm_vec3_copy((float *)in, cam.position);
     glm_vec3_copy((float *)in + 3, cam.target);
@@ -131,7 +133,6 @@ static void _sl_sphere_at(const float *in, double ta, double tb, double out[4]) 
     sl_camera_projection(&cam, in[7], proj);
     glm_mat4_mul(proj, view, vp);
     glm_mat4_inv(vp, inv);
-    double corners[8][3], centre[3] = {0, 0, 0};
     for (int i = 0; i < 4; i++) {
         vec4 a = {(i & 1) ? 1.f : -1.f, (i & 2) ? 1.f : -1.f, -1, 1}, b = {a[0], a[1], 1, 1}, wa, wb;
         glm_mat4_mulv(inv, a, wa);
@@ -142,14 +143,20 @@ static void _sl_sphere_at(const float *in, double ta, double tb, double out[4]) 
             corners[4 + i][k] = cn + (cf - cn) * tb;
         }
     }
+}
+
+static double _sl_distance3(const double *a, const double *b) {
+    return sqrt(pow(a[0] - b[0], 2) + pow(a[1] - b[1], 2) + pow(a[2] - b[2], 2));
+}
+
+/* The sphere around the slice at fractions ta and tb: the corners' mean, and the farthest corner's distance. */
+static void _sl_sphere_at(const float *in, double ta, double tb, double out[4]) {
+    double corners[8][3], centre[3] = {0, 0, 0};
+    _sl_slice_corners(in, ta, tb, corners);
     for (int i = 0; i < 8; i++)
         for (int k = 0; k < 3; k++) centre[k] += corners[i][k] / 8;
     double radius = 0;
-    for (int i = 0; i < 8; i++) {
-        double d = sqrt(pow(corners[i][0] - centre[0], 2) + pow(corners[i][1] - centre[1], 2) +
-                        pow(corners[i][2] - centre[2], 2));
-        radius = fmax(radius, d);
-    }
+    for (int i = 0; i < 8; i++) radius = fmax(radius, _sl_distance3(corners[i], centre));
     for (int k = 0; k < 3; k++) out[k] = centre[k];
     out[3] = radius;
 }
@@ -179,6 +186,59 @@ static int _sl_sphere_fraction_slip(const sl_verdict_rows *v) {
         if (all && any) fits = slip;
     }
     return fits;
+}
+
+/* The sphere read by what the contract asks of it, where no slip explains it: centred on the view axis (the
+ * slice is symmetric about it, so its corners' mean lies on it), at the corners' mean depth, holding all 8
+ * corners. Says the first of these the row with the largest departure breaks, with its measures. */
+static int _sl_sphere_by_contract(const sl_verdict_rows *v, char *text, size_t n) {
+    int worst = -1;
+    double worst_error = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double error = 0;
+        for (int i = 0; i < 4; i++) error += fabs(_sl_got(v, r, i) - _sl_want(v, r, i));
+        if (worst < 0 || error > worst_error) worst = r, worst_error = error;
+    }
+    if (worst < 0) return -1;
+    const float *in = v->k->inputs[worst];
+    double near = in[8], far = in[9], split_near = in[10], split_far = in[11], corners[8][3];
+    _sl_slice_corners(in, (split_near - near) / (far - near), (split_far - near) / (far - near), corners);
+    double eye[3] = {in[0], in[1], in[2]}, forward[3] = {in[3] - in[0], in[4] - in[1], in[5] - in[2]};
+    double length = sqrt(forward[0] * forward[0] + forward[1] * forward[1] + forward[2] * forward[2]);
+    if (length <= 0) return -1;
+    double centre[3], relative[3], depth = 0, off_axis = 0, radius = _sl_got(v, worst, 3), outside = 0, slack;
+    for (int k = 0; k < 3; k++) {
+        forward[k] /= length;
+        centre[k] = _sl_got(v, worst, k);
+        relative[k] = centre[k] - eye[k];
+        depth += relative[k] * forward[k];
+    }
+    for (int k = 0; k < 3; k++) off_axis += pow(relative[k] - depth * forward[k], 2);
+    off_axis = sqrt(off_axis);
+    for (int i = 0; i < 8; i++) outside = fmax(outside, _sl_distance3(corners[i], centre) - radius);
+    slack = v->k->tolerance + v->k->relative * _sl_want(v, worst, 3);
+    double want_depth = 0;
+    for (int k = 0; k < 3; k++) want_depth += (_sl_want(v, worst, k) - eye[k]) * forward[k];
+    if (off_axis > slack) {
+        snprintf(text, n, "the centre is %.3g m off the camera's view axis, where the slice is symmetric about that "
+                          "axis, so the mean of its 8 corners lies on it%s", off_axis,
+                 outside > slack ? ", and the sphere leaves part of the slice out" : "");
+        return worst;
+    }
+    if (outside > slack) {
+        snprintf(text, n, "the sphere does not hold the slice: its centre lies at view depth %.3g m and it reaches "
+                          "%.3g m, where the slice runs from view depth %g to %g m and a corner lies %.3g m outside "
+                          "it — the slice's 8 corners are where its edges reach split_near and split_far, and the "
+                          "sphere is centred at their mean (view depth %.3g m) and reaches the farthest one",
+                 depth, radius, split_near, split_far, outside, want_depth);
+        return worst;
+    }
+    snprintf(text, n, "the sphere holds the slice but is larger than it needs (radius %.4g where %.4g is enough): "
+                      "its centre lies at view depth %.3g m, where the mean of the slice's 8 corners lies at %.3g m — "
+                      "a larger sphere spreads the cascade's texels thinner",
+             radius, _sl_want(v, worst, 3), depth, want_depth);
+    return worst;
 }
 
 static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
@@ -262,7 +322,7 @@ static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
                           "centre to the FARTHEST corner");
         return first;
     }
-    return -1;
+    return _sl_sphere_by_contract(v, text, n);
 }
 
 /* ---- lab6_cascade_matrices by its contract ----
