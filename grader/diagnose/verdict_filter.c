@@ -168,6 +168,27 @@ static int _sl_verdict_pcss_search(const sl_verdict_rows *v, char *text, size_t 
     return -1;
 }
 
+/* Exactly 1.0 where the contract gives 0: a point behind an occluder (one comparison at p says shadowed)
+ * with every search sample blocked comes out lit, and only the no-blocker branch returns exactly 1.0 from
+ * there — a filter of any width over an all-blocked region gives 0. So the blocker search found none. */
+static int _sl_pcss_misses_umbra(const sl_verdict_rows *v, char *text, size_t n) {
+    int row = -1;
+    for (int r = 0; r < v->k->rows && row < 0; r++) {
+        _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[r]);
+        if (_sl_failed(v, r) && fr.kind == _SL_ROW_EDGE && fr.centre == 0.0 && _sl_want(v, r, 0) <= 0.02 &&
+            _sl_got(v, r, 0) >= 0.999)
+            row = r;
+    }
+    if (row < 0) return -1;
+    snprintf(text, n, "the blocker search finds no blockers behind an occluder: a point whose whole search region is "
+                      "occluded (the contract gives 0) comes out exactly 1.0, which only \"no blocker found\" returns "
+                      "— a blocker is a stored depth d with d < p.z - bias, both raw depths from the map (only the "
+                      "blockers' average is made a distance, with pcf_linear_depth)");
+    sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_MISSING_SHADOW | 1u << SL_SYMPTOM_NO_SHADOWS |
+                               1u << SL_SYMPTOM_GROSS);
+    return row;
+}
+
 /* A (2r+1)^2 grid whose samples are `spacing` texels apart, on a synthetic map (nearest texels, the
  * border's depth 1.0 off the map): what pcf_grid gives for a row with that spacing. */
 static double _sl_grid_with_spacing(const sl_probe_function *f, const float *in, double spacing) {
@@ -354,6 +375,7 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
                           "is shadow acne — compare p.z - bias with the stored depth");
         return row;
     }
+    if (pcss && (row = _sl_pcss_misses_umbra(v, text, n)) >= 0) return row;
     /* no blocker found is exactly 1.0: a penumbra too wide also lights an occluded point, partly */
     if ((row = _sl_first_failing(v, _SL_ROW_OCCLUDED)) >= 0 && _sl_got(v, row, 0) > _sl_want(v, row, 0) &&
         (!pcss || _sl_got(v, row, 0) >= 0.999)) {
