@@ -22,10 +22,11 @@ static const sl_probe_function _sl_functions[] = {
     /* lab 1: the map as lab1_create_shadow_map makes it: its filtering, what a lookup past its edge reads,
      * and its size (the argument's, not a constant's), also as map->size records it (the depth pass's viewport) */
     {.name = "lab1_create_shadow_map", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.1",
-     .outputs = "min filter,mag filter,wrap s,wrap t,border depth,texture width,texture height,map->size",
-     .output_count = 8,
+     .outputs = "min filter,mag filter,wrap s,wrap t,border depth,texture width,texture height,map->size,"
+                "framebuffer status,texture at the stencil attachment,status asked of the map,returned SL_OK",
+     .output_count = 12,
      .params = {_SL_I("size")},
-     .param_count = 1, .stub_param = -1, .stub_value = NAN},
+     .param_count = 1, .stub_param = -1, .stub_value = NAN, .reports_status = true},
     /* lab 1: the depth pass's state, on a map the probe makes (its depth texture filled with 0.5) */
     {.name = "lab1_begin_depth_pass", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.3",
      .outputs = "map's framebuffer bound,viewport width,viewport height,depth test,depth function,depth writes,"

@@ -91,6 +91,10 @@ typedef struct sl_probe_function {
     sl_probe_stage stage;
     const char *stage_inputs; /* SL_PROBE_FRAGMENT_MAIN: the interface block its varyings arrive in */
     const double *stub_outputs; /* a stub that returns a vector of constants: one for each output */
+    /* A C function whose last output is whether it returned SL_OK: a row where it returned SL_FAILED
+     * keeps what it made (the framebuffer's status, say), so the failure can be read, not only seen.
+     * SL_NOT_IMPLEMENTED still empties the row. */
+    bool reports_status;
 } sl_probe_function;
 
 /* What follows a probed name where it is said as a call: "()" for a function, "" for a whole stage

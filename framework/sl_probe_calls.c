@@ -93,14 +93,66 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     return status;
 }
 
+/* glCheckFramebufferStatus as lab code calls it during a probe: which framebuffers it was asked about
+ * (the one bound to the target's binding when asked). Lab code calls GL through the loader's pointers
+ * (sl_gl.h), so the probe can stand in front of this one while the function runs. */
+static PFNGLCHECKFRAMEBUFFERSTATUSPROC _sl_status_function;
+static GLuint _sl_status_asked_of[8];
+static int _sl_status_asked;
+
+static GLenum APIENTRY _sl_check_status_watched(GLenum target) {
+    GLint bound = 0;
+    glGetIntegerv(target == GL_READ_FRAMEBUFFER ? GL_READ_FRAMEBUFFER_BINDING : GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    if (_sl_status_asked < (int)(sizeof _sl_status_asked_of / sizeof _sl_status_asked_of[0]))
+        _sl_status_asked_of[_sl_status_asked] = (GLuint)bound;
+    _sl_status_asked++;
+    return _sl_status_function(target);
+}
+
+/* 1 when the status was asked of `framebuffer` (among other asks), 0 when asked of others only, -1 never. */
+static double _sl_status_asked_of_map(GLuint framebuffer) {
+    if (!_sl_status_asked) return -1;
+    int recorded = _sl_status_asked < 8 ? _sl_status_asked : 8;
+    for (int i = 0; i < recorded; i++)
+        if (framebuffer && _sl_status_asked_of[i] == framebuffer) return 1;
+    return 0;
+}
+
+/* The map's framebuffer as GL sees it after the function: its status while bound, and whether the depth
+ * texture sits at the stencil attachment as well (GL_DEPTH_STENCIL_ATTACHMENT attaches at both). */
+static void _sl_read_map_framebuffer(const sl_shadow_map *map, double *status, double *stencil) {
+    *status = 0, *stencil = 0;
+    if (!map->framebuffer || !glIsFramebuffer(map->framebuffer)) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, map->framebuffer);
+    *status = _sl_status_function(GL_FRAMEBUFFER);
+    GLint type = GL_NONE, name = 0;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+                                          &type);
+    if (type == GL_TEXTURE)
+        glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT,
+                                              GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    *stencil = type == GL_TEXTURE && map->depth_texture && (GLuint)name == map->depth_texture;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    while (glGetError() != GL_NO_ERROR) {}
+}
+
 /* lab1_create_shadow_map(size): the map's filtering and wrapping, as glGet*
  * reports them: what a lookup of a later lab reads between texels and past
  * the map's edge; and the texture's size, which must be the argument's, as
- * must map->size. */
+ * must map->size. Then the framebuffer: complete or not, the depth texture
+ * at the stencil attachment too or not, whether the function asked the
+ * status of the map's framebuffer (bound) and what it returned. */
 static sl_status _sl_call_create_shadow_map(const sl_lab_functions *labs, int size, double *out) {
     sl_shadow_map map = {0};
+    _sl_status_function = _sl_glCheckFramebufferStatus;
+    _sl_status_asked = 0;
+    _sl_glCheckFramebufferStatus = _sl_check_status_watched;
     sl_status status = labs->lab1_create_shadow_map(size, &map);
+    _sl_glCheckFramebufferStatus = _sl_status_function;
     while (glGetError() != GL_NO_ERROR) {}
+    _sl_read_map_framebuffer(&map, &out[8], &out[9]);
+    out[10] = _sl_status_asked_of_map(map.framebuffer);
+    out[11] = status == SL_OK;
     if (map.depth_texture && glIsTexture(map.depth_texture)) {
         GLint min = 0, mag = 0, s = 0, t = 0, width = 0, height = 0;
         GLfloat border[4] = {0, 0, 0, 0};

@@ -517,7 +517,7 @@ bool sl_probe_pass_run_function(const sl_probe_function *f, const sl_probe_table
         sl_status status = probe ? probe->run_row(t->inputs[r], out) : SL_FAILED;
         while (glGetError() != GL_NO_ERROR) {}
         if (status == SL_NOT_IMPLEMENTED) *not_implemented = true;
-        if (status != SL_OK)
+        if (status == SL_NOT_IMPLEMENTED || (status != SL_OK && !f->reports_status))
             for (int o = 0; o < f->output_count; o++) out[o] = NAN;
     }
     return true;

@@ -209,7 +209,60 @@ bool sl_lab1_case_runs(const sl_case *c, const sl_check *k, const char *fn) { re
 
 /* Outputs: min filter, mag filter, wrap S, wrap T, the border's depth (-1 without a border), the texture's
  * width and height, map->size. */
+/* The framebuffer lab1_create_shadow_map made, read as GL reports it (outputs 8-11: its status while bound,
+ * the depth texture at the stencil attachment too, whether the function asked the status of the map's
+ * framebuffer, whether it returned SL_OK): the first thing that breaks the contract, on the first row. */
+static int _sl_verdict_map_framebuffer(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 8)) || v->f->output_count < 12) continue;
+        GLenum status = (GLenum)_sl_got(v, r, 8);
+        double stencil = _sl_got(v, r, 9), asked = _sl_got(v, r, 10), ok = _sl_got(v, r, 11);
+        if (status == 0) {
+            snprintf(text, n, "map->framebuffer is not a framebuffer object: glGenFramebuffers, then "
+                              "glBindFramebuffer(GL_FRAMEBUFFER, map->framebuffer) before anything is attached");
+        } else if (status != GL_FRAMEBUFFER_COMPLETE && stencil == 1) {
+            snprintf(text, n, "the framebuffer is incomplete (%s): map->depth_texture is attached as a stencil buffer "
+                              "too — GL_DEPTH_STENCIL_ATTACHMENT attaches at both points, and a depth-only format has "
+                              "no stencil: attach it at GL_DEPTH_ATTACHMENT", sl_gl_enum_name(status));
+        } else if (status == GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT) {
+            snprintf(text, n, "the framebuffer is incomplete (%s): nothing is attached to it — "
+                              "glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, "
+                              "map->depth_texture, 0) while map->framebuffer is bound", sl_gl_enum_name(status));
+        } else if (status == GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER || status == GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER) {
+            snprintf(text, n, "the framebuffer is incomplete (%s): its draw or read buffer names a colour attachment "
+                              "it does not have — glDrawBuffer(GL_NONE) and glReadBuffer(GL_NONE) while it is bound",
+                     sl_gl_enum_name(status));
+        } else if (status != GL_FRAMEBUFFER_COMPLETE && _sl_got(v, r, 5) == 0) {
+            snprintf(text, n, "the framebuffer is incomplete (%s) because map->depth_texture has no storage (0x0): "
+                              "glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT, "
+                              "GL_UNSIGNED_INT, NULL) was refused or never made (GL's own words below say which)",
+                     sl_gl_enum_name(status));
+        } else if (status != GL_FRAMEBUFFER_COMPLETE) {
+            snprintf(text, n, "the framebuffer is incomplete (%s): one depth texture of the map's size at "
+                              "GL_DEPTH_ATTACHMENT, no colour, draw and read buffer GL_NONE make it complete",
+                     sl_gl_enum_name(status));
+        } else if (asked != 1) {
+            snprintf(text, n, "%s — ask glCheckFramebufferStatus(GL_FRAMEBUFFER) while map->framebuffer is still "
+                              "bound, then bind 0, so an incomplete map is caught (and a complete one not refused "
+                              "where framebuffer 0 does not exist)",
+                     asked < 0 ? "glCheckFramebufferStatus is never called"
+                               : "glCheckFramebufferStatus is asked about another framebuffer than the map's (0, "
+                                 "bound again before the check?)");
+        } else if (ok != _sl_want(v, r, 11)) {
+            snprintf(text, n, "it returns %s, where its framebuffer is complete: SL_OK when glCheckFramebufferStatus "
+                              "gives GL_FRAMEBUFFER_COMPLETE, SL_FAILED otherwise", ok ? "SL_OK" : "SL_FAILED");
+        } else {
+            continue;
+        }
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_GROSS | 1u << SL_SYMPTOM_NO_SHADOWS);
+        return r;
+    }
+    return -1;
+}
+
 static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, size_t n) {
+    int framebuffer = _sl_verdict_map_framebuffer(v, text, n);
+    if (framebuffer >= 0) return framebuffer;
     /* the size first: a map of a size of its own is wrong on every row whose size is not that one */
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 5))) continue;

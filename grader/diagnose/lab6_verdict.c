@@ -508,16 +508,48 @@ bool sl_lab6_probe_contract(const sl_check *k, const double *student, const doub
 
 /* What one comparison in layer `layer` of the probe's texture array gives at a row's point, with the bias
  * `bias` (a negative layer: the row's own), divided by w or not; -1 where a layer does not exist. */
-static double _sl_layer_compare(const float *in, int layer, double bias, bool divide) {
+static double _sl_layer_compare_at(const float *in, int layer, double bias, bool divide, bool clamped) {
     double w = divide ? in[5] : 1.0;
     if (w == 0) return -1;
     double p[3] = {in[2] / w, in[3] / w, in[4] / w};
     if (p[2] > 1.0) return 1.0;
+    for (int i = 0; i < 2 && clamped; i++) p[i] = fmin(fmax(p[i], 0), 1); /* 1.0 itself is the border's texel */
     if (p[0] < 0 || p[0] > 1 || p[1] < 0 || p[1] > 1) return 1.0; /* the border: depth 1.0 */
     if (layer < 0 || layer >= SL_PROBE_LAYERS) return -1;
     int tx = (int)floor(p[0] * SL_PROBE_MAP_SIZE), ty = (int)floor(p[1] * SL_PROBE_MAP_SIZE);
+    if (tx >= SL_PROBE_MAP_SIZE || ty >= SL_PROBE_MAP_SIZE) return 1.0; /* s or t exactly 1: the border's texel */
     double stored = sl_probe_layer_depth(SL_PROBE_MAP_CASCADES, layer, tx, ty);
     return p[2] - bias > stored ? 0.0 : 1.0;
+}
+
+static double _sl_layer_compare(const float *in, int layer, double bias, bool divide) {
+    return _sl_layer_compare_at(in, layer, bias, divide, false);
+}
+
+/* Every failing row outside the cascade's square (s or t outside [0, 1] after the divide), every row inside
+ * it right: the lookup there does not reach the border. With clamped p.xy every row is explained. */
+static int _sl_compare_outside_square(const sl_verdict_rows *v, char *text, size_t n) {
+    int failing = 0, outside = 0, first = -1;
+    bool clamped = true;
+    for (int r = 0; r < v->k->rows; r++) {
+        const float *in = v->k->inputs[r];
+        double want = _sl_layer_compare_at(in, (int)in[1], in[6], true, true);
+        clamped &= want >= 0 && fabs(_sl_got(v, r, 0) - want) <= 1e-3;
+        if (!_sl_failed(v, r)) continue;
+        failing++;
+        double s = in[2] / in[5], t = in[3] / in[5];
+        if (in[5] > 0 && (s < 0 || s > 1 || t < 0 || t > 1)) {
+            outside++;
+            if (first < 0) first = r;
+        }
+    }
+    if (!failing || outside != failing) return -1;
+    snprintf(text, n, "outside the cascade's square (s or t outside [0, 1]) it answers shadowed, where nothing was "
+                      "recorded: the texture's border, depth 1.0, answers lit there%s",
+             clamped ? " — every row reads as p.xy clamped to [0, 1], which reads the map's edge texel instead: look "
+                       "up p.xy as it is"
+                     : "");
+    return first;
 }
 
 /* One way of reading the rows, to test on every row at once: the layer read (relative to the given one,
@@ -582,6 +614,8 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
                                   "different in every cascade)", constants[i]);
             return first;
         }
+    int outside = _sl_compare_outside_square(v, text, n);
+    if (outside >= 0) return outside;
     if (inverted == rows) {
         snprintf(text, n, "every answer is the opposite of the reference's: the comparison is inverted (shadowed where "
                           "p.z - bias is FARTHER than the stored depth)");

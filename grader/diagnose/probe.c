@@ -42,7 +42,7 @@ static void _sl_value(double v, char *out, size_t n) { _sl_value_named(v, false,
 /* Outputs that hold GL enums: a filter, a face, a function, a wrap mode. */
 static bool _sl_output_is_enum(const char *name) {
     return strstr(name, "filter") || strstr(name, "face") || strstr(name, "function") || strstr(name, "wrap") ||
-           strstr(name, "internal format");
+           strstr(name, "internal format") || strstr(name, "framebuffer status");
 }
 
 /* "n_dot_l = 0.05, constant_bias = 0.0005, shadow_map = step" */

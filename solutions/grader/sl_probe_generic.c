@@ -9,6 +9,7 @@
 
 /* GL's numbers for the state lab 1's map must have (the grader links no GL). */
 #define _SL_GL_NEAREST 0x2600
+#define _SL_GL_FRAMEBUFFER_COMPLETE 0x8CD5
 #define _SL_GL_CLAMP_TO_BORDER 0x812D
 
 /* ---- splitmix64, one stream per case and check ---- */
@@ -114,8 +115,9 @@ static void _sl_draw_create_shadow_map(const sl_probe_function *f, _sl_rng *r, i
 static void _sl_expect_create_shadow_map(const sl_probe_function *f, const float *row, int slip, double *out) {
     (void)slip;
     double size = _sl_get(f, row, "size", 0);
-    double want[8] = {_SL_GL_NEAREST, _SL_GL_NEAREST, _SL_GL_CLAMP_TO_BORDER, _SL_GL_CLAMP_TO_BORDER, 1.0, size, size,
-                      size};
+    /* then the framebuffer: complete (GL_FRAMEBUFFER_COMPLETE), no stencil attachment, its status asked, SL_OK */
+    double want[12] = {_SL_GL_NEAREST, _SL_GL_NEAREST, _SL_GL_CLAMP_TO_BORDER, _SL_GL_CLAMP_TO_BORDER, 1.0, size, size,
+                       size, _SL_GL_FRAMEBUFFER_COMPLETE, 0, 1, 1};
     memcpy(out, want, sizeof want);
 }
 
