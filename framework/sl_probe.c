@@ -174,8 +174,8 @@ static const sl_probe_function _sl_functions[] = {
      .output_count = 9, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
     {.name = "lab7_begin_cube_pass", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.2",
      .outputs = "map's framebuffer bound,attached face,viewport width,viewport height,depth test,depth writes,"
-                "depth after the call",
-     .output_count = 7, .params = {_SL_I("face"), _SL_I("size")}, .param_count = 2, .stub_param = -1,
+                "depth after the call,viewport x,viewport y",
+     .output_count = 9, .params = {_SL_I("face"), _SL_I("size")}, .param_count = 2, .stub_param = -1,
      .stub_value = NAN},
     {.name = "lab7_face_view", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.3", .outputs = _SL_MATRIX_OUT,
      .output_count = 16, .params = {_SL_I("face"), _SL_V3("light_position")}, .param_count = 2, .stub_param = -1,
@@ -269,7 +269,7 @@ const float *sl_probe_row_param(const sl_probe_function *f, const float *row, co
 
 static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit",      "occluded",      "step",
                                                               "ramp",     "cube_lit",      "cube_occluded",
-                                                              "cube_room", "cube_positive", "step_floor", "cascades", "moments_flat", "moments_step_x", "moments_step_y"};
+                                                              "cube_room", "cube_positive", "step_floor", "cascades", "moments_flat", "moments_step_x", "moments_step_y", "step_v"};
 
 const char *sl_probe_map_name(sl_probe_map map) {
     return (unsigned)map < SL_PROBE_MAP_COUNT ? _sl_map_names[map] : "?";
@@ -282,13 +282,13 @@ int sl_probe_map_parse(const char *name) {
 }
 
 float sl_probe_map_depth(sl_probe_map map, int x, int y) {
-    (void)y;
-    float u = ((float)x + 0.5f) / SL_PROBE_MAP_SIZE;
+    float u = ((float)x + 0.5f) / SL_PROBE_MAP_SIZE, v = ((float)y + 0.5f) / SL_PROBE_MAP_SIZE;
     switch (map) {
     case SL_PROBE_MAP_OCCLUDED: return 0.25f;
     case SL_PROBE_MAP_STEP: return u < 0.5f ? 0.25f : 1.0f;
     case SL_PROBE_MAP_RAMP: return u;
     case SL_PROBE_MAP_STEP_FLOOR: return u < 0.5f ? 0.25f : 0.9f;
+    case SL_PROBE_MAP_STEP_V: return v < 0.5f ? 0.25f : 1.0f;
     default: return 1.0f;
     }
 }

@@ -277,6 +277,9 @@ static sl_status _sl_call_begin_cube_pass(const sl_lab_functions *labs, int face
     out[5] = writes;
     out[1] = 0;
     out[6] = -1;
+    /* the viewport's corner: each face is its own size x size attachment, so (0, 0) whatever the face */
+    out[7] = viewport[0];
+    out[8] = viewport[1];
     if (out[0]) {
         glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
                                               GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, &attached);

@@ -288,7 +288,7 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         return first_capped;
     }
     /* Where the clamp does not act: which function of the angle does the slope term follow? */
-    int rows_seen = 0, as_sin = 0, as_angle = 0, as_one_minus = 0, as_max_one_minus = 0, as_converted = 0, first = -1;
+    int rows_seen = 0, as_sin = 0, as_angle = 0, as_theta = 0, as_one_minus = 0, as_max_one_minus = 0, as_converted = 0, first = -1;
     double ratio_lo = INFINITY, ratio_hi = -INFINITY, term_lo = INFINITY, term_hi = -INFINITY;
     for (int r = 0; r < rows; r++) {
         const float *in = v->k->inputs[r];
@@ -303,7 +303,8 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
         double sin_t = sqrt(1 - cos_t * cos_t), term = (s - c) / slope;
         rows_seen++;
         as_sin += _sl_near(term, sin_t, 0.02 * sin_t + 1e-4);
-        as_angle += _sl_near(term, tan(cos_t), 0.02 * tan(cos_t) + 1e-4) || _sl_near(term, acos(cos_t), 0.02);
+        as_angle += _sl_near(term, tan(cos_t), 0.02 * tan(cos_t) + 1e-4);
+        as_theta += _sl_near(term, acos(cos_t), 0.02);
         /* acos's angle, in radians already, converted again as if it were in degrees */
         double converted = tan(acos(cos_t) * 3.14159265358979323846 / 180.0);
         as_converted += _sl_near(term, converted, 0.03 * converted + 1e-5);
@@ -329,6 +330,13 @@ static int _sl_verdict_slope(const sl_verdict_rows *v, char *text, size_t n) {
     if (as_sin == rows_seen) {
         snprintf(text, n, "sin(theta) where tan(theta) belongs: the slope term follows sqrt(1 - cos^2), not "
                           "sqrt(1 - cos^2) / cos — divide by cos(theta) = N.L");
+        return first;
+    }
+    if (as_theta == rows_seen) {
+        snprintf(text, n, "the slope term is the angle theta = acos(N.L) itself, not tan(theta): theta stops at pi/2 "
+                          "where tan(theta) grows without bound, so grazing surfaces get too little bias — "
+                          "tan(theta) = sqrt(1 - cos^2) / cos");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
         return first;
     }
     if (as_angle == rows_seen) {

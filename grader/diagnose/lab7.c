@@ -741,6 +741,17 @@ static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, con
             bool twin = b != a && ia[6] != ib[6];
             for (int i = 0; twin && i < 6; i++) twin = ia[i] == ib[i];
             if (twin && fabs(s[a] - s[b]) < 1e-3 && fabs(e[a] - e[b]) > 0.05) {
+                /* both answers are what the contract gives at the larger radius: a disk far wider than the
+                 * contract's saturates, and then looks like one that ignores its radius */
+                bool a_smaller = ia[6] < ib[6];
+                if (fabs(s[a] - (a_smaller ? e[b] : e[a])) <= 0.1) { /* 0.1: two of the 20 samples */
+                    snprintf(text, n, "the disk is far too wide: at radius %g it answers %.3g, what the contract gives "
+                                      "at radius %g, and a larger radius changes nothing — the disk's angle is radius * "
+                                      "length(light_to_fragment) / far_plane (radius is its size at the far plane: "
+                                      "not divided by far_plane, it is far_plane times too wide)",
+                             (double)fmin(ia[6], ib[6]), s[a], (double)fmax(ia[6], ib[6]));
+                    return a;
+                }
                 snprintf(text, n, "the disk ignores radius: radius %g and radius %g give the same — the samples go "
                                   "out to radius * length(light_to_fragment) / far_plane around the direction",
                          (double)ia[6], (double)ib[6]);

@@ -360,6 +360,7 @@ typedef enum _sl_grid_slip {
     _SL_GRID_NO_BIAS,
     _SL_GRID_BIAS_ADDED,
     _SL_GRID_CENTRE_DRIFTS, /* p.xy += offset in the loop: each sample from where the last one was */
+    _SL_GRID_V_FLIPPED,     /* the map read at (p.x, 1 - p.y): Direct3D's v, running downwards */
 } _sl_grid_slip;
 
 /* The bias's slips, in _sl_grid_slip's order from _SL_GRID_BIAS_OVER_W. */
@@ -378,6 +379,8 @@ static const char *const _sl_compare_slips[][2] = {
     {"z not divided by w (shadow_coord.z compared)", "p.z = shadow_coord.z / shadow_coord.w compared"},
     {"no test for points outside the light's frustum (w <= 0, or p outside [0, 1]): they read the map", "outside the light's frustum: lit (1.0)"},
     _SL_BIAS_SLIPS,
+    {"t flipped: the map read at (p.x, 1 - p.y), Direct3D's v running downwards",
+     "the map read at p.xy: GL's t runs upwards, as the bias matrix maps y"},
     {NULL, NULL},
 };
 
@@ -385,7 +388,7 @@ static const char *const _sl_compare_slips[][2] = {
 static const _sl_grid_slip _sl_compare_as_grid[] = {
     _SL_GRID_CONTRACT,    _SL_GRID_REVERSED,     _SL_GRID_XY_NOT_DIVIDED, _SL_GRID_Z_NOT_DIVIDED,
     _SL_GRID_NO_FRUSTUM_TEST, _SL_GRID_BIAS_OVER_W, _SL_GRID_BIAS_TIMES_W, _SL_GRID_BIAS_ON_XY,
-    _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED};
+    _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED,   _SL_GRID_V_FLIPPED};
 
 static const char *const _sl_grid_slips[][2] = {
     {"", ""},
@@ -416,6 +419,7 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     if (slip == _SL_GRID_BIAS_OVER_W) bias /= w;
     if (slip == _SL_GRID_BIAS_TIMES_W) bias *= w;
     if (slip == _SL_GRID_BIAS_ON_XY) u -= bias, v -= bias;
+    if (slip == _SL_GRID_V_FLIPPED) v = 1 - v;
     if (slip == _SL_GRID_NO_BIAS) bias = 0;
     if (slip == _SL_GRID_BIAS_ADDED) bias = -bias;
     double px = _sl_get(f, row, "shadow_coord", 0) / w, py = _sl_get(f, row, "shadow_coord", 1) / w;
@@ -519,12 +523,17 @@ static const char *const _sl_normal_offset_slips[][2] = {
     {"", ""},
     {"sin(theta) = sqrt(1 - n_dot_l^2) in place of 1 - n_dot_l", "the offset scaled by 1 - n_dot_l"},
     {"tan(theta) = sqrt(1 - n_dot_l^2) / n_dot_l in place of 1 - n_dot_l", "the offset scaled by 1 - n_dot_l"},
+    {"the angle theta = acos(n_dot_l) itself (radians, up to pi/2) in place of 1 - n_dot_l",
+     "the offset scaled by 1 - n_dot_l (0 facing the light, 1 edge-on)"},
     {NULL, NULL},
 };
 
 static void _sl_expect_normal_offset(const sl_probe_function *f, const float *row, int slip, double *out) {
     double n_dot_l = _sl_get(f, row, "n_dot_l", 0), sin_theta = sqrt(fmax(0, 1 - n_dot_l * n_dot_l));
-    double angle = slip == 1 ? sin_theta : slip == 2 ? sin_theta / n_dot_l : 1 - n_dot_l;
+    double angle = slip == 1   ? sin_theta
+                 : slip == 2 ? sin_theta / n_dot_l
+                 : slip == 3 ? acos(fmin(fmax(n_dot_l, -1), 1))
+                             : 1 - n_dot_l;
     double k = _sl_get(f, row, "texels", 0) * _sl_get(f, row, "texel_world_size", 0) * angle;
     for (int j = 0; j < 3; j++) out[j] = _sl_get(f, row, "world_position", j) + _sl_get(f, row, "normal", j) * k;
 }
@@ -677,13 +686,16 @@ static const char *const _sl_bleeding_slips[][2] = {
     {"p_max - amount, not rescaled by 1 / (1 - amount)", "(p_max - amount) / (1 - amount)"},
     {"(p_max - amount) / amount", "(p_max - amount) / (1 - amount)"},
     {"smoothstep(amount, 1, p_max) in place of the linear ramp", "linstep(amount, 1, p_max) = (p_max - amount) / (1 - amount)"},
+    {"mix(amount, 1, p_max) = amount + (1 - amount) * p_max, the ramp's inverse: full shadow raised to amount",
+     "linstep(amount, 1, p_max) = (p_max - amount) / (1 - amount): p_max below amount cut to 0"},
     {NULL, NULL},
 };
 
 static void _sl_expect_bleeding(const sl_probe_function *f, const float *row, int slip, double *out) {
     double amount = _sl_get(f, row, "amount", 0), p = _sl_get(f, row, "p_max", 0);
     double v = slip == 1 ? p / amount : slip == 3 ? p - amount : slip == 4 ? (p - amount) / amount
-                                                                         : (p - amount) / (1 - amount);
+                                      : slip == 6 ? amount + (1 - amount) * p
+                                                  : (p - amount) / (1 - amount);
     if (slip != 2) v = fmin(fmax(v, 0), 1);
     if (slip == 5) v = v * v * (3 - 2 * v);
     out[0] = v;
@@ -852,10 +864,17 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
         d[j] = off_axis ? (_sl_uniform(r, 0, 1) < 0.5 ? -1 : 1) * _sl_uniform(r, 0.45, 0.6) : _sl_uniform(r, -0.6, 0.6);
     d[axis] = _sl_uniform(r, 0, 1) < 0.5 ? -1 : 1; /* well inside one face */
     if (off_axis) d[axis] = 1; /* a face the occluder covers */
-    double far = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 3, 8) : _sl_uniform(r, 14, 40), bias = _sl_uniform(r, 0.002, 0.02);
+    /* one row in three on the axis, behind the occluder by less than bias * far_plane: the bias is subtracted
+     * in the map's units, so the point is shadowed; taken for metres (times far) it would come out lit */
+    bool behind_by_bias = index % 3 == 1;
+    if (behind_by_bias) d[axis] = 1;
+    double far = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 3, 8) : _sl_uniform(r, 14, 40);
+    double bias = behind_by_bias ? _sl_uniform(r, 0.01, 0.02) : _sl_uniform(r, 0.002, 0.02);
     /* the point's stored-scale depth away from the occluder's 0.1 and the far wall's 1.0 */
-    double current = off_axis ? _sl_uniform(r, 0.105, 0.115)
-                              : _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 0.03, 0.07) : _sl_uniform(r, 0.14, 0.9);
+    double current = off_axis         ? _sl_uniform(r, 0.105, 0.115)
+                   : behind_by_bias ? 0.1 + _sl_uniform(r, 0.3, 0.8) * fmin(bias * (far - 1), 0.5)
+                   : _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 0.03, 0.07)
+                                                : _sl_uniform(r, 0.14, 0.9);
     double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), distance = (current + bias) * far;
     for (int j = 0; j < 3; j++) d[j] *= distance / length;
     _sl_set1(f, row, "cube_map", SL_PROBE_MAP_CUBE_POSITIVE);
@@ -865,7 +884,9 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
     snprintf(about, n, "generic: far_plane %.3g (not the map's 10), the point %.3g from the light towards the %s%c "
                        "face%s, bias %.3g",
              far, distance, d[axis] > 0 ? "+" : "-", "xyz"[axis],
-             off_axis ? ", far off its axis, just behind the occluder (the distance is the length, not a component)" : "",
+             off_axis         ? ", far off its axis, just behind the occluder (the distance is the length, not a component)"
+             : behind_by_bias ? ", behind the occluder by less than bias * far_plane (the bias is in the map's units)"
+                              : "",
              bias);
 }
 
@@ -875,6 +896,7 @@ static const char *const _sl_point_shadow_slips[][2] = {
     {"the squared distance (dot) in place of its length", "length(light_to_fragment) / far_plane"},
     {"the largest component of light_to_fragment in place of its length", "length(light_to_fragment) / far_plane"},
     {"the comparison reversed: lit where the point lies behind the stored distance", "current - bias > closest: shadowed"},
+    {"the bias multiplied by far_plane (taken for metres)", "bias in the map's units (distance / far), subtracted as given"},
     {NULL, NULL},
 };
 
@@ -894,7 +916,8 @@ static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row
     }
     double closest = d[axis] > 0 ? 0.1 : 1.0;
     double distance = slip == 2 ? length : slip == 3 ? fabs(d[axis]) : sqrt(length);
-    double current = distance / (slip == 1 ? 1 : _sl_get(f, row, "far_plane", 0)) - _sl_get(f, row, "bias", 0);
+    double far = _sl_get(f, row, "far_plane", 0);
+    double current = distance / (slip == 1 ? 1 : far) - _sl_get(f, row, "bias", 0) * (slip == 5 ? far : 1);
     out[0] = (current > closest) == (slip == 4) ? 1 : 0;
 }
 
