@@ -20,7 +20,8 @@
 static int _sl_fbo_faults(const double *v, sl_check_result *out) {
     int faults = 0;
     out->message[0] = '\0';
-#define _SL_FAULT(...) (sl_diag_append(out, "%s", faults++ ? "; also, " : ""), sl_diag_append(out, __VA_ARGS__))
+#define _SL_FAULT(...)                                                                                                 \
+    (sl_diag_append(out, "%s", faults++ ? "; also, " : "lab1_create_shadow_map(): "), sl_diag_append(out, __VA_ARGS__))
     if (v[3] <= 0) {
         _SL_FAULT("map->depth_texture has no depth format: use GL_DEPTH_COMPONENT24 (internal format) with "
                   "GL_DEPTH_COMPONENT");
@@ -54,15 +55,15 @@ void sl_diagnose_fbo(const sl_case *c, const sl_case_result *r, sl_check_result 
     const double *v = cap->numbers;
     GLenum status = (GLenum)v[0];
     if (v[0] == 0) {
-        sl_diag_say(out, "map->framebuffer is not a framebuffer object (glGenFramebuffers + glBindFramebuffer)");
+        sl_diag_say(out, "lab1_create_shadow_map(): map->framebuffer is not a framebuffer object (glGenFramebuffers + glBindFramebuffer)");
     } else if (v[1] != GL_TEXTURE) {
-        sl_diag_say(out, "nothing is attached as GL_DEPTH_ATTACHMENT: attach the depth texture with glFramebufferTexture2D");
+        sl_diag_say(out, "lab1_create_shadow_map(): nothing is attached as GL_DEPTH_ATTACHMENT: attach the depth texture with glFramebufferTexture2D");
     } else if (!v[2]) {
-        sl_diag_say(out, "the texture attached as GL_DEPTH_ATTACHMENT is not map->depth_texture");
+        sl_diag_say(out, "lab1_create_shadow_map(): the texture attached as GL_DEPTH_ATTACHMENT is not map->depth_texture");
     } else if (_sl_fbo_faults(v, out)) {
         /* said: every fault of the texture and the buffers at once, so one round of fixes is enough */
     } else if (status != GL_FRAMEBUFFER_COMPLETE) {
-        sl_diag_say(out, "the framebuffer is incomplete: %s", sl_gl_enum_name(status));
+        sl_diag_say(out, "lab1_create_shadow_map(): the framebuffer is incomplete: %s", sl_gl_enum_name(status));
     } else if (r->failed[0] && strcmp(r->failed, "lab1_create_shadow_map") == 0) {
         sl_diag_say(out, "lab1_create_shadow_map() returned SL_FAILED, although its framebuffer is complete");
     } else {
@@ -241,6 +242,11 @@ static int _sl_verdict_map_framebuffer(const sl_verdict_rows *v, char *text, siz
             snprintf(text, n, "the framebuffer is incomplete (%s): one depth texture of the map's size at "
                               "GL_DEPTH_ATTACHMENT, no colour, draw and read buffer GL_NONE make it complete",
                      sl_gl_enum_name(status));
+        } else if (isnan(_sl_got(v, r, 0))) {
+            snprintf(text, n, "map->depth_texture names no texture when the function returns (0, deleted, or another "
+                              "name stored), though the framebuffer is complete: it still renders into the image it "
+                              "attached, but nothing can read or sample the map — the framebuffer does not own the "
+                              "texture; keep it until lab1_destroy_shadow_map deletes it");
         } else if (asked != 1) {
             snprintf(text, n, "%s — ask glCheckFramebufferStatus(GL_FRAMEBUFFER) while map->framebuffer is still "
                               "bound, then bind 0, so an incomplete map is caught (and a complete one not refused "

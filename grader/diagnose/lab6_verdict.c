@@ -296,6 +296,35 @@ static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
                           "corners", factor_lo, divisor);
         return first;
     }
+    /* a radius larger on every row, by more than any rounding step: the distance to the corners measured
+     * from another point; the world's origin and the eye are the ones code reaches for */
+    if (rounded == failing && most >= 0 && _sl_got(v, most, 3) - _sl_want(v, most, 3) > 1 + 0.05 * _sl_want(v, most, 3)) {
+        static const char *const from[] = {"the world's origin (the corners' own length, glm_vec3_norm(corner))",
+                                           "the camera's eye"};
+        for (int p = 0; p < 2; p++) {
+            int fits = 0;
+            for (int r = 0; r < v->k->rows; r++) {
+                if (!_sl_failed(v, r)) continue;
+                const float *in = v->k->inputs[r];
+                double corners[8][3], point[3] = {p ? in[0] : 0, p ? in[1] : 0, p ? in[2] : 0}, farthest = 0;
+                _sl_slice_corners(in, (in[10] - in[8]) / (in[9] - in[8]), (in[11] - in[8]) / (in[9] - in[8]), corners);
+                for (int i = 0; i < 8; i++) farthest = fmax(farthest, _sl_distance3(corners[i], point));
+                fits += fabs(_sl_got(v, r, 3) - farthest) <= 1e-3 * farthest + (double)v->k->above[3];
+            }
+            if (fits == failing) {
+                snprintf(text, n, "the radius is the farthest corner's distance from %s, not from the sphere's centre: "
+                                  "%.4g where the corners lie within %.4g of the centre — the radius is the largest "
+                                  "distance from the corners' mean to a corner",
+                         from[p], _sl_got(v, most, 3), _sl_want(v, most, 3));
+                return most;
+            }
+        }
+        snprintf(text, n, "the radius is %.3g m larger than the farthest corner's distance from the sphere's centre "
+                          "(%.4g where %.4g holds every corner): the radius is the largest distance from the corners' "
+                          "mean to a corner, measured from that centre",
+                 _sl_got(v, most, 3) - _sl_want(v, most, 3), _sl_got(v, most, 3), _sl_want(v, most, 3));
+        return most;
+    }
     if (rounded == failing && v->k->above[3] > 0) {
         snprintf(text, n, "the radius is %.3g m larger than the farthest corner's distance, and the lab lets it be "
                           "rounded up by %g m at most: round up to a multiple of 1/%g m (ceil(r * %g) / %g) or not "

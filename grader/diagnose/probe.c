@@ -164,6 +164,33 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
              k->about[row]);
 }
 
+/* What the rows a function refused have in common that the rows it answered never have: an integer
+ * parameter whose one value on every refused row appears on no answered row (" (count = 4 on each, a
+ * value it accepts on no row)"), so a refusal of a valid input is named by that input. "" otherwise. */
+static void _sl_failed_rows_share(const sl_probe_function *f, const sl_check *k, uint32_t failing, char *out, size_t n) {
+    out[0] = '\0';
+    if (failing == 0 || (failing == (k->rows >= 32 ? ~0u : (1u << k->rows) - 1u))) return;
+    int offset = 0;
+    for (int i = 0; i < f->param_count; offset += sl_probe_type_size(f->params[i].type), i++) {
+        if (f->params[i].type != SL_PROBE_INT) continue;
+        float value = 0;
+        bool same = true, first = true, elsewhere = false;
+        for (int row = 0; row < k->rows && same; row++) {
+            float in = k->inputs[row][offset];
+            if ((failing >> row) & 1u) {
+                if (first) value = in, first = false;
+                same = in == value;
+            }
+        }
+        for (int row = 0; row < k->rows && same; row++)
+            if (!((failing >> row) & 1u) && k->inputs[row][offset] == value) elsewhere = true;
+        if (same && !first && !elsewhere) {
+            snprintf(out, n, " (%s = %g on each, and on no row it answered)", f->params[i].name, (double)value);
+            return;
+        }
+    }
+}
+
 /* ---- what the failing rows' answers are, read against the contract's answers on every row ----
  * Where no verdict names the mistake, three relations that hold on every failing row (its outputs that
  * differ) are told as what they are, for any function: the answers negated, the answers scaled by one
@@ -559,33 +586,36 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
      * bias left out and one negated fit the same rows). Code still the stub's is "not implemented",
      * never a slip. */
     bool stub_shader = f->glsl && sl_diag_still_the_stub(f->file, sl_probe_entry(f)) == 1;
+    /* A C function that answers every output NaN did not return SL_OK: where it does so on the differing
+     * rows alone, that refusal is the mistake, whatever a verdict would read into NaN numbers. */
+    bool all_failed = !f->glsl && failing > 0;
+    for (int row = 0; row < k->rows && all_failed; row++)
+        for (int o = 0; (out->failing_rows >> row) & 1u && o < f->output_count; o++)
+            all_failed &= isnan(cap->numbers[row * f->output_count + o]);
     char slip[sizeof verdict];
-    sl_probe_slip slip_kind = stub_shader ? SL_PROBE_SLIP_NONE
-                                          : sl_probe_generic_slip(k, cap->numbers, ref->numbers, slip, sizeof slip);
+    sl_probe_slip slip_kind = stub_shader || all_failed
+                                  ? SL_PROBE_SLIP_NONE
+                                  : sl_probe_generic_slip(k, cap->numbers, ref->numbers, slip, sizeof slip);
     if (slip_kind == SL_PROBE_SLIP_EDIT) {
         snprintf(verdict, sizeof verdict, "%s", slip);
         shown = first;
-    } else
+    } else if (!all_failed)
         shown = written_check && lab && lab->probe_verdict
                 ? lab->probe_verdict(written_check, cap->numbers, ref->numbers, written_failing, verdict, sizeof verdict)
                 : -1;
-    if (!verdict[0] && written_check) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
+    if (!verdict[0] && written_check && !all_failed) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
     free(written_check);
     if (!verdict[0] && slip_kind != SL_PROBE_SLIP_NONE) {
         snprintf(verdict, sizeof verdict, "%s", slip);
         shown = first;
     }
-    if (!verdict[0] && !f->glsl) {
-        /* a C function answers every output NaN only where it did not return SL_OK */
-        bool all_failed = failing > 0;
-        for (int row = 0; row < k->rows && all_failed; row++)
-            for (int o = 0; (out->failing_rows >> row) & 1u && o < f->output_count; o++)
-                all_failed &= isnan(cap->numbers[row * f->output_count + o]);
+    if (!verdict[0] && all_failed) {
         const char *gl = sl_result_gl_error(r, f->name);
-        if (all_failed)
-            snprintf(verdict, sizeof verdict, "it returned SL_FAILED on %s, where the contract makes %s and returns SL_OK%s%s%s",
-                     failing == k->rows ? "every row" : "every row that differs", k->rows > 1 ? "them" : "it",
-                     gl ? "; GL reported, while it ran: \"" : "", gl ? gl : "", gl ? "\"" : "");
+        char shared[200];
+        _sl_failed_rows_share(f, k, out->failing_rows, shared, sizeof shared);
+        snprintf(verdict, sizeof verdict, "it returned SL_FAILED on %s%s, where the contract makes %s and returns SL_OK%s%s%s",
+                 failing == k->rows ? "every row" : "every row that differs", shared, k->rows > 1 ? "them" : "it",
+                 gl ? "; GL reported, while it ran: \"" : "", gl ? gl : "", gl ? "\"" : "");
     }
     if (shown < 0 || !((out->failing_rows >> shown) & 1u)) shown = first;
     if (!verdict[0]) {
