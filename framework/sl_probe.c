@@ -118,8 +118,18 @@ static const sl_probe_function _sl_functions[] = {
      .outputs = "moments[0] internal format,moments[1] internal format,texture width,moments[0] min filter,"
                 "moments[0] mag filter,moments[0] wrap s,moments[0] wrap t,moments[1] min filter,moments[1] mag filter,"
                 "moments[1] wrap s,moments[1] wrap t,each framebuffer's own texture at GL_COLOR_ATTACHMENT0,"
-                "a depth buffer on framebuffer[0],framebuffers complete,target->size",
-     .output_count = 15, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
+                "a depth buffer on framebuffer[0],framebuffers complete,target->size,framebuffer[0]'s own texture",
+     .output_count = 16, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
+    {.name = "lab5_begin_moments_pass", .lab = 5, .file = "lab5_vsm/lab5.c", .todo = "lab5.2",
+     .outputs = "framebuffer bound (0 or 1),viewport width,viewport height,depth test,depth function,depth writes,"
+                "framebuffer[0]'s depth after the call,framebuffer[0]'s first moment after the call,"
+                "framebuffer[0]'s second moment after the call",
+     .output_count = 9, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
+    {.name = "lab5_begin_blur_pass", .lab = 5, .file = "lab5_vsm/lab5.c", .todo = "lab5.4",
+     .outputs = "framebuffer bound (0 or 1),moments texture on unit 0 (0 or 1),viewport width,viewport height,"
+                "depth test",
+     .output_count = 5, .params = {_SL_I("direction"), _SL_I("size")}, .param_count = 2, .stub_param = -1,
+     .stub_value = NAN},
     {.name = "compute_moments", .lab = 5, .glsl = true, .file = "lab5_vsm/shaders/moments.glsl", .todo = "lab5.3",
      .outputs = "first moment,second moment", .output_count = 2, .params = {_SL_F("depth")}, .param_count = 1,
      .stub_param = -1, .stub_value = 1.0},

@@ -504,7 +504,7 @@ static sl_status _sl_row_lab5_create_moments_target(const float *in, double *out
     sl_moments_target target = {0};
     sl_status status = sl_build_lab_functions.lab5_create_moments_target(size, &target);
     while (glGetError() != GL_NO_ERROR) {}
-    for (int o = 0; o < 15; o++) out[o] = 0;
+    for (int o = 0; o < 16; o++) out[o] = 0;
     _sl_moments_texture_state(target.moments[0], &out[0], &out[2], &out[3]);
     _sl_moments_texture_state(target.moments[1], &out[1], NULL, &out[7]);
     bool own[2] = {false, false};
@@ -531,11 +531,132 @@ static sl_status _sl_row_lab5_create_moments_target(const float *in, double *out
     }
     out[11] = own[0] && own[1];
     out[14] = target.size;
+    out[15] = own[0]; /* which framebuffer lost its texture, when one did */
     while (glGetError() != GL_NO_ERROR) {}
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(2, target.framebuffer);
     glDeleteTextures(2, target.moments);
     if (target.depth) glDeleteRenderbuffers(1, &target.depth);
+    return status;
+}
+
+/* A moments target of `size` made here as lab 5's contract describes it (two GL_RG32F textures, each at
+ * its framebuffer's GL_COLOR_ATTACHMENT0, a depth renderbuffer on framebuffer[0]): what the target is made
+ * of is lab5_create_moments_target's to get right, and this file ships to students. Every texel holds
+ * (0.3, 0.3) and framebuffer[0]'s depths 0.5, so a clear shows. */
+static void _sl_probe_moments_target(int size, sl_moments_target *target) {
+    target->size = size;
+    glGenRenderbuffers(1, &target->depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, target->depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glGenTextures(2, target->moments);
+    glGenFramebuffers(2, target->framebuffer);
+    for (int i = 0; i < 2; i++) {
+        glBindTexture(GL_TEXTURE_2D, target->moments[i]);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, size, size, 0, GL_RG, GL_FLOAT, NULL);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glBindFramebuffer(GL_FRAMEBUFFER, target->framebuffer[i]);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target->moments[i], 0);
+        if (i == 0) glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, target->depth);
+        glViewport(0, 0, size, size);
+        glClearColor(0.3f, 0.3f, 0.3f, 0.3f);
+        glClearDepth(0.5);
+        glDepthMask(GL_TRUE);
+        glClear(GL_COLOR_BUFFER_BIT | (i == 0 ? GL_DEPTH_BUFFER_BIT : 0));
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glClearColor(0, 0, 0, 0);
+    glClearDepth(1.0);
+}
+
+static void _sl_free_probe_moments_target(sl_moments_target *target) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(2, target->framebuffer);
+    glDeleteTextures(2, target->moments);
+    glDeleteRenderbuffers(1, &target->depth);
+    glActiveTexture(GL_TEXTURE0);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+}
+
+/* 0 or 1: which of the target's framebuffers is bound for drawing; -1 another (or none). */
+static double _sl_target_framebuffer_bound(const sl_moments_target *target) {
+    GLint bound = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    return (GLuint)bound == target->framebuffer[0] ? 0 : (GLuint)bound == target->framebuffer[1] ? 1 : -1;
+}
+
+/* lab5_begin_moments_pass on a probe's target, from a state wrong in every way the function must fix (no
+ * framebuffer bound, a 7x5 viewport, the depth test off with GL_ALWAYS, depth writes off, a clear colour
+ * of its own): which framebuffer it binds, the viewport, the depth state, and what framebuffer[0] holds
+ * afterwards (its depth and its moments at the centre: a clear to "nothing in front" shows as 1, (1, 1)). */
+static sl_status _sl_row_lab5_begin_moments_pass(const float *in, double *out) {
+    int size = (int)in[0];
+    sl_moments_target target = {0};
+    _sl_probe_moments_target(size, &target);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, 7, 5);
+    glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_FALSE);
+    glClearColor(0.6f, 0.1f, 0.2f, 0.4f);
+    _sl_neutral_depth_state();
+    sl_status status = sl_build_lab_functions.lab5_begin_moments_pass(&target);
+    GLint viewport[4] = {0}, func = 0;
+    GLboolean writes = GL_FALSE;
+    out[0] = _sl_target_framebuffer_bound(&target);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetIntegerv(GL_DEPTH_FUNC, &func);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &writes);
+    out[1] = viewport[2];
+    out[2] = viewport[3];
+    out[3] = glIsEnabled(GL_DEPTH_TEST);
+    out[4] = func == GL_LEQUAL ? GL_LESS : func; /* both keep the nearest depth: equally right */
+    out[5] = writes;
+    float depth = -1, moments[2] = {-1, -1};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer[0]);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(size / 2, size / 2, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+    glReadPixels(size / 2, size / 2, 1, 1, GL_RG, GL_FLOAT, moments);
+    out[6] = depth;
+    out[7] = moments[0];
+    out[8] = moments[1];
+    while (glGetError() != GL_NO_ERROR) {}
+    glClearColor(0, 0, 0, 0);
+    _sl_neutral_depth_state();
+    _sl_free_probe_moments_target(&target);
+    return status;
+}
+
+/* lab5_begin_blur_pass(direction) on a probe's target, from a wrong state (no framebuffer bound, a 7x5
+ * viewport, the depth test on, texture unit 2 active with nothing on unit 0): which framebuffer it draws
+ * into, which moments texture unit 0 holds for the blur to read, the viewport, the depth test. */
+static sl_status _sl_row_lab5_begin_blur_pass(const float *in, double *out) {
+    int direction = (int)in[0], size = (int)in[1];
+    sl_moments_target target = {0};
+    _sl_probe_moments_target(size, &target);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, 7, 5);
+    glEnable(GL_DEPTH_TEST);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE2);
+    sl_status status = sl_build_lab_functions.lab5_begin_blur_pass(&target, direction);
+    GLint viewport[4] = {0}, texture = 0;
+    out[0] = _sl_target_framebuffer_bound(&target);
+    glActiveTexture(GL_TEXTURE0);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+    out[1] = (GLuint)texture == target.moments[0] ? 0 : (GLuint)texture == target.moments[1] ? 1 : -1;
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    out[2] = viewport[2];
+    out[3] = viewport[3];
+    out[4] = glIsEnabled(GL_DEPTH_TEST);
+    while (glGetError() != GL_NO_ERROR) {}
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glDisable(GL_DEPTH_TEST);
+    _sl_free_probe_moments_target(&target);
     return status;
 }
 
@@ -611,6 +732,8 @@ const sl_technique_probe sl_lab4_probes[] = {
 };
 const sl_technique_probe sl_lab5_probes[] = {
     {.function = "lab5_create_moments_target", .run_row = _sl_row_lab5_create_moments_target},
+    {.function = "lab5_begin_moments_pass", .run_row = _sl_row_lab5_begin_moments_pass},
+    {.function = "lab5_begin_blur_pass", .run_row = _sl_row_lab5_begin_blur_pass},
     {0},
 };
 const sl_technique_probe sl_lab6_probes[] = {

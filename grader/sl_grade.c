@@ -453,8 +453,14 @@ static void _sl_compose(const sl_case *c, const sl_check *k, const sl_case_resul
     if (!out->settled && context && context->experiment_lead && context->experiment_lead[0]) {
         size_t len = strlen(symptom);
         bool ends_sentence = len > 0 && strchr(".?!", symptom[len - 1]) != NULL;
-        snprintf(out->message, sizeof out->message, "%s. What the check measured: %s%s", context->experiment_lead,
-                 symptom, ends_sentence ? "" : ".");
+        /* the function the experiment found, when its own probe failed too: what that probe says is wrong
+         * (two pieces of evidence that agree, the second naming the mistake) */
+        char probe_says[700] = "";
+        const sl_probe_failure *probe = context->experiment_probe;
+        if (probe && !probe->stub && probe->summary[0])
+            snprintf(probe_says, sizeof probe_says, ". Its probe agrees (%s): %s", probe->where, probe->summary);
+        snprintf(out->message, sizeof out->message, "%s%s. What the check measured: %s%s", context->experiment_lead,
+                 probe_says, symptom, ends_sentence ? "" : ".");
         sl_utf8_trim(out->message);
         sl_utf8_copy(out->summary, sizeof out->summary, context->experiment_lead);
         out->cause_kind = NULL;

@@ -48,6 +48,7 @@ typedef struct sl_grade_context {
      * replaces the probes' lead and candidates; the function it names (none: ""), the cause. */
     const char *experiment_lead;
     const char *experiment_function;
+    const sl_probe_failure *experiment_probe; /* that function's failed probe, if it failed one: NULL */
 } sl_grade_context;
 
 /* Grades one check; context may be NULL (nothing known besides this check). */

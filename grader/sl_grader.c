@@ -536,8 +536,18 @@ static int _sl_grade(int argc, char **argv, sl_sandbox *sandbox, char isolation_
                     sl_experiment_lead(v, lead, sizeof lead);
                     if (!lead[0]) continue;
                     sl_image_free(&graded[i].checks[k].diff);
+                    /* the function the experiment found, when its own probe failed too */
+                    const sl_probe_failure *experiment_probe = NULL;
+                    if (v->outcome == SL_EXPERIMENT_SINGLE) {
+                        char name[64];
+                        snprintf(name, sizeof name, "%s", v->functions[0]);
+                        name[strcspn(name, "(")] = '\0';
+                        const sl_probe_function *pf = sl_probe_find(name);
+                        for (int p = 0; pf && p < probe_failure_count && !experiment_probe; p++)
+                            if (probe_failures[p].function == sl_probe_index(pf)) experiment_probe = &probe_failures[p];
+                    }
                     sl_grade_context context = {.earlier = graded[i].checks, .earlier_count = k, .isolated = true,
-                                                .experiment_lead = lead,
+                                                .experiment_lead = lead, .experiment_probe = experiment_probe,
                                                 .experiment_function = v->outcome == SL_EXPERIMENT_SINGLE ||
                                                                                v->outcome == SL_EXPERIMENT_PAIR
                                                                            ? v->functions[0] : ""};

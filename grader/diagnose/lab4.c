@@ -9,6 +9,8 @@
 
 #include "sl_compare.h"
 #include "sl_diag_words.h"
+#include "sl_gl.h"
+#include "verdict_rows.h"
 
 #include <cglm/cglm.h>
 
@@ -266,6 +268,25 @@ void sl_lab4_case_path(const sl_case *c, const sl_case_result *r, char *out, siz
 /* Any filter of lab 4's reads past the map's edge. */
 static bool _sl_lab4_filters_past_edge(const sl_case *c) { return c->params.filter.mode != SL_FILTER_NONE; }
 
+/* lab4_configure_shadow_texture: the probe's texture holds GL_NEAREST_MIPMAP_NEAREST and GL_NEAREST before the
+ * call (sl_probe_calls.c), a pair no mode asks for. Found unchanged on every row that differs, the calls did
+ * not reach depth_texture: set on another texture, or none. */
+static int _sl_verdict_configure(const sl_verdict_rows *v, char *text, size_t n) {
+    int failing = 0, unchanged = 0, first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        failing++;
+        unchanged += _sl_got(v, r, 0) == GL_NEAREST_MIPMAP_NEAREST && _sl_got(v, r, 1) == GL_NEAREST;
+        if (first < 0) first = r;
+    }
+    if (!failing || unchanged < failing) return -1;
+    snprintf(text, n, "none of its settings reached depth_texture: its filters are as they were before the call, on "
+                      "every row that differs — glTexParameteri(GL_TEXTURE_2D, ...) changes the texture bound to "
+                      "GL_TEXTURE_2D on the active unit: bind depth_texture there and set its parameters on that target "
+                      "(glActiveTexture selects a unit, not a texture)");
+    return first;
+}
+
 /* A row of lab4_configure_shadow_texture's probe is in one filter mode: the case's. */
 static int _sl_filter_mode_of(const sl_case *c) { return (int)c->params.filter.mode; }
 
@@ -279,5 +300,5 @@ const sl_lab_diagnoses sl_lab4_diagnoses = {
     .case_path = sl_lab4_case_path,
     .meets_row = sl_lab4_meets_row,
     .lookup_function = _sl_lab4_lookup_function,
-    .functions = {{"lab4_configure_shadow_texture", .case_mode = _sl_filter_mode_of}},
+    .functions = {{"lab4_configure_shadow_texture", _sl_verdict_configure, .case_mode = _sl_filter_mode_of}},
 };

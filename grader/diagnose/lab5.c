@@ -83,6 +83,21 @@ static bool _sl_format_ok(const sl_case_result *r, sl_check_result *out) {
  * says them (a lost channel, or too few bits for the variance). */
 static int _sl_verdict_moments_target(const sl_verdict_rows *v, char *text, size_t n) {
     int first = -1;
+    /* framebuffer[0] with neither its texture nor the depth buffer, the textures themselves right: the
+     * attachments were made to a name that framebuffer[0] no longer holds, or with another one bound */
+    for (int r = 0; r < v->k->rows && v->f->output_count >= 16; r++) {
+        if (!_sl_failed(v, r)) continue;
+        bool textures_right = true;
+        for (int o = 0; o < 11; o++) textures_right &= fabs(_sl_got(v, r, o) - _sl_want(v, r, o)) <= 1e-6;
+        if (!textures_right || _sl_got(v, r, 15) != 0 || _sl_got(v, r, 12) != 0) break;
+        snprintf(text, n, "framebuffer[0] holds neither moments[0] nor the depth buffer when the function returns "
+                          "(%g of 2 framebuffers complete): its attachments went to another framebuffer — a name "
+                          "generated again after attaching (glGenFramebuffers inside the loop replaces framebuffer[0]) "
+                          "or framebuffer[0] not bound while attaching. Generate both names once, then bind "
+                          "framebuffer[i] before attaching moments[i]",
+                 _sl_got(v, r, 13));
+        return r;
+    }
     GLenum format = 0;
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r)) continue;
@@ -110,6 +125,62 @@ static int _sl_verdict_moments_target(const sl_verdict_rows *v, char *text, size
         snprintf(text, n, "the moments are stored as %s: create moments[0] and moments[1] as GL_RG32F, two 32-bit "
                           "float channels for the depth and its square", sl_gl_enum_name(format));
     return first;
+}
+
+/* lab5_begin_moments_pass's probe: which framebuffer it binds (0 or 1, -1 another), then the state and what
+ * framebuffer[0] holds after it, each said as the contract's step that sets it. */
+static int _sl_verdict_moments_pass(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
+        double bound = _sl_got(v, r, 0);
+        if (bound != 0)
+            snprintf(text, n, "it binds %s, where the moments pass draws into framebuffer[0]: moments[0] with the depth "
+                              "buffer, which the horizontal blur then reads — framebuffer[1] is the blur's",
+                     bound == 1 ? "framebuffer[1]" : "neither of the target's framebuffers");
+        else if (_sl_got(v, r, 1) != _sl_want(v, r, 1) || _sl_got(v, r, 2) != _sl_want(v, r, 2))
+            snprintf(text, n, "the viewport is %gx%g, not the target's %gx%g: glViewport(0, 0, target->size, "
+                              "target->size) after binding", _sl_got(v, r, 1), _sl_got(v, r, 2), _sl_want(v, r, 1),
+                     _sl_want(v, r, 2));
+        else if (_sl_got(v, r, 7) != _sl_want(v, r, 7) || _sl_got(v, r, 8) != _sl_want(v, r, 8))
+            snprintf(text, n, "framebuffer[0]'s moments are (%.3g, %.3g) after it, not (1, 1): clear the colour to the "
+                              "moments of \"nothing in front\", glClearColor(1, 1, 0, 0) before glClear(GL_COLOR_BUFFER_BIT "
+                              "| GL_DEPTH_BUFFER_BIT), with framebuffer[0] bound",
+                     _sl_got(v, r, 7), _sl_got(v, r, 8));
+        else if (_sl_got(v, r, 6) != _sl_want(v, r, 6))
+            snprintf(text, n, "framebuffer[0]'s depth is %.3g after it, not 1.0: clear the depth too (GL_DEPTH_BUFFER_BIT, "
+                              "with depth writes on), or the last frame's depths hide this frame's surfaces",
+                     _sl_got(v, r, 6));
+        else
+            return -1;
+        sl_verdict_predicts(v, SL_SYMPTOMS_ANY);
+        return r;
+    }
+    return -1;
+}
+
+/* lab5_begin_blur_pass's probe: the ping-pong, framebuffer and texture, in the contract's words. */
+static int _sl_verdict_blur_pass(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
+        int direction = (int)v->k->inputs[r][0];
+        double drawn = _sl_got(v, r, 0), read = _sl_got(v, r, 1);
+        if (drawn != _sl_want(v, r, 0) || read != _sl_want(v, r, 1)) {
+            char drawn_text[40], read_text[60];
+            snprintf(drawn_text, sizeof drawn_text, drawn < 0 ? "neither framebuffer" : "framebuffer[%.0f]", drawn);
+            snprintf(read_text, sizeof read_text, read < 0 ? "neither moments texture on unit 0" : "moments[%.0f]", read);
+            snprintf(text, n, "direction %d draws into %s and reads %s, where it reads moments[%d] (bound on texture "
+                              "unit 0: glActiveTexture(GL_TEXTURE0) first) and draws into framebuffer[%d] — the "
+                              "ping-pong: direction 0 from [0] into [1], direction 1 from [1] into [0]",
+                     direction, drawn_text, read_text, direction, 1 - direction);
+        } else if (_sl_got(v, r, 4) != _sl_want(v, r, 4)) {
+            snprintf(text, n, "the depth test is still on: a full-screen pass tests nothing, glDisable(GL_DEPTH_TEST)");
+        } else {
+            return -1;
+        }
+        sl_verdict_predicts(v, SL_SYMPTOMS_ANY);
+        return r;
+    }
+    return -1;
 }
 
 static bool _sl_mipmapped(double filter) {
@@ -749,10 +820,10 @@ static void _sl_lab5_lookup_function(const sl_case *c, const char **function, co
 const sl_lab_diagnoses sl_lab5_diagnoses = {
     .lab = 5,
     .lookup_function = _sl_lab5_lookup_function,
-    .functions = {{"lab5_create_moments_target", _sl_verdict_moments_target}},
-    .unprobed = {{"lab5_begin_moments_pass", 5, "TODO(lab5.2)", false},
-                 {"lab5_begin_blur_pass", 5, "TODO(lab5.4)", false},
-                 {"lab5_filter_moments", 5, "TODO(lab5.6)", false}},
+    .functions = {{"lab5_create_moments_target", _sl_verdict_moments_target},
+                  {"lab5_begin_moments_pass", _sl_verdict_moments_pass},
+                  {"lab5_begin_blur_pass", _sl_verdict_blur_pass}},
+    .unprobed = {{"lab5_filter_moments", 5, "TODO(lab5.6)", false}},
     .filtered_lookup = true,
     .filters_past_edge = _sl_lab5_filters_past_edge,
     .checks = {{SL_CHECK_MOMENTS, sl_diagnose_moments},

@@ -676,7 +676,7 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
 }
 
 static int _sl_verdict_cascade_index(const sl_verdict_rows *v, char *text, size_t n) {
-    int failing = 0, plus = 0, minus = 0, distance = 0, first = -1;
+    int failing = 0, plus = 0, minus = 0, distance = 0, evenly = 0, first = -1;
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r)) continue;
         const float *in = v->k->inputs[r];
@@ -689,16 +689,26 @@ static int _sl_verdict_cascade_index(const sl_verdict_rows *v, char *text, size_
                 by_distance = i;
                 break;
             }
+        /* the index as the depth's fraction of the last split, as if the splits were evenly spaced */
+        double last = in[3 + (count >= 1 && count <= 4 ? count - 1 : 0)];
+        double fraction = last > 0 ? floor(-in[2] / last * count) : -1;
         failing++;
         plus += got == want + 1;
         minus += got == want - 1;
         distance += got == by_distance;
+        evenly += got == fmin(fmax(fraction, 0), count - 1) || got == fraction;
         if (first < 0) first = r;
     }
     if (!failing) return -1;
     if (distance == failing) {
         snprintf(text, n, "cascades chosen by the distance to the camera, length(view_position), not by view depth "
                           "-view_position.z: the splits are planes across the view direction");
+        return first;
+    }
+    if (evenly == failing) {
+        snprintf(text, n, "the index is the depth's fraction of the last split, int(depth / split_far[count - 1] * "
+                          "count), as if the splits were evenly spaced: the practical splits crowd near the camera, "
+                          "so return the first cascade whose far split lies beyond the depth (a loop over split_far)");
         return first;
     }
     if (plus == failing || minus == failing) {

@@ -20,6 +20,12 @@
 #include "sl_utf8.h"
 
 /* A number as a message shows it: a GL enum by its name where the output is one. */
+
+/* A 4x4 matrix, column-major (m00, m10, ...): sixteen outputs named as one; GL state may have sixteen too. */
+static bool _sl_is_matrix(const sl_probe_function *f) {
+    return f->output_count == 16 && strncmp(f->outputs, "m00,", 4) == 0;
+}
+
 static void _sl_value_named(double v, bool gl_enum, char *out, size_t n) {
     if (isnan(v)) {
         snprintf(out, n, "NaN");
@@ -129,7 +135,7 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
         int order[SL_PROBE_MAX_OUTPUTS], count = 0;
         for (int o = 0; o < f->output_count; o++)
             if (!_sl_close_enough(k, row, o, s[o], e[o])) order[count++] = o;
-        for (int a = 0; a < count && f->output_count == 16; a++)
+        for (int a = 0; a < count && _sl_is_matrix(f); a++)
             for (int b = a + 1; b < count; b++) {
                 double da = isnan(s[order[a]]) ? INFINITY : fabs(s[order[a]] - e[order[a]]);
                 double db = isnan(s[order[b]]) ? INFINITY : fabs(s[order[b]] - e[order[b]]);
@@ -140,7 +146,7 @@ static void _sl_row_evidence(const sl_probe_function *f, const sl_check *k, int 
                 }
             }
         const char *about = k->about[row], *dash = about[0] ? " — " : "";
-        if (f->output_count == 16 && count > 0) {
+        if (_sl_is_matrix(f) && count > 0) {
             char a[48], b[48], name[16];
             _sl_value(s[order[0]], a, sizeof a);
             _sl_value(e[order[0]], b, sizeof b);
@@ -265,7 +271,7 @@ static const struct {
 static bool _sl_single_output(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
                               uint32_t failing, const uint32_t *differs, char *out, size_t n) {
     int outputs = f->output_count;
-    if (f->glsl || outputs < 2 || outputs == 16) return false;
+    if (f->glsl || outputs < 2 || _sl_is_matrix(f)) return false;
     uint32_t mask = 0;
     int rows = 0, example = -1;
     for (int row = 0; row < k->rows; row++) {
@@ -291,7 +297,7 @@ static bool _sl_single_output(const sl_probe_function *f, const sl_check *k, con
 static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
                              uint32_t failing, const uint32_t *differs, char *out, size_t n) {
     int outputs = f->output_count;
-    if (outputs == 16) return false; /* a matrix: told as the camera it is */
+    if (_sl_is_matrix(f)) return false; /* a matrix: told as the camera it is */
     /* negated, or scaled by one factor, on every output that differs */
     bool negated = true, scaled = true, any = false;
     double factor = NAN, wanted = NAN;
@@ -648,7 +654,7 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
         }
     }
     /* a matrix no verdict names: told as the camera it is (where it looks, its field of view, its box) */
-    if (!verdict[0] && f->output_count == 16)
+    if (!verdict[0] && _sl_is_matrix(f))
         sl_camera_differences(&cap->numbers[shown * 16], &ref->numbers[shown * 16], verdict, sizeof verdict);
     /* a verdict that named the mistake says what it shows, for every failing row */
     for (int row = 0; verdict[0] && verdict_predicts && row < k->rows; row++)
