@@ -68,6 +68,19 @@ static bool _sl_describe_bias_matrix(const double *sm, const double *pv, char *t
     if (!_sl_invert(pv, inv)) return false;
     _sl_mul(sm, inv, w);
     const double tolerance = 1e-3;
+    /* W transposed (column-major w[col * 4 + row]): 0.5 on the diagonal, w' = 0.5 x + 0.5 y + 0.5 z + w */
+    bool transposed = true;
+    for (int col = 0; col < 4 && transposed; col++)
+        for (int row = 0; row < 4; row++) {
+            double want = row == col ? (row == 3 ? 1 : 0.5) : row == 3 ? 0.5 : 0;
+            transposed &= fabs(w[col * 4 + row] - want) <= tolerance;
+        }
+    if (transposed) {
+        snprintf(text, n, "the bias matrix W is transposed: its translation (0.5, 0.5, 0.5) ends up in the bottom row "
+                          "(w' = 0.5 x + 0.5 y + 0.5 z + w), not the last column — cglm's mat4 is column-major, so an "
+                          "initialiser lists columns: {{0.5,0,0,0}, {0,0.5,0,0}, {0,0,0.5,0}, {0.5,0.5,0.5,1}}");
+        return true;
+    }
     for (int row = 0; row < 4; row++)
         for (int col = 0; col < 3; col++)
             if (col != row && fabs(w[col * 4 + row]) > tolerance) return false; /* a coordinate from another */
