@@ -124,7 +124,7 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
  * far corner 1): the contract's, from the split distances (_sl_sphere), or a slip's fractions. */
 /* The 8 corners of the slice whose corners lie at fractions ta and tb of each frustum edge (near corner 0,
  * far corner 1), in world space (the probe's camera, GL conventions). */
-static void _sl_slice_corners(const float *in, double ta, double tb, double corners[8][3]) {
+static void _sl_slice_corners_as(const float *in, double ta, double tb, bool divide, double corners[8][3]) {
     sl_camera cam = {.fov_deg = in[6], .near = in[8], .far = in[9]};
     glm_vec3_copy((float *)in, cam.position);
     glm_vec3_copy((float *)in + 3, cam.target);
@@ -138,11 +138,15 @@ static void _sl_slice_corners(const float *in, double ta, double tb, double corn
         glm_mat4_mulv(inv, a, wa);
         glm_mat4_mulv(inv, b, wb);
         for (int k = 0; k < 3; k++) {
-            double cn = wa[k] / wa[3], cf = wb[k] / wb[3];
+            double cn = divide ? wa[k] / wa[3] : wa[k], cf = divide ? wb[k] / wb[3] : wb[k];
             corners[i][k] = cn + (cf - cn) * ta;
             corners[4 + i][k] = cn + (cf - cn) * tb;
         }
     }
+}
+
+static void _sl_slice_corners(const float *in, double ta, double tb, double corners[8][3]) {
+    _sl_slice_corners_as(in, ta, tb, true, corners);
 }
 
 static double _sl_distance3(const double *a, const double *b) {
@@ -201,6 +205,28 @@ static int _sl_sphere_by_contract(const sl_verdict_rows *v, char *text, size_t n
         if (worst < 0 || error > worst_error) worst = r, worst_error = error;
     }
     if (worst < 0) return -1;
+    /* every failing row's sphere is the one around corners left homogeneous (xyz of inv(VP) * ndc, no / w) */
+    int undivided = 0, failing = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *row = v->k->inputs[r];
+        double raw[8][3], centre[3] = {0, 0, 0}, radius = 0, error = 0;
+        _sl_slice_corners_as(row, (row[10] - row[8]) / (row[9] - row[8]), (row[11] - row[8]) / (row[9] - row[8]), false,
+                             raw);
+        for (int i = 0; i < 8; i++)
+            for (int k = 0; k < 3; k++) centre[k] += raw[i][k] / 8;
+        for (int i = 0; i < 8; i++) radius = fmax(radius, _sl_distance3(raw[i], centre));
+        for (int k = 0; k < 3; k++) error = fmax(error, fabs(_sl_got(v, r, k) - centre[k]));
+        error = fmax(error, fabs(_sl_got(v, r, 3) - radius) - (double)v->k->above[3]);
+        failing++;
+        undivided += error <= 1e-3 * fmax(1, radius);
+    }
+    if (failing && undivided == failing) {
+        snprintf(text, n, "the corners are not divided by w: inv_view_projection * (x, y, -1 or 1, 1) is a homogeneous "
+                          "point, and its xyz alone is not the corner (w is not 1 under a perspective projection) — "
+                          "divide xyz by w, then move along each edge to split_near and split_far");
+        return worst;
+    }
     const float *in = v->k->inputs[worst];
     double near = in[8], far = in[9], split_near = in[10], split_far = in[11], corners[8][3];
     _sl_slice_corners(in, (split_near - near) / (far - near), (split_far - near) / (far - near), corners);
