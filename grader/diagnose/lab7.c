@@ -732,8 +732,8 @@ static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, con
         lighter += s[row] > e[row];
         if (first_bias < 0) first_bias = row;
     }
-    /* the soft lookup: rows that differ only in the radius, the same answer where the solution's differ */
     const sl_probe_function *f = sl_probe_at(k->function);
+    /* the soft lookup: rows that differ only in the radius, the same answer where the solution's differ */
     for (int a = 0; f && f->param_count == 5 && a < k->rows; a++) {
         if (!((failing >> a) & 1u)) continue;
         for (int b = 0; b < k->rows; b++) {
@@ -755,6 +755,31 @@ static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, con
                 snprintf(text, n, "the disk ignores radius: radius %g and radius %g give the same — the samples go "
                                   "out to radius * length(light_to_fragment) / far_plane around the direction",
                          (double)ia[6], (double)ib[6]);
+                return a;
+            }
+        }
+    }
+    /* the soft lookup: rows along the same direction at different distances (all else equal), where the
+     * contract's disk covers the same angle and so gives the same answer, and the student's answers differ:
+     * the disk's angle changes with the distance (offsets added to the unit direction, or a disk not scaled
+     * by the distance) */
+    for (int a = 0; f && f->param_count == 5 && a < k->rows; a++) {
+        if (!((failing >> a) & 1u)) continue;
+        for (int b = 0; b < k->rows; b++) {
+            const float *ia = k->inputs[a], *ib = k->inputs[b];
+            double la = _sl_length3(&ia[1]), lb = _sl_length3(&ib[1]);
+            if (b == a || ia[0] != ib[0] || ia[4] != ib[4] || ia[5] != ib[5] || ia[6] != ib[6] || la <= 0 || lb <= 0 ||
+                fabs(la - lb) < 0.1 * fmax(la, lb))
+                continue;
+            bool parallel = true;
+            for (int j = 0; j < 3; j++) parallel &= fabs(ia[1 + j] / la - ib[1 + j] / lb) <= 1e-3;
+            if (parallel && fabs(e[a] - e[b]) <= 1e-3 && fabs(s[a] - s[b]) > 0.05) {
+                snprintf(text, n, "the disk's angle changes with the distance: along one direction, %.3g and %.3g from "
+                                  "the light, it answers %.3g and %.3g where the contract gives %.3g at both — the offsets "
+                                  "are radius * length(light_to_fragment) / far_plane, added to light_to_fragment itself, so "
+                                  "the disk covers the same angle at any distance (offsets added to the unit direction "
+                                  "grow with it, a disk of fixed size shrinks)", fmin(la, lb), fmax(la, lb), la < lb ? s[a] : s[b], la < lb ? s[b] : s[a],
+                         e[a]);
                 return a;
             }
         }
