@@ -184,8 +184,8 @@ static const sl_probe_function _sl_functions[] = {
      .output_count = 9, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
     {.name = "lab7_begin_cube_pass", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.2",
      .outputs = "map's framebuffer bound,attached face,viewport width,viewport height,depth test,depth writes,"
-                "depth after the call,viewport x,viewport y",
-     .output_count = 9, .params = {_SL_I("face"), _SL_I("size")}, .param_count = 2, .stub_param = -1,
+                "depth after the call,viewport x,viewport y,depth function",
+     .output_count = 10, .params = {_SL_I("face"), _SL_I("size")}, .param_count = 2, .stub_param = -1,
      .stub_value = NAN},
     {.name = "lab7_face_view", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.3", .outputs = _SL_MATRIX_OUT,
      .output_count = 16, .params = {_SL_I("face"), _SL_V3("light_position")}, .param_count = 2, .stub_param = -1,

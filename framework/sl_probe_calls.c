@@ -264,8 +264,11 @@ static sl_status _sl_call_begin_cube_pass(const sl_lab_functions *labs, int face
     glViewport(0, 0, 7, 5);
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
+    /* the framework's depth function, GL_LESS: the README leaves it to the function, so only one it
+     * changes to a function that does not keep the nearest depth is wrong */
+    glDepthFunc(GL_LESS);
     sl_status status = labs->lab7_begin_cube_pass(&map, face);
-    GLint bound = 0, viewport[4] = {0}, attached = 0;
+    GLint bound = 0, viewport[4] = {0}, attached = 0, func = 0;
     GLboolean writes = GL_FALSE;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
     glGetIntegerv(GL_VIEWPORT, viewport);
@@ -280,6 +283,8 @@ static sl_status _sl_call_begin_cube_pass(const sl_lab_functions *labs, int face
     /* the viewport's corner: each face is its own size x size attachment, so (0, 0) whatever the face */
     out[7] = viewport[0];
     out[8] = viewport[1];
+    glGetIntegerv(GL_DEPTH_FUNC, &func);
+    out[9] = func == GL_LEQUAL ? GL_LESS : func; /* both keep the nearest depth: equally right */
     if (out[0]) {
         glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
                                               GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, &attached);

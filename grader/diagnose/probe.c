@@ -244,6 +244,8 @@ static const struct {
     {"depth after the call", "a clear writes to the framebuffer bound, and the texture attached, when it runs, and "
                              "writes no depth while depth writes are off: bind (and attach), glDepthMask(GL_TRUE), "
                              "then glClear(GL_DEPTH_BUFFER_BIT)"},
+    {"depth function", "each texel keeps the nearest surface's depth: glDepthFunc(GL_LESS) (or GL_LEQUAL), so the "
+                       "depth test lets a fragment through only when it is nearer than what is stored"},
     {"faces with storage", "each of the six faces needs its own glTexImage2D, at GL_TEXTURE_CUBE_MAP_POSITIVE_X + i "
                            "for i = 0 to 5"},
     {"min filter", "the minification filter is its own parameter, glTexParameteri(..., GL_TEXTURE_MIN_FILTER, ...)"},

@@ -455,6 +455,55 @@ static void _sl_expect_pcf_grid(const sl_probe_function *f, const float *row, in
     out[0] = _sl_grid(f, row, (int)_sl_get(f, row, "radius", 0), (_sl_grid_slip)slip);
 }
 
+/* lab 3 (bonus): the midpoint of two maps, with w != 1 and a second surface near enough that the two
+ * depths' sum lies below 1 (a sum where the half belongs then shadows where it should not, and the
+ * first or the second depth alone each turn rows of their own) */
+static void _sl_draw_midpoint(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    double u = _sl_in_texel(r, _sl_integer(r, 20, 44)), v = _sl_in_texel(r, _sl_integer(r, 4, SL_PROBE_MAP_SIZE - 5));
+    double first = _sl_map_at(SL_PROBE_MAP_OCCLUDED, u, v), second = _sl_map_at(SL_PROBE_MAP_RAMP, u, v);
+    double middle = 0.5 * (first + second), z;
+    const char *where;
+    switch (index % 4) {
+    case 0: z = _sl_uniform(r, middle + 0.25 * (second - middle), second - 0.25 * (second - middle)), where = "past the midpoint, before the second surface: shadowed"; break;
+    case 1: z = _sl_uniform(r, first + 0.25 * (middle - first), middle - 0.25 * (middle - first)), where = "past the first surface, before the midpoint: lit"; break;
+    case 2: z = _sl_uniform(r, second + 0.02, fmin(first + second + 0.05, 0.98)), where = "past the second surface: shadowed"; break;
+    default: z = _sl_uniform(r, 0.05, first - 0.03), where = "in front of both surfaces: lit"; break;
+    }
+    double p[3] = {u, v, z}, coord[4];
+    _sl_homogeneous(r, index % 2 == 0, p, coord);
+    _sl_set1(f, row, "first_depth", SL_PROBE_MAP_OCCLUDED);
+    _sl_set1(f, row, "second_depth", SL_PROBE_MAP_RAMP);
+    _sl_set(f, row, "shadow_coord", coord);
+    snprintf(about, n, "generic: w = %.3g, the surfaces at %.3g and %.3g (midpoint %.3g), the point at depth %.3g, %s",
+             coord[3], first, second, middle, z, where);
+}
+
+static const char *const _sl_midpoint_slips[][2] = {
+    {"", ""},
+    {"the two depths added, not averaged", "midpoint = 0.5 * (first + second)"},
+    {"the first map's depth alone", "the midpoint of both maps' depths"},
+    {"the second map's depth alone", "the midpoint of both maps' depths"},
+    {"xyz not divided by w", "p = shadow_coord.xyz / shadow_coord.w"},
+    {"lit and shadowed swapped", "p.z > midpoint: shadowed (0), else lit (1)"},
+    {NULL, NULL},
+};
+
+static void _sl_expect_midpoint(const sl_probe_function *f, const float *row, int slip, double *out) {
+    double c[4];
+    for (int j = 0; j < 4; j++) c[j] = _sl_get(f, row, "shadow_coord", j);
+    double w = slip == 4 ? 1 : c[3], p[3] = {c[0] / w, c[1] / w, c[2] / w};
+    if (c[3] <= 0 || p[0] < 0 || p[1] < 0 || p[2] < 0 || p[0] > 1 || p[1] > 1 || p[2] > 1) {
+        out[0] = 1;
+        return;
+    }
+    sl_probe_map a = (sl_probe_map)(int)_sl_get(f, row, "first_depth", 0);
+    sl_probe_map b = (sl_probe_map)(int)_sl_get(f, row, "second_depth", 0);
+    double first = _sl_map_at(a, p[0], p[1]), second = _sl_map_at(b, p[0], p[1]);
+    double middle = slip == 1 ? first + second : slip == 2 ? first : slip == 3 ? second : 0.5 * (first + second);
+    bool shadowed = p[2] > middle;
+    out[0] = (slip == 5 ? shadowed : !shadowed) ? 1 : 0;
+}
+
 /* lab 3: min(constant + slope * tan(theta), max_bias), cos(theta) = n_dot_l, every term non-zero */
 static void _sl_draw_slope_bias(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
     /* one row in four near grazing (below 0.1) and still under max_bias, where a floor on cos of its own shows */
@@ -803,6 +852,8 @@ static const char *const _sl_blend_slips[][2] = {
     {"the band measured from split_near: start = split_near + band * (split_far - split_near)",
      "start = split_far - band * (split_far - split_near)"},
     {"no clamp to [0, 1]", "clamped to [0, 1]"},
+    {"divided by band, the fraction, where the band's width in view depth is split_far - start = band * (split_far - "
+     "split_near)", "(view_depth - start) / (split_far - start)"},
     {NULL, NULL},
 };
 
@@ -813,7 +864,7 @@ static void _sl_expect_blend(const sl_probe_function *f, const float *row, int s
         return;
     }
     double start = slip == 2 ? sf - band : slip == 3 ? sn + band * (sf - sn) : sf - band * (sf - sn);
-    double w = (_sl_get(f, row, "view_depth", 0) - start) / (sf - start);
+    double w = (_sl_get(f, row, "view_depth", 0) - start) / (slip == 5 ? band : sf - start);
     if (slip != 4) w = fmin(fmax(w, 0), 1);
     out[0] = slip == 1 ? 1 - w : w;
 }
@@ -931,6 +982,7 @@ static const _sl_generic _sl_generics[] = {
      "tan_theta = sqrt(1 - n_dot_l * n_dot_l) / n_dot_l; min(constant_bias + slope * tan_theta, max_bias)", 0},
     {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset, _sl_normal_offset_slips,
      "world_position[i] + normal[i] * texels * texel_world_size * (1 - n_dot_l)", 0},
+    {"midpoint_compare", _sl_draw_midpoint, _sl_expect_midpoint, _sl_midpoint_slips, NULL, 0},
     {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid, _sl_grid_slips, NULL, 1ull << _SL_GRID_CENTRE_DRIFTS},
     {"compute_moments", _sl_draw_moments, _sl_expect_moments, _sl_moments_slips, "if(i == 0, depth, depth * depth)", 0},
     {"blur_moments", _sl_draw_blur, _sl_expect_blur, _sl_blur_slips, NULL, 0},
