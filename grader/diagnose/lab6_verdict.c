@@ -124,7 +124,7 @@ static int _sl_verdict_splits(const sl_verdict_rows *v, char *text, size_t n) {
  * far corner 1): the contract's, from the split distances (_sl_sphere), or a slip's fractions. */
 /* The 8 corners of the slice whose corners lie at fractions ta and tb of each frustum edge (near corner 0,
  * far corner 1), in world space (the probe's camera, GL conventions). */
-static void _sl_slice_corners_as(const float *in, double ta, double tb, bool divide, double corners[8][3]) {
+static void _sl_slice_corners_as(const float *in, double ta, double tb, bool divide, float near_z, double corners[8][3]) {
     sl_camera cam = {.fov_deg = in[6], .near = in[8], .far = in[9]};
     glm_vec3_copy((float *)in, cam.position);
     glm_vec3_copy((float *)in + 3, cam.target);
@@ -134,7 +134,7 @@ static void _sl_slice_corners_as(const float *in, double ta, double tb, bool div
     glm_mat4_mul(proj, view, vp);
     glm_mat4_inv(vp, inv);
     for (int i = 0; i < 4; i++) {
-        vec4 a = {(i & 1) ? 1.f : -1.f, (i & 2) ? 1.f : -1.f, -1, 1}, b = {a[0], a[1], 1, 1}, wa, wb;
+        vec4 a = {(i & 1) ? 1.f : -1.f, (i & 2) ? 1.f : -1.f, near_z, 1}, b = {a[0], a[1], 1, 1}, wa, wb;
         glm_mat4_mulv(inv, a, wa);
         glm_mat4_mulv(inv, b, wb);
         for (int k = 0; k < 3; k++) {
@@ -146,7 +146,7 @@ static void _sl_slice_corners_as(const float *in, double ta, double tb, bool div
 }
 
 static void _sl_slice_corners(const float *in, double ta, double tb, double corners[8][3]) {
-    _sl_slice_corners_as(in, ta, tb, true, corners);
+    _sl_slice_corners_as(in, ta, tb, true, -1, corners);
 }
 
 static double _sl_distance3(const double *a, const double *b) {
@@ -205,27 +205,40 @@ static int _sl_sphere_by_contract(const sl_verdict_rows *v, char *text, size_t n
         if (worst < 0 || error > worst_error) worst = r, worst_error = error;
     }
     if (worst < 0) return -1;
-    /* every failing row's sphere is the one around corners left homogeneous (xyz of inv(VP) * ndc, no / w) */
-    int undivided = 0, failing = 0;
-    for (int r = 0; r < v->k->rows; r++) {
-        if (!_sl_failed(v, r)) continue;
-        const float *row = v->k->inputs[r];
-        double raw[8][3], centre[3] = {0, 0, 0}, radius = 0, error = 0;
-        _sl_slice_corners_as(row, (row[10] - row[8]) / (row[9] - row[8]), (row[11] - row[8]) / (row[9] - row[8]), false,
-                             raw);
-        for (int i = 0; i < 8; i++)
-            for (int k = 0; k < 3; k++) centre[k] += raw[i][k] / 8;
-        for (int i = 0; i < 8; i++) radius = fmax(radius, _sl_distance3(raw[i], centre));
-        for (int k = 0; k < 3; k++) error = fmax(error, fabs(_sl_got(v, r, k) - centre[k]));
-        error = fmax(error, fabs(_sl_got(v, r, 3) - radius) - (double)v->k->above[3]);
-        failing++;
-        undivided += error <= 1e-3 * fmax(1, radius);
-    }
-    if (failing && undivided == failing) {
-        snprintf(text, n, "the corners are not divided by w: inv_view_projection * (x, y, -1 or 1, 1) is a homogeneous "
-                          "point, and its xyz alone is not the corner (w is not 1 under a perspective projection) — "
-                          "divide xyz by w, then move along each edge to split_near and split_far");
-        return worst;
+    /* every failing row's sphere is the one around corners taken another way: left homogeneous (xyz of
+     * inv(VP) * ndc, no / w), or with the near plane at NDC z = 0 (Direct3D's and Vulkan's depth range) */
+    static const struct {
+        bool divide;
+        float near_z;
+        const char *text;
+    } ways[] = {
+        {false, -1, "the corners are not divided by w: inv_view_projection * (x, y, -1 or 1, 1) is a homogeneous "
+                    "point, and its xyz alone is not the corner (w is not 1 under a perspective projection) — "
+                    "divide xyz by w, then move along each edge to split_near and split_far"},
+        {true, 0, "the near corners are taken at NDC z = 0, Direct3D's and Vulkan's near plane: GL's clip space runs "
+                  "from z = -1 at the near plane to 1 at the far one, so inv_view_projection * (x, y, 0, 1) is a point "
+                  "part way into the frustum — take the near corners at z = -1"},
+    };
+    for (size_t w = 0; w < sizeof ways / sizeof ways[0]; w++) {
+        int fits = 0, failing = 0;
+        for (int r = 0; r < v->k->rows; r++) {
+            if (!_sl_failed(v, r)) continue;
+            const float *row = v->k->inputs[r];
+            double raw[8][3], centre[3] = {0, 0, 0}, radius = 0, error = 0;
+            _sl_slice_corners_as(row, (row[10] - row[8]) / (row[9] - row[8]), (row[11] - row[8]) / (row[9] - row[8]),
+                                 ways[w].divide, ways[w].near_z, raw);
+            for (int i = 0; i < 8; i++)
+                for (int k = 0; k < 3; k++) centre[k] += raw[i][k] / 8;
+            for (int i = 0; i < 8; i++) radius = fmax(radius, _sl_distance3(raw[i], centre));
+            for (int k = 0; k < 3; k++) error = fmax(error, fabs(_sl_got(v, r, k) - centre[k]));
+            error = fmax(error, fabs(_sl_got(v, r, 3) - radius) - (double)v->k->above[3]);
+            failing++;
+            fits += error <= 1e-3 * fmax(1, radius);
+        }
+        if (failing && fits == failing) {
+            snprintf(text, n, "%s", ways[w].text);
+            return worst;
+        }
     }
     const float *in = v->k->inputs[worst];
     double near = in[8], far = in[9], split_near = in[10], split_far = in[11], corners[8][3];
@@ -507,6 +520,17 @@ static bool _sl_twins(const float *a, const float *b) {
     return true;
 }
 
+/* 0 (x) or 1 (y) when two boxes' world origins land on whole texels in that axis alone and slide in the
+ * other: the snap is done in one axis only; -1 otherwise. */
+static int _sl_snapped_in_one_axis(const _sl_light_box *a, const _sl_light_box *b, double gx, double gy) {
+    for (int axis = 0; axis < 2; axis++) {
+        bool whole = fabs(a->origin[axis] - round(a->origin[axis])) <= 0.02 &&
+                     fabs(b->origin[axis] - round(b->origin[axis])) <= 0.02;
+        if (whole && (axis == 0 ? gy : gx) > 0.02) return axis;
+    }
+    return -1;
+}
+
 static bool _sl_cascade_matrices_contract(const sl_check *k, const double *student, uint32_t *broken, char *text,
                                           size_t n, int *shown) {
     _sl_light_box boxes[SL_PROBE_MAX_ROWS];
@@ -541,6 +565,17 @@ static bool _sl_cascade_matrices_contract(const sl_check *k, const double *stude
             if (!same_box)
                 snprintf(text, n, "the box turns or changes size when only the sphere's centre moves: keep the "
                                   "light's up vector and the box's size fixed, so the texel grid stays put");
+            else if (_sl_snapped_in_one_axis(&boxes[a], &boxes[b], gx, gy) >= 0) {
+                /* one axis keeps the origin on whole texels: the snap is there, the other axis's is not its own */
+                char good = _sl_snapped_in_one_axis(&boxes[a], &boxes[b], gx, gy) == 0 ? 'x' : 'y';
+                char bad = good == 'x' ? 'y' : 'x';
+                snprintf(text, n, "shadows shimmer as the camera moves: the projection is snapped to whole texels in "
+                                  "%c but not in %c — when the sphere moves, the world's origin lands at texel (%.2f, "
+                                  "%.2f), then at (%.2f, %.2f): whole texels in %c, %.2f of a texel apart in %c; the %c "
+                                  "offset must round the origin's own %c in texels, as the %c offset does",
+                         good, bad, boxes[a].origin[0], boxes[a].origin[1], boxes[b].origin[0], boxes[b].origin[1],
+                         good, bad == 'x' ? gx : gy, bad, bad, bad, good);
+            }
             else
                 snprintf(text, n, "shadows shimmer as the camera moves: snap the projection to whole texels — when "
                                   "the sphere moves, the world slides over the texel grid (the world's origin lands at "

@@ -551,6 +551,16 @@ static bool _sl_face_view_broken(const float *in, const double *m, const double 
     int face = (int)in[0];
     const float *light = in + 1;
     if (face < 0 || face > 5) return false;
+    /* every entry NaN: the probe's mark of a call that did not return SL_OK (a view matrix keeps its last
+     * row (0, 0, 0, 1) even where a hand-made lookat divides by zero) */
+    bool refused = true;
+    for (int i = 0; i < 16; i++) refused &= isnan(m[i]);
+    if (refused) {
+        snprintf(text, n, "face %s: it did not return SL_OK, so there is no view for this face — faces 0 to 5 are "
+                          "all valid (+X, -X, +Y, -Y, +Z, -Z: GL_TEXTURE_CUBE_MAP_POSITIVE_X + face); refuse only a "
+                          "face outside 0..5", _sl_face(face));
+        return true;
+    }
     for (int i = 0; i < 16; i++)
         if (!isfinite(m[i])) {
             snprintf(text, n, "face %s: the matrix is not finite (NaN): with up (0,1,0) on the +-Y faces, glm_lookat "

@@ -246,6 +246,9 @@ static const struct {
                              "then glClear(GL_DEPTH_BUFFER_BIT)"},
     {"depth function", "each texel keeps the nearest surface's depth: glDepthFunc(GL_LESS) (or GL_LEQUAL), so the "
                        "depth test lets a fragment through only when it is nearer than what is stored"},
+    {"filters nearest", "GL_TEXTURE_MIN_FILTER and GL_TEXTURE_MAG_FILTER, each set to GL_NEAREST: left unset, the "
+                        "min filter is GL_NEAREST_MIPMAP_LINEAR, which wants mipmaps the map does not have, so the "
+                        "texture is incomplete and every lookup in it reads 0"},
     {"faces with storage", "each of the six faces needs its own glTexImage2D, at GL_TEXTURE_CUBE_MAP_POSITIVE_X + i "
                            "for i = 0 to 5"},
     {"min filter", "the minification filter is its own parameter, glTexParameteri(..., GL_TEXTURE_MIN_FILTER, ...)"},
@@ -291,8 +294,10 @@ static bool _sl_single_output(const sl_probe_function *f, const sl_check *k, con
     const char *rule = NULL;
     for (size_t i = 0; i < sizeof _sl_state_rules / sizeof _sl_state_rules[0]; i++)
         if (strcmp(_sl_state_rules[i].output, name) == 0) rule = _sl_state_rules[i].rule;
+    /* "only its depth buffer on framebuffer[0]", not "only its a depth buffer ..." */
+    const char *said = strncmp(name, "a ", 2) == 0 ? name + 2 : strncmp(name, "an ", 3) == 0 ? name + 3 : name;
     snprintf(out, n, "of everything it sets, only its %s is wrong, on every row that differs (%s where the contract "
-             "gives %s)%s%s", name, got, want, rule ? ": " : "", rule ? rule : "");
+             "gives %s)%s%s", said, got, want, rule ? ": " : "", rule ? rule : "");
     return true;
 }
 

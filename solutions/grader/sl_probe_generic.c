@@ -485,6 +485,8 @@ static const char *const _sl_midpoint_slips[][2] = {
     {"the second map's depth alone", "the midpoint of both maps' depths"},
     {"xyz not divided by w", "p = shadow_coord.xyz / shadow_coord.w"},
     {"lit and shadowed swapped", "p.z > midpoint: shadowed (0), else lit (1)"},
+    {"0.5 * first + second: the half on the first depth alone (the parentheses left out)", "0.5 * (first + second)"},
+    {"first + 0.5 * second: the half on the second depth alone (the parentheses left out)", "0.5 * (first + second)"},
     {NULL, NULL},
 };
 
@@ -499,7 +501,8 @@ static void _sl_expect_midpoint(const sl_probe_function *f, const float *row, in
     sl_probe_map a = (sl_probe_map)(int)_sl_get(f, row, "first_depth", 0);
     sl_probe_map b = (sl_probe_map)(int)_sl_get(f, row, "second_depth", 0);
     double first = _sl_map_at(a, p[0], p[1]), second = _sl_map_at(b, p[0], p[1]);
-    double middle = slip == 1 ? first + second : slip == 2 ? first : slip == 3 ? second : 0.5 * (first + second);
+    double middle = slip == 1 ? first + second : slip == 2 ? first : slip == 3 ? second
+                  : slip == 6 ? 0.5 * first + second : slip == 7 ? first + 0.5 * second : 0.5 * (first + second);
     bool shadowed = p[2] > middle;
     out[0] = (slip == 5 ? shadowed : !shadowed) ? 1 : 0;
 }
@@ -918,12 +921,16 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
     /* one row in three on the axis, behind the occluder by less than bias * far_plane: the bias is subtracted
      * in the map's units, so the point is shadowed; taken for metres (times far) it would come out lit */
     bool behind_by_bias = index % 3 == 1;
-    if (behind_by_bias) d[axis] = 1;
+    /* every other row of the third kind just in front of the occluder, by less than the bias: lit, and
+     * shadowed where the bias is added to the point's distance (or taken from the stored one) */
+    bool front_by_bias = index % 3 == 2 && (index / 3) % 2 == 0;
+    if (behind_by_bias || front_by_bias) d[axis] = 1;
     double far = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 3, 8) : _sl_uniform(r, 14, 40);
     double bias = behind_by_bias ? _sl_uniform(r, 0.01, 0.02) : _sl_uniform(r, 0.002, 0.02);
     /* the point's stored-scale depth away from the occluder's 0.1 and the far wall's 1.0 */
     double current = off_axis         ? _sl_uniform(r, 0.105, 0.115)
                    : behind_by_bias ? 0.1 + _sl_uniform(r, 0.3, 0.8) * fmin(bias * (far - 1), 0.5)
+                   : front_by_bias  ? 0.1 - (1 + _sl_uniform(r, 0.25, 0.75)) * bias
                    : _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 0.03, 0.07)
                                                 : _sl_uniform(r, 0.14, 0.9);
     double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), distance = (current + bias) * far;
@@ -937,6 +944,8 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
              far, distance, d[axis] > 0 ? "+" : "-", "xyz"[axis],
              off_axis         ? ", far off its axis, just behind the occluder (the distance is the length, not a component)"
              : behind_by_bias ? ", behind the occluder by less than bias * far_plane (the bias is in the map's units)"
+             : front_by_bias  ? ", in front of the occluder by less than the bias: lit (the bias moves the point towards "
+                                "the light, never away)"
                               : "",
              bias);
 }
