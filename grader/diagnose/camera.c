@@ -131,6 +131,23 @@ bool sl_camera_differences(const double student[16], const double expected[16], 
     out[0] = '\0';
     sl_camera_reading s = sl_camera_read(student), e = sl_camera_read(expected);
     if (e.kind == SL_CAMERA_NONE) return false;
+    if (s.kind != e.kind && e.kind == SL_CAMERA_VIEW) {
+        /* a view whose rotation lost its right and up rows (zero, or NaN) while its backward row is whole: a
+         * lookat whose up vector lies along the viewing direction, whose cross product is zero */
+        double right = 0, up = 0, back = 0;
+        for (int j = 0; j < 3; j++) {
+            right += _sl_at(student, 0, j) * _sl_at(student, 0, j);
+            up += _sl_at(student, 1, j) * _sl_at(student, 1, j);
+            back += _sl_at(student, 2, j) * _sl_at(student, 2, j);
+        }
+        if (fabs(back - 1) < 1e-3 && !(right > 1e-6 && up > 1e-6)) {
+            _sl_say(&t, "its right and up axes are %s, its viewing axis whole: a lookat whose up vector is parallel to "
+                        "the direction it looks along (their cross product is zero) — where the direction is (nearly) "
+                        "vertical, take another up vector, (0, 0, 1)",
+                    isnan(right) || isnan(up) ? "not finite" : "zero");
+            return true;
+        }
+    }
     if (s.kind != e.kind) {
         _sl_say(&t, "as a camera it is %s, where %s is expected", _sl_kind_name(s.kind), _sl_kind_name(e.kind));
         return true;

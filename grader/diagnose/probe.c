@@ -617,6 +617,12 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
                 ? lab->probe_verdict(written_check, cap->numbers, ref->numbers, written_failing, verdict, sizeof verdict)
                 : -1;
     if (!verdict[0] && written_check && !all_failed) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
+    /* the written rows' verdict, and one slip of one input every row fits, generic rows too: the slip is the
+     * sharper fact ("bias negated" where the written rows can say only "missing or too small"), said after it */
+    if (verdict[0] && slip_kind == SL_PROBE_SLIP_OF_INPUT) {
+        size_t used = strlen(verdict);
+        snprintf(verdict + used, sizeof verdict - used, " (and %s)", slip);
+    }
     free(written_check);
     if (!verdict[0] && slip_kind != SL_PROBE_SLIP_NONE) {
         snprintf(verdict, sizeof verdict, "%s", slip);
@@ -658,6 +664,23 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
             snprintf(verdict, sizeof verdict, "it gives %s%s on all %d rows, whatever its inputs: the answer does not "
                      "follow them", value, f->output_count > 1 ? " (first output)" : "", k->rows);
             shown = first;
+        }
+    }
+    /* a depth written as 1.0, the most gl_FragDepth keeps, on most rows that differ where the contract's is
+     * below it: what the shader computes is 1 or more before the clamp */
+    if (!verdict[0] && f->output_count == 1 && strcmp(f->outputs, "gl_FragDepth") == 0) {
+        int capped = 0, capped_first = -1;
+        for (int row = 0; row < k->rows; row++)
+            if (((out->failing_rows >> row) & 1u) && cap->numbers[row] >= 1 - 1e-6 && ref->numbers[row] < 0.98) {
+                capped++;
+                if (capped_first < 0) capped_first = row;
+            }
+        if (capped > 0 && 2 * capped >= failing) {
+            snprintf(verdict, sizeof verdict, "the depth it writes is 1.0, the most gl_FragDepth keeps, on %d of the %d "
+                     "rows that differ, where the contract's depth is below 1: what it computes is 1 or more before "
+                     "the clamp — divide all of it by the far plane, after length(), not inside it", capped,
+                     failing);
+            shown = capped_first;
         }
     }
     /* a matrix no verdict names: told as the camera it is (where it looks, its field of view, its box) */

@@ -925,7 +925,9 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
      * shadowed where the bias is added to the point's distance (or taken from the stored one) */
     bool front_by_bias = index % 3 == 2 && (index / 3) % 2 == 0;
     if (behind_by_bias || front_by_bias) d[axis] = 1;
-    double far = _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 3, 8) : _sl_uniform(r, 14, 40);
+    /* a near far plane in front of the occluder: there a squared distance over far stays below the occluder's
+     * 0.1 (lit, as the contract), so only a bias on the wrong side shadows it */
+    double far = front_by_bias || _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 3, 8) : _sl_uniform(r, 14, 40);
     double bias = behind_by_bias ? _sl_uniform(r, 0.01, 0.02) : _sl_uniform(r, 0.002, 0.02);
     /* the point's stored-scale depth away from the occluder's 0.1 and the far wall's 1.0 */
     double current = off_axis         ? _sl_uniform(r, 0.105, 0.115)
