@@ -301,6 +301,34 @@ static bool _sl_single_output(const sl_probe_function *f, const sl_check *k, con
     return true;
 }
 
+/* A destroy function whose map's fields end 0 while none of the map's objects was deleted, on every failing
+ * row: the names were zeroed before glDelete* was given them (deleting the name 0 does nothing). Read from
+ * the outputs' names ("... deleted", "map's fields zeroed"), for every lab's destroy. */
+static bool _sl_zeroed_before_deleted(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
+                                      uint32_t failing, char *out, size_t n) {
+    int zeroed = -1, deleted[4], deleted_count = 0;
+    for (int o = 0; o < f->output_count; o++) {
+        char name[64];
+        _sl_output_name(f, o, name, sizeof name);
+        if (strcmp(name, "map's fields zeroed") == 0) zeroed = o;
+        else if (strncmp(name, "map's ", 6) == 0 && strstr(name, " deleted") && deleted_count < 4)
+            deleted[deleted_count++] = o;
+    }
+    if (zeroed < 0 || deleted_count == 0 || failing == 0) return false;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        const double *got = s + row * f->output_count, *want = e + row * f->output_count;
+        if (got[zeroed] != 1 || want[zeroed] != 1) return false;
+        for (int i = 0; i < deleted_count; i++)
+            if (got[deleted[i]] != 0 || want[deleted[i]] != 1) return false;
+    }
+    snprintf(out, n, "none of the map's objects is deleted, though its fields end 0: glDeleteFramebuffers and "
+                     "glDeleteTextures never got their names — not called, or called after the fields were set to 0 "
+                     "(deleting the name 0 does nothing). Delete first (glDeleteFramebuffers(1, &map->framebuffer), "
+                     "...), then zero the fields");
+    return true;
+}
+
 static bool _sl_row_relation(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
                              uint32_t failing, const uint32_t *differs, char *out, size_t n) {
     int outputs = f->output_count;
@@ -605,6 +633,27 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     for (int row = 0; row < k->rows && all_failed; row++)
         for (int o = 0; (out->failing_rows >> row) & 1u && o < f->output_count; o++)
             all_failed &= isnan(cap->numbers[row * f->output_count + o]);
+    /* The other way round: every differing row is one the contract refuses (its outputs all NaN: SL_FAILED)
+     * and the function answered, as if the input were valid. */
+    bool all_accepted = !f->glsl && failing > 0;
+    int accepted_first = -1;
+    for (int row = 0; row < k->rows && all_accepted; row++) {
+        if (!((out->failing_rows >> row) & 1u)) continue;
+        bool refused = true, answered = false;
+        for (int o = 0; o < f->output_count; o++) {
+            refused &= isnan(ref->numbers[row * f->output_count + o]);
+            answered |= !isnan(cap->numbers[row * f->output_count + o]);
+        }
+        all_accepted = refused && answered;
+        if (accepted_first < 0) accepted_first = row;
+    }
+    if (all_accepted) {
+        snprintf(verdict, sizeof verdict, "it answers %s the contract refuses: there it must return SL_FAILED "
+                 "(and leave its outputs alone), where it returned SL_OK — check for such inputs first",
+                 failing > 1 ? "inputs" : "an input");
+        shown = accepted_first;
+        all_failed = true; /* no verdict reads its numbers: they answer a question the contract does not ask */
+    }
     char slip[sizeof verdict];
     sl_probe_slip slip_kind = stub_shader || all_failed
                                   ? SL_PROBE_SLIP_NONE
@@ -645,7 +694,8 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
                     !_sl_close_enough(k, row, o, cap->numbers[row * f->output_count + o],
                                       ref->numbers[row * f->output_count + o]))
                     differs[row] |= 1u << o;
-        if (!_sl_row_relation(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict))
+        if (!_sl_zeroed_before_deleted(f, k, cap->numbers, ref->numbers, out->failing_rows, verdict, sizeof verdict) &&
+            !_sl_row_relation(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict))
             _sl_single_output(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict);
     }
     /* the same answer on every row while the contract's vary: it does not follow its inputs at all */
