@@ -279,7 +279,7 @@ const float *sl_probe_row_param(const sl_probe_function *f, const float *row, co
 
 static const char *const _sl_map_names[SL_PROBE_MAP_COUNT] = {"lit",      "occluded",      "step",
                                                               "ramp",     "cube_lit",      "cube_occluded",
-                                                              "cube_room", "cube_positive", "step_floor", "cascades", "moments_flat", "moments_step_x", "moments_step_y", "step_v"};
+                                                              "cube_room", "cube_positive", "step_floor", "cascades", "moments_flat", "moments_step_x", "moments_step_y", "step_v", "corner"};
 
 const char *sl_probe_map_name(sl_probe_map map) {
     return (unsigned)map < SL_PROBE_MAP_COUNT ? _sl_map_names[map] : "?";
@@ -299,6 +299,7 @@ float sl_probe_map_depth(sl_probe_map map, int x, int y) {
     case SL_PROBE_MAP_RAMP: return u;
     case SL_PROBE_MAP_STEP_FLOOR: return u < 0.5f ? 0.25f : 0.9f;
     case SL_PROBE_MAP_STEP_V: return v < 0.5f ? 0.25f : 1.0f;
+    case SL_PROBE_MAP_CORNER: return u < 0.5f && v < 0.5f ? 0.25f : 1.0f;
     default: return 1.0f;
     }
 }

@@ -54,6 +54,7 @@ typedef enum sl_probe_map {
     SL_PROBE_MAP_MOMENTS_STEP_Y, /* depth 0.25 where v < 0.5, 0.75 where v >= 0.5: an edge across y */
     /* 2D again (last, so the others keep their numbers) */
     SL_PROBE_MAP_STEP_V, /* 0.25 where v < 0.5, 1.0 where v >= 0.5: an occluder's edge across t */
+    SL_PROBE_MAP_CORNER, /* 0.25 where u < 0.5 and v < 0.5, 1.0 elsewhere: an occluder's corner, edges across s and t */
     SL_PROBE_MAP_COUNT
 } sl_probe_map;
 #define SL_PROBE_MAP_SIZE 64

@@ -520,6 +520,23 @@ static bool _sl_twins(const float *a, const float *b) {
     return true;
 }
 
+/* The snap's offset added with the wrong sign: the origin's position in texels x0 (where a box centred on the
+ * sphere puts it, the box's own axes) moved to x0 + (x0 - round(x0)) (or floor), a fraction doubled where it
+ * should be cancelled, in both axes. */
+static bool _sl_snap_sign_flipped(const float *in, const double *m) {
+    double c[3] = {in[3], in[4], in[5]}, half = in[8] / 2;
+    bool any_fraction = false;
+    for (int axis = 0; axis < 2; axis++) {
+        double row[4];
+        _sl_matrix_row4(m, axis, row);
+        double x0 = -_sl_dot3(row, c) * half, got = row[3] * half;
+        bool rounded = fabs(got - (2 * x0 - round(x0))) <= 0.01, floored = fabs(got - (2 * x0 - floor(x0))) <= 0.01;
+        if (!rounded && !floored) return false;
+        any_fraction |= fabs(x0 - round(x0)) > 0.02;
+    }
+    return any_fraction;
+}
+
 /* 0 (x) or 1 (y) when two boxes' world origins land on whole texels in that axis alone and slide in the
  * other: the snap is done in one axis only; -1 otherwise. */
 static int _sl_snapped_in_one_axis(const _sl_light_box *a, const _sl_light_box *b, double gx, double gy) {
@@ -565,6 +582,12 @@ static bool _sl_cascade_matrices_contract(const sl_check *k, const double *stude
             if (!same_box)
                 snprintf(text, n, "the box turns or changes size when only the sphere's centre moves: keep the "
                                   "light's up vector and the box's size fixed, so the texel grid stays put");
+            else if (_sl_snap_sign_flipped(k->inputs[a], ma) && _sl_snap_sign_flipped(k->inputs[b], mb))
+                snprintf(text, n, "shadows shimmer as the camera moves: the snap's offset has the wrong sign — it "
+                                  "moves the world's origin as far again from a whole texel (x + (x - round(x))) where "
+                                  "it must cancel that fraction, + (round(x) - x) in texels, rescaled to NDC by / "
+                                  "(map_size / 2): the origin lands at texel (%.2f, %.2f), then at (%.2f, %.2f)",
+                         boxes[a].origin[0], boxes[a].origin[1], boxes[b].origin[0], boxes[b].origin[1]);
             else if (_sl_snapped_in_one_axis(&boxes[a], &boxes[b], gx, gy) >= 0) {
                 /* one axis keeps the origin on whole texels: the snap is there, the other axis's is not its own */
                 char good = _sl_snapped_in_one_axis(&boxes[a], &boxes[b], gx, gy) == 0 ? 'x' : 'y';

@@ -291,7 +291,10 @@ static int _sl_pcss_width(const sl_verdict_rows *v, char *text, size_t n) {
         _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[r]);
         double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
         double here = fabs(_sl_got(v, r, 0) - fr.centre), there = fabs(_sl_want(v, r, 0) - fr.centre);
-        if (fr.kind != _SL_ROW_EDGE) other++;
+        /* an occluder's edge over a floor is an edge too: its centre is the floor's own comparison */
+        const float *map = _sl_param(v->f, v->k->inputs[r], "shadow_map");
+        bool edge = fr.kind == _SL_ROW_EDGE || (fr.kind == _SL_ROW_OTHER && map && (int)*map == SL_PROBE_MAP_STEP_FLOOR);
+        if (!edge) other++;
         else if (here > there + tolerance) wide++;
         else if (here < there - tolerance) narrow++;
         else other++;

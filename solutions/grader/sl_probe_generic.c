@@ -338,7 +338,22 @@ static void _sl_draw_compare(const sl_probe_function *f, _sl_rng *r, int index, 
 
 static void _sl_draw_pcf_grid(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
     /* radii 1 to 5 in turn: past the 3 a loop of constant bounds stops at */
-    _sl_draw_lookup(f, r, index, row, about, n, 1 + index % 5);
+    int radius = 1 + index % 5;
+    _sl_draw_lookup(f, r, index, row, about, n, radius);
+    if (index % 4 != 3) return;
+    /* one row in four by an occluder's corner, the kernel across both of its edges: a kernel that covers
+     * one line of the grid (a row, a column, a diagonal) answers as the full one only where the map varies
+     * along one axis */
+    int half = SL_PROBE_MAP_SIZE / 2;
+    double p[3] = {_sl_in_texel(r, _sl_integer(r, half - radius, half + radius - 1)),
+                   _sl_in_texel(r, _sl_integer(r, half - radius, half + radius - 1)), _sl_uniform(r, 0.32, 0.82)};
+    double coord[4];
+    _sl_homogeneous(r, (index / 4) % 2 == 0, p, coord);
+    _sl_set1(f, row, "shadow_map", SL_PROBE_MAP_CORNER);
+    _sl_set(f, row, "shadow_coord", coord);
+    snprintf(about, n, "generic: w = %.3g, the point (%.3g, %.3g, %.3g) after the divide, by an occluder's corner "
+                       "(the quarter u, v < 0.5), radius %d: a %dx%d grid across both of its edges",
+             coord[3], p[0], p[1], p[2], radius, 2 * radius + 1, 2 * radius + 1);
 }
 
 /* How a grid lookup departs from the contract (one slip at a time). */
@@ -361,6 +376,7 @@ typedef enum _sl_grid_slip {
     _SL_GRID_BIAS_ADDED,
     _SL_GRID_CENTRE_DRIFTS, /* p.xy += offset in the loop: each sample from where the last one was */
     _SL_GRID_V_FLIPPED,     /* the map read at (p.x, 1 - p.y): Direct3D's v, running downwards */
+    _SL_GRID_DIAGONAL,      /* offsets (x, x): each row of the loop samples the same diagonal */
 } _sl_grid_slip;
 
 /* The bias's slips, in _sl_grid_slip's order from _SL_GRID_BIAS_OVER_W. */
@@ -405,6 +421,10 @@ static const char *const _sl_grid_slips[][2] = {
     _SL_BIAS_SLIPS,
     {"the centre moved by each offset in the loop (p.xy += offset): the samples wander along a running sum",
      "every sample at p.xy + (x, y) * texel, around the same centre"},
+    {"t flipped: the map read around (p.x, 1 - p.y), Direct3D's v running downwards",
+     "the map read around p.xy: GL's t runs upwards, as the bias matrix maps y"},
+    {"offsets (x, x) or (y, y): one loop variable for both axes, so every row of the loop samples the same "
+     "diagonal", "offsets (x, y) * texel: x across, y up, every texel of the (2r+1) x (2r+1) grid once"},
     {NULL, NULL},
 };
 
@@ -434,7 +454,7 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     double lit = 0, taps = 0, drift_u = 0, drift_v = 0;
     for (int y = y0; y <= y1; y++)
         for (int x = -radius; x <= hi; x++, taps++) {
-            double su = u + x * texel, sv = v + y * texel;
+            double su = u + x * texel, sv = v + (slip == _SL_GRID_DIAGONAL ? x : y) * texel;
             if (slip == _SL_GRID_CENTRE_DRIFTS) {
                 drift_u += x * texel, drift_v += y * texel;
                 su = u + drift_u, sv = v + drift_v;
@@ -753,6 +773,26 @@ static void _sl_expect_bleeding(const sl_probe_function *f, const float *row, in
     out[0] = v;
 }
 
+/* lab 5 (bonus): exponential shadow maps, exp(c * d) stored, the point in front of the occluder (where only
+ * the clamp keeps the answer at 1) or behind it */
+static void _sl_draw_esm(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    double c = _sl_uniform(r, 15, 60), d = _sl_uniform(r, 0.2, 0.8);
+    double t = index % 2 ? d + _sl_uniform(r, 0.002, 0.08) : d - _sl_uniform(r, 0.02, 0.15);
+    _sl_set1(f, row, "moment", exp(c * d));
+    _sl_set1(f, row, "t", t);
+    _sl_set1(f, row, "c", c);
+    snprintf(about, n, "generic: c = %.3g, the occluder at depth %.3g (moment exp(c * %.3g)), the point at %.3g, %s", c,
+             d, d, t, t < d ? "in front of it: lit, clamped to 1" : "behind it: exp(-c * (t - d))");
+}
+
+static const char *const _sl_esm_slips[][2] = {{"", ""}, {NULL, NULL}};
+
+static void _sl_expect_esm(const sl_probe_function *f, const float *row, int slip, double *out) {
+    (void)slip;
+    double v = _sl_get(f, row, "moment", 0) * exp(-_sl_get(f, row, "c", 0) * _sl_get(f, row, "t", 0));
+    out[0] = fmin(fmax(v, 0), 1);
+}
+
 /* lab 6: lambda * near * (far/near)^(i/count) + (1 - lambda) * (near + (far - near) * i/count), unused 0 */
 static void _sl_draw_splits(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
     (void)index;
@@ -1002,6 +1042,7 @@ static const _sl_generic _sl_generics[] = {
      "if(t <= mu, 1, variance / (variance + d * d))", 0},
     {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding, _sl_bleeding_slips,
      "clamp((p_max - amount) / (1 - amount), 0, 1)", 0},
+    {"esm_visibility", _sl_draw_esm, _sl_expect_esm, _sl_esm_slips, "clamp(moment * exp(-c * t), 0, 1)", 0},
     {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits, _sl_splits_slips,
      "t = i / count; logarithmic = near * pow(far / near, t); linear = near + (far - near) * t; "
      "if(i > count, 0, if(i == 0, near, if(i == count, far, lambda * logarithmic + (1 - lambda) * linear)))", 0},
