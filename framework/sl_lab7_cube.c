@@ -182,6 +182,12 @@ static bool _sl_depth_passes(sl_renderer *r, const sl_scene *scene, const sl_ren
         sl_renderer_lab_enter(NULL);
         if (layered == SL_FAILED) return sl_renderer_lab_result(r, "lab7_begin_cube_pass", layered);
         if (layered == SL_OK) {
+            /* what the lab attached: a message can then tell a layered pass from an SL_OK that attached nothing */
+            GLint attached_layered = 0;
+            glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                                  GL_FRAMEBUFFER_ATTACHMENT_LAYERED, &attached_layered);
+            while (glGetError() != GL_NO_ERROR) {}
+            info->cube_layered_attached = attached_layered != 0;
             _sl_cube_program *prog = _sl_program(r, _SL_DEPTH_LAYERED);
             if (!prog) {
                 info->shader_error = r->shader_errors[7];

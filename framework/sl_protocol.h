@@ -72,7 +72,9 @@ int sl_capture_parse(const char *name);
 #define SL_FBO_NUMBERS 10     /* see sl_runner.c: status, attachment type, ..., requested size */
 #define SL_MATRICES_NUMBERS 48
 #define SL_MOMENTS_TARGET_NUMBERS 19 /* see sl_vsm_describe_target */
-#define SL_PATH_NUMBERS 2           /* the highest lab whose code drew the last frame; lab 7's cube map drawn layered (1) */
+/* the highest lab whose code drew the last frame; lab 7's cube map drawn layered (1; 2: after an SL_OK that
+ * attached no layered cube) */
+#define SL_PATH_NUMBERS 2
 
 typedef struct sl_job {
     uint32_t magic, version, size; /* SL_JOB_MAGIC, SL_PROTOCOL_VERSION, sizeof(sl_job) */

@@ -238,7 +238,7 @@ void sl_renderer_draw(sl_renderer *r, const sl_scene *scene, const sl_render_par
     info->lab_in_use = 0;
     info->lab_asked = params->lab;
     info->stop_count = 0;
-    info->cube_frame = info->cube_matrices_ready = info->cube_map_ready = info->cube_layered = false;
+    info->cube_frame = info->cube_matrices_ready = info->cube_map_ready = info->cube_layered = info->cube_layered_attached = false;
     r->frame_count++;
     _sl_timer_mark(r, NULL);
     /* A technique that takes the frame draws it (lab 6's cascades; lab 7's cube map for a point light);

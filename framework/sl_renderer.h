@@ -90,6 +90,7 @@ typedef struct sl_frame_info {
     bool cube_matrices_ready;    /* lab 7's face views and projection are in use */
     bool cube_map_ready;         /* lab 7 created the cube map and its depth passes ran */
     bool cube_layered;           /* the faces were rendered in one layered pass (else six) */
+    bool cube_layered_attached;  /* in that pass, the whole cube map was attached (a layered attachment) */
     mat4 cube_views[6], cube_projection;
     sl_cube_map cube_map;        /* lab 7's map, for inspection */
 } sl_frame_info;

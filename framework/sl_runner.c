@@ -344,7 +344,9 @@ static bool _sl_render_case(const sl_job *job, _sl_missing *missing) {
     }
     if (_sl_wants(job, SL_CAPTURE_PATH)) {
         /* which way the framework drew: a message can then say which code ran (a layered pass, another lab's) */
-        double path[SL_PATH_NUMBERS] = {info->lab_in_use, info->cube_layered};
+        /* the layered pass: 1, or 2 where the lab answered SL_OK without attaching the whole cube map */
+        double path[SL_PATH_NUMBERS] = {info->lab_in_use,
+                                        info->cube_layered ? (info->cube_layered_attached ? 1 : 2) : 0};
         _sl_send_numbers(SL_CAPTURE_PATH, path, SL_PATH_NUMBERS);
     }
     if (_sl_wants(job, SL_CAPTURE_MATRICES) && info->lab2_ready) {

@@ -260,6 +260,24 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
                  narrow == failing ? "narrow" : "wide", narrow == failing ? "less" : "more");
         return first_width;
     }
+    /* two rows that are mirror images about an edge (the same map, direction and radius, the texels either side):
+     * any kernel with the same weight at -i and +i gives first moments that add to 0.25 + 0.75 = 1 */
+    for (int a = 0; a < rows; a++)
+        for (int b = a + 1; b < rows; b++) {
+            const float *ia = v->k->inputs[a], *ib = v->k->inputs[b];
+            if (!_sl_failed(v, a) && !_sl_failed(v, b)) continue;
+            if (ia[0] != ib[0] || ia[3] != ib[3] || ia[4] != ib[4] || ia[5] != ib[5] || ia[5] < 1) continue;
+            int across = ia[3] != 0 ? 1 : 2; /* the uv component along the blur */
+            if (fabs(ia[across] + ib[across] - 1) > 1e-6 || ia[3 - across] != ib[3 - across]) continue;
+            double want = _sl_want(v, a, 0) + _sl_want(v, b, 0), got = _sl_got(v, a, 0) + _sl_got(v, b, 0);
+            if (fabs(want - 1) > 1e-4 || fabs(got - want) <= 1e-3) continue;
+            snprintf(text, n, "the kernel is not symmetric: the texels either side of the edge, mirror images, blurred "
+                              "along %s with radius %d, give first moments %.4g and %.4g, which add to %.4g, where any "
+                              "kernel with the same weight at -i and +i gives two that add to 1 (0.25 + 0.75) — taps "
+                              "from -radius to radius, both ends, weights exp(-i^2 / (2 sigma^2)) that depend on i * i",
+                     across == 1 ? "x" : "y", (int)ia[5], _sl_got(v, a, 0), _sl_got(v, b, 0), got);
+            return _sl_failed(v, a) ? a : b;
+        }
     return -1;
 }
 

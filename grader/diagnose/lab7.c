@@ -27,6 +27,20 @@ bool sl_lab7_drawn_layered(const sl_case_result *r) {
     return path && path->number_count >= SL_PATH_NUMBERS && path->numbers[1] != 0;
 }
 
+/* The layered pass was drawn after lab7_begin_cube_pass answered SL_OK to SL_CUBE_ALL_FACES without attaching the
+ * whole cube map (no layered attachment): the six faces' copies went to whatever was attached. */
+static bool _sl_layered_unattached(const sl_case_result *r) {
+    const sl_capture *path = sl_result_capture(r, sl_capture_name(SL_CAPTURE_PATH));
+    return path && path->number_count >= SL_PATH_NUMBERS && path->numbers[1] == 2;
+}
+
+static const char *const _sl_unattached_text =
+    "lab7_begin_cube_pass returned SL_OK to SL_CUBE_ALL_FACES without attaching the whole cube map (the depth "
+    "attachment is not layered), so the framework drew one layered pass into whatever was attached";
+static const char *const _sl_unattached_fix =
+    "for SL_CUBE_ALL_FACES return SL_NOT_IMPLEMENTED (the framework then draws six passes), or attach the whole cube "
+    "map with glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, map->depth_cube, 0) (TODO lab7.2)";
+
 bool sl_lab7_case_calls(const sl_case *c, const sl_check *k, const char *name) {
     if (strncmp(name, "lab7_", 5) == 0) return true; /* every frame of lab 7 makes and fills the cube map */
     if (k->kind != SL_CHECK_VISIBILITY && k->kind != SL_CHECK_IMAGE) return false;
@@ -410,7 +424,10 @@ void sl_diagnose_cube_face(const sl_case *c, const sl_check *k, const sl_case_re
         const sl_capture *other = f == k->face ? NULL : sl_result_capture(r, sl_capture_name(SL_CAPTURE_CUBE_FACE + f));
         others_drawn |= other && other->image.data && sl_fraction_equal(&other->image, 1.0f, 1e-6f) < 0.999;
     }
-    if (empty > 0.999 && ref_empty < 0.99 && layered && others_drawn) {
+    if (_sl_layered_unattached(r)) {
+        sl_diag_say(out, "face %s differs from the reference: %s", face, _sl_unattached_text);
+        sl_diag_cause_in(out, "lab7_begin_cube_pass", "%s", _sl_unattached_fix);
+    } else if (empty > 0.999 && ref_empty < 0.99 && layered && others_drawn) {
         sl_diag_say(out, "face %s holds 1.0 everywhere (\"nothing there\") where the reference holds distance / far, "
                          "while other faces hold distances: nothing was drawn into this face. The cube map was drawn in "
                          "one layered pass (lab7_begin_cube_pass attached all six faces)", face);
