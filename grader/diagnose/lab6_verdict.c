@@ -672,13 +672,15 @@ typedef struct _sl_compare_reading {
     bool first_layer;
     double bias;
     bool divide;
+    bool bias_added; /* the given bias added to p.z, not subtracted */
 } _sl_compare_reading;
 
 static bool _sl_reading_explains(const sl_verdict_rows *v, _sl_compare_reading h) {
     for (int r = 0; r < v->k->rows; r++) {
         const float *in = v->k->inputs[r];
         int layer = h.first_layer ? 0 : (int)in[1] + h.layer_shift;
-        double want = _sl_layer_compare(in, layer, h.bias < 0 ? in[6] : h.bias, h.divide);
+        double bias = h.bias < 0 ? in[6] : h.bias;
+        double want = _sl_layer_compare(in, layer, h.bias_added ? -bias : bias, h.divide);
         if (want < 0 || fabs(_sl_got(v, r, 0) - want) > 1e-3) return false;
     }
     return true;
@@ -712,6 +714,12 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
         }
     if (_sl_reading_explains(v, (_sl_compare_reading){.bias = -1, .divide = false})) {
         snprintf(text, n, "no divide by w: the shadow coordinate is homogeneous — divide xyz by w before the lookup");
+        return first;
+    }
+    if (_sl_reading_explains(v, (_sl_compare_reading){.bias = -1, .divide = true, .bias_added = true})) {
+        snprintf(text, n, "the bias is added, not subtracted: a point just in front of a stored surface, within the "
+                          "bias, comes out shadowed (and acne spreads) — compare p.z - bias, moved towards the light, "
+                          "with the stored depth");
         return first;
     }
     static const double constants[] = {0, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 3e-3, 5e-3, 0.01, 0.02, 0.05};

@@ -604,6 +604,15 @@ static bool _sl_face_view_broken(const float *in, const double *m, const double 
         return true;
     }
     if (!_sl_is(a, 0, 0, -1, eps)) {
+        /* looking from the light at the axis itself, a point by the world's origin: the target taken for a direction */
+        double to_axis[3], length = 0, looks[3] = {-forward[0], -forward[1], -forward[2]};
+        for (int i = 0; i < 3; i++) to_axis[i] = _sl_axes[face][i] - light[i], length += to_axis[i] * to_axis[i];
+        length = sqrt(length);
+        if (length > 1e-3 && _sl_is(looks, to_axis[0] / length, to_axis[1] / length, to_axis[2] / length, 1e-3)) {
+            snprintf(text, n, "face %s: the camera looks from the light at the point %s itself, not along it: glm_lookat "
+                              "takes a point to look at, so the target is light_position + axis", _sl_face(face), axis);
+            return true;
+        }
         snprintf(text, n, "face %s: the camera should look down %s, it looks down (%.3g,%.3g,%.3g)", _sl_face(face),
                  axis, -forward[0], -forward[1], -forward[2]);
         return true;
@@ -760,6 +769,22 @@ static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, con
         if (first_bias < 0) first_bias = row;
     }
     const sl_probe_function *f = sl_probe_at(k->function);
+    /* the soft lookup answering 0 or 1 on every row that differs, where the contract's answer is a fraction:
+     * no average of 20 comparisons (an integer division, or one sample), whatever the radius */
+    int whole = 0, first_whole = -1;
+    for (int row = 0; f && f->param_count == 5 && row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        if ((s[row] == 0 || s[row] == 1) && e[row] > 0.02 && e[row] < 0.98) {
+            whole++;
+            if (first_whole < 0) first_whole = row;
+        }
+    }
+    if (whole > 0 && whole == failing_count) {
+        snprintf(text, n, "it answers 0 or 1 on every row that differs, where the contract's answer is a fraction of "
+                          "the 20 samples (k lit give k / 20.0): the samples are not averaged — an integer division "
+                          "(an int count divided by 20 is 0 until all 20 are lit), or one sample taken");
+        return first_whole;
+    }
     /* the soft lookup: rows that differ only in the radius, the same answer where the solution's differ */
     for (int a = 0; f && f->param_count == 5 && a < k->rows; a++) {
         if (!((failing >> a) & 1u)) continue;
@@ -828,6 +853,30 @@ static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, con
     return -1;
 }
 
+#define _SL_CUBE_POSITIVE_X 0x8515 /* GL_TEXTURE_CUBE_MAP_POSITIVE_X: the grader reads GL's numbers, not GL */
+
+/* lab7_begin_cube_pass leaving attached the face the probe attached before the call ((face + 3) % 6), on every
+ * row that differs: its glFramebufferTexture2D went to another framebuffer (the one bound before its bind). */
+static int _sl_begin_cube_pass_verdict(const sl_check *k, const double *student, const double *expected,
+                                       uint32_t failing, char *text, size_t n) {
+    const sl_probe_function *f = sl_probe_at(k->function);
+    int outputs = f->output_count, first = -1;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        int face = (int)k->inputs[row][0];
+        const double *got = student + row * outputs, *want = expected + row * outputs;
+        if (face < 0 || face > 5 || got[0] != 1 || got[1] != (double)(_SL_CUBE_POSITIVE_X + (face + 3) % 6) ||
+            got[1] == want[1])
+            return -1;
+        if (first < 0) first = row;
+    }
+    if (first < 0) return -1;
+    snprintf(text, n, "the face attached after it is the one attached before it was called: its glFramebufferTexture2D "
+                      "did not reach the map's framebuffer — it attaches to the framebuffer bound when it runs, so bind "
+                      "map->framebuffer first, then attach GL_TEXTURE_CUBE_MAP_POSITIVE_X + face");
+    return first;
+}
+
 int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double *expected, uint32_t failing,
                           char *text, size_t n) {
     text[0] = '\0';
@@ -835,6 +884,8 @@ int sl_lab7_probe_verdict(const sl_check *k, const double *student, const double
     if (!f) return -1;
     if (strcmp(f->name, "lab7_face_projection") == 0)
         return _sl_projection_verdict(k, student, expected, failing, text, n);
+    if (strcmp(f->name, "lab7_begin_cube_pass") == 0)
+        return _sl_begin_cube_pass_verdict(k, student, expected, failing, text, n);
     if (strcmp(f->name, "point_shadow") == 0 || strcmp(f->name, "point_shadow_soft") == 0)
         return _sl_lookup_verdict(k, strcmp(f->name, "point_shadow_soft") == 0, student, expected, failing, text, n);
     return -1;

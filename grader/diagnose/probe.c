@@ -668,7 +668,11 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
     if (!verdict[0] && written_check && !all_failed) shown = sl_probe_verdict(&written_rows, verdict, sizeof verdict);
     /* the written rows' verdict, and one slip of one input every row fits, generic rows too: the slip is the
      * sharper fact ("bias negated" where the written rows can say only "missing or too small"), said after it */
-    if (verdict[0] && slip_kind == SL_PROBE_SLIP_OF_INPUT) {
+    bool answers_vary = false; /* a constant answer (every row lit, say) fits an input's slip by coincidence */
+    for (int row = 1; row < k->rows && !answers_vary; row++)
+        for (int o = 0; o < f->output_count; o++)
+            answers_vary |= fabs(cap->numbers[row * f->output_count + o] - cap->numbers[o]) > 1e-6;
+    if (verdict[0] && slip_kind == SL_PROBE_SLIP_OF_INPUT && answers_vary) {
         size_t used = strlen(verdict);
         snprintf(verdict + used, sizeof verdict - used, " (and %s)", slip);
     }
