@@ -98,6 +98,20 @@ static int _sl_verdict_moments_target(const sl_verdict_rows *v, char *text, size
                  _sl_got(v, r, 13));
         return r;
     }
+    /* framebuffer[0] right (its texture, its depth buffer), the textures right, and only one framebuffer complete
+     * without its own texture: framebuffer[1] never got moments[1] (a name never generated, or not bound) */
+    for (int r = 0; r < v->k->rows && v->f->output_count >= 16; r++) {
+        if (!_sl_failed(v, r)) continue;
+        bool textures_right = true;
+        for (int o = 0; o < 11; o++) textures_right &= fabs(_sl_got(v, r, o) - _sl_want(v, r, o)) <= 1e-6;
+        if (!textures_right || _sl_got(v, r, 15) != 1 || _sl_got(v, r, 12) != 1 || _sl_got(v, r, 11) != 0 ||
+            _sl_got(v, r, 13) != 1)
+            break;
+        snprintf(text, n, "framebuffer[0] is right but framebuffer[1] is not complete and holds no moments[1] at "
+                          "GL_COLOR_ATTACHMENT0: the second framebuffer was never made (glGenFramebuffers(2, "
+                          "target->framebuffer) makes both names) or moments[1] was attached with another one bound");
+        return r;
+    }
     GLenum format = 0;
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r)) continue;

@@ -241,6 +241,26 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
                  (int)v->k->inputs[first_integer][5], (int)v->k->inputs[first_integer][5] / 2);
         return first_integer;
     }
+    /* every failing row one whose taps reach past the map's edge, every other row right: the edge texel is not
+     * repeated there (a texel clamped to size, or not at all: texelFetch outside the texture reads 0 here) */
+    int past_edge = 0, first_edge = -1;
+    for (int r = 0; r < rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        int radius = (int)in[5], x = (int)floor(in[1] * SL_PROBE_MAP_SIZE), y = (int)floor(in[2] * SL_PROBE_MAP_SIZE);
+        int along = in[3] != 0 ? x : y;
+        if (radius > 0 && (along - radius < 0 || along + radius > SL_PROBE_MAP_SIZE - 1)) {
+            past_edge++;
+            if (first_edge < 0) first_edge = r;
+        }
+    }
+    if (past_edge > 0 && past_edge == failing) {
+        snprintf(text, n, "taps past the map's edge do not read the edge texel: near the border it answers %.4g where the "
+                          "map's own value, repeated, gives %.4g — clamp the texel to [0, size - 1] (texelFetch outside "
+                          "the texture is undefined; here it reads 0)",
+                 _sl_got(v, first_edge, 0), _sl_want(v, first_edge, 0));
+        return first_edge;
+    }
     /* a Gaussian of another width: the sigma each failing row's answer implies, by radius */
     if (_sl_blur_sigma_by_radius(v, text, n, &first)) return first;
     /* across the edges: too little or too much of the other side */
