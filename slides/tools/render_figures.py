@@ -137,18 +137,28 @@ def light_samples(scene, radius, n):
     return out
 
 
+def _image_math(function, expression, **images):
+    """ImageMath on any Pillow: lambda_eval where it exists (Pillow 10.3 on; eval is gone from 12), eval before."""
+    from PIL import ImageMath
+    if hasattr(ImageMath, "lambda_eval"):
+        return ImageMath.lambda_eval(function, **images)
+    return ImageMath.eval(expression, **images)
+
+
 def average_images(paths, dest):
     """The per-pixel mean of same-sized pictures, rounded (PIL: sums in 32-bit channels)."""
-    from PIL import Image, ImageMath
+    from PIL import Image
     first = Image.open(paths[0]).convert("RGB")
     sums = [Image.new("I", first.size, 0) for _ in range(3)]
     for p in paths:
         im = Image.open(p).convert("RGB")
         if im.size != first.size:
             raise ValueError(f"truth: {p} is {im.size}, not {first.size}")
-        sums = [ImageMath.eval("s + c", s=s, c=im.getchannel(k).convert("I")) for k, s in enumerate(sums)]
+        sums = [_image_math(lambda a: a["s"] + a["c"], "s + c", s=s, c=im.getchannel(k).convert("I"))
+                for k, s in enumerate(sums)]
     n = len(paths)
-    mean = [ImageMath.eval("(s + h) / n", s=s, h=n // 2, n=n).convert("L") for s in sums]
+    mean = [_image_math(lambda a: (a["s"] + a["h"]) / a["n"], "(s + h) / n", s=s, h=n // 2, n=n).convert("L")
+            for s in sums]
     Image.merge("RGB", mean).save(dest)
 
 
