@@ -18,9 +18,10 @@ while IFS= read -r shipped; do
         { echo "MANIFEST.json lists other files than the shipped one" >&2; fail=1; } ;;
     *.exr) "$compare" "$fresh" "$shipped" 0.002 0.5 || fail=1 ;;
     *.png) "$compare" "$fresh" "$shipped" 0.1 0.5 || fail=1 ;;
+    *.probe.json) python3 "$(dirname "$0")/probe_references_agree.py" "$src/cases" "$fresh" "$shipped" || fail=1 ;;
     *.json)
-      # matrices and probe tables: every number within 1e-4 + 1e-4 of its size (floats computed by
-      # another compiler or cglm version round differently: a frustum slice's sphere at 300 m moves by 0.01)
+      # matrices: every number within 1e-4 + 1e-4 of its size (floats computed by another compiler or
+      # cglm version round differently)
       paste <(grep -oE -- '-?[0-9.]+(e-?[0-9]+)?' "$fresh") <(grep -oE -- '-?[0-9.]+(e-?[0-9]+)?' "$shipped") |
         awk -v f="$rel" '{d=$1-$2; if (d<0) d=-d; m=$2<0?-$2:$2; if (d>1e-4+1e-4*m) {print f ": " $1 " vs " $2; bad=1}} END {exit bad}' || fail=1 ;;
   esac

@@ -7,6 +7,7 @@
 
 #include "sl_gl.h"
 #include "sl_params.h"
+#include "pcss_model.h"
 #include "verdict_rows.h"
 
 /* ---- filters: a map, a shadow coordinate, a bias; 1 lit, 0 shadowed ---- */
@@ -21,9 +22,10 @@ _sl_filter_row _sl_filter_row_of(const sl_probe_function *f, const float *in) {
     for (int i = 0; i < 3; i++) r.p[i] = w != 0 ? coord[i] / w : 0;
     bool outside = w <= 0;
     for (int i = 0; i < 3; i++) outside |= r.p[i] < 0 || r.p[i] > 1;
-    int texel = (int)floor(r.p[0] * SL_PROBE_MAP_SIZE);
-    texel = texel < 0 ? 0 : texel >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : texel;
-    double stored = sl_probe_map_depth((sl_probe_map)(int)*map, texel, 0);
+    int tx = (int)floor(r.p[0] * SL_PROBE_MAP_SIZE), ty = (int)floor(r.p[1] * SL_PROBE_MAP_SIZE);
+    tx = tx < 0 ? 0 : tx >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : tx;
+    ty = ty < 0 ? 0 : ty >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : ty;
+    double stored = sl_probe_map_depth((sl_probe_map)(int)*map, tx, ty);
     r.centre = r.p[2] - r.bias > stored ? 0.0 : 1.0;
     /* the occluder's own surface: behind its stored depth by less than the bias */
     double occluder = sl_probe_map_depth(SL_PROBE_MAP_OCCLUDED, 0, 0);
@@ -291,9 +293,10 @@ static int _sl_pcss_width(const sl_verdict_rows *v, char *text, size_t n) {
         _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[r]);
         double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
         double here = fabs(_sl_got(v, r, 0) - fr.centre), there = fabs(_sl_want(v, r, 0) - fr.centre);
-        /* an occluder's edge over a floor is an edge too: its centre is the floor's own comparison */
+        /* an occluder's edge over a floor, or its corner, is an edge too: its centre is the point's own texel's comparison */
         const float *map = _sl_param(v->f, v->k->inputs[r], "shadow_map");
-        bool edge = fr.kind == _SL_ROW_EDGE || (fr.kind == _SL_ROW_OTHER && map && (int)*map == SL_PROBE_MAP_STEP_FLOOR);
+        bool edge = fr.kind == _SL_ROW_EDGE || (fr.kind == _SL_ROW_OTHER && map &&
+                                                 ((int)*map == SL_PROBE_MAP_STEP_FLOOR || (int)*map == SL_PROBE_MAP_CORNER));
         if (!edge) other++;
         else if (here > there + tolerance) wide++;
         else if (here < there - tolerance) narrow++;
@@ -330,6 +333,8 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
                           "when p.z - bias is farther than the stored depth");
         return -1; /* the first row that differs shows it */
     }
+    /* a slip in one of PCSS's terms that gives every row's answer names that term */
+    if (pcss && (row = sl_pcss_slip_verdict(v, text, n)) >= 0) return row;
     /* the coordinate first: every other row depends on it */
     if ((row = _sl_first_failing(v, _SL_ROW_OUTSIDE)) >= 0) {
         snprintf(text, n, "a point outside the light's frustum must be lit: return 1.0 when w <= 0, or when x, y or z "

@@ -1,0 +1,250 @@
+#define _POSIX_C_SOURCE 200809L
+#include "pcss_model.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "verdict_filter.h"
+#include "verdict_rows.h"
+
+/* The 16 points of lab 4's given Poisson disk (labs/lab4_pcf/shaders/pcf.glsl, "Given"). */
+static const float _sl_disk[16][2] = {
+    {-0.0552f, -0.8003f}, {-0.0288f, 0.2479f}, {-0.2544f, 0.6151f}, {-0.8666f, 0.0488f},
+    {0.5174f, -0.0053f},  {-0.5927f, -0.6601f}, {0.1417f, -0.3470f}, {0.4121f, 0.6630f},
+    {-0.6696f, 0.6331f},  {0.4826f, -0.8500f},  {0.9683f, -0.1818f}, {-0.4203f, -0.0849f},
+    {0.0948f, 0.9732f},   {0.6713f, -0.4826f},  {0.9246f, 0.2683f},  {-0.8898f, -0.3631f}};
+
+/* One slip: a term of the contract's three steps written another way, as a student might. */
+typedef enum {
+    _SL_PCSS_CONTRACT,
+    _SL_PCSS_LINEAR_NEAR_FAR_SWAPPED, /* pcf_linear_depth(d, far, near) */
+    _SL_PCSS_RECEIVER_NEAR_FAR_SWAPPED, /* the receiver's alone */
+    _SL_PCSS_BLOCKER_NEAR_FAR_SWAPPED,  /* the blockers' alone */
+    _SL_PCSS_LINEAR_DEPTH_AS_NDC,       /* the depth d put in as clip z, without z = 2 d - 1 */
+    _SL_PCSS_RECEIVER_RAW,            /* receiver = p.z */
+    _SL_PCSS_BLOCKER_RAW,             /* the blockers' raw depths averaged */
+    _SL_PCSS_ALL_RAW,                 /* no pcf_linear_depth at all */
+    _SL_PCSS_WIDTH_OVER_RECEIVER,     /* (receiver - blocker) * L / receiver */
+    _SL_PCSS_WIDTH_NAMES_SWAPPED,     /* (blocker - receiver) * L / receiver */
+    _SL_PCSS_WIDTH_NO_LIGHT_SIZE,     /* (receiver - blocker) / blocker * near / receiver */
+    _SL_PCSS_WIDTH_NO_NEAR,           /* ... / blocker / receiver */
+    _SL_PCSS_WIDTH_NOT_PROJECTED,     /* no * near / receiver */
+    _SL_PCSS_WIDTH_PROJECTED_INVERSE, /* * receiver / near */
+    _SL_PCSS_WIDTH_OVER_BLOCKER_NEAR, /* / (blocker * near) */
+    _SL_PCSS_WIDTH_NEGATED,           /* (blocker - receiver) */
+    _SL_PCSS_SEARCH_FULL,             /* search_uv = L */
+    _SL_PCSS_SEARCH_NOT_DIVIDED,      /* L * (receiver - near) */
+    _SL_PCSS_SEARCH_OVER_NEAR,        /* L * (receiver - near) / near */
+    _SL_PCSS_FILTER_SEARCH_WIDTH,     /* the PCF over the search's width */
+    _SL_PCSS_FILTER_LIGHT_SIZE,       /* the PCF over light_size_uv */
+    _SL_PCSS_BLOCKER_OVER_ALL,        /* blocker_sum / 16 */
+    _SL_PCSS_BLOCKER_NO_BIAS,         /* d < p.z */
+    _SL_PCSS_FILTER_NO_BIAS,          /* p.z compared unbiased in the PCF */
+    _SL_PCSS_NO_ROTATION,             /* the disk unrotated */
+    _SL_PCSS_SLIP_COUNT
+} _sl_pcss_slip;
+
+static const struct {
+    const char *slip, *contract;
+} _sl_pcss_text[_SL_PCSS_SLIP_COUNT] = {
+    [_SL_PCSS_LINEAR_NEAR_FAR_SWAPPED] = {"pcf_linear_depth(d, far, near): near and far swapped",
+                                          "pcf_linear_depth(d, near, far)"},
+    [_SL_PCSS_RECEIVER_NEAR_FAR_SWAPPED] = {"the receiver's distance as pcf_linear_depth(p.z, far, near): near and far "
+                                            "swapped",
+                                            "d_receiver = pcf_linear_depth(p.z, near, far)"},
+    [_SL_PCSS_BLOCKER_NEAR_FAR_SWAPPED] = {"the blockers' distances as pcf_linear_depth(d, far, near): near and far "
+                                           "swapped",
+                                           "pcf_linear_depth(d, near, far) for each blocker"},
+    [_SL_PCSS_LINEAR_DEPTH_AS_NDC] = {"distances as 2 near far / (far + near - d (far - near)): the depth d taken as "
+                                      "the normalised device z",
+                                      "pcf_linear_depth(d, near, far): the depth buffer's d is z * 0.5 + 0.5, so z = "
+                                      "2 d - 1"},
+    [_SL_PCSS_RECEIVER_RAW] = {"the receiver's distance as its raw depth p.z",
+                               "d_receiver = pcf_linear_depth(p.z, near, far)"},
+    [_SL_PCSS_BLOCKER_RAW] = {"the blockers' raw depths averaged, not their distances",
+                              "d_blocker = the average of pcf_linear_depth(d, near, far) over the blockers"},
+    [_SL_PCSS_ALL_RAW] = {"every distance as a raw depth (no pcf_linear_depth)",
+                          "distances from pcf_linear_depth(d, near, far), for the receiver and the blockers"},
+    [_SL_PCSS_WIDTH_OVER_RECEIVER] = {"the width divided by d_receiver, (d_receiver - d_blocker) * light_size_uv / "
+                                      "d_receiver",
+                                      "(d_receiver - d_blocker) * light_size_uv / d_blocker (similar triangles: over "
+                                      "the blocker's distance)"},
+    [_SL_PCSS_WIDTH_NAMES_SWAPPED] = {"d_blocker and d_receiver swapped in step 2, (d_blocker - d_receiver) * "
+                                      "light_size_uv / d_receiver",
+                                      "(d_receiver - d_blocker) * light_size_uv / d_blocker: d_blocker below the line, "
+                                      "not d_receiver"},
+    [_SL_PCSS_WIDTH_NO_LIGHT_SIZE] = {"the width without light_size_uv, (d_receiver - d_blocker) / d_blocker * near / "
+                                      "d_receiver",
+                                      "(d_receiver - d_blocker) * light_size_uv / d_blocker * near / d_receiver: a "
+                                      "larger light, a wider penumbra"},
+    [_SL_PCSS_WIDTH_NO_NEAR] = {"the width projected with / d_receiver alone (near left out)",
+                                "(d_receiver - d_blocker) * light_size_uv / d_blocker * near / d_receiver"},
+    [_SL_PCSS_WIDTH_NOT_PROJECTED] = {"the width on the receiver, not projected onto the map (no * near / d_receiver)",
+                                      "(d_receiver - d_blocker) * light_size_uv / d_blocker * near / d_receiver"},
+    [_SL_PCSS_WIDTH_PROJECTED_INVERSE] = {"the width projected with * d_receiver / near (the ratio inverted)",
+                                          "* near / d_receiver: the map lies at the near plane"},
+    [_SL_PCSS_WIDTH_OVER_BLOCKER_NEAR] = {"the width divided by (d_blocker * near)",
+                                          "/ d_blocker * near / d_receiver"},
+    [_SL_PCSS_WIDTH_NEGATED] = {"the width as (d_blocker - d_receiver) * ...: negative, the disk turned over",
+                                "(d_receiver - d_blocker) * ..., positive behind a blocker"},
+    [_SL_PCSS_SEARCH_FULL] = {"the blocker search over light_size_uv itself",
+                              "a search region of light_size_uv * (d_receiver - near) / d_receiver"},
+    [_SL_PCSS_SEARCH_NOT_DIVIDED] = {"the search region light_size_uv * (d_receiver - near), not divided by "
+                                     "d_receiver",
+                                     "light_size_uv * (d_receiver - near) / d_receiver"},
+    [_SL_PCSS_SEARCH_OVER_NEAR] = {"the search region light_size_uv * (d_receiver - near) / near",
+                                   "light_size_uv * (d_receiver - near) / d_receiver"},
+    [_SL_PCSS_FILTER_SEARCH_WIDTH] = {"the filter as wide as the blocker search",
+                                      "the filter as wide as the penumbra of step 2"},
+    [_SL_PCSS_FILTER_LIGHT_SIZE] = {"the filter light_size_uv wide", "the filter as wide as the penumbra of step 2"},
+    [_SL_PCSS_BLOCKER_OVER_ALL] = {"the blockers' sum divided by all 16 samples",
+                                   "divided by the number of blockers found"},
+    [_SL_PCSS_BLOCKER_NO_BIAS] = {"a blocker test without the bias, d < p.z: the blocker search counts the "
+                                  "receiver's own surface as a blocker",
+                                  "d < p.z - bias: the bias belongs in the blocker search too"},
+    [_SL_PCSS_FILTER_NO_BIAS] = {"the filter's comparisons without the bias", "p.z - bias compared at every sample"},
+    [_SL_PCSS_NO_ROTATION] = {"the disk unrotated (or turned by a rotation that is not the pixel's)",
+                              "each offset turned by pcf_rotation(gl_FragCoord.xy)"},
+};
+
+int sl_pcss_slip_count(void) { return _SL_PCSS_SLIP_COUNT - 1; }
+
+/* pcf_linear_depth(d, near, far), or its slip (the receiver's or a blocker's, as `receiver` says) */
+static float _sl_linear(float d, float near, float far, int slip, bool receiver) {
+    if (slip == _SL_PCSS_LINEAR_NEAR_FAR_SWAPPED || (receiver && slip == _SL_PCSS_RECEIVER_NEAR_FAR_SWAPPED) ||
+        (!receiver && slip == _SL_PCSS_BLOCKER_NEAR_FAR_SWAPPED)) {
+        float t = near;
+        near = far;
+        far = t;
+    }
+    float z = slip == _SL_PCSS_LINEAR_DEPTH_AS_NDC ? d : d * 2.0f - 1.0f;
+    return 2.0f * near * far / (far + near - z * (far - near));
+}
+
+/* A nearest-filtered lookup of the 64-texel synthetic map, its border 1.0 (nothing there). */
+static float _sl_lookup(sl_probe_map map, float u, float v) {
+    if (!(u >= 0 && u < 1 && v >= 0 && v < 1)) return 1.0f;
+    return sl_probe_map_depth(map, (int)floorf(u * SL_PROBE_MAP_SIZE), (int)floorf(v * SL_PROBE_MAP_SIZE));
+}
+
+/* lab 4's given pcf_rotation(pixel): an integer hash of the pixel, an angle in 1024 steps */
+static void _sl_rotation(float px, float py, float m[4]) {
+    uint32_t qx = (uint32_t)px, qy = (uint32_t)py;
+    uint32_t h = (qx * 73856093u) ^ (qy * 19349663u);
+    h = (h ^ (h >> 13u)) * 1274126177u;
+    float angle = (float)(h >> 22u) * (6.28318530718f / 1024.0f);
+    /* mat2(c, s, -s, c): columns (c, s) and (-s, c) */
+    m[0] = cosf(angle), m[1] = sinf(angle), m[2] = -m[1], m[3] = m[0];
+}
+
+double sl_pcss_model(const sl_probe_function *f, const float *in, int row, int slip) {
+    const float *map = _sl_param(f, in, "shadow_map"), *coord = _sl_param(f, in, "shadow_coord");
+    const float *bias = _sl_param(f, in, "bias"), *size = _sl_param(f, in, "light_size_uv");
+    const float *near_p = _sl_param(f, in, "near"), *far_p = _sl_param(f, in, "far");
+    if (!map || !coord || !bias || !size || !near_p || !far_p) return NAN;
+    sl_probe_map m = (sl_probe_map)(int)*map;
+    if (sl_probe_map_type(m) != SL_PROBE_MAP) return NAN;
+    float w = coord[3], p[3] = {coord[0] / w, coord[1] / w, coord[2] / w};
+    if (!(w > 0) || p[0] < 0 || p[1] < 0 || p[2] < 0 || p[0] > 1 || p[1] > 1 || p[2] > 1) return 1.0;
+    float near = *near_p, far = *far_p, light = *size;
+    bool raw_receiver = slip == _SL_PCSS_RECEIVER_RAW || slip == _SL_PCSS_ALL_RAW;
+    bool raw_blocker = slip == _SL_PCSS_BLOCKER_RAW || slip == _SL_PCSS_ALL_RAW;
+    float receiver = raw_receiver ? p[2] : _sl_linear(p[2], near, far, slip, true);
+    float rot[4] = {1, 0, 0, 1};
+    if (slip != _SL_PCSS_NO_ROTATION) _sl_rotation(0.5f, 2.0f * (float)row + 0.5f, rot);
+
+    float search = light * (receiver - near) / receiver;
+    if (slip == _SL_PCSS_SEARCH_FULL) search = light;
+    if (slip == _SL_PCSS_SEARCH_NOT_DIVIDED) search = light * (receiver - near);
+    if (slip == _SL_PCSS_SEARCH_OVER_NEAR) search = light * (receiver - near) / near;
+    float blocker_bias = slip == _SL_PCSS_BLOCKER_NO_BIAS ? 0.0f : *bias;
+    float sum = 0;
+    int blockers = 0;
+    for (int i = 0; i < 16; i++) {
+        float ox = rot[0] * _sl_disk[i][0] + rot[2] * _sl_disk[i][1], oy = rot[1] * _sl_disk[i][0] + rot[3] * _sl_disk[i][1];
+        float d = _sl_lookup(m, p[0] + ox * search, p[1] + oy * search);
+        if (d < p[2] - blocker_bias) {
+            sum += raw_blocker ? d : _sl_linear(d, near, far, slip, false);
+            blockers++;
+        }
+    }
+    if (blockers == 0) return 1.0;
+    float blocker = sum / (float)(slip == _SL_PCSS_BLOCKER_OVER_ALL ? 16 : blockers);
+    float width;
+    switch (slip) {
+    case _SL_PCSS_WIDTH_OVER_RECEIVER: width = (receiver - blocker) * light / receiver * near / receiver; break;
+    case _SL_PCSS_WIDTH_NAMES_SWAPPED: width = (blocker - receiver) * light / receiver * near / receiver; break;
+    case _SL_PCSS_WIDTH_NO_LIGHT_SIZE: width = (receiver - blocker) / blocker * near / receiver; break;
+    case _SL_PCSS_WIDTH_NO_NEAR: width = (receiver - blocker) * light / blocker / receiver; break;
+    case _SL_PCSS_WIDTH_NOT_PROJECTED: width = (receiver - blocker) * light / blocker; break;
+    case _SL_PCSS_WIDTH_PROJECTED_INVERSE: width = (receiver - blocker) * light / blocker * receiver / near; break;
+    case _SL_PCSS_WIDTH_OVER_BLOCKER_NEAR: width = (receiver - blocker) * light / (blocker * near) / receiver; break;
+    case _SL_PCSS_WIDTH_NEGATED: width = (blocker - receiver) * light / blocker * near / receiver; break;
+    case _SL_PCSS_FILTER_SEARCH_WIDTH: width = search; break;
+    case _SL_PCSS_FILTER_LIGHT_SIZE: width = light; break;
+    default: width = (receiver - blocker) * light / blocker * near / receiver; break;
+    }
+    float filter_bias = slip == _SL_PCSS_FILTER_NO_BIAS ? 0.0f : *bias;
+    float lit = 0;
+    for (int i = 0; i < 16; i++) {
+        float ox = rot[0] * _sl_disk[i][0] + rot[2] * _sl_disk[i][1], oy = rot[1] * _sl_disk[i][0] + rot[3] * _sl_disk[i][1];
+        float d = _sl_lookup(m, p[0] + ox * width, p[1] + oy * width);
+        lit += p[2] - filter_bias > d ? 0.0f : 1.0f;
+    }
+    return lit / 16.0;
+}
+
+static double _sl_row_tolerance(const sl_verdict_rows *v, int r) {
+    return v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
+}
+
+/* Does slip s give every row what the student's gave? With `slack`, one row may be one sample of 16
+ * off: a sample on a texel's edge falls on either side of it, in float, on another GL. */
+static bool _sl_slip_fits(const sl_verdict_rows *v, int s, bool slack) {
+    int off = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        double model = sl_pcss_model(v->f, v->k->inputs[r], r, s), d = fabs(_sl_got(v, r, 0) - model);
+        if (isnan(model) || d > 1.0 / 16 + 1e-4) return false;
+        off += d > 1e-3;
+    }
+    return off <= (slack ? 1 : 0);
+}
+
+int sl_pcss_slip_verdict(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "pcss") != 0) return -1;
+    /* the model must be the contract first: on these rows, as the solution answers every one */
+    int first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        double model = sl_pcss_model(v->f, v->k->inputs[r], r, _SL_PCSS_CONTRACT);
+        if (isnan(model) || fabs(_sl_want(v, r, 0) - model) > _sl_row_tolerance(v, r) + 1e-4) return -1;
+        if (first < 0 && _sl_failed(v, r)) first = r;
+    }
+    if (first < 0 || _sl_slip_fits(v, _SL_PCSS_CONTRACT, true)) return -1;
+    int fits[_SL_PCSS_SLIP_COUNT], count = 0;
+    for (int slack = 0; slack <= 1 && count == 0; slack++)
+        for (int s = 1; s < _SL_PCSS_SLIP_COUNT; s++)
+            if (_sl_slip_fits(v, s, slack)) fits[count++] = s;
+    if (count == 0 || count > 2) return -1;
+    if (count == 1)
+        snprintf(text, n, "on every row it answers as if it computed %s, where the contract says %s",
+                 _sl_pcss_text[fits[0]].slip, _sl_pcss_text[fits[0]].contract);
+    else
+        snprintf(text, n, "on every row it answers as if it computed %s, or %s (these rows answer both alike), "
+                          "where the contract says %s, and %s",
+                 _sl_pcss_text[fits[0]].slip, _sl_pcss_text[fits[1]].slip, _sl_pcss_text[fits[0]].contract,
+                 _sl_pcss_text[fits[1]].contract);
+    /* what the rows show of it in a picture: darker or lighter, a penumbra wider or narrower (farther from
+     * or nearer to one comparison's 0 or 1 at the point) */
+    uint32_t symptoms = 1u << SL_SYMPTOM_GROSS;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double got = _sl_got(v, r, 0), want = _sl_want(v, r, 0), centre = _sl_filter_row_of(v->f, v->k->inputs[r]).centre;
+        symptoms |= 1u << (got < want ? SL_SYMPTOM_TOO_DARK : SL_SYMPTOM_TOO_LIGHT);
+        symptoms |= 1u << (fabs(got - centre) > fabs(want - centre) ? SL_SYMPTOM_WIDE_PENUMBRA : SL_SYMPTOM_NARROW_PENUMBRA);
+    }
+    sl_verdict_predicts(v, symptoms);
+    return first;
+}
