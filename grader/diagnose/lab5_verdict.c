@@ -139,9 +139,20 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
     for (int r = 0; r < rows; r++) {
         const float *in = v->k->inputs[r];
         if (!_sl_failed(v, r) || (int)in[0] != SL_PROBE_MAP_MOMENTS_FLAT) continue;
-        double sum = _sl_got(v, r, 0) / 0.5;
-        snprintf(text, n, "the weights sum to %.3g, not 1 (a flat map at depth 0.5 comes out at %.4g): divide the "
-                          "weighted sum by the sum of the weights", sum, _sl_got(v, r, 0));
+        /* the flat map holds (0.5, 0.25): a weight sum scales both moments alike */
+        double m1 = _sl_got(v, r, 0), m2 = _sl_got(v, r, 1), sum = m1 / 0.5;
+        if (fabs(m2 / 0.25 - sum) <= 1e-3 * fabs(sum) + 1e-6) {
+            snprintf(text, n, "the weights sum to %.3g, not 1 (a flat map at depth 0.5 comes out at %.4g): divide the "
+                              "weighted sum by the sum of the weights", sum, m1);
+        } else if (fabs(m2 - m1) <= 1e-5) {
+            snprintf(text, n, "its second moment comes out as its first: a flat map of moments (0.5, 0.25) gives "
+                              "(%.4g, %.4g) — one value blurred into both components (a float, .r, where the two "
+                              "moments belong: the weighted sum of the texels' .rg)", m1, m2);
+        } else {
+            snprintf(text, n, "a flat map of moments (0.5, 0.25) does not stay flat: it gives (%.4g, %.4g) — each "
+                              "moment is blurred on its own, the weighted sum of the texels' .rg over weights that "
+                              "sum to 1", m1, m2);
+        }
         return r;
     }
     /* only the rows of one direction fail: the other direction is followed, this one not */

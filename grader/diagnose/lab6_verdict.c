@@ -411,7 +411,7 @@ static int _sl_verdict_sphere(const sl_verdict_rows *v, char *text, size_t n) {
 
 typedef struct _sl_light_box {
     const char *broken;   /* what breaks the contract, NULL when nothing does */
-    char detail[300];
+    char detail[400];
     double origin[2];     /* where the world's origin lands, in texels from the map's corner */
 } _sl_light_box;
 
@@ -475,8 +475,11 @@ static _sl_light_box _sl_judge_light_box(const float *in, const double *m) {
     double cx = _sl_apply(x, c) * half, cy = _sl_apply(y, c) * half;
     if (fabs(cx) > 1.001 || fabs(cy) > 1.001) {
         b.broken = "the box is not centred on the sphere";
-        snprintf(b.detail, sizeof b.detail, "the sphere's centre lands %.1f texels from the middle of the map (snapping "
-                 "moves it by less than one)", hypot(cx, cy));
+        /* either the camera aims elsewhere or the snap's correction is too large: the rows cannot tell which */
+        snprintf(b.detail, sizeof b.detail, "the sphere's centre lands %.1f texels from the middle of the map, where a "
+                 "camera looking at the centre puts it in the middle and a snap moves it by less than one texel: the "
+                 "camera's target, or the snap's correction (a fraction of a texel, in NDC (round(x) - x) / "
+                 "(map_size / 2))", hypot(cx, cy));
         return b;
     }
     double caster[3], far[3];

@@ -7,7 +7,7 @@
 
 #include "sl_gl.h"
 #include "sl_params.h"
-#include "pcss_model.h"
+#include "sl_pcss_model.h"
 #include "verdict_rows.h"
 
 /* ---- filters: a map, a shadow coordinate, a bias; 1 lit, 0 shadowed ---- */
@@ -293,10 +293,14 @@ static int _sl_pcss_width(const sl_verdict_rows *v, char *text, size_t n) {
         _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[r]);
         double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
         double here = fabs(_sl_got(v, r, 0) - fr.centre), there = fabs(_sl_want(v, r, 0) - fr.centre);
-        /* an occluder's edge over a floor, or its corner, is an edge too: its centre is the point's own texel's comparison */
+        /* an occluder's edge over a floor, or its corner, or any of them seen through w != 1, is an edge too: its centre
+         * is the point's own texel's comparison */
         const float *map = _sl_param(v->f, v->k->inputs[r], "shadow_map");
-        bool edge = fr.kind == _SL_ROW_EDGE || (fr.kind == _SL_ROW_OTHER && map &&
-                                                 ((int)*map == SL_PROBE_MAP_STEP_FLOOR || (int)*map == SL_PROBE_MAP_CORNER));
+        int m = map ? (int)*map : -1;
+        bool edge = fr.kind == _SL_ROW_EDGE ||
+                    (fr.kind == _SL_ROW_OTHER && (m == SL_PROBE_MAP_STEP_FLOOR || m == SL_PROBE_MAP_CORNER)) ||
+                    (fr.kind == _SL_ROW_HOMOGENEOUS &&
+                     (m == SL_PROBE_MAP_STEP || m == SL_PROBE_MAP_STEP_FLOOR || m == SL_PROBE_MAP_CORNER));
         if (!edge) other++;
         else if (here > there + tolerance) wide++;
         else if (here < there - tolerance) narrow++;

@@ -165,6 +165,8 @@ static const char *const _sl_depth_vert_slips[][2] = {
                                                                        "included: the GPU divides by w"},
     {"x and y moved to [0, 1] (0.5 * v + 0.5): texture space", "clip space: the rasterizer maps x and y in [-w, w] "
                                                                "onto the viewport itself"},
+    {"u_model without its translation (mat3(u_model) * a_position, then w = 1): each object's own move is lost",
+     "u_model * (a_position, 1): the whole model matrix, its translation included"},
     {NULL, NULL},
 };
 
@@ -190,7 +192,11 @@ static void _sl_expect_depth_vert(const sl_probe_function *f, const float *row, 
         return;
     }
     if (slip == 1) memcpy(m, v, sizeof m);
-    else _sl_times(model, false, v, m);
+    else if (slip == 9) { /* the model's upper 3x3 alone, then w = 1 */
+        double direction[4] = {v[0], v[1], v[2], 0};
+        _sl_times(model, false, direction, m);
+        m[3] = 1;
+    } else _sl_times(model, false, v, m);
     if (slip == 4) memcpy(out, m, sizeof m);
     else _sl_times(light, false, m, out);
     if (slip == 6 && out[3] != 0) {
@@ -244,6 +250,8 @@ static const char *const _sl_cube_depth_slips[][2] = {
     {"the distance not divided by u_light_far (the depth buffer keeps at most 1.0)", "the distance / u_light_far, in "
                                                                                      "[0, 1]"},
     {"the distance times u_light_far", "the distance divided by u_light_far"},
+    {"distance / u_light_far moved again from [-1, 1] to [0, 1] (* 0.5 + 0.5)", "distance / u_light_far: already in "
+                                                                                "[0, 1], stored as it is"},
     {NULL, NULL},
 };
 
@@ -257,6 +265,7 @@ static void _sl_expect_cube_depth(const sl_probe_function *f, const float *row, 
     double depth = slip == 2 ? axis / far : slip == 3 ? length / (far * far) : slip == 5 ? sqrt(length)
                    : slip == 6 ? sqrt(length) * far : sqrt(length) / far;
     if (slip == 4) depth = _sl_get(f, row, "gl_FragCoord.z", 0);
+    if (slip == 7) depth = depth * 0.5 + 0.5;
     out[0] = fmin(fmax(depth, 0), 1); /* the depth buffer keeps [0, 1] */
 }
 
@@ -377,6 +386,7 @@ typedef enum _sl_grid_slip {
     _SL_GRID_CENTRE_DRIFTS, /* p.xy += offset in the loop: each sample from where the last one was */
     _SL_GRID_V_FLIPPED,     /* the map read at (p.x, 1 - p.y): Direct3D's v, running downwards */
     _SL_GRID_DIAGONAL,      /* offsets (x, x): each row of the loop samples the same diagonal */
+    _SL_GRID_UV_REMAPPED,   /* the map read at p.xy * 0.5 + 0.5: texture space taken for NDC */
 } _sl_grid_slip;
 
 /* The bias's slips, in _sl_grid_slip's order from _SL_GRID_BIAS_OVER_W. */
@@ -397,6 +407,8 @@ static const char *const _sl_compare_slips[][2] = {
     _SL_BIAS_SLIPS,
     {"t flipped: the map read at (p.x, 1 - p.y), Direct3D's v running downwards",
      "the map read at p.xy: GL's t runs upwards, as the bias matrix maps y"},
+    {"the map read at p.xy * 0.5 + 0.5: p moved from [-1, 1] to [0, 1] again",
+     "the map read at p.xy: the shadow matrix's bias already took it to [0, 1]"},
     {NULL, NULL},
 };
 
@@ -404,7 +416,7 @@ static const char *const _sl_compare_slips[][2] = {
 static const _sl_grid_slip _sl_compare_as_grid[] = {
     _SL_GRID_CONTRACT,    _SL_GRID_REVERSED,     _SL_GRID_XY_NOT_DIVIDED, _SL_GRID_Z_NOT_DIVIDED,
     _SL_GRID_NO_FRUSTUM_TEST, _SL_GRID_BIAS_OVER_W, _SL_GRID_BIAS_TIMES_W, _SL_GRID_BIAS_ON_XY,
-    _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED,   _SL_GRID_V_FLIPPED};
+    _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED,   _SL_GRID_V_FLIPPED, _SL_GRID_UV_REMAPPED};
 
 static const char *const _sl_grid_slips[][2] = {
     {"", ""},
@@ -425,6 +437,8 @@ static const char *const _sl_grid_slips[][2] = {
      "the map read around p.xy: GL's t runs upwards, as the bias matrix maps y"},
     {"offsets (x, x) or (y, y): one loop variable for both axes, so every row of the loop samples the same "
      "diagonal", "offsets (x, y) * texel: x across, y up, every texel of the (2r+1) x (2r+1) grid once"},
+    {"the map read around p.xy * 0.5 + 0.5: p moved from [-1, 1] to [0, 1] again",
+     "the map read around p.xy: the shadow matrix's bias already took it to [0, 1]"},
     {NULL, NULL},
 };
 
@@ -440,6 +454,7 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     if (slip == _SL_GRID_BIAS_TIMES_W) bias *= w;
     if (slip == _SL_GRID_BIAS_ON_XY) u -= bias, v -= bias;
     if (slip == _SL_GRID_V_FLIPPED) v = 1 - v;
+    if (slip == _SL_GRID_UV_REMAPPED) u = u * 0.5 + 0.5, v = v * 0.5 + 0.5;
     if (slip == _SL_GRID_NO_BIAS) bias = 0;
     if (slip == _SL_GRID_BIAS_ADDED) bias = -bias;
     double px = _sl_get(f, row, "shadow_coord", 0) / w, py = _sl_get(f, row, "shadow_coord", 1) / w;
@@ -507,6 +522,10 @@ static const char *const _sl_midpoint_slips[][2] = {
     {"lit and shadowed swapped", "p.z > midpoint: shadowed (0), else lit (1)"},
     {"0.5 * first + second: the half on the first depth alone (the parentheses left out)", "0.5 * (first + second)"},
     {"first + 0.5 * second: the half on the second depth alone (the parentheses left out)", "0.5 * (first + second)"},
+    {"half the difference, 0.5 * (second - first): half the gap between the surfaces, a distance, not a depth",
+     "0.5 * (first + second): the depth half way between them"},
+    {"half the difference added to the second depth, second + 0.5 * (second - first): past the second surface",
+     "first + 0.5 * (second - first) = 0.5 * (first + second)"},
     {NULL, NULL},
 };
 
@@ -522,7 +541,9 @@ static void _sl_expect_midpoint(const sl_probe_function *f, const float *row, in
     sl_probe_map b = (sl_probe_map)(int)_sl_get(f, row, "second_depth", 0);
     double first = _sl_map_at(a, p[0], p[1]), second = _sl_map_at(b, p[0], p[1]);
     double middle = slip == 1 ? first + second : slip == 2 ? first : slip == 3 ? second
-                  : slip == 6 ? 0.5 * first + second : slip == 7 ? first + 0.5 * second : 0.5 * (first + second);
+                  : slip == 6 ? 0.5 * first + second : slip == 7 ? first + 0.5 * second
+                  : slip == 8 ? 0.5 * (second - first) : slip == 9 ? second + 0.5 * (second - first)
+                              : 0.5 * (first + second);
     bool shadowed = p[2] > middle;
     out[0] = (slip == 5 ? shadowed : !shadowed) ? 1 : 0;
 }
@@ -858,6 +879,8 @@ static const char *const _sl_cascade_index_slips[][2] = {
     {"count (one past the last cascade) for a point beyond every split", "count - 1, the last cascade"},
     {"the comparison reversed: the first cascade whose far split lies in front of the point (depth > split)",
      "the first cascade whose far split lies beyond the point (depth < split_far[i])"},
+    {"the last cascade before count - 1 whose far split lies beyond the point (the loop goes on after a match: no "
+     "break)", "the first cascade whose far split lies beyond the point: stop at the first match"},
     {NULL, NULL},
 };
 
@@ -870,7 +893,7 @@ static void _sl_expect_cascade_index(const sl_probe_function *f, const float *ro
     for (int i = 0; i < count - 1; i++)
         if (slip == 3 ? depth > _sl_get(f, row, "split_far", i) : depth < _sl_get(f, row, "split_far", i)) {
             out[0] = i;
-            break;
+            if (slip != 4) break;
         }
 }
 
@@ -964,7 +987,10 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
     /* every other row of the third kind just in front of the occluder, by less than the bias: lit, and
      * shadowed where the bias is added to the point's distance (or taken from the stored one) */
     bool front_by_bias = index % 3 == 2 && (index / 3) % 2 == 0;
-    if (behind_by_bias || front_by_bias) d[axis] = 1;
+    /* the others of the third kind far behind the occluder (0.4 to 0.9 of far): shadowed, and still shadowed
+     * by a squared distance over far^2, where a slip of sign (far or the distance negated) lights them */
+    bool deep_behind = index % 3 == 2 && (index / 3) % 2 == 1;
+    if (behind_by_bias || front_by_bias || deep_behind) d[axis] = 1;
     /* a near far plane in front of the occluder: there a squared distance over far stays below the occluder's
      * 0.1 (lit, as the contract), so only a bias on the wrong side shadows it */
     double far = front_by_bias || _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 3, 8) : _sl_uniform(r, 14, 40);
@@ -973,6 +999,7 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
     double current = off_axis         ? _sl_uniform(r, 0.105, 0.115)
                    : behind_by_bias ? 0.1 + _sl_uniform(r, 0.3, 0.8) * fmin(bias * (far - 1), 0.5)
                    : front_by_bias  ? 0.1 - (1 + _sl_uniform(r, 0.25, 0.75)) * bias
+                   : deep_behind    ? _sl_uniform(r, 0.4, 0.9)
                    : _sl_uniform(r, 0, 1) < 0.5 ? _sl_uniform(r, 0.03, 0.07)
                                                 : _sl_uniform(r, 0.14, 0.9);
     double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), distance = (current + bias) * far;
@@ -988,6 +1015,7 @@ static void _sl_draw_point_shadow(const sl_probe_function *f, _sl_rng *r, int in
              : behind_by_bias ? ", behind the occluder by less than bias * far_plane (the bias is in the map's units)"
              : front_by_bias  ? ", in front of the occluder by less than the bias: lit (the bias moves the point towards "
                                 "the light, never away)"
+             : deep_behind    ? ", far behind the occluder: shadowed"
                               : "",
              bias);
 }
@@ -1111,13 +1139,14 @@ typedef enum _sl_slip_kind {
     _SL_SLIP_PLUS_ONE,
     _SL_SLIP_MINUS_ONE,
     _SL_SLIP_SWAPPED_WITH,
+    _SL_SLIP_CONSTANT, /* the value it has on most written rows, whatever it is (a 4 for count) */
     _SL_SLIP_KINDS
 } _sl_slip_kind;
 
 /* Applies slip `kind` to parameter p (offset, size) of row; `component` and `other` (offset) as the kind needs.
  * False when the slip does not apply to a parameter of that type. */
 static bool _sl_slip_apply(const sl_probe_function *f, int p, int offset, int size, _sl_slip_kind kind, int component,
-                           int other, float *row) {
+                           int other, float constant, float *row) {
     bool is_int = f->params[p].type == SL_PROBE_INT;
     float *v = row + offset;
     switch (kind) {
@@ -1157,6 +1186,10 @@ static bool _sl_slip_apply(const sl_probe_function *f, int p, int offset, int si
         if (!is_int) return false;
         v[0] += kind == _SL_SLIP_PLUS_ONE ? 1.0f : -1.0f;
         return true;
+    case _SL_SLIP_CONSTANT:
+        if (size != 1) return false;
+        v[0] = constant;
+        return true;
     case _SL_SLIP_SWAPPED_WITH:
         if (other < 0) return false;
         for (int j = 0; j < size; j++) {
@@ -1170,8 +1203,8 @@ static bool _sl_slip_apply(const sl_probe_function *f, int p, int offset, int si
     }
 }
 
-static void _sl_slip_words(const sl_probe_function *f, int p, _sl_slip_kind kind, int component, int q, char *out,
-                           size_t n) {
+static void _sl_slip_words(const sl_probe_function *f, int p, _sl_slip_kind kind, int component, int q, float constant,
+                           char *out, size_t n) {
     const char *name = f->params[p].name, *axis = "xyzw";
     switch (kind) {
     case _SL_SLIP_NEGATED: snprintf(out, n, "%s negated", name); break;
@@ -1186,6 +1219,7 @@ static void _sl_slip_words(const sl_probe_function *f, int p, _sl_slip_kind kind
     case _SL_SLIP_PLUS_ONE: snprintf(out, n, "%s + 1 in place of %s", name, name); break;
     case _SL_SLIP_MINUS_ONE: snprintf(out, n, "%s - 1 in place of %s", name, name); break;
     case _SL_SLIP_SWAPPED_WITH: snprintf(out, n, "%s and %s swapped", name, f->params[q].name); break;
+    case _SL_SLIP_CONSTANT: snprintf(out, n, "%s taken as %g, whatever it is (a constant where the input belongs)", name, constant); break;
     default: out[0] = '\0';
     }
 }
@@ -1202,6 +1236,7 @@ static bool _sl_slip_close(double student, double expected, double scale) {
  * (edit > 0). */
 typedef struct _sl_slip_candidate {
     int p, kind, component, q, other, formula_slip, edit;
+    float constant; /* an input slip's constant (_SL_SLIP_CONSTANT) */
 } _sl_slip_candidate;
 
 /* What the formula's names mean on one row: the function's parameters. */
@@ -1257,7 +1292,7 @@ static bool _sl_candidate_outputs(const _sl_generic *g, const sl_probe_function 
         memcpy(slipped, rows[row], sizeof(float) * (size_t)inputs);
         if (c->formula_slip == 0 &&
             !_sl_slip_apply(f, c->p, offsets[c->p], sl_probe_type_size(f->params[c->p].type), (_sl_slip_kind)c->kind,
-                            c->component, c->other, slipped))
+                            c->component, c->other, c->constant, slipped))
             return false;
         g->expect(f, slipped, c->formula_slip, at);
     }
@@ -1306,7 +1341,7 @@ static void _sl_candidate_words(const _sl_generic *g, const sl_probe_function *f
         sl_formula_edit_words(formula, c->edit, computed, contract, sizeof computed);
         snprintf(out, n, "%s, where the contract says %s", computed, contract);
     } else {
-        _sl_slip_words(f, c->p, (_sl_slip_kind)c->kind, c->component, c->q, out, n);
+        _sl_slip_words(f, c->p, (_sl_slip_kind)c->kind, c->component, c->q, c->constant, out, n);
     }
 }
 
@@ -1337,6 +1372,19 @@ static void _sl_group(_sl_slip_groups *groups, const _sl_generic *g, const sl_pr
         memcpy(groups->fresh[groups->count], outputs, sizeof(double) * (size_t)size);
     }
     groups->count++;
+}
+
+/* The value most of k's written rows give the input at `offset` (a constant someone might have written
+ * in its place: the value the examples they tried had); NaN when no value is shared by two rows. */
+static float _sl_common_value(const sl_check *k, int offset) {
+    int written = k->rows - k->generic_rows, best = 1;
+    float value = NAN;
+    for (int a = 0; a < written; a++) {
+        int same = 0;
+        for (int b = 0; b < written; b++) same += k->inputs[b][offset] == k->inputs[a][offset];
+        if (same > best) best = same, value = k->inputs[a][offset];
+    }
+    return value;
 }
 
 sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, const double *expected, char *out,
@@ -1397,7 +1445,7 @@ sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, co
     static _sl_slip_groups groups;
     groups.count = 0;
     for (int s = 1; g->slips && g->slips[s][0]; s++) {
-        _sl_slip_candidate c = {0, 0, 0, 0, -1, s, 0};
+        _sl_slip_candidate c = {0, 0, 0, 0, -1, s, 0, 0};
         if (_sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &c))
             _sl_group(&groups, g, f, offsets, &formula, (const float (*)[SL_PROBE_MAX_INPUTS])fresh, &c);
     }
@@ -1414,13 +1462,17 @@ sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, co
                                                           f->params[q].type != type
                                                        : variant > 0)
                     continue;
-                _sl_slip_candidate c = {p, kind, component, q, kind == _SL_SLIP_SWAPPED_WITH ? offsets[q] : -1, 0, 0};
+                _sl_slip_candidate c = {p, kind, component, q, kind == _SL_SLIP_SWAPPED_WITH ? offsets[q] : -1, 0, 0,
+                                        _sl_common_value(k, offsets[p])};
+                /* a constant that is 0 or 1 is the slips above; one that no written row shares is no slip */
+                if (kind == _SL_SLIP_CONSTANT && (size != 1 || c.constant == 0 || c.constant == 1 || isnan(c.constant)))
+                    continue;
                 if (_sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &c))
                     _sl_group(&groups, g, f, offsets, &formula, (const float (*)[SL_PROBE_MAX_INPUTS])fresh, &c);
             }
     }
     for (int e = 1; edits && e <= sl_formula_edit_count(&formula); e++) {
-        _sl_slip_candidate c = {0, 0, 0, 0, -1, 0, e};
+        _sl_slip_candidate c = {0, 0, 0, 0, -1, 0, e, 0};
         if (_sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &c))
             _sl_group(&groups, g, f, offsets, &formula, (const float (*)[SL_PROBE_MAX_INPUTS])fresh, &c);
     }

@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "pcss_model.h"
+#include "sl_pcss_model.h"
 
 #include <math.h>
 #include <stdbool.h>
@@ -7,8 +7,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "verdict_filter.h"
-#include "verdict_rows.h"
+#include "diagnose/verdict_filter.h"
+#include "diagnose/verdict_rows.h"
 
 /* The 16 points of lab 4's given Poisson disk (labs/lab4_pcf/shaders/pcf.glsl, "Given"). */
 static const float _sl_disk[16][2] = {
@@ -44,6 +44,8 @@ typedef enum {
     _SL_PCSS_BLOCKER_NO_BIAS,         /* d < p.z */
     _SL_PCSS_FILTER_NO_BIAS,          /* p.z compared unbiased in the PCF */
     _SL_PCSS_NO_ROTATION,             /* the disk unrotated */
+    _SL_PCSS_XY_NOT_DIVIDED,          /* the map read at shadow_coord.xy */
+    _SL_PCSS_Z_NOT_DIVIDED,           /* shadow_coord.z as the receiver's depth */
     _SL_PCSS_SLIP_COUNT
 } _sl_pcss_slip;
 
@@ -106,6 +108,10 @@ static const struct {
                                   "receiver's own surface as a blocker",
                                   "d < p.z - bias: the bias belongs in the blocker search too"},
     [_SL_PCSS_FILTER_NO_BIAS] = {"the filter's comparisons without the bias", "p.z - bias compared at every sample"},
+    [_SL_PCSS_XY_NOT_DIVIDED] = {"x and y not divided by w (the map read around shadow_coord.xy)",
+                                 "p = shadow_coord.xyz / shadow_coord.w (pcf_project), then read around p.xy"},
+    [_SL_PCSS_Z_NOT_DIVIDED] = {"z not divided by w (shadow_coord.z as the receiver's depth)",
+                                "p.z = shadow_coord.z / shadow_coord.w: a spot light's coordinate is homogeneous"},
     [_SL_PCSS_NO_ROTATION] = {"the disk unrotated (or turned by a rotation that is not the pixel's)",
                               "each offset turned by pcf_rotation(gl_FragCoord.xy)"},
 };
@@ -148,6 +154,8 @@ double sl_pcss_model(const sl_probe_function *f, const float *in, int row, int s
     sl_probe_map m = (sl_probe_map)(int)*map;
     if (sl_probe_map_type(m) != SL_PROBE_MAP) return NAN;
     float w = coord[3], p[3] = {coord[0] / w, coord[1] / w, coord[2] / w};
+    if (slip == _SL_PCSS_XY_NOT_DIVIDED) p[0] = coord[0], p[1] = coord[1];
+    if (slip == _SL_PCSS_Z_NOT_DIVIDED) p[2] = coord[2];
     if (!(w > 0) || p[0] < 0 || p[1] < 0 || p[2] < 0 || p[0] > 1 || p[1] > 1 || p[2] > 1) return 1.0;
     float near = *near_p, far = *far_p, light = *size;
     bool raw_receiver = slip == _SL_PCSS_RECEIVER_RAW || slip == _SL_PCSS_ALL_RAW;

@@ -1,12 +1,13 @@
-/* pcss_model: PCSS on the probe's synthetic maps, computed here as the contract says and as a slip
- * in one of its terms would, so a failed pcss probe can name the term whose slip gives every row's
- * answer (grader/diagnose/pcss_model.c). */
+/* sl_pcss_model: PCSS on the probe's synthetic maps, computed as the contract says and as a slip in
+ * one of its terms would, so a failed pcss probe can name the term whose slip gives every row's answer.
+ * The model is lab 4's answer, so it is staff code (solutions/grader/sl_pcss_model.c); the handout's
+ * grader names no slip here (sl_pcss_model_none.c) and says what the rows show instead. */
 #ifndef SL_PCSS_MODEL_H
 #define SL_PCSS_MODEL_H
 
 #include <stddef.h>
 
-#include "sl_verdict.h"
+#include "diagnose/sl_verdict.h"
 
 /* pcss() at one probe row (its inputs, and the row's index: the pixel it is drawn at, gl_FragCoord
  * (0.5, 2 row + 0.5), picks the disk's rotation), as the contract gives it or with slip `slip` (1 ..
