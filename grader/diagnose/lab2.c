@@ -232,6 +232,56 @@ static bool _sl_ortho_box(const double *m, double box[6]) {
     return true;
 }
 
+/* What a fitted box that is not the contract's is, from its six values (left, right, bottom, top, near, far)
+ * against the contract's (be, padded by `pad` at near and far): a box that takes in the light view's origin
+ * too (running bounds started at 0, not at the first corner), or sides that each hold another side's value
+ * (the x extent copied into y, near and far exchanged). */
+static bool _sl_box_reading(const double *bs, const double *be, double pad, double tol, char *text, size_t n) {
+    static const char *const side[6] = {"left", "right", "bottom", "top", "near", "far"};
+    /* the corners' box and the origin's point: near = -(max z) and far = -(min z) take in z = 0 too */
+    double near0 = be[4] + pad, far0 = be[5] - pad, with[6] = {fmin(be[0], 0), fmax(be[1], 0), fmin(be[2], 0),
+                                                               fmax(be[3], 0), fmin(near0, 0), fmax(far0, 0)};
+    double pad0 = (with[5] - with[4]) * 0.01;
+    with[4] -= pad0, with[5] += pad0;
+    bool origin = true, differs = false;
+    for (int i = 0; i < 6; i++) {
+        origin &= fabs(bs[i] - with[i]) < tol;
+        differs |= fabs(bs[i] - be[i]) >= tol;
+    }
+    if (origin && differs) {
+        snprintf(text, n, "the box takes in the light view's origin (0, 0, 0) as well as the scene's corners: its %s "
+                          "reach 0 — the running min and max start at 0, which no corner goes past on that side; "
+                          "start them at the first corner, or at +FLT_MAX and -FLT_MAX",
+                 fabs(bs[4] - be[4]) >= tol || fabs(bs[5] - be[5]) >= tol ? "near and far" : "sides");
+        return true;
+    }
+    bool sides = true;
+    for (int i = 0; i < 4; i++) sides &= fabs(bs[i] - be[i]) < tol;
+    if (sides && fabs(bs[4] - (be[4] + 2 * pad)) < tol && fabs(bs[5] - (be[5] - 2 * pad)) < tol) {
+        snprintf(text, n, "near and far are padded inwards: near = -(max z) + pad and far = -(min z) - pad cut 1%% off "
+                          "the scene at both ends; the padding widens the range, near = -(max z) - pad, far = -(min z) "
+                          "+ pad");
+        return true;
+    }
+    char said[300] = "";
+    size_t used = 0;
+    int wrong = 0;
+    for (int i = 0; i < 6; i++) {
+        if (fabs(bs[i] - be[i]) < tol) continue;
+        int j = 0;
+        while (j < 6 && (j == i || fabs(bs[i] - be[j]) >= tol)) j++;
+        if (j == 6) return false; /* a value of its own: no other side's */
+        used += (size_t)snprintf(said + used, sizeof said - used, "%s%s is the contract's %s (%.4g)",
+                                 wrong ? ", its " : "", side[i], side[j], be[j]);
+        if (used >= sizeof said) return false;
+        wrong++;
+    }
+    if (wrong == 0) return false;
+    snprintf(text, n, "its %s: each holds the value another side of the box should have — left/right from the corners' "
+                      "x, bottom/top from their y, near/far from -(max z) and -(min z)", said);
+    return true;
+}
+
 static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, size_t n) {
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r)) continue;
@@ -255,6 +305,7 @@ static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, si
                 sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_TOO_DARK);
                 return r;
             }
+            if (_sl_box_reading(bs, be, pad, tol, text, n)) return r;
             if (!sides) {
                 snprintf(text, n, "the box's sides are not the scene's corners' extent in light view space: left/right "
                                   "and bottom/top are the min and max x and y of all 8 corners, transformed by the "
