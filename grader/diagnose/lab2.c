@@ -334,7 +334,63 @@ static int _sl_verdict_light_projection(const sl_verdict_rows *v, char *text, si
 /* A view whose eye is the contract's but which looks elsewhere: towards which point of its inputs. A spot light
  * looks from its position along its direction (target = position + direction), so a target that is one of
  * these points on its own (the direction read as a point, the origin, the scene's centre) is the slip. */
+/* A sun's view that looks the right way from the wrong place: the eye moved across the light by what
+ * another point of the box's inputs puts in place of its centre ((max - min) / 2, min, max, max + min, the
+ * origin). Along the light the eye may move too (its distance depends on the box): only the part across the
+ * light's direction is compared. */
+static int _sl_sun_aims_elsewhere(const sl_verdict_rows *v, char *text, size_t n) {
+    static const char *const named[] = {
+        "(max - min) / 2, half the box's size", "bounds_min", "bounds_max", "min + max, twice the centre",
+        "the world's origin"};
+    unsigned fitting = 0x1f; /* the points every failing row so far fits: a row may fit two (a light straight
+                              * down cannot tell points apart that differ only in height) */
+    int first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        const float *type = _sl_param(v->f, in, "light_type"), *dir = _sl_param(v->f, in, "direction");
+        const float *lo = _sl_param(v->f, in, "bounds_min"), *hi = _sl_param(v->f, in, "bounds_max");
+        if (!type || !dir || !lo || !hi || (int)*type != 0) return -1;
+        double s[16], e[16];
+        for (int o = 0; o < 16; o++) s[o] = _sl_got(v, r, o), e[o] = _sl_want(v, r, o);
+        sl_camera_reading cs = sl_camera_read(s), ce = sl_camera_read(e);
+        if (cs.kind != SL_CAMERA_VIEW || ce.kind != SL_CAMERA_VIEW) return -1;
+        double same = 0, moved[3], centre[3];
+        for (int i = 0; i < 3; i++) same += cs.forward[i] * ce.forward[i], moved[i] = cs.eye[i] - ce.eye[i];
+        if (same < 1 - 1e-6) return -1;
+        for (int i = 0; i < 3; i++) centre[i] = (lo[i] + hi[i]) / 2;
+        double points[5][3];
+        for (int i = 0; i < 3; i++) {
+            points[0][i] = (hi[i] - lo[i]) / 2, points[1][i] = lo[i], points[2][i] = hi[i];
+            points[3][i] = lo[i] + hi[i], points[4][i] = 0;
+        }
+        unsigned fits = 0;
+        for (int c = 0; c < 5; c++) {
+            /* the eye's move against the aimed point's move, across the light's direction */
+            double d[3], along = 0, off = 0, size = 0;
+            for (int i = 0; i < 3; i++) d[i] = moved[i] - (points[c][i] - centre[i]), along += d[i] * ce.forward[i];
+            for (int i = 0; i < 3; i++) {
+                double across = d[i] - along * ce.forward[i], shift = points[c][i] - centre[i];
+                off += across * across, size += shift * shift;
+            }
+            if (size > 1e-6 && sqrt(off) <= 1e-3 * fmax(1, sqrt(size))) fits |= 1u << c;
+        }
+        fitting &= fits;
+        if (!fitting) return -1;
+        if (first < 0) first = r;
+    }
+    if (first < 0 || (fitting & (fitting - 1))) return -1; /* none, or more than one point fits every row */
+    int explained = 0;
+    while (!(fitting & (1u << explained))) explained++;
+    snprintf(text, n, "it looks the right way from the wrong place: the eye is where aiming at %s puts it, not at the "
+                      "box's centre, (bounds_min + bounds_max) / 2 — the sun's eye is centre - direction * distance",
+             named[explained]);
+    return first;
+}
+
 static int _sl_verdict_light_view(const sl_verdict_rows *v, char *text, size_t n) {
+    int sun = _sl_sun_aims_elsewhere(v, text, n);
+    if (sun >= 0) return sun;
     static const char *const named[] = {
         "towards direction read as a point: the target is position + direction, a point along the light's "
         "direction",
