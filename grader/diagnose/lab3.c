@@ -414,6 +414,24 @@ static int _sl_verdict_normal_offset(const sl_verdict_rows *v, char *text, size_
 
 /* Outputs: polygon offset on, factor, units, culling on, cull face. */
 static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, size_t n) {
+    /* nothing switched on in any mode, where the contract switches polygon offset on in one and culling in
+     * another (and the call returned): what a mode enables does not survive the call */
+    int enables = 0, first = -1, any_on = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        double s0 = _sl_got(v, r, 0), s3 = _sl_got(v, r, 3);
+        if (isnan(s0) || isnan(s3)) return -1;
+        any_on += s0 != 0 || s3 != 0;
+        if (_sl_want(v, r, 0) != 0 || _sl_want(v, r, 3) != 0) {
+            enables |= (_sl_want(v, r, 0) != 0 ? 1 : 0) | (_sl_want(v, r, 3) != 0 ? 2 : 0);
+            if (first < 0) first = r;
+        }
+    }
+    if (enables == 3 && !any_on) {
+        snprintf(text, n, "in every mode it leaves polygon offset and culling off: nothing a mode switches on outlives "
+                          "the call — a reset (glDisable) after the mode's own glEnable undoes it, or the mode's "
+                          "branch is never taken; reset both switches first, then set the mode's");
+        return first;
+    }
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r)) continue;
         int mode = (int)v->k->inputs[r][0], previous = v->f->param_count > 3 ? (int)v->k->inputs[r][3] : -1;
