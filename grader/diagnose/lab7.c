@@ -857,10 +857,35 @@ static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, con
 
 /* lab7_begin_cube_pass leaving attached the face the probe attached before the call ((face + 3) % 6), on every
  * row that differs: its glFramebufferTexture2D went to another framebuffer (the one bound before its bind). */
+/* Face +X attached whatever the face, its depth readable only where face is 0: the face given to
+ * glFramebufferTexture2D as its mip level (a level with no storage leaves the framebuffer incomplete, so
+ * the clear writes nothing there). Outputs 1: attached face, 6: depth after the call. */
+static int _sl_face_as_level(const sl_check *k, const double *student, const double *expected, uint32_t failing,
+                             char *text, size_t n) {
+    int outputs = sl_probe_at(k->function)->output_count, first = -1, zero_right = 0, others = 0;
+    for (int row = 0; row < k->rows; row++) {
+        int face = (int)k->inputs[row][0];
+        const double *got = student + row * outputs, *want = expected + row * outputs;
+        if (face < 0 || face > 5 || got[1] != _SL_CUBE_POSITIVE_X) return -1;
+        if (face == 0) zero_right += !((failing >> row) & 1u);
+        else if ((failing >> row) & 1u && got[6] != want[6]) {
+            others++;
+            if (first < 0) first = row;
+        } else return -1;
+    }
+    if (first < 0 || zero_right == 0) return -1;
+    snprintf(text, n, "it attaches face +X whatever face is, and only face 0's framebuffer can be cleared: the face "
+                      "went in as the mip level — glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, "
+                      "GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, map->depth_cube, 0): the face in the target, level 0 last");
+    return first;
+}
+
 static int _sl_begin_cube_pass_verdict(const sl_check *k, const double *student, const double *expected,
                                        uint32_t failing, char *text, size_t n) {
     const sl_probe_function *f = sl_probe_at(k->function);
     int outputs = f->output_count, first = -1;
+    int level = _sl_face_as_level(k, student, expected, failing, text, n);
+    if (level >= 0) return level;
     for (int row = 0; row < k->rows; row++) {
         if (!((failing >> row) & 1u)) continue;
         int face = (int)k->inputs[row][0];
