@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "sl_pcss_model.h"
+#include "sl_filter_model.h"
 
 #include <math.h>
 #include <stdbool.h>
@@ -254,5 +254,69 @@ int sl_pcss_slip_verdict(const sl_verdict_rows *v, char *text, size_t n) {
         symptoms |= 1u << (fabs(got - centre) > fabs(want - centre) ? SL_SYMPTOM_WIDE_PENUMBRA : SL_SYMPTOM_NARROW_PENUMBRA);
     }
     sl_verdict_predicts(v, symptoms);
+    return first;
+}
+
+/* ---- pcf_grid: a grid of another spacing ---- */
+
+/* A (2r+1)^2 grid whose samples are `spacing` texels apart, on a synthetic map (nearest texels, the
+ * border's depth 1.0 off the map): what pcf_grid gives for a row with that spacing. */
+static double _sl_grid_with_spacing(const sl_probe_function *f, const float *in, double spacing) {
+    const float *map = _sl_param(f, in, "shadow_map"), *coord = _sl_param(f, in, "shadow_coord");
+    const float *bias = _sl_param(f, in, "bias"), *radius = _sl_param(f, in, "radius");
+    if (!map || !coord || !bias || !radius || coord[3] <= 0) return NAN;
+    double x = coord[0] / coord[3], y = coord[1] / coord[3], z = coord[2] / coord[3] - *bias;
+    int r = (int)*radius, lit = 0, all = 0;
+    for (int j = -r; j <= r; j++)
+        for (int i = -r; i <= r; i++) {
+            double u = x + i * spacing / SL_PROBE_MAP_SIZE, w = y + j * spacing / SL_PROBE_MAP_SIZE;
+            double stored = u < 0 || u >= 1 || w < 0 || w >= 1
+                                ? 1.0
+                                : sl_probe_map_depth((sl_probe_map)(int)*map, (int)floor(u * SL_PROBE_MAP_SIZE),
+                                                     (int)floor(w * SL_PROBE_MAP_SIZE));
+            lit += !(z > stored);
+            all++;
+        }
+    return (double)lit / all;
+}
+
+/* The grid's samples another distance apart than one texel (a scale of 1.5, as some published
+ * kernels take, or a fixed step in uv): the spacings, in texels of the 64-texel map, at which a grid
+ * gives every failing row what the student's gives. One map size cannot tell a scale from a uv
+ * step, so the message names both. */
+int sl_grid_spacing_verdict(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "pcf_grid") != 0) return -1;
+    double lo = INFINITY, hi = -INFINITY;
+    int first = -1;
+    for (int step = 25; step <= 400; step++) {
+        double spacing = step / 100.0;
+        if (step == 100) continue;
+        bool all = true;
+        int failing = 0;
+        for (int r = 0; r < v->k->rows && all; r++) {
+            if (!_sl_failed(v, r)) continue;
+            failing++;
+            double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
+            double model = _sl_grid_with_spacing(v->f, v->k->inputs[r], spacing);
+            all = !isnan(model) && _sl_near(_sl_got(v, r, 0), model, tolerance + 1e-4);
+            if (all && first < 0) first = r;
+        }
+        if (all && failing > 0) {
+            lo = fmin(lo, spacing);
+            hi = fmax(hi, spacing);
+        }
+    }
+    if (first < 0 || !(lo <= hi) || (lo < 1 && hi > 1)) return -1;
+    bool wide = lo > 1;
+    char spacing[64];
+    if (hi - lo < 0.05) snprintf(spacing, sizeof spacing, "%.2g", lo);
+    else snprintf(spacing, sizeof spacing, "%.2g to %.2g", lo, hi);
+    snprintf(text, n, "the kernel is too %s: its samples are %s texels apart on this 64-texel map, not one — offset "
+                      "(x, y) times the texel, 1.0 / textureSize(map, 0), and nothing else: no scale (some published "
+                      "kernels spread a 3x3 grid 1.5 texels apart) and no fixed step in uv",
+             wide ? "wide" : "narrow", spacing);
+    sl_verdict_predicts(v, (wide ? 1u << SL_SYMPTOM_WIDE_PENUMBRA : 1u << SL_SYMPTOM_NARROW_PENUMBRA) |
+                               1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT | 1u << SL_SYMPTOM_GROSS |
+                               SL_PREDICTS_EVERY_SETTING);
     return first;
 }
