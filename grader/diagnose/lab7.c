@@ -862,14 +862,13 @@ static int _sl_lookup_verdict(const sl_check *k, bool soft, const double *s, con
  * the clear writes nothing there). Outputs 1: attached face, 6: depth after the call. */
 static int _sl_face_as_level(const sl_check *k, const double *student, const double *expected, uint32_t failing,
                              char *text, size_t n) {
-    int outputs = sl_probe_at(k->function)->output_count, first = -1, zero_right = 0, others = 0;
+    int outputs = sl_probe_at(k->function)->output_count, first = -1, zero_right = 0;
     for (int row = 0; row < k->rows; row++) {
         int face = (int)k->inputs[row][0];
         const double *got = student + row * outputs, *want = expected + row * outputs;
         if (face < 0 || face > 5 || got[1] != _SL_CUBE_POSITIVE_X) return -1;
         if (face == 0) zero_right += !((failing >> row) & 1u);
         else if ((failing >> row) & 1u && got[6] != want[6]) {
-            others++;
             if (first < 0) first = row;
         } else return -1;
     }
