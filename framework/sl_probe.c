@@ -77,6 +77,15 @@ static const sl_probe_function _sl_functions[] = {
      .params = {_SL_I("mode"), _SL_F("polygon_offset_factor"), _SL_F("polygon_offset_units"), _SL_I("previous_mode")},
      .param_count = 4,
      .stub_param = -1, .stub_value = NAN},
+    /* lab 3's extension: the state of the second depth pass, called as the framework calls it (right after
+     * lab 1's pass state), from a start with culling off or with back faces culled (a pass before may leave
+     * that on); which faces are culled is read as front or back for the current winding, so culling GL_BACK
+     * with glFrontFace(GL_CW) counts as culling the front faces */
+    {.name = "lab3_second_depth_state", .lab = 3, .file = "lab3_bias/lab3.c", .todo = "lab3.4",
+     .outputs = "front faces culled,back faces culled,faces chosen with culling off,depth test on,depth func,"
+                "depth writes on",
+     .output_count = 6, .params = {_SL_I("culling_before")}, .param_count = 1, .stub_param = -1,
+     .stub_value = NAN, .bonus = true},
     {.name = "slope_scaled_bias", .lab = 3, .glsl = true, .file = "lab3_bias/shaders/bias.glsl", .todo = "lab3.2",
      .outputs = "bias", .output_count = 1,
      .params = {_SL_F("n_dot_l"), _SL_F("constant_bias"), _SL_F("slope"), _SL_F("max_bias")}, .param_count = 4,

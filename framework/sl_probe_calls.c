@@ -396,6 +396,45 @@ static sl_status _sl_row_lab3_depth_pass_state(const float *in, double *out) {
     return status;
 }
 
+/* Which faces the current state culls, as front or back for the current winding: 1 front, 2 back, 3 both,
+ * 0 none (with culling off, the faces glCullFace chose, the same way, in *chosen). */
+static int _sl_faces_culled(int *chosen) {
+    GLint mode = GL_BACK, winding = GL_CCW;
+    glGetIntegerv(GL_CULL_FACE_MODE, &mode);
+    glGetIntegerv(GL_FRONT_FACE, &winding);
+    int faces = mode == GL_FRONT_AND_BACK ? 3 : (mode == GL_FRONT) == (winding == GL_CCW) ? 1 : 2;
+    *chosen = faces;
+    return glIsEnabled(GL_CULL_FACE) ? faces : 0;
+}
+
+static sl_status _sl_row_lab3_second_depth_state(const float *in, double *out) {
+    /* the state lab 1's pass leaves (depth test on, nearest kept, writes on), culling as the row says */
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glFrontFace(GL_CCW);
+    _sl_neutral_depth_state();
+    if ((int)in[0] == 1) glEnable(GL_CULL_FACE); /* glCullFace(GL_BACK) from the neutral state */
+    sl_status status = sl_build_lab_functions.lab3_second_depth_state();
+    int chosen = 0, culled = _sl_faces_culled(&chosen);
+    GLint func = 0;
+    GLboolean writes = GL_FALSE;
+    glGetIntegerv(GL_DEPTH_FUNC, &func);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &writes);
+    out[0] = (culled & 1) != 0;
+    out[1] = (culled & 2) != 0;
+    out[2] = culled ? 0 : chosen; /* what glCullFace chose, where GL_CULL_FACE never switched it on */
+    out[3] = glIsEnabled(GL_DEPTH_TEST);
+    out[4] = func == GL_LEQUAL ? GL_LESS : func; /* both keep the nearest of the faces drawn */
+    out[5] = writes;
+    glFrontFace(GL_CCW);
+    _sl_neutral_depth_state();
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    return status;
+}
+
 static sl_status _sl_row_lab6_split_distances(const float *in, double *out) {
     sl_status status = SL_FAILED;
     float splits[SL_MAX_CASCADES + 1] = {0};
@@ -729,6 +768,7 @@ const sl_technique_probe sl_lab2_probes[] = {
 };
 const sl_technique_probe sl_lab3_probes[] = {
     {.function = "lab3_depth_pass_state", .run_row = _sl_row_lab3_depth_pass_state},
+    {.function = "lab3_second_depth_state", .run_row = _sl_row_lab3_second_depth_state},
     {0},
 };
 const sl_technique_probe sl_lab4_probes[] = {

@@ -203,6 +203,7 @@ void sl_renderer_reset_state(GLuint target, int width, int height) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(0, 0);
     glDisable(GL_BLEND);

@@ -481,6 +481,64 @@ static int _sl_verdict_depth_pass_state(const sl_verdict_rows *v, char *text, si
     return -1;
 }
 
+/* lab3_second_depth_state: front faces culled, back faces culled, faces chosen with culling off, depth test on,
+ * depth func, depth writes on. */
+static int _sl_verdict_second_depth_state(const sl_verdict_rows *v, char *text, size_t n) {
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        double s[6];
+        for (int o = 0; o < 6; o++) s[o] = _sl_got(v, r, o);
+        if (isnan(s[0])) continue;
+        bool after_back = v->k->inputs[r][0] == 1;
+        int func = (int)s[4];
+        if (func == 0x0204 || func == 0x0206) { /* GL_GREATER, GL_GEQUAL */
+            snprintf(text, n, "the depth test keeps the farther fragment (glDepthFunc(%s)): lab1_begin_depth_pass has "
+                              "cleared the map to 1.0, which no depth exceeds, so nothing is stored (and from a 0 "
+                              "clear it would keep the farthest surface of all, not each object's far side); keep "
+                              "GL_LESS and cull the faces that face the light, glCullFace(GL_FRONT)",
+                     func == 0x0204 ? "GL_GREATER" : "GL_GEQUAL");
+            return r;
+        }
+        if (s[0] && s[1]) {
+            snprintf(text, n, "both front and back faces are culled (GL_FRONT_AND_BACK): no triangle is drawn and the "
+                              "second map stays at its clear value; cull GL_FRONT only");
+            return r;
+        }
+        if (s[1] && !s[0]) {
+            snprintf(text, n, "the back faces are culled%s: the second map keeps the surface facing the light, the "
+                              "first map's surface, so the midpoint is the first depth; cull GL_FRONT",
+                     after_back ? " (after a pass that culled back faces, the function leaves that choice as it "
+                                  "was: set glCullFace(GL_FRONT) every time)" : "");
+            return r;
+        }
+        if (!s[0] && !s[1]) {
+            if (s[2] == 1)
+                snprintf(text, n, "glCullFace(GL_FRONT) chooses the faces, but GL_CULL_FACE is never enabled, so "
+                                  "no face is culled and the second map keeps the first surface; glEnable(GL_CULL_FACE)");
+            else
+                snprintf(text, n, "no face is culled: the second map keeps the surface facing the light, as the "
+                                  "first does; glEnable(GL_CULL_FACE) with glCullFace(GL_FRONT)");
+            return r;
+        }
+        if (!s[3]) {
+            snprintf(text, n, "the depth test is switched off: without it GL writes no depth at all, so the second map "
+                              "keeps its clear value; leave the depth test on (lab 1's pass turned it on)");
+            return r;
+        }
+        if (!s[5]) {
+            snprintf(text, n, "depth writes are off (glDepthMask(GL_FALSE)): the second map keeps its clear value; "
+                              "leave the mask on");
+            return r;
+        }
+        if (func != 0x0201) { /* GL_LESS (GL_LEQUAL is read as GL_LESS) */
+            snprintf(text, n, "the depth test is changed (glDepthFunc 0x%04X): of the back faces along a ray the map "
+                              "must keep the nearest, GL_LESS as lab 1 set it", func);
+            return r;
+        }
+    }
+    return -1;
+}
+
 /* ---- what a failing row predicts a picture shows ---- */
 
 #define _SL_DARK (1u << SL_SYMPTOM_TOO_DARK)
@@ -521,6 +579,15 @@ static uint32_t _sl_offset_row_predicts(const sl_verdict_rows *v, int row) {
     return along_s < along_e ? _SL_DARK : _SL_LIGHT | (along_s > 4 * along_e + 1e-6 ? _SL_GROSS : 0);
 }
 
+/* lab3_second_depth_state: a map with the first surface in it gives the first depth as the midpoint (acne);
+ * one with nothing in it gives a midpoint halfway to 1.0 (shadows that lose their contact). */
+static uint32_t _sl_second_state_row_predicts(const sl_verdict_rows *v, int row) {
+    double front = _sl_got(v, row, 0), back = _sl_got(v, row, 1);
+    if (isnan(front)) return SL_SYMPTOMS_ANY;
+    if (!front && !back) return _SL_DARK | _SL_GROSS;
+    return SL_SYMPTOMS_ANY;
+}
+
 /* ---- lab 3 in the diagnosis table (diagnose/table.c) ---- */
 /* A row of lab3_depth_pass_state's probe is in one bias mode: the case's. */
 static int _sl_bias_mode_of(const sl_case *c) { return (int)c->params.bias.mode; }
@@ -539,8 +606,8 @@ const sl_lab_diagnoses sl_lab3_diagnoses = {
     .lab = 3,
     .functions = {{"lab3_depth_pass_state", _sl_verdict_depth_pass_state, _sl_state_row_predicts, _sl_bias_mode_of},
                   {"slope_scaled_bias", _sl_verdict_slope},
-                  {"normal_offset_position", _sl_verdict_normal_offset, _sl_offset_row_predicts}},
-    .unprobed = {{"lab3_second_depth_state", 3, "TODO(lab3.4)", true}},
+                  {"normal_offset_position", _sl_verdict_normal_offset, _sl_offset_row_predicts},
+                  {"lab3_second_depth_state", _sl_verdict_second_depth_state, _sl_second_state_row_predicts}},
     .lookup_function = _sl_lab3_lookup_function,
     .same_path = _sl_lab3_same_path,
     .visibility = _sl_lab3_visibility_on_mask,
