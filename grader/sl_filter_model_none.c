@@ -22,6 +22,22 @@ int sl_pcss_slip_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     return -1;
 }
 
+double sl_poisson_model(const sl_probe_function *f, const float *in, int row, int slip) {
+    (void)f;
+    (void)in;
+    (void)row;
+    (void)slip;
+    return NAN;
+}
+
+int sl_poisson_slip_count(void) { return 0; }
+
+int sl_poisson_slip_verdict(const sl_verdict_rows *v, char *text, size_t n) {
+    (void)v;
+    if (n) text[0] = '\0';
+    return -1;
+}
+
 int sl_grid_spacing_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     (void)v;
     if (n) text[0] = '\0';

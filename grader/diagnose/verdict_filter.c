@@ -277,6 +277,7 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     }
     /* a slip in one of PCSS's terms that gives every row's answer names that term */
     if (pcss && (row = sl_pcss_slip_verdict(v, text, n)) >= 0) return row;
+    if ((row = sl_poisson_slip_verdict(v, text, n)) >= 0) return row;
     /* the coordinate first: every other row depends on it */
     if ((row = _sl_first_failing(v, _SL_ROW_OUTSIDE)) >= 0) {
         snprintf(text, n, "a point outside the light's frustum must be lit: return 1.0 when w <= 0, or when x, y or z "

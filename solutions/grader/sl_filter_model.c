@@ -257,6 +257,122 @@ int sl_pcss_slip_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     return first;
 }
 
+/* ---- pcf_poisson: the rotated disk, and its slips ---- */
+
+typedef enum {
+    _SL_POISSON_CONTRACT,
+    _SL_POISSON_TRANSPOSED,     /* PCF_POISSON_DISK[i] * rotation: the transpose, turned the other way */
+    _SL_POISSON_UNROTATED,      /* no rotation, or pcf_rotation of a uv (which hashes every uv to angle 0) */
+    _SL_POISSON_TEXEL_HASH,     /* pcf_rotation(p.xy * textureSize): the map's texel, not the pixel */
+    _SL_POISSON_FRAG_COORD,     /* pcf_rotation(gl_FragCoord.xy): right in a picture, not a slip (below) */
+    _SL_POISSON_OFFSET_IN_UV,   /* radius_texels * disk in uv, not divided by textureSize */
+    _SL_POISSON_HALF_RADIUS,    /* the radius taken as a diameter */
+    _SL_POISSON_NO_BIAS,        /* p.z compared unbiased */
+    _SL_POISSON_BIAS_ADDED,     /* p.z + bias */
+    _SL_POISSON_XY_NOT_DIVIDED, /* read around shadow_coord.xy */
+    _SL_POISSON_Z_NOT_DIVIDED,  /* shadow_coord.z compared */
+    _SL_POISSON_SLIP_COUNT
+} _sl_poisson_slip;
+
+static const struct {
+    const char *slip, *contract;
+} _sl_poisson_text[_SL_POISSON_SLIP_COUNT] = {
+    [_SL_POISSON_TRANSPOSED] = {"the disk turned the other way: PCF_POISSON_DISK[i] * rotation multiplies by the "
+                                "rotation's transpose, its inverse",
+                                "rotation * PCF_POISSON_DISK[i] (in GLSL a matrix times a vector, in that order)"},
+    [_SL_POISSON_UNROTATED] = {"the disk unrotated (no rotation, or pcf_rotation of a coordinate in [0, 1), whose "
+                               "integer hash is the same, angle 0, everywhere)",
+                               "each offset turned by pcf_rotation(pixel), the pixel's own angle: the pattern "
+                               "changes from pixel to pixel, so banding becomes fine noise"},
+    [_SL_POISSON_TEXEL_HASH] = {"the disk turned by the map's texel, pcf_rotation(p.xy * textureSize)",
+                                "pcf_rotation(pixel): an angle per screen pixel, not per shadow-map texel (several "
+                                "pixels share a texel, and their noise would be one)"},
+    [_SL_POISSON_OFFSET_IN_UV] = {"offsets of radius_texels in uv (not divided by textureSize): the disk hundreds of "
+                                  "texels wide",
+                                  "PCF_POISSON_DISK[i] * radius_texels / textureSize(shadow_map, 0)"},
+    [_SL_POISSON_HALF_RADIUS] = {"a disk half as wide (radius_texels taken as the diameter)",
+                                 "offsets up to radius_texels texels from the centre"},
+    [_SL_POISSON_NO_BIAS] = {"comparisons without the bias", "p.z - bias compared at every sample"},
+    [_SL_POISSON_BIAS_ADDED] = {"comparisons of p.z + bias: the bias added", "p.z - bias compared at every sample"},
+    [_SL_POISSON_XY_NOT_DIVIDED] = {"x and y not divided by w (the map read around shadow_coord.xy)",
+                                    "p = shadow_coord.xyz / shadow_coord.w (pcf_project), then read around p.xy"},
+    [_SL_POISSON_Z_NOT_DIVIDED] = {"z not divided by w (shadow_coord.z compared)",
+                                   "p.z = shadow_coord.z / shadow_coord.w"},
+};
+
+double sl_poisson_model(const sl_probe_function *f, const float *in, int row, int slip) {
+    const float *map = _sl_param(f, in, "shadow_map"), *coord = _sl_param(f, in, "shadow_coord");
+    const float *bias = _sl_param(f, in, "bias"), *radius = _sl_param(f, in, "radius_texels");
+    const float *pixel = _sl_param(f, in, "pixel");
+    if (!map || !coord || !bias || !radius || !pixel) return NAN;
+    sl_probe_map m = (sl_probe_map)(int)*map;
+    if (sl_probe_map_type(m) != SL_PROBE_MAP) return NAN;
+    float w = coord[3], p[3] = {coord[0] / w, coord[1] / w, coord[2] / w};
+    if (slip == _SL_POISSON_XY_NOT_DIVIDED) p[0] = coord[0], p[1] = coord[1];
+    if (slip == _SL_POISSON_Z_NOT_DIVIDED) p[2] = coord[2];
+    if (!(w > 0) || p[0] < 0 || p[1] < 0 || p[2] < 0 || p[0] > 1 || p[1] > 1 || p[2] > 1) return 1.0;
+    float rot[4] = {1, 0, 0, 1};
+    switch (slip) {
+    case _SL_POISSON_UNROTATED: break;
+    case _SL_POISSON_TEXEL_HASH: _sl_rotation(p[0] * SL_PROBE_MAP_SIZE, p[1] * SL_PROBE_MAP_SIZE, rot); break;
+    case _SL_POISSON_FRAG_COORD: _sl_rotation(0.5f, 2.0f * (float)row + 0.5f, rot); break;
+    default: _sl_rotation(pixel[0], pixel[1], rot); break;
+    }
+    if (slip == _SL_POISSON_TRANSPOSED) {
+        float t = rot[1];
+        rot[1] = rot[2], rot[2] = t;
+    }
+    float scale = *radius / SL_PROBE_MAP_SIZE;
+    if (slip == _SL_POISSON_OFFSET_IN_UV) scale = *radius;
+    if (slip == _SL_POISSON_HALF_RADIUS) scale *= 0.5f;
+    float z = p[2] - (slip == _SL_POISSON_NO_BIAS ? 0.0f : slip == _SL_POISSON_BIAS_ADDED ? -*bias : *bias);
+    float lit = 0;
+    for (int i = 0; i < 16; i++) {
+        float ox = rot[0] * _sl_disk[i][0] + rot[2] * _sl_disk[i][1], oy = rot[1] * _sl_disk[i][0] + rot[3] * _sl_disk[i][1];
+        lit += z > _sl_lookup(m, p[0] + ox * scale, p[1] + oy * scale) ? 0.0f : 1.0f;
+    }
+    return lit / 16.0;
+}
+
+int sl_poisson_slip_count(void) { return _SL_POISSON_SLIP_COUNT - 1; }
+
+/* Does the Poisson slip s give every row what the student's gave (one row may be one sample off)? */
+static bool _sl_poisson_fits(const sl_verdict_rows *v, int s, bool slack) {
+    int off = 0;
+    for (int r = 0; r < v->k->rows; r++) {
+        double model = sl_poisson_model(v->f, v->k->inputs[r], r, s), d = fabs(_sl_got(v, r, 0) - model);
+        if (isnan(model) || d > 1.0 / 16 + 1e-4) return false;
+        off += d > 1e-3;
+    }
+    return off <= (slack ? 1 : 0);
+}
+
+int sl_poisson_slip_verdict(const sl_verdict_rows *v, char *text, size_t n) {
+    if (strcmp(v->f->name, "pcf_poisson") != 0) return -1;
+    int first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        double model = sl_poisson_model(v->f, v->k->inputs[r], r, _SL_POISSON_CONTRACT);
+        if (isnan(model) || fabs(_sl_want(v, r, 0) - model) > _sl_row_tolerance(v, r) + 1e-4) return -1;
+        if (first < 0 && _sl_failed(v, r)) first = r;
+    }
+    /* the contract's answers, or the same disk turned by gl_FragCoord (the pixel a picture passes): no slip */
+    if (first < 0 || _sl_poisson_fits(v, _SL_POISSON_CONTRACT, true) || _sl_poisson_fits(v, _SL_POISSON_FRAG_COORD, true))
+        return -1;
+    int fits[_SL_POISSON_SLIP_COUNT], count = 0;
+    for (int slack = 0; slack <= 1 && count == 0; slack++)
+        for (int s = 1; s < _SL_POISSON_SLIP_COUNT; s++)
+            if (s != _SL_POISSON_FRAG_COORD && _sl_poisson_fits(v, s, slack)) fits[count++] = s;
+    if (count != 1) return -1;
+    snprintf(text, n, "on every row it answers as if it computed %s, where the contract says %s",
+             _sl_poisson_text[fits[0]].slip, _sl_poisson_text[fits[0]].contract);
+    bool rotation = fits[0] == _SL_POISSON_TRANSPOSED || fits[0] == _SL_POISSON_UNROTATED ||
+                    fits[0] == _SL_POISSON_TEXEL_HASH;
+    uint32_t symptoms = 1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT;
+    if (!rotation) symptoms |= 1u << SL_SYMPTOM_GROSS | 1u << SL_SYMPTOM_WIDE_PENUMBRA | 1u << SL_SYMPTOM_NARROW_PENUMBRA;
+    sl_verdict_predicts(v, symptoms);
+    return first;
+}
+
 /* ---- pcf_grid: a grid of another spacing ---- */
 
 /* A (2r+1)^2 grid whose samples are `spacing` texels apart, on a synthetic map (nearest texels, the
