@@ -26,6 +26,7 @@ typedef enum {
     _SL_PCSS_LINEAR_DEPTH_AS_NDC,       /* the depth d put in as clip z, without z = 2 d - 1 */
     _SL_PCSS_RECEIVER_RAW,            /* receiver = p.z */
     _SL_PCSS_BLOCKER_RAW,             /* the blockers' raw depths averaged */
+    _SL_PCSS_LINEARISE_AVERAGE,       /* pcf_linear_depth of the raw depths' average */
     _SL_PCSS_ALL_RAW,                 /* no pcf_linear_depth at all */
     _SL_PCSS_WIDTH_OVER_RECEIVER,     /* (receiver - blocker) * L / receiver */
     _SL_PCSS_WIDTH_NAMES_SWAPPED,     /* (blocker - receiver) * L / receiver */
@@ -68,6 +69,11 @@ static const struct {
                                "d_receiver = pcf_linear_depth(p.z, near, far)"},
     [_SL_PCSS_BLOCKER_RAW] = {"the blockers' raw depths averaged, not their distances",
                               "d_blocker = the average of pcf_linear_depth(d, near, far) over the blockers"},
+    [_SL_PCSS_LINEARISE_AVERAGE] = {"the blockers' raw depths averaged first and the average made a distance "
+                                    "(pcf_linear_depth of the mean depth): depth is not linear in distance, so that "
+                                    "is not the blockers' mean distance",
+                                    "the average of pcf_linear_depth(d, near, far) over the blockers: each depth made "
+                                    "a distance, then averaged"},
     [_SL_PCSS_ALL_RAW] = {"every distance as a raw depth (no pcf_linear_depth)",
                           "distances from pcf_linear_depth(d, near, far), for the receiver and the blockers"},
     [_SL_PCSS_WIDTH_OVER_RECEIVER] = {"the width divided by d_receiver, (d_receiver - d_blocker) * light_size_uv / "
@@ -159,7 +165,7 @@ double sl_pcss_model(const sl_probe_function *f, const float *in, int row, int s
     if (!(w > 0) || p[0] < 0 || p[1] < 0 || p[2] < 0 || p[0] > 1 || p[1] > 1 || p[2] > 1) return 1.0;
     float near = *near_p, far = *far_p, light = *size;
     bool raw_receiver = slip == _SL_PCSS_RECEIVER_RAW || slip == _SL_PCSS_ALL_RAW;
-    bool raw_blocker = slip == _SL_PCSS_BLOCKER_RAW || slip == _SL_PCSS_ALL_RAW;
+    bool raw_blocker = slip == _SL_PCSS_BLOCKER_RAW || slip == _SL_PCSS_ALL_RAW || slip == _SL_PCSS_LINEARISE_AVERAGE;
     float receiver = raw_receiver ? p[2] : _sl_linear(p[2], near, far, slip, true);
     float rot[4] = {1, 0, 0, 1};
     if (slip != _SL_PCSS_NO_ROTATION) _sl_rotation(0.5f, 2.0f * (float)row + 0.5f, rot);
@@ -181,6 +187,7 @@ double sl_pcss_model(const sl_probe_function *f, const float *in, int row, int s
     }
     if (blockers == 0) return 1.0;
     float blocker = sum / (float)(slip == _SL_PCSS_BLOCKER_OVER_ALL ? 16 : blockers);
+    if (slip == _SL_PCSS_LINEARISE_AVERAGE) blocker = _sl_linear(blocker, near, far, slip, false);
     float width;
     switch (slip) {
     case _SL_PCSS_WIDTH_OVER_RECEIVER: width = (receiver - blocker) * light / receiver * near / receiver; break;

@@ -854,6 +854,144 @@ static void _sl_expect_splits(const sl_probe_function *f, const float *row, int 
     if (count >= 0 && count < 5) out[count] = far;
 }
 
+/* lab 6: the sphere around a slice of a camera's frustum (the mean of its 8 corners, the farthest corner), for
+ * a camera looking anywhere from anywhere, at other fields of view, aspects and planes, and a slice that is
+ * not the first */
+static void _sl_draw_slice(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    double eye[3], target[3];
+    for (int j = 0; j < 3; j++) eye[j] = _sl_uniform(r, -20, 20), target[j] = eye[j] + _sl_uniform(r, -10, 10);
+    target[1] = eye[1] + _sl_uniform(r, -3, 1); /* never straight up or down: lookat's up is the world's */
+    double fov = _sl_uniform(r, 35, 80), aspect = _sl_uniform(r, 1.0, 2.2), near = _sl_uniform(r, 0.1, 1.0);
+    double far = _sl_uniform(r, 40, 200);
+    /* a slice drawn in turn: the first, one in the middle, the last */
+    double a = index % 3 == 0 ? near : near + (far - near) * _sl_uniform(r, 0.02, 0.3);
+    double b = index % 3 == 2 ? far : a + (far - a) * _sl_uniform(r, 0.1, 0.5);
+    _sl_set(f, row, "eye", eye);
+    _sl_set(f, row, "target", target);
+    _sl_set1(f, row, "fov_deg", fov);
+    _sl_set1(f, row, "aspect", aspect);
+    _sl_set1(f, row, "near", near);
+    _sl_set1(f, row, "far", far);
+    _sl_set1(f, row, "split_near", a);
+    _sl_set1(f, row, "split_far", b);
+    snprintf(about, n, "generic: a camera at (%.3g, %.3g, %.3g), fov %.3g, aspect %.3g, near %.3g, far %.4g; the slice "
+                       "from %.4g to %.4g",
+             eye[0], eye[1], eye[2], fov, aspect, near, far, a, b);
+}
+
+enum {
+    _SL_SLICE_FROM_FAR = 1,
+    _SL_SLICE_NEAR_PLUS_FAR,
+    _SL_SLICE_T_OVER_FAR,
+    _SL_SLICE_T_NEAR_KEPT,
+    _SL_SLICE_T_SPLIT_OVER_RANGE,
+    _SL_SLICE_DISTANCE_ALONG_EDGE,
+    _SL_SLICE_NDC_LERP,
+    _SL_SLICE_NEAR_AT_NDC_ZERO,
+    _SL_SLICE_NO_W_DIVIDE,
+    _SL_SLICE_WHOLE_FRUSTUM,
+    _SL_SLICE_RADIUS_FIRST_CORNER,
+    _SL_SLICE_CENTRE_OVER_FOUR,
+};
+
+static const char *const _sl_slice_slips[][2] = {
+    {"", ""},
+    [_SL_SLICE_FROM_FAR] = {"the corners lerped from the far corner towards the near one, cf + (cn - cf) * t: the "
+                            "fraction measured from the far plane (or t with near and far in each other's place)",
+                            "cn + (cf - cn) * t, t = (split - near) / (far - near), measured from the near corner"},
+    [_SL_SLICE_NEAR_PLUS_FAR] = {"the corners as cn + cf * t: t times the far corner itself, not the edge cf - cn",
+                                 "cn + (cf - cn) * t: along the edge from the near corner to the far one"},
+    [_SL_SLICE_T_OVER_FAR] = {"t = split / far", "t = (split - near) / (far - near)"},
+    [_SL_SLICE_T_NEAR_KEPT] = {"t = (split - near) / far", "t = (split - near) / (far - near)"},
+    [_SL_SLICE_T_SPLIT_OVER_RANGE] = {"t = split / (far - near)", "t = (split - near) / (far - near)"},
+    [_SL_SLICE_DISTANCE_ALONG_EDGE] = {"each corner split - near along the unit edge from the near corner: a distance "
+                                       "along the edge, where the split is a view depth",
+                                       "cn + (cf - cn) * t, t = (split - near) / (far - near): the edge is longer than "
+                                       "the depth it spans"},
+    [_SL_SLICE_NDC_LERP] = {"the corners unprojected at NDC z = -1 + 2 t: depth is not linear in NDC z, so the slice "
+                            "lies much farther away",
+                            "the near and far corners unprojected (NDC z -1 and +1), then lerped in world space"},
+    [_SL_SLICE_NEAR_AT_NDC_ZERO] = {"the near corners at NDC z = 0 (Direct3D's depth range), not -1",
+                                    "NDC z = -1 on the near plane and +1 on the far one (GL's range)"},
+    [_SL_SLICE_NO_W_DIVIDE] = {"the corners without the divide by w: inv_view_projection * (x, y, z, 1) is homogeneous",
+                               "each unprojected corner's xyz divided by its w"},
+    [_SL_SLICE_WHOLE_FRUSTUM] = {"the sphere around the whole frustum, near to far: split_near and split_far unused",
+                                 "the corners at split_near and split_far"},
+    [_SL_SLICE_RADIUS_FIRST_CORNER] = {"the radius as the distance to the first corner only",
+                                       "the largest distance from the centre to any of the 8 corners"},
+    [_SL_SLICE_CENTRE_OVER_FOUR] = {"the centre as the corners' sum divided by 4", "the mean of the 8 corners, sum / 8"},
+    {NULL, NULL},
+};
+
+/* a corner of the slice's plane at `split` (x, y = -1 or 1 in NDC), as the contract or a slip finds it */
+static void _sl_slice_corner(const double eye[3], const double ray[3], double near, double far, double split,
+                             int slip, double out[3]) {
+    double cn[3], cf[3];
+    double d_near = near;
+    if (slip == _SL_SLICE_NEAR_AT_NDC_ZERO) d_near = 2 * near * far / (far + near);
+    for (int j = 0; j < 3; j++) cn[j] = eye[j] + d_near * ray[j], cf[j] = eye[j] + far * ray[j];
+    if (slip == _SL_SLICE_NO_W_DIVIDE)
+        for (int j = 0; j < 3; j++) cn[j] /= near, cf[j] /= far;
+    double t = (split - near) / (far - near);
+    switch (slip) {
+    case _SL_SLICE_FROM_FAR: t = 1 - t; break;
+    case _SL_SLICE_T_OVER_FAR: t = split / far; break;
+    case _SL_SLICE_T_NEAR_KEPT: t = (split - near) / far; break;
+    case _SL_SLICE_T_SPLIT_OVER_RANGE: t = split / (far - near); break;
+    case _SL_SLICE_NDC_LERP: {
+        double z = -1 + 2 * t, depth = 2 * near * far / (far + near - z * (far - near));
+        t = (depth - near) / (far - near);
+        break;
+    }
+    default: break;
+    }
+    if (slip == _SL_SLICE_DISTANCE_ALONG_EDGE) {
+        double edge[3], length = 0;
+        for (int j = 0; j < 3; j++) edge[j] = cf[j] - cn[j], length += edge[j] * edge[j];
+        length = sqrt(length);
+        for (int j = 0; j < 3; j++) out[j] = cn[j] + edge[j] / length * (split - near);
+        return;
+    }
+    for (int j = 0; j < 3; j++)
+        out[j] = slip == _SL_SLICE_FROM_FAR ? cf[j] + (cn[j] - cf[j]) * (1 - t)
+               : slip == _SL_SLICE_NEAR_PLUS_FAR ? cn[j] + cf[j] * t
+                                                 : cn[j] + (cf[j] - cn[j]) * t;
+}
+
+static void _sl_expect_slice(const sl_probe_function *f, const float *row, int slip, double *out) {
+    double eye[3], target[3], forward[3], right[3], up[3], length = 0;
+    for (int j = 0; j < 3; j++) eye[j] = _sl_get(f, row, "eye", j), target[j] = _sl_get(f, row, "target", j);
+    for (int j = 0; j < 3; j++) forward[j] = target[j] - eye[j], length += forward[j] * forward[j];
+    for (int j = 0; j < 3; j++) forward[j] /= sqrt(length);
+    /* lookat with the world's up (0, 1, 0): right = forward x up, up' = right x forward */
+    right[0] = -forward[2], right[1] = 0, right[2] = forward[0];
+    length = sqrt(right[0] * right[0] + right[2] * right[2]);
+    for (int j = 0; j < 3; j++) right[j] /= length;
+    up[0] = right[1] * forward[2] - right[2] * forward[1];
+    up[1] = right[2] * forward[0] - right[0] * forward[2];
+    up[2] = right[0] * forward[1] - right[1] * forward[0];
+    double half = tan(_sl_get(f, row, "fov_deg", 0) * 3.14159265358979323846 / 360.0), aspect = _sl_get(f, row, "aspect", 0);
+    double near = _sl_get(f, row, "near", 0), far = _sl_get(f, row, "far", 0);
+    double splits[2] = {_sl_get(f, row, "split_near", 0), _sl_get(f, row, "split_far", 0)};
+    if (slip == _SL_SLICE_WHOLE_FRUSTUM) splits[0] = near, splits[1] = far;
+    double corners[8][3], centre[3] = {0, 0, 0};
+    for (int i = 0; i < 8; i++) {
+        double x = (i & 1) ? 1 : -1, y = (i & 2) ? 1 : -1, ray[3];
+        for (int j = 0; j < 3; j++) ray[j] = forward[j] + x * half * aspect * right[j] + y * half * up[j];
+        _sl_slice_corner(eye, ray, near, far, splits[i / 4], slip, corners[i]);
+        for (int j = 0; j < 3; j++) centre[j] += corners[i][j];
+    }
+    for (int j = 0; j < 3; j++) centre[j] /= slip == _SL_SLICE_CENTRE_OVER_FOUR ? 4 : 8;
+    double radius = 0;
+    for (int i = 0; i < (slip == _SL_SLICE_RADIUS_FIRST_CORNER ? 1 : 8); i++) {
+        double d = 0;
+        for (int j = 0; j < 3; j++) d += (corners[i][j] - centre[j]) * (corners[i][j] - centre[j]);
+        radius = fmax(radius, sqrt(d));
+    }
+    for (int j = 0; j < 3; j++) out[j] = centre[j];
+    out[3] = radius;
+}
+
 /* lab 6: the first cascade whose far split lies beyond the point's view depth (-z), the last one past them */
 static void _sl_draw_cascade_index(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
                                    size_t n) {
@@ -1074,6 +1212,11 @@ static const _sl_generic _sl_generics[] = {
     {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits, _sl_splits_slips,
      "t = i / count; logarithmic = near * pow(far / near, t); linear = near + (far - near) * t; "
      "if(i > count, 0, if(i == 0, near, if(i == count, far, lambda * logarithmic + (1 - lambda) * linear)))", 0},
+    /* the slips the written rows' verdicts do not name lead (t without the near plane, no divide by w, the
+     * whole frustum and a centre over 4 have messages of their own) */
+    {"lab6_slice_sphere", _sl_draw_slice, _sl_expect_slice, _sl_slice_slips, NULL,
+     1ull << _SL_SLICE_FROM_FAR | 1ull << _SL_SLICE_NEAR_PLUS_FAR | 1ull << _SL_SLICE_DISTANCE_ALONG_EDGE |
+         1ull << _SL_SLICE_NDC_LERP | 1ull << _SL_SLICE_NEAR_AT_NDC_ZERO | 1ull << _SL_SLICE_RADIUS_FIRST_CORNER},
     {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index, _sl_cascade_index_slips, NULL, 0},
     {"cascade_blend", _sl_draw_blend, _sl_expect_blend, _sl_blend_slips,
      "start = split_far - band * (split_far - split_near); "
