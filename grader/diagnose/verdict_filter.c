@@ -231,12 +231,13 @@ static int _sl_pcss_width(const sl_verdict_rows *v, char *text, size_t n) {
         _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[r]);
         double tolerance = v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
         double here = fabs(_sl_got(v, r, 0) - fr.centre), there = fabs(_sl_want(v, r, 0) - fr.centre);
-        /* an occluder's edge over a floor, or its corner, or any of them seen through w != 1, is an edge too: its centre
-         * is the point's own texel's comparison */
+        /* an occluder's edge over a floor, or its corner, a tilted surface (the ramp), or any of them seen
+         * through w != 1, is an edge too: its centre is the point's own texel's comparison */
         const float *map = _sl_param(v->f, v->k->inputs[r], "shadow_map");
         int m = map ? (int)*map : -1;
         bool edge = fr.kind == _SL_ROW_EDGE ||
-                    (fr.kind == _SL_ROW_OTHER && (m == SL_PROBE_MAP_STEP_FLOOR || m == SL_PROBE_MAP_CORNER)) ||
+                    (fr.kind == _SL_ROW_OTHER &&
+                     (m == SL_PROBE_MAP_STEP_FLOOR || m == SL_PROBE_MAP_CORNER || m == SL_PROBE_MAP_RAMP)) ||
                     (fr.kind == _SL_ROW_HOMOGENEOUS &&
                      (m == SL_PROBE_MAP_STEP || m == SL_PROBE_MAP_STEP_FLOOR || m == SL_PROBE_MAP_CORNER));
         if (!edge) other++;

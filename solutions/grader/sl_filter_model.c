@@ -216,13 +216,17 @@ static double _sl_row_tolerance(const sl_verdict_rows *v, int r) {
     return v->k->row_tolerance[r] > 0 ? v->k->row_tolerance[r] : v->k->tolerance;
 }
 
-/* Does slip s give every row what the student's gave? With `slack`, one row may be one sample of 16
- * off: a sample on a texel's edge falls on either side of it, in float, on another GL. */
+/* Whether a row is exact: its tolerance is below one sample of 16, so no sample lies near a texel's edge
+ * (rows chosen so) and every GL answers it as the model does. */
+static bool _sl_row_exact(const sl_verdict_rows *v, int r) { return _sl_row_tolerance(v, r) < 1.0 / 16; }
+
+/* Does slip s give every row what the student's gave? With `slack`, one row that is not exact may be one
+ * sample of 16 off: a sample on a texel's edge falls on either side of it, in float, on another GL. */
 static bool _sl_slip_fits(const sl_verdict_rows *v, int s, bool slack) {
     int off = 0;
     for (int r = 0; r < v->k->rows; r++) {
         double model = sl_pcss_model(v->f, v->k->inputs[r], r, s), d = fabs(_sl_got(v, r, 0) - model);
-        if (isnan(model) || d > 1.0 / 16 + 1e-4) return false;
+        if (isnan(model) || d > 1.0 / 16 + 1e-4 || (d > 1e-3 && _sl_row_exact(v, r))) return false;
         off += d > 1e-3;
     }
     return off <= (slack ? 1 : 0);
@@ -348,7 +352,7 @@ static bool _sl_poisson_fits(const sl_verdict_rows *v, int s, bool slack) {
     int off = 0;
     for (int r = 0; r < v->k->rows; r++) {
         double model = sl_poisson_model(v->f, v->k->inputs[r], r, s), d = fabs(_sl_got(v, r, 0) - model);
-        if (isnan(model) || d > 1.0 / 16 + 1e-4) return false;
+        if (isnan(model) || d > 1.0 / 16 + 1e-4 || (d > 1e-3 && _sl_row_exact(v, r))) return false;
         off += d > 1e-3;
     }
     return off <= (slack ? 1 : 0);
