@@ -34,9 +34,10 @@ static const sl_probe_function _sl_functions[] = {
      .output_count = 8, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN},
     /* lab 1: the map given back, beside objects of the probe's own; the stub does nothing */
     {.name = "lab1_destroy_shadow_map", .lab = 1, .file = "lab1_depth_fbo/lab1.c", .todo = "lab1.5",
-     .outputs = "map's framebuffer deleted,map's depth texture deleted,map's fields zeroed,other objects untouched",
-     .output_count = 4, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN,
-     .stub_outputs = (const double[]){0.0, 0.0, 0.0, 1.0}},
+     .outputs = "map's framebuffer deleted,map's depth texture deleted,map's framebuffer field 0,"
+                "map's depth_texture field 0,map's size field 0,other objects untouched",
+     .output_count = 6, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN,
+     .stub_outputs = (const double[]){0.0, 0.0, 0.0, 0.0, 0.0, 1.0}},
     /* lab 1: the depth pass's vertex shader, on its own: gl_Position for a vertex, a model and a light */
     {.name = "depth.vert", .lab = 1, .glsl = true, .stage = SL_PROBE_VERTEX_MAIN,
      .file = "lab1_depth_fbo/shaders/depth.vert", .todo = "lab1.4", .outputs = "x,y,z,w", .output_count = 4,
@@ -203,9 +204,10 @@ static const sl_probe_function _sl_functions[] = {
      .outputs = _SL_MATRIX_OUT, .output_count = 16, .params = {_SL_F("near"), _SL_F("far")}, .param_count = 2,
      .stub_param = -1, .stub_value = NAN},
     {.name = "lab7_destroy_cube_map", .lab = 7, .file = "lab7_cube/lab7.c", .todo = "lab7.8",
-     .outputs = "map's framebuffer deleted,map's cube map deleted,map's fields zeroed,other objects untouched",
-     .output_count = 4, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN,
-     .stub_outputs = (const double[]){0.0, 0.0, 0.0, 1.0}},
+     .outputs = "map's framebuffer deleted,map's cube map deleted,map's framebuffer field 0,map's depth_cube field 0,"
+                "map's size field 0,other objects untouched",
+     .output_count = 6, .params = {_SL_I("size")}, .param_count = 1, .stub_param = -1, .stub_value = NAN,
+     .stub_outputs = (const double[]){0.0, 0.0, 0.0, 0.0, 0.0, 1.0}},
     /* lab 7: the depth pass's fragment shader, on its own: the depth it writes for a fragment at a world
      * position, drawn at a depth (gl_FragCoord.z) of the probe's */
     {.name = "cube_depth.frag", .lab = 7, .glsl = true, .stage = SL_PROBE_FRAGMENT_MAIN,

@@ -721,21 +721,22 @@ static sl_status _sl_call_destroy(int lab, int size, double *out) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindTexture(target, 0);
-    bool zeroed;
+    /* each field on its own, so a message can say which one is left */
+    bool zeroed[3];
     if (lab == 7) {
         sl_cube_map map = {.framebuffer = framebuffer, .depth_cube = texture, .size = size};
         sl_build_lab_functions.lab7_destroy_cube_map(&map);
-        zeroed = map.framebuffer == 0 && map.depth_cube == 0 && map.size == 0;
+        zeroed[0] = map.framebuffer == 0, zeroed[1] = map.depth_cube == 0, zeroed[2] = map.size == 0;
     } else {
         sl_shadow_map map = {.framebuffer = framebuffer, .depth_texture = texture, .size = size};
         sl_build_lab_functions.lab1_destroy_shadow_map(&map);
-        zeroed = map.framebuffer == 0 && map.depth_texture == 0 && map.size == 0;
+        zeroed[0] = map.framebuffer == 0, zeroed[1] = map.depth_texture == 0, zeroed[2] = map.size == 0;
     }
     while (glGetError() != GL_NO_ERROR) {}
     out[0] = !glIsFramebuffer(framebuffer);
     out[1] = !glIsTexture(texture);
-    out[2] = zeroed;
-    out[3] = glIsTexture(bystanders[0]) && glIsFramebuffer(bystanders[1]);
+    for (int i = 0; i < 3; i++) out[2 + i] = zeroed[i];
+    out[5] = glIsTexture(bystanders[0]) && glIsFramebuffer(bystanders[1]);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &framebuffer);
     glDeleteTextures(1, &texture);

@@ -262,8 +262,14 @@ static const struct {
     {"map's cube map deleted", "glDeleteTextures gives a texture back, glDeleteFramebuffers a framebuffer: each kind "
                                "of object has names of its own"},
     {"map's framebuffer deleted", "glDeleteFramebuffers(1, &map->framebuffer) gives the framebuffer back"},
-    {"map's fields zeroed", "after the objects are deleted their names are stale: set the fields to 0, so nothing "
-                            "uses them again"},
+    {"map's framebuffer field 0", "after the objects are deleted their names are stale: set map->framebuffer to 0, "
+                                  "so nothing uses it again"},
+    {"map's depth_texture field 0", "after the objects are deleted their names are stale: set map->depth_texture to 0, "
+                                    "so nothing uses it again"},
+    {"map's depth_cube field 0", "after the objects are deleted their names are stale: set map->depth_cube to 0, so "
+                                 "nothing uses it again"},
+    {"map's size field 0", "set map->size to 0 as well: the contract zeroes every field, so a destroyed map reads "
+                           "as empty and is never taken for a live one"},
     {"a depth buffer on framebuffer[0]", "the moments pass tests depth on its own: a depth renderbuffer at "
                                      "GL_DEPTH_ATTACHMENT of framebuffer[0], attached while framebuffer[0] is bound"},
     {"each framebuffer's own texture at GL_COLOR_ATTACHMENT0", "a framebuffer draws into the attachment its draw "
@@ -303,22 +309,26 @@ static bool _sl_single_output(const sl_probe_function *f, const sl_check *k, con
 
 /* A destroy function whose map's fields end 0 while none of the map's objects was deleted, on every failing
  * row: the names were zeroed before glDelete* was given them (deleting the name 0 does nothing). Read from
- * the outputs' names ("... deleted", "map's fields zeroed"), for every lab's destroy. */
+ * the outputs' names ("... deleted", "map's ... field 0"), for every lab's destroy. */
 static bool _sl_zeroed_before_deleted(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
                                       uint32_t failing, char *out, size_t n) {
-    int zeroed = -1, deleted[4], deleted_count = 0;
+    int zeroed[4], zeroed_count = 0, deleted[4], deleted_count = 0;
     for (int o = 0; o < f->output_count; o++) {
         char name[64];
         _sl_output_name(f, o, name, sizeof name);
-        if (strcmp(name, "map's fields zeroed") == 0) zeroed = o;
+        size_t length = strlen(name);
+        if (strncmp(name, "map's ", 6) == 0 && length > 8 && strcmp(name + length - 8, " field 0") == 0 &&
+            zeroed_count < 4)
+            zeroed[zeroed_count++] = o;
         else if (strncmp(name, "map's ", 6) == 0 && strstr(name, " deleted") && deleted_count < 4)
             deleted[deleted_count++] = o;
     }
-    if (zeroed < 0 || deleted_count == 0 || failing == 0) return false;
+    if (zeroed_count == 0 || deleted_count == 0 || failing == 0) return false;
     for (int row = 0; row < k->rows; row++) {
         if (!((failing >> row) & 1u)) continue;
         const double *got = s + row * f->output_count, *want = e + row * f->output_count;
-        if (got[zeroed] != 1 || want[zeroed] != 1) return false;
+        for (int i = 0; i < zeroed_count; i++)
+            if (got[zeroed[i]] != 1 || want[zeroed[i]] != 1) return false;
         for (int i = 0; i < deleted_count; i++)
             if (got[deleted[i]] != 0 || want[deleted[i]] != 1) return false;
     }
