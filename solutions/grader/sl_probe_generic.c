@@ -387,6 +387,7 @@ typedef enum _sl_grid_slip {
     _SL_GRID_V_FLIPPED,     /* the map read at (p.x, 1 - p.y): Direct3D's v, running downwards */
     _SL_GRID_DIAGONAL,      /* offsets (x, x): each row of the loop samples the same diagonal */
     _SL_GRID_UV_REMAPPED,   /* the map read at p.xy * 0.5 + 0.5: texture space taken for NDC */
+    _SL_GRID_FRUSTUM_UNDIVIDED, /* the frustum test on shadow_coord.xyz, before the divide by w */
 } _sl_grid_slip;
 
 /* The bias's slips, in _sl_grid_slip's order from _SL_GRID_BIAS_OVER_W. */
@@ -409,6 +410,9 @@ static const char *const _sl_compare_slips[][2] = {
      "the map read at p.xy: GL's t runs upwards, as the bias matrix maps y"},
     {"the map read at p.xy * 0.5 + 0.5: p moved from [-1, 1] to [0, 1] again",
      "the map read at p.xy: the shadow matrix's bias already took it to [0, 1]"},
+    {"the frustum test on the undivided coordinate (shadow_coord.xyz in [0, 1], before the divide by w): where w is "
+     "not 1, points inside the frustum count as outside and the other way round",
+     "the test on p = shadow_coord.xyz / shadow_coord.w: w <= 0, or p outside [0, 1]"},
     {NULL, NULL},
 };
 
@@ -416,7 +420,8 @@ static const char *const _sl_compare_slips[][2] = {
 static const _sl_grid_slip _sl_compare_as_grid[] = {
     _SL_GRID_CONTRACT,    _SL_GRID_REVERSED,     _SL_GRID_XY_NOT_DIVIDED, _SL_GRID_Z_NOT_DIVIDED,
     _SL_GRID_NO_FRUSTUM_TEST, _SL_GRID_BIAS_OVER_W, _SL_GRID_BIAS_TIMES_W, _SL_GRID_BIAS_ON_XY,
-    _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED,   _SL_GRID_V_FLIPPED, _SL_GRID_UV_REMAPPED};
+    _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED,   _SL_GRID_V_FLIPPED, _SL_GRID_UV_REMAPPED,
+    _SL_GRID_FRUSTUM_UNDIVIDED};
 
 static const char *const _sl_grid_slips[][2] = {
     {"", ""},
@@ -439,6 +444,9 @@ static const char *const _sl_grid_slips[][2] = {
      "diagonal", "offsets (x, y) * texel: x across, y up, every texel of the (2r+1) x (2r+1) grid once"},
     {"the map read around p.xy * 0.5 + 0.5: p moved from [-1, 1] to [0, 1] again",
      "the map read around p.xy: the shadow matrix's bias already took it to [0, 1]"},
+    {"the frustum test on the undivided coordinate (shadow_coord.xyz in [0, 1], before the divide by w): where w is "
+     "not 1, points inside the frustum count as outside and the other way round",
+     "the test on p = shadow_coord.xyz / shadow_coord.w: w <= 0, or p outside [0, 1]"},
     {NULL, NULL},
 };
 
@@ -459,6 +467,9 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     if (slip == _SL_GRID_BIAS_ADDED) bias = -bias;
     double px = _sl_get(f, row, "shadow_coord", 0) / w, py = _sl_get(f, row, "shadow_coord", 1) / w;
     double pz = _sl_get(f, row, "shadow_coord", 2) / w;
+    if (slip == _SL_GRID_FRUSTUM_UNDIVIDED)
+        px = _sl_get(f, row, "shadow_coord", 0), py = _sl_get(f, row, "shadow_coord", 1),
+        pz = _sl_get(f, row, "shadow_coord", 2);
     bool outside = w <= 0 || px < 0 || px > 1 || py < 0 || py > 1 || pz < 0 || pz > 1;
     if (outside && slip != _SL_GRID_NO_FRUSTUM_TEST) return 1;
     double texel = slip == _SL_GRID_UV_STEPS ? 1.0 : slip == _SL_GRID_TWO_TEXEL_STEPS ? 2.0 / SL_PROBE_MAP_SIZE
