@@ -58,6 +58,10 @@ typedef enum sl_probe_map {
     SL_PROBE_MAP_COUNT
 } sl_probe_map;
 #define SL_PROBE_MAP_SIZE 64
+/* The viewport a pass's probe sets before calling the function (no size a pass asks for): found after the
+ * call, the function never set its own. */
+#define SL_PROBE_STALE_VIEWPORT_WIDTH 7
+#define SL_PROBE_STALE_VIEWPORT_HEIGHT 5
 #define SL_PROBE_LAYERS 4
 
 typedef struct sl_probe_param {

@@ -4,6 +4,7 @@
 
 #include "sl_gl.h"
 #include "sl_labs.h"
+#include "sl_probe.h"
 
 /* Each row runner calls this build's lab function (sl_build_lab_functions) on one input row and writes what
  * the probe reads back: the values it returns, or the GL state it set. */
@@ -60,7 +61,7 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     glClear(GL_DEPTH_BUFFER_BIT);
     glClearDepth(1.0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, 7, 5);
+    glViewport(0, 0, SL_PROBE_STALE_VIEWPORT_WIDTH, SL_PROBE_STALE_VIEWPORT_HEIGHT);
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_FALSE);
@@ -261,7 +262,7 @@ static sl_status _sl_call_begin_cube_pass(const sl_lab_functions *labs, int face
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)other,
                            map.depth_cube, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, 7, 5);
+    glViewport(0, 0, SL_PROBE_STALE_VIEWPORT_WIDTH, SL_PROBE_STALE_VIEWPORT_HEIGHT);
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     /* the framework's depth function, GL_LESS: the README leaves it to the function, so only one it
@@ -641,7 +642,7 @@ static sl_status _sl_row_lab5_begin_moments_pass(const float *in, double *out) {
     sl_moments_target target = {0};
     _sl_probe_moments_target(size, &target);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, 7, 5);
+    glViewport(0, 0, SL_PROBE_STALE_VIEWPORT_WIDTH, SL_PROBE_STALE_VIEWPORT_HEIGHT);
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_FALSE);
@@ -682,7 +683,7 @@ static sl_status _sl_row_lab5_begin_blur_pass(const float *in, double *out) {
     sl_moments_target target = {0};
     _sl_probe_moments_target(size, &target);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, 7, 5);
+    glViewport(0, 0, SL_PROBE_STALE_VIEWPORT_WIDTH, SL_PROBE_STALE_VIEWPORT_HEIGHT);
     glEnable(GL_DEPTH_TEST);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, 0);

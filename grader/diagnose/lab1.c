@@ -363,8 +363,8 @@ static int _sl_verdict_begin_depth_pass(const sl_verdict_rows *v, char *text, si
             snprintf(text, n, "the map's framebuffer is not bound: glBindFramebuffer(GL_FRAMEBUFFER, map->framebuffer) "
                               "first, or the depth pass draws into another one");
         } else if (_sl_got(v, r, 1) != size || _sl_got(v, r, 2) != size) {
-            snprintf(text, n, "the viewport is %gx%g, not the map's %gx%g: glViewport(0, 0, map->size, map->size)",
-                     _sl_got(v, r, 1), _sl_got(v, r, 2), size, size);
+            _sl_viewport_said(text, n, _sl_got(v, r, 1), _sl_got(v, r, 2), size, size, "the map's",
+                              "glViewport(0, 0, map->size, map->size)");
         } else if (!_sl_got(v, r, 3)) {
             snprintf(text, n, "the depth test is off: with GL_DEPTH_TEST disabled no depth is written at all — "
                               "glEnable(GL_DEPTH_TEST)");

@@ -152,9 +152,8 @@ static int _sl_verdict_moments_pass(const sl_verdict_rows *v, char *text, size_t
                               "buffer, which the horizontal blur then reads — framebuffer[1] is the blur's",
                      bound == 1 ? "framebuffer[1]" : "neither of the target's framebuffers");
         else if (_sl_got(v, r, 1) != _sl_want(v, r, 1) || _sl_got(v, r, 2) != _sl_want(v, r, 2))
-            snprintf(text, n, "the viewport is %gx%g, not the target's %gx%g: glViewport(0, 0, target->size, "
-                              "target->size) after binding", _sl_got(v, r, 1), _sl_got(v, r, 2), _sl_want(v, r, 1),
-                     _sl_want(v, r, 2));
+            _sl_viewport_said(text, n, _sl_got(v, r, 1), _sl_got(v, r, 2), _sl_want(v, r, 1), _sl_want(v, r, 2),
+                              "the target's", "glViewport(0, 0, target->size, target->size) after binding");
         else if (_sl_got(v, r, 7) != _sl_want(v, r, 7) || _sl_got(v, r, 8) != _sl_want(v, r, 8))
             snprintf(text, n, "framebuffer[0]'s moments are (%.3g, %.3g) after it, not (1, 1): clear the colour to the "
                               "moments of \"nothing in front\", glClearColor(1, 1, 0, 0) before glClear(GL_COLOR_BUFFER_BIT "
@@ -186,6 +185,9 @@ static int _sl_verdict_blur_pass(const sl_verdict_rows *v, char *text, size_t n)
                               "unit 0: glActiveTexture(GL_TEXTURE0) first) and draws into framebuffer[%d] — the "
                               "ping-pong: direction 0 from [0] into [1], direction 1 from [1] into [0]",
                      direction, drawn_text, read_text, direction, 1 - direction);
+        } else if (_sl_got(v, r, 2) != _sl_want(v, r, 2) || _sl_got(v, r, 3) != _sl_want(v, r, 3)) {
+            _sl_viewport_said(text, n, _sl_got(v, r, 2), _sl_got(v, r, 3), _sl_want(v, r, 2), _sl_want(v, r, 3),
+                              "the target's", "glViewport(0, 0, size, size), every pass");
         } else if (_sl_got(v, r, 4) != _sl_want(v, r, 4)) {
             snprintf(text, n, "the depth test is still on: a full-screen pass tests nothing, glDisable(GL_DEPTH_TEST)");
         } else {

@@ -15,6 +15,7 @@
 #include "sl_json.h"
 #include "sl_probe.h"
 #include "sl_probe_generic.h"
+#include "verdict_rows.h"
 #include "camera.h"
 #include "sl_verdict.h"
 #include "sl_utf8.h"
@@ -304,6 +305,31 @@ static bool _sl_single_output(const sl_probe_function *f, const sl_check *k, con
     const char *said = strncmp(name, "a ", 2) == 0 ? name + 2 : strncmp(name, "an ", 3) == 0 ? name + 3 : name;
     snprintf(out, n, "of everything it sets, only its %s is wrong, on every row that differs (%s where the contract "
              "gives %s)%s%s", said, got, want, rule ? ": " : "", rule ? rule : "");
+    return true;
+}
+
+/* A pass whose viewport alone is wrong (its "viewport width" and "viewport height" outputs, and nothing else,
+ * differ on every failing row): said as the viewport, and as never set where it is the probe's own. */
+static bool _sl_viewport_only(const sl_probe_function *f, const sl_check *k, const double *s, const double *e,
+                              uint32_t failing, const uint32_t *differs, char *out, size_t n) {
+    int width = -1, height = -1;
+    for (int o = 0; o < f->output_count; o++) {
+        char name[64];
+        _sl_output_name(f, o, name, sizeof name);
+        if (strcmp(name, "viewport width") == 0) width = o;
+        if (strcmp(name, "viewport height") == 0) height = o;
+    }
+    if (width < 0 || height < 0 || failing == 0) return false;
+    uint32_t viewport = 1u << width | 1u << height;
+    int example = -1;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        if (differs[row] == 0 || (differs[row] & ~viewport) != 0) return false;
+        if (example < 0) example = row;
+    }
+    const double *got = s + example * f->output_count, *want = e + example * f->output_count;
+    _sl_viewport_said(out, n, got[width], got[height], want[width], want[height], "the pass's",
+                      "glViewport(0, 0, size, size) after binding the framebuffer");
     return true;
 }
 
@@ -708,7 +734,8 @@ void sl_diagnose_probe(const sl_case *c, const sl_check *k, const sl_case_result
                     !_sl_close_enough(k, row, o, cap->numbers[row * f->output_count + o],
                                       ref->numbers[row * f->output_count + o]))
                     differs[row] |= 1u << o;
-        if (!_sl_zeroed_before_deleted(f, k, cap->numbers, ref->numbers, out->failing_rows, verdict, sizeof verdict) &&
+        if (!_sl_viewport_only(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict) &&
+            !_sl_zeroed_before_deleted(f, k, cap->numbers, ref->numbers, out->failing_rows, verdict, sizeof verdict) &&
             !_sl_row_relation(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict))
             _sl_single_output(f, k, cap->numbers, ref->numbers, out->failing_rows, differs, verdict, sizeof verdict);
     }
