@@ -87,12 +87,13 @@ static bool _sl_blur_sigma_by_radius(const sl_verdict_rows *v, char *text, size_
     if (pinned < 2) return false;
     char said[400] = "";
     size_t used = 0;
-    int listed = 0, inverse = 0, narrow = 0;
+    int listed = 0, inverse = 0, root = 0, narrow = 0;
     double ratio_lo = INFINITY, ratio_hi = 0;
     for (int radius = 1; radius < 16; radius++) {
         if (!(hi[radius] <= lo[radius] * 1.25)) continue; /* pinned down for this radius */
         double sigma = sqrt(lo[radius] * hi[radius]), contract = fmax(radius * 0.5, 0.5);
         inverse += fabs(sigma - 1 / contract) <= 0.05 / contract;
+        root += fabs(sigma - sqrt(contract)) <= 0.04 * sqrt(contract);
         ratio_lo = fmin(ratio_lo, sigma / contract);
         ratio_hi = fmax(ratio_hi, sigma / contract);
         narrow++;
@@ -107,9 +108,17 @@ static bool _sl_blur_sigma_by_radius(const sl_verdict_rows *v, char *text, size_
     if (inverse == narrow && narrow >= 2)
         snprintf(why, sizeof why, "each sigma is 1 / the contract's, as exp(-i * i / 2.0 * sigma * sigma) gives it: "
                                   "the sigma^2 belongs in the divisor, exp(-i^2 / (2.0 * sigma * sigma))");
-    else if (narrow >= 2 && ratio_hi <= ratio_lo * 1.05 && fabs(ratio_lo - 1) > 0.05)
+    else if (root == narrow && narrow >= 2)
+        snprintf(why, sizeof why, "each sigma is the square root of the contract's, as exp(-i * i / (2.0 * sigma)) "
+                                  "gives it: the divisor is 2 sigma^2, exp(-i^2 / (2.0 * sigma * sigma))");
+    else if (narrow >= 2 && ratio_hi <= ratio_lo * 1.05 && fabs(ratio_lo - 1) > 0.05) {
+        double ratio = sqrt(ratio_lo * ratio_hi);
         snprintf(why, sizeof why, "each sigma is %.2g times the contract's%s: sigma = max(float(radius) * 0.5, 0.5)",
-                 sqrt(ratio_lo * ratio_hi), fabs(sqrt(ratio_lo * ratio_hi) - 2) < 0.05 ? " (sigma = radius)" : "");
+                 ratio, fabs(ratio - 2) < 0.05          ? " (sigma = radius)"
+                        : fabs(ratio - sqrt(0.5)) < 0.03 ? " (the weights exp(-i^2 / sigma^2): the 2 left out of the "
+                                                           "divisor 2 sigma^2)"
+                                                         : "");
+    }
     else
         snprintf(why, sizeof why, "the weights are exp(-i^2 / (2 sigma^2)) with sigma = max(float(radius) * 0.5, 0.5)");
     snprintf(text, n, "the kernel is a Gaussian of another width: %s — %s", said, why);
