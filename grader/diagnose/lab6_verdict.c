@@ -676,12 +676,15 @@ typedef struct _sl_compare_reading {
     double bias;
     bool divide;
     bool bias_added; /* the given bias added to p.z, not subtracted */
+    bool normalised; /* the layer given as layer / layers, a 3D texture's coordinate: GL reads round(layer / 4) */
 } _sl_compare_reading;
 
 static bool _sl_reading_explains(const sl_verdict_rows *v, _sl_compare_reading h) {
     for (int r = 0; r < v->k->rows; r++) {
         const float *in = v->k->inputs[r];
-        int layer = h.first_layer ? 0 : (int)in[1] + h.layer_shift;
+        int layer = h.first_layer ? 0
+                  : h.normalised ? (int)floor((double)(int)in[1] / SL_PROBE_LAYERS + 0.5)
+                                 : (int)in[1] + h.layer_shift;
         double bias = h.bias < 0 ? in[6] : h.bias;
         double want = _sl_layer_compare(in, layer, h.bias_added ? -bias : bias, h.divide);
         if (want < 0 || fabs(_sl_got(v, r, 0) - want) > 1e-3) return false;
@@ -705,6 +708,12 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
     }
     if (!failing) return -1;
     /* Each mistake is a whole reading of the rows: it must explain every row, failing or not. */
+    if (_sl_reading_explains(v, (_sl_compare_reading){.normalised = true, .bias = -1, .divide = true})) {
+        snprintf(text, n, "it reads layer round(layer / %d): the layer given as a fraction of the array, as a 3D "
+                          "texture's coordinate would be — a sampler2DArray takes the layer's index itself, "
+                          "texture(cascades, vec3(p.xy, float(layer)))", SL_PROBE_LAYERS);
+        return first;
+    }
     if (_sl_reading_explains(v, (_sl_compare_reading){.first_layer = true, .bias = -1, .divide = true})) {
         snprintf(text, n, "it reads layer 0 whatever `layer` is: texture(cascades, vec3(p.xy, float(layer)))");
         return first;
