@@ -551,6 +551,28 @@ static int _sl_snapped_in_one_axis(const _sl_light_box *a, const _sl_light_box *
     return -1;
 }
 
+/* The grid every box's world origin lands on, in texels, where the boxes snap to a finer grid than whole
+ * texels: 0.5 or 0.25 (the offset rounded with map_size, or 2 map_size, texels per NDC unit, where NDC spans
+ * 2); 0 where they share no such grid (or the whole one: a coarser grid, every second texel, holds still). */
+static double _sl_snap_grid(const _sl_light_box *boxes, int rows) {
+    static const double grids[] = {0.5, 0.25};
+    bool whole = true;
+    for (int r = 0; r < rows; r++)
+        for (int axis = 0; axis < 2; axis++)
+            whole &= fabs(boxes[r].origin[axis] - round(boxes[r].origin[axis])) <= 0.02;
+    if (whole || rows < 2) return 0;
+    for (size_t g = 0; g < sizeof grids / sizeof grids[0]; g++) {
+        bool on = true;
+        for (int r = 0; r < rows && on; r++)
+            for (int axis = 0; axis < 2; axis++) {
+                double at = boxes[r].origin[axis] / grids[g];
+                on &= fabs(at - round(at)) <= 0.02;
+            }
+        if (on) return grids[g];
+    }
+    return 0;
+}
+
 static bool _sl_cascade_matrices_contract(const sl_check *k, const double *student, uint32_t *broken, char *text,
                                           size_t n, int *shown) {
     _sl_light_box boxes[SL_PROBE_MAX_ROWS];
@@ -591,6 +613,16 @@ static bool _sl_cascade_matrices_contract(const sl_check *k, const double *stude
                                   "it must cancel that fraction, + (round(x) - x) in texels, rescaled to NDC by / "
                                   "(map_size / 2): the origin lands at texel (%.2f, %.2f), then at (%.2f, %.2f)",
                          boxes[a].origin[0], boxes[a].origin[1], boxes[b].origin[0], boxes[b].origin[1]);
+            else if (_sl_snap_grid(boxes, k->rows) > 0) {
+                double grid = _sl_snap_grid(boxes, k->rows);
+                snprintf(text, n, "shadows shimmer as the camera moves: the snap rounds to %s texels, not whole ones — "
+                                  "every box's world origin lands on a multiple of %g texel (at (%.2f, %.2f), then "
+                                  "(%.2f, %.2f)): the offset is rounded in units of %s per NDC unit, where a texel is "
+                                  "2 / map_size of NDC (NDC spans 2): round the origin's x and y times map_size / 2, "
+                                  "then divide the offset by map_size / 2",
+                         grid == 0.5 ? "half" : "quarter", grid, boxes[a].origin[0], boxes[a].origin[1],
+                         boxes[b].origin[0], boxes[b].origin[1], grid == 0.5 ? "map_size" : "2 map_size");
+            }
             else if (_sl_snapped_in_one_axis(&boxes[a], &boxes[b], gx, gy) >= 0) {
                 /* one axis keeps the origin on whole texels: the snap is there, the other axis's is not its own */
                 char good = _sl_snapped_in_one_axis(&boxes[a], &boxes[b], gx, gy) == 0 ? 'x' : 'y';
