@@ -31,6 +31,15 @@ static void _sl_neutral_depth_state(void) {
     glCullFace(GL_BACK);
 }
 
+/* Whether `framebuffer` is bound for drawing (1); 2 where it is bound for reading alone (GL_READ_FRAMEBUFFER:
+ * a pass then draws elsewhere), 0 where not at all. Only 1 is right: the other two tell the message apart. */
+static double _sl_bound_for_drawing(GLuint framebuffer) {
+    GLint draw = 0, read = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    return (GLuint)draw == framebuffer ? 1 : (GLuint)read == framebuffer ? 2 : 0;
+}
+
 /* lab1_begin_depth_pass on a framebuffer of `size` made here, from a state
  * that is wrong in every way the function must fix: another framebuffer
  * bound, a small viewport, the depth test off with GL_ALWAYS, depth writes
@@ -67,13 +76,12 @@ static sl_status _sl_call_begin_depth_pass(const sl_lab_functions *labs, int siz
     glDepthMask(GL_FALSE);
     _sl_neutral_depth_state(); /* no culling: a pass that switches it on culls faces lab 1 draws */
     sl_status status = labs->lab1_begin_depth_pass(&map);
-    GLint bound = 0, viewport[4] = {0}, func = 0;
+    GLint viewport[4] = {0}, func = 0;
     GLboolean writes = GL_FALSE;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
     glGetIntegerv(GL_VIEWPORT, viewport);
     glGetIntegerv(GL_DEPTH_FUNC, &func);
     glGetBooleanv(GL_DEPTH_WRITEMASK, &writes);
-    out[0] = (GLuint)bound == map.framebuffer;
+    out[0] = _sl_bound_for_drawing(map.framebuffer);
     out[1] = viewport[2];
     out[2] = viewport[3];
     out[3] = glIsEnabled(GL_DEPTH_TEST);
@@ -269,12 +277,11 @@ static sl_status _sl_call_begin_cube_pass(const sl_lab_functions *labs, int face
      * changes to a function that does not keep the nearest depth is wrong */
     glDepthFunc(GL_LESS);
     sl_status status = labs->lab7_begin_cube_pass(&map, face);
-    GLint bound = 0, viewport[4] = {0}, attached = 0, func = 0;
+    GLint viewport[4] = {0}, attached = 0, func = 0;
     GLboolean writes = GL_FALSE;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
     glGetIntegerv(GL_VIEWPORT, viewport);
     glGetBooleanv(GL_DEPTH_WRITEMASK, &writes);
-    out[0] = (GLuint)bound == map.framebuffer;
+    out[0] = _sl_bound_for_drawing(map.framebuffer);
     out[2] = viewport[2];
     out[3] = viewport[3];
     out[4] = glIsEnabled(GL_DEPTH_TEST);

@@ -359,7 +359,11 @@ static int _sl_verdict_begin_depth_pass(const sl_verdict_rows *v, char *text, si
     for (int r = 0; r < v->k->rows; r++) {
         if (!_sl_failed(v, r) || isnan(_sl_got(v, r, 0))) continue;
         double size = v->k->inputs[r][0];
-        if (_sl_got(v, r, 0) != 1) {
+        if (_sl_got(v, r, 0) == 2) {
+            snprintf(text, n, "the map's framebuffer is bound for reading only (GL_READ_FRAMEBUFFER): a pass draws into "
+                              "the GL_DRAW_FRAMEBUFFER binding, so the depths go elsewhere — glBindFramebuffer("
+                              "GL_FRAMEBUFFER, map->framebuffer) binds it for both");
+        } else if (_sl_got(v, r, 0) != 1) {
             snprintf(text, n, "the map's framebuffer is not bound: glBindFramebuffer(GL_FRAMEBUFFER, map->framebuffer) "
                               "first, or the depth pass draws into another one");
         } else if (_sl_got(v, r, 1) != size || _sl_got(v, r, 2) != size) {

@@ -258,6 +258,9 @@ static const struct {
                      "(1, 1, 1, 1), with GL_CLAMP_TO_BORDER"},
     {"culling on", "lab 1's depth pass draws every face it is given: whether to cull is lab 3's choice "
                    "(lab3_depth_pass_state), and a culled face writes no depth"},
+    {"map's framebuffer bound", "a pass draws into the GL_DRAW_FRAMEBUFFER binding: glBindFramebuffer(GL_FRAMEBUFFER, "
+                                "map->framebuffer) sets it (and the read binding); 2 here is bound for reading alone "
+                                "(GL_READ_FRAMEBUFFER), 0 not bound"},
     {"map's depth texture deleted", "glDeleteTextures gives a texture back, glDeleteFramebuffers a framebuffer: each "
                                     "kind of object has names of its own"},
     {"map's cube map deleted", "glDeleteTextures gives a texture back, glDeleteFramebuffers a framebuffer: each kind "
