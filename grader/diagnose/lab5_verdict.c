@@ -144,6 +144,15 @@ static int _sl_verdict_blur(const sl_verdict_rows *v, char *text, size_t n) {
                                                                       : "not implemented: it returns");
         return first;
     }
+    /* NaN at radius 0 alone, every other row right: sigma = radius * 0.5 is 0 there, and exp(-0 / 0) is NaN */
+    int nan_at_zero = 0;
+    for (int r = 0; r < rows; r++)
+        nan_at_zero += _sl_failed(v, r) && (int)v->k->inputs[r][5] == 0 && isnan(_sl_got(v, r, 0));
+    if (nan_at_zero > 0 && nan_at_zero == failing) {
+        snprintf(text, n, "at radius 0 it gives NaN: sigma = radius * 0.5 is 0 there, and the centre's weight exp(-0.0 "
+                          "/ 0.0) is NaN — sigma = max(float(radius) * 0.5, 0.5), so radius 0 is the texel itself");
+        return first;
+    }
     /* a flat map stays flat whatever the kernel: what it gives there is the sum of the weights */
     for (int r = 0; r < rows; r++) {
         const float *in = v->k->inputs[r];

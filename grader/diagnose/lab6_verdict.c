@@ -656,10 +656,12 @@ bool sl_lab6_probe_contract(const sl_check *k, const double *student, const doub
 
 /* What one comparison in layer `layer` of the probe's texture array gives at a row's point, with the bias
  * `bias` (a negative layer: the row's own), divided by w or not; -1 where a layer does not exist. */
-static double _sl_layer_compare_at(const float *in, int layer, double bias, bool divide, bool clamped) {
+static double _sl_layer_compare_remapped(const float *in, int layer, double bias, bool divide, bool clamped,
+                                         bool remapped) {
     double w = divide ? in[5] : 1.0;
     if (w == 0) return -1;
     double p[3] = {in[2] / w, in[3] / w, in[4] / w};
+    for (int i = 0; i < 3 && remapped; i++) p[i] = p[i] * 0.5 + 0.5;
     if (p[2] > 1.0) return 1.0;
     for (int i = 0; i < 2 && clamped; i++) p[i] = fmin(fmax(p[i], 0), 1); /* 1.0 itself is the border's texel */
     if (p[0] < 0 || p[0] > 1 || p[1] < 0 || p[1] > 1) return 1.0; /* the border: depth 1.0 */
@@ -670,8 +672,8 @@ static double _sl_layer_compare_at(const float *in, int layer, double bias, bool
     return p[2] - bias > stored ? 0.0 : 1.0;
 }
 
-static double _sl_layer_compare(const float *in, int layer, double bias, bool divide) {
-    return _sl_layer_compare_at(in, layer, bias, divide, false);
+static double _sl_layer_compare_at(const float *in, int layer, double bias, bool divide, bool clamped) {
+    return _sl_layer_compare_remapped(in, layer, bias, divide, clamped, false);
 }
 
 /* Every failing row outside the cascade's square (s or t outside [0, 1] after the divide), every row inside
@@ -709,6 +711,7 @@ typedef struct _sl_compare_reading {
     bool divide;
     bool bias_added; /* the given bias added to p.z, not subtracted */
     bool normalised; /* the layer given as layer / layers, a 3D texture's coordinate: GL reads round(layer / 4) */
+    bool remapped;   /* p moved to [0, 1] again, p * 0.5 + 0.5, after the divide */
 } _sl_compare_reading;
 
 static bool _sl_reading_explains(const sl_verdict_rows *v, _sl_compare_reading h) {
@@ -718,7 +721,7 @@ static bool _sl_reading_explains(const sl_verdict_rows *v, _sl_compare_reading h
                   : h.normalised ? (int)floor((double)(int)in[1] / SL_PROBE_LAYERS + 0.5)
                                  : (int)in[1] + h.layer_shift;
         double bias = h.bias < 0 ? in[6] : h.bias;
-        double want = _sl_layer_compare(in, layer, h.bias_added ? -bias : bias, h.divide);
+        double want = _sl_layer_compare_remapped(in, layer, h.bias_added ? -bias : bias, h.divide, false, h.remapped);
         if (want < 0 || fabs(_sl_got(v, r, 0) - want) > 1e-3) return false;
     }
     return true;
@@ -756,6 +759,12 @@ static int _sl_verdict_cascade_compare(const sl_verdict_rows *v, char *text, siz
                               "as cascade_index() chose it", shift > 0 ? "after" : "before");
             return first;
         }
+    if (_sl_reading_explains(v, (_sl_compare_reading){.bias = -1, .divide = true, .remapped = true})) {
+        snprintf(text, n, "it moves p to [0, 1] again, p * 0.5 + 0.5 after the divide (as shaders whose matrix has no "
+                          "bias matrix must): lab 2's shadow matrix already holds W, so p is in [0, 1] — read the "
+                          "layer at p.xy and compare p.z - bias as they are");
+        return first;
+    }
     if (_sl_reading_explains(v, (_sl_compare_reading){.bias = -1, .divide = false})) {
         snprintf(text, n, "no divide by w: the shadow coordinate is homogeneous — divide xyz by w before the lookup");
         return first;

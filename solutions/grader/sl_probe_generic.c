@@ -388,6 +388,7 @@ typedef enum _sl_grid_slip {
     _SL_GRID_DIAGONAL,      /* offsets (x, x): each row of the loop samples the same diagonal */
     _SL_GRID_UV_REMAPPED,   /* the map read at p.xy * 0.5 + 0.5: texture space taken for NDC */
     _SL_GRID_FRUSTUM_UNDIVIDED, /* the frustum test on shadow_coord.xyz, before the divide by w */
+    _SL_GRID_ALL_REMAPPED,      /* p * 0.5 + 0.5, z as well: a tutorial's remap where the matrix holds no W */
 } _sl_grid_slip;
 
 /* The bias's slips, in _sl_grid_slip's order from _SL_GRID_BIAS_OVER_W. */
@@ -413,6 +414,8 @@ static const char *const _sl_compare_slips[][2] = {
     {"the frustum test on the undivided coordinate (shadow_coord.xyz in [0, 1], before the divide by w): where w is "
      "not 1, points inside the frustum count as outside and the other way round",
      "the test on p = shadow_coord.xyz / shadow_coord.w: w <= 0, or p outside [0, 1]"},
+    {"p moved to [0, 1] again, p * 0.5 + 0.5 (z as well), as a tutorial whose matrix holds no bias matrix does",
+     "p as the divide gives it: lab 2's shadow matrix already holds W, which takes x, y and z to [0, 1]"},
     {NULL, NULL},
 };
 
@@ -421,7 +424,7 @@ static const _sl_grid_slip _sl_compare_as_grid[] = {
     _SL_GRID_CONTRACT,    _SL_GRID_REVERSED,     _SL_GRID_XY_NOT_DIVIDED, _SL_GRID_Z_NOT_DIVIDED,
     _SL_GRID_NO_FRUSTUM_TEST, _SL_GRID_BIAS_OVER_W, _SL_GRID_BIAS_TIMES_W, _SL_GRID_BIAS_ON_XY,
     _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED,   _SL_GRID_V_FLIPPED, _SL_GRID_UV_REMAPPED,
-    _SL_GRID_FRUSTUM_UNDIVIDED};
+    _SL_GRID_FRUSTUM_UNDIVIDED, _SL_GRID_ALL_REMAPPED};
 
 static const char *const _sl_grid_slips[][2] = {
     {"", ""},
@@ -447,6 +450,8 @@ static const char *const _sl_grid_slips[][2] = {
     {"the frustum test on the undivided coordinate (shadow_coord.xyz in [0, 1], before the divide by w): where w is "
      "not 1, points inside the frustum count as outside and the other way round",
      "the test on p = shadow_coord.xyz / shadow_coord.w: w <= 0, or p outside [0, 1]"},
+    {"p moved to [0, 1] again, p * 0.5 + 0.5 (z as well), as a tutorial whose matrix holds no bias matrix does",
+     "p as the divide gives it: lab 2's shadow matrix already holds W, which takes x, y and z to [0, 1]"},
     {NULL, NULL},
 };
 
@@ -462,7 +467,8 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     if (slip == _SL_GRID_BIAS_TIMES_W) bias *= w;
     if (slip == _SL_GRID_BIAS_ON_XY) u -= bias, v -= bias;
     if (slip == _SL_GRID_V_FLIPPED) v = 1 - v;
-    if (slip == _SL_GRID_UV_REMAPPED) u = u * 0.5 + 0.5, v = v * 0.5 + 0.5;
+    if (slip == _SL_GRID_UV_REMAPPED || slip == _SL_GRID_ALL_REMAPPED) u = u * 0.5 + 0.5, v = v * 0.5 + 0.5;
+    if (slip == _SL_GRID_ALL_REMAPPED) z = z * 0.5 + 0.5;
     if (slip == _SL_GRID_NO_BIAS) bias = 0;
     if (slip == _SL_GRID_BIAS_ADDED) bias = -bias;
     double px = _sl_get(f, row, "shadow_coord", 0) / w, py = _sl_get(f, row, "shadow_coord", 1) / w;
@@ -470,6 +476,8 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     if (slip == _SL_GRID_FRUSTUM_UNDIVIDED)
         px = _sl_get(f, row, "shadow_coord", 0), py = _sl_get(f, row, "shadow_coord", 1),
         pz = _sl_get(f, row, "shadow_coord", 2);
+    if (slip == _SL_GRID_ALL_REMAPPED) /* p remapped where it is made: the frustum test reads it so too */
+        px = px * 0.5 + 0.5, py = py * 0.5 + 0.5, pz = pz * 0.5 + 0.5;
     bool outside = w <= 0 || px < 0 || px > 1 || py < 0 || py > 1 || pz < 0 || pz > 1;
     if (outside && slip != _SL_GRID_NO_FRUSTUM_TEST) return 1;
     double texel = slip == _SL_GRID_UV_STEPS ? 1.0 : slip == _SL_GRID_TWO_TEXEL_STEPS ? 2.0 / SL_PROBE_MAP_SIZE
@@ -903,6 +911,8 @@ enum {
     _SL_SLICE_WHOLE_FRUSTUM,
     _SL_SLICE_RADIUS_FIRST_CORNER,
     _SL_SLICE_CENTRE_OVER_FOUR,
+    _SL_SLICE_NEAR_BY_FAR_W,
+    _SL_SLICE_FAR_BY_NEAR_W,
 };
 
 static const char *const _sl_slice_slips[][2] = {
@@ -931,6 +941,10 @@ static const char *const _sl_slice_slips[][2] = {
     [_SL_SLICE_RADIUS_FIRST_CORNER] = {"the radius as the distance to the first corner only",
                                        "the largest distance from the centre to any of the 8 corners"},
     [_SL_SLICE_CENTRE_OVER_FOUR] = {"the centre as the corners' sum divided by 4", "the mean of the 8 corners, sum / 8"},
+    [_SL_SLICE_NEAR_BY_FAR_W] = {"the near corner divided by the far corner's w (wn.xyz / wf.w)",
+                                 "each unprojected corner divided by its own w: wn.xyz / wn.w, wf.xyz / wf.w"},
+    [_SL_SLICE_FAR_BY_NEAR_W] = {"the far corner divided by the near corner's w (wf.xyz / wn.w)",
+                                 "each unprojected corner divided by its own w: wn.xyz / wn.w, wf.xyz / wf.w"},
     {NULL, NULL},
 };
 
@@ -941,8 +955,13 @@ static void _sl_slice_corner(const double eye[3], const double ray[3], double ne
     double d_near = near;
     if (slip == _SL_SLICE_NEAR_AT_NDC_ZERO) d_near = 2 * near * far / (far + near);
     for (int j = 0; j < 3; j++) cn[j] = eye[j] + d_near * ray[j], cf[j] = eye[j] + far * ray[j];
+    /* inv_view_projection * (x, y, -1 or 1, 1) has w = 1 / (the view depth): near's or far's */
     if (slip == _SL_SLICE_NO_W_DIVIDE)
         for (int j = 0; j < 3; j++) cn[j] /= near, cf[j] /= far;
+    if (slip == _SL_SLICE_NEAR_BY_FAR_W)
+        for (int j = 0; j < 3; j++) cn[j] *= far / near;
+    if (slip == _SL_SLICE_FAR_BY_NEAR_W)
+        for (int j = 0; j < 3; j++) cf[j] *= near / far;
     double t = (split - near) / (far - near);
     switch (slip) {
     case _SL_SLICE_FROM_FAR: t = 1 - t; break;
@@ -1227,7 +1246,8 @@ static const _sl_generic _sl_generics[] = {
      * whole frustum and a centre over 4 have messages of their own) */
     {"lab6_slice_sphere", _sl_draw_slice, _sl_expect_slice, _sl_slice_slips, NULL,
      1ull << _SL_SLICE_FROM_FAR | 1ull << _SL_SLICE_NEAR_PLUS_FAR | 1ull << _SL_SLICE_DISTANCE_ALONG_EDGE |
-         1ull << _SL_SLICE_NDC_LERP | 1ull << _SL_SLICE_NEAR_AT_NDC_ZERO | 1ull << _SL_SLICE_RADIUS_FIRST_CORNER},
+         1ull << _SL_SLICE_NDC_LERP | 1ull << _SL_SLICE_NEAR_AT_NDC_ZERO | 1ull << _SL_SLICE_RADIUS_FIRST_CORNER |
+         1ull << _SL_SLICE_NEAR_BY_FAR_W | 1ull << _SL_SLICE_FAR_BY_NEAR_W},
     {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index, _sl_cascade_index_slips, NULL, 0},
     {"cascade_blend", _sl_draw_blend, _sl_expect_blend, _sl_blend_slips,
      "start = split_far - band * (split_far - split_near); "
@@ -1455,6 +1475,10 @@ static bool _sl_candidate_outputs(const _sl_generic *g, const sl_probe_function 
 
 /* Whether every modelled row of k follows the candidate, and at least one differs from the contract
  * (contract: the contract's outputs on every row of k). */
+/* How many modelled rows a slip may fail to fit (0, or 1 on a second look: a slip the student made, and a
+ * written edge case answered some other way besides), and the last row that did not. */
+static int _sl_misfits_allowed, _sl_misfit_row;
+
 static bool _sl_slip_fits(const _sl_generic *g, const sl_probe_function *f, const sl_check *k, const double *student,
                           const double *contract, const double *scale, const bool *modelled, const int *offsets,
                           const sl_formula *formula, const _sl_slip_candidate *c) {
@@ -1462,16 +1486,31 @@ static bool _sl_slip_fits(const _sl_generic *g, const sl_probe_function *f, cons
     if (!_sl_candidate_outputs(g, f, offsets, formula, c, (const float (*)[SL_PROBE_MAX_INPUTS])k->inputs, k->rows,
                                slipped))
         return false;
-    bool explains = false;
+    int explained = 0, misfits = 0;
     for (int row = 0; row < k->rows; row++) {
         if (!modelled[row]) continue;
+        bool fits = true, differs = false;
+        /* a row's outputs that are one vector (a centre, a matrix) carry rounding in proportion to the whole
+         * vector: a slip that makes them large leaves a small component as uncertain as the others */
+        double largest = 0;
+        for (int o = 0; o < f->output_count; o++)
+            if (isfinite(slipped[row * f->output_count + o]))
+                largest = fmax(largest, fabs(slipped[row * f->output_count + o]));
         for (int o = 0; o < f->output_count; o++) {
             int at = row * f->output_count + o;
-            if (!_sl_slip_close(student[at], slipped[at], scale[o])) return false;
-            if (!_sl_slip_close(student[at], contract[at], scale[o])) explains = true;
+            fits &= _sl_slip_close(student[at], slipped[at], fmax(scale[o], 0.1 * largest));
+            differs |= !_sl_slip_close(student[at], contract[at], scale[o]);
+        }
+        if (!fits) {
+            /* a row let off must be wrong itself: a right row the slip does not give says the slip is not made */
+            if (++misfits > _sl_misfits_allowed || !differs) return false;
+            _sl_misfit_row = row;
+        } else {
+            explained += differs;
         }
     }
-    return explains;
+    /* with a row let off, the slip must explain several rows on its own: one or two are a coincidence */
+    return misfits == 0 ? explained > 0 : explained >= 3;
 }
 
 /* Rows of the function's own kind that the check never saw: two slips that give the same outputs on them
@@ -1598,6 +1637,10 @@ sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, co
      * formula is all three, its catalogue words are the ones shown. */
     static _sl_slip_groups groups;
     groups.count = 0;
+    bool let_off = false;
+    for (int look = 0; look < 2 && groups.count == 0; look++) {
+    _sl_misfits_allowed = look;
+    let_off = look > 0;
     for (int s = 1; g->slips && g->slips[s][0]; s++) {
         _sl_slip_candidate c = {0, 0, 0, 0, -1, s, 0, 0};
         if (_sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &c))
@@ -1630,10 +1673,30 @@ sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, co
         if (_sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &c))
             _sl_group(&groups, g, f, offsets, &formula, (const float (*)[SL_PROBE_MAX_INPUTS])fresh, &c);
     }
-    if (groups.count < 1 || groups.count > 4) return SL_PROBE_SLIP_NONE;
+    }
+    _sl_misfits_allowed = 0;
+    if (groups.count < 1 || groups.count > (let_off ? 2 : 4)) return SL_PROBE_SLIP_NONE;
     char words[4][640];
     for (int i = 0; i < groups.count; i++)
         _sl_candidate_words(g, f, &formula, &groups.first[i], words[i], sizeof words[i]);
+    if (let_off) {
+        /* the row the slip leaves out, found again */
+        _sl_misfits_allowed = 1;
+        _sl_misfit_row = -1;
+        _sl_slip_fits(g, f, k, student, contract, scale, modelled, offsets, &formula, &groups.first[0]);
+        _sl_misfits_allowed = 0;
+        int row = _sl_misfit_row;
+        bool formula_slip = groups.first[0].formula_slip > 0 || groups.first[0].edit > 0;
+        char also[700] = "";
+        if (groups.count == 2)
+            snprintf(also, sizeof also, " (or, as these rows cannot tell apart, %s)", words[1]);
+        snprintf(out, n, "on every row but one it answers %s %s%s; the row it does not fit%s%s%s is wrong another way "
+                         "too",
+                 formula_slip ? "as if it computed" : "as the contract does with", words[0], also,
+                 row >= 0 && k->about[row][0] ? " (" : "", row >= 0 ? k->about[row] : "",
+                 row >= 0 && k->about[row][0] ? ")" : "");
+        return SL_PROBE_SLIP_OF_FORMULA;
+    }
     if (groups.count == 1) {
         bool formula_slip = groups.first[0].formula_slip > 0 || groups.first[0].edit > 0;
         snprintf(out, n, formula_slip ? "on every row it answers as if it computed %s"
