@@ -540,6 +540,21 @@ static bool _sl_snap_sign_flipped(const float *in, const double *m) {
     return any_fraction;
 }
 
+/* The box's translation exactly the unsnapped one (the box centred on the sphere) in both axes, with the
+ * world's origin off whole texels: the snap moves nothing. */
+static bool _sl_snap_missing(const float *in, const double *m) {
+    double c[3] = {in[3], in[4], in[5]}, half = in[8] / 2;
+    bool any_fraction = false;
+    for (int axis = 0; axis < 2; axis++) {
+        double row[4];
+        _sl_matrix_row4(m, axis, row);
+        double x0 = -_sl_dot3(row, c) * half, got = row[3] * half;
+        if (fabs(got - x0) > 0.01) return false;
+        any_fraction |= fabs(x0 - round(x0)) > 0.02;
+    }
+    return any_fraction;
+}
+
 /* 0 (x) or 1 (y) when two boxes' world origins land on whole texels in that axis alone and slide in the
  * other: the snap is done in one axis only; -1 otherwise. */
 static int _sl_snapped_in_one_axis(const _sl_light_box *a, const _sl_light_box *b, double gx, double gy) {
@@ -607,6 +622,13 @@ static bool _sl_cascade_matrices_contract(const sl_check *k, const double *stude
             if (!same_box)
                 snprintf(text, n, "the box turns or changes size when only the sphere's centre moves: keep the "
                                   "light's up vector and the box's size fixed, so the texel grid stays put");
+            else if (_sl_snap_missing(k->inputs[a], ma) && _sl_snap_missing(k->inputs[b], mb))
+                snprintf(text, n, "shadows shimmer as the camera moves: the projection is not snapped at all — its "
+                                  "translation is the box's centred on the sphere, so the world's origin lands at texel "
+                                  "(%.2f, %.2f), then at (%.2f, %.2f); the snap must add (round(x) - x) / (map_size / 2) "
+                                  "to the translation (in cglm's column-major matrices m[3][0] and m[3][1]; m[0][3] and "
+                                  "m[1][3] are the last row, 0 in a projection)",
+                         boxes[a].origin[0], boxes[a].origin[1], boxes[b].origin[0], boxes[b].origin[1]);
             else if (_sl_snap_sign_flipped(k->inputs[a], ma) && _sl_snap_sign_flipped(k->inputs[b], mb))
                 snprintf(text, n, "shadows shimmer as the camera moves: the snap's offset has the wrong sign — it "
                                   "moves the world's origin as far again from a whole texel (x + (x - round(x))) where "

@@ -613,6 +613,18 @@ static bool _sl_face_view_broken(const float *in, const double *m, const double 
                               "takes a point to look at, so the target is light_position + axis", _sl_face(face), axis);
             return true;
         }
+        /* looking down another face's axis: the faces taken in another order than GL's */
+        for (int other = 0; other < 6; other++)
+            if (other != face && _sl_is(looks, _sl_axes[other][0], _sl_axes[other][1], _sl_axes[other][2], 1e-3)) {
+                char its[40];
+                _sl_vector(_sl_axes[other], its, sizeof its);
+                snprintf(text, n, "face %s: the camera looks down face %s's axis %s, where face %s looks down %s: "
+                                  "the faces taken in another order than GL's, +X, -X, +Y, -Y, +Z, -Z (face i is "
+                                  "GL_TEXTURE_CUBE_MAP_POSITIVE_X + i, and the lookup reads it as that face), or an "
+                                  "axis with the wrong sign",
+                         _sl_face(face), _sl_face(other), its, _sl_face(face), axis);
+                return true;
+            }
         snprintf(text, n, "face %s: the camera should look down %s, it looks down (%.3g,%.3g,%.3g)", _sl_face(face),
                  axis, -forward[0], -forward[1], -forward[2]);
         return true;
