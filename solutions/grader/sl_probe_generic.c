@@ -1219,6 +1219,229 @@ static void _sl_expect_point_shadow(const sl_probe_function *f, const float *row
     out[0] = (current > closest) == (slip == 4) ? 1 : 0;
 }
 
+/* lab 4: pcf_hardware, texture() on a sampler2DShadow with GL_LINEAR: four comparisons blended by the
+ * point's bilinear weights. The point lies on eighths of a texel (weights every GL computes exactly, in
+ * whatever fixed point it filters), both weights fractional, near the "corner" map's occluder so that
+ * both axes blend, with w a power of two (an exact divide). */
+typedef enum {
+    _SL_HW_CONTRACT,
+    _SL_HW_HALF_TEXEL_UP,   /* p.xy + 0.5 / textureSize */
+    _SL_HW_HALF_TEXEL_DOWN, /* p.xy - 0.5 / textureSize */
+    _SL_HW_TEXEL_CENTRE,    /* (floor(p.xy * size) + 0.5) / size: one comparison */
+    _SL_HW_XY_NOT_DIVIDED,  /* shadow_coord.xy */
+    _SL_HW_Z_NOT_DIVIDED,   /* shadow_coord.z - bias */
+    _SL_HW_BIAS_BEFORE_DIVIDE, /* (shadow_coord.z - bias) / w: the bias scaled by 1 / w */
+    _SL_HW_T_FLIPPED,       /* 1 - p.y */
+} _sl_hw_slip;
+
+static double _sl_hw_compare(sl_probe_map map, int i, int j, double z) {
+    i = i < 0 ? 0 : i >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : i;
+    j = j < 0 ? 0 : j >= SL_PROBE_MAP_SIZE ? SL_PROBE_MAP_SIZE - 1 : j;
+    return z <= sl_probe_map_depth(map, i, j) ? 1.0 : 0.0; /* GL_LEQUAL: lit when the reference is not beyond */
+}
+
+static void _sl_draw_pcf_hardware(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                  size_t n) {
+    int half = SL_PROBE_MAP_SIZE / 2;
+    /* texel coordinates (the sample point minus half a texel) between the last occluded texel's centre and
+     * the first lit one's, in eighths, never whole (a whole weight hides the blend): across the corner's
+     * vertical edge, its horizontal one, or both */
+    double tx = half - 1 + _sl_integer(r, 1, 7) / 8.0, ty = half - 1 + _sl_integer(r, 1, 7) / 8.0;
+    if (index % 3 == 1) tx = half - 3 + _sl_integer(r, 0, 15) / 8.0; /* inside the occluder in x: the blend in y */
+    if (index % 3 == 2) ty = half - 3 + _sl_integer(r, 0, 15) / 8.0; /* and in x */
+    double u = (tx + 0.5) / SL_PROBE_MAP_SIZE, v = (ty + 0.5) / SL_PROBE_MAP_SIZE;
+    /* behind the occluder (0.25) or, one row in four, just in front of it by less than the bias */
+    double bias = _sl_integer(r, 2, 8) / 1024.0;
+    double z = index % 4 == 3 ? 0.25 + bias / 2 : 0.25 + _sl_integer(r, 16, 160) / 256.0;
+    static const double ws[4] = {0.5, 2.0, 0.25, 4.0};
+    double w = index % 4 == 0 ? 1.0 : ws[_sl_integer(r, 0, 3)];
+    double coord[4] = {u * w, v * w, z * w, w};
+    _sl_set1(f, row, "shadow_map", SL_PROBE_MAP_CORNER);
+    _sl_set(f, row, "shadow_coord", coord);
+    _sl_set1(f, row, "bias", bias);
+    snprintf(about, n, "generic: the occluder's corner, the point at texel (%.3g, %.3g) of the 64-texel map (both "
+                       "bilinear weights fractional), depth %.4g, bias %.4g, w = %g%s",
+             tx + 0.5, ty + 0.5, z, bias, w, index % 4 == 3 ? ": just in front of the occluder by less than the bias, lit" : "");
+}
+
+static void _sl_expect_pcf_hardware(const sl_probe_function *f, const float *row, int slip, double *out) {
+    double c[4];
+    for (int j = 0; j < 4; j++) c[j] = _sl_get(f, row, "shadow_coord", j);
+    double bias = _sl_get(f, row, "bias", 0), w = c[3];
+    sl_probe_map map = (sl_probe_map)(int)_sl_get(f, row, "shadow_map", 0);
+    double x = c[0] / w, y = c[1] / w, z = c[2] / w - bias;
+    if (slip == _SL_HW_XY_NOT_DIVIDED) x = c[0], y = c[1];
+    if (slip == _SL_HW_Z_NOT_DIVIDED) z = c[2] - bias;
+    if (slip == _SL_HW_BIAS_BEFORE_DIVIDE) z = (c[2] - bias) / w;
+    if (slip == _SL_HW_T_FLIPPED) y = 1 - y;
+    if (!(w > 0) || x < 0 || y < 0 || x > 1 || y > 1 || c[2] / w > 1 || c[2] / w < 0) {
+        out[0] = 1;
+        return;
+    }
+    double shift = slip == _SL_HW_HALF_TEXEL_UP ? 0.5 : slip == _SL_HW_HALF_TEXEL_DOWN ? -0.5 : 0;
+    double sx = x * SL_PROBE_MAP_SIZE + shift - 0.5, sy = y * SL_PROBE_MAP_SIZE + shift - 0.5;
+    if (slip == _SL_HW_TEXEL_CENTRE) sx = floor(x * SL_PROBE_MAP_SIZE), sy = floor(y * SL_PROBE_MAP_SIZE);
+    int i = (int)floor(sx), j = (int)floor(sy);
+    double a = sx - i, b = sy - j;
+    out[0] = (1 - a) * (1 - b) * _sl_hw_compare(map, i, j, z) + a * (1 - b) * _sl_hw_compare(map, i + 1, j, z) +
+             (1 - a) * b * _sl_hw_compare(map, i, j + 1, z) + a * b * _sl_hw_compare(map, i + 1, j + 1, z);
+}
+
+static const char *const _sl_hw_slips[][2] = {
+    {"", ""},
+    {"the lookup moved half a texel up and right (p.xy + 0.5 / textureSize): the four texels blended are not the "
+     "four around the point",
+     "texture(shadow_map, vec3(p.xy, p.z - bias)): GL_LINEAR already blends the four texels whose centres surround "
+     "p.xy, so no offset of any kind"},
+    {"the lookup moved half a texel down and left (p.xy - 0.5 / textureSize): the four texels blended are not the "
+     "four around the point",
+     "texture(shadow_map, vec3(p.xy, p.z - bias)): GL_LINEAR already blends the four texels whose centres surround "
+     "p.xy, so no offset of any kind"},
+    {"one comparison at the point's texel centre ((floor(p.xy * size) + 0.5) / size): the blend between texels lost",
+     "texture(shadow_map, vec3(p.xy, p.z - bias)) at p.xy itself: the hardware's blend is the filter"},
+    {"x and y not divided by w (the map read at shadow_coord.xy)",
+     "p = shadow_coord.xyz / shadow_coord.w (pcf_project), then the lookup at p.xy"},
+    {"z not divided by w (shadow_coord.z - bias compared)", "p.z = shadow_coord.z / shadow_coord.w, then p.z - bias"},
+    {"the bias subtracted before the divide, (shadow_coord.z - bias) / w: the bias scaled by 1 / w",
+     "p.z - bias, after the divide (the bias is in the map's depth units)"},
+    {"t flipped (1 - p.y): the map's rows read upside down", "p.y as it is: the map's t runs upwards, as y does"},
+    {NULL, NULL},
+};
+
+/* lab 7 (bonus): point_shadow_soft on the "cube_positive" map (0.1 on +X, +Y, +Z, 1.0 on the others), a
+ * point near an edge between an occluded face and a lit one, so that a fraction of the 20 directions lands
+ * on each; far plane, distance, radius and bias drawn; every direction kept clear of a face's edge (each
+ * sample's face is the one every GL picks) for the contract and for each slip. */
+static const double _sl_soft_offsets[20][3] = {
+    {1, 1, 1},   {1, -1, 1},  {-1, -1, 1},  {-1, 1, 1},  {1, 1, -1},  {1, -1, -1}, {-1, -1, -1},
+    {-1, 1, -1}, {1, 1, 0},   {1, -1, 0},   {-1, -1, 0}, {-1, 1, 0},  {1, 0, 1},   {-1, 0, 1},
+    {1, 0, -1},  {-1, 0, -1}, {0, 1, 1},    {0, -1, 1},  {0, -1, -1}, {0, 1, -1}};
+
+typedef enum {
+    _SL_SOFT_CONTRACT,
+    _SL_SOFT_UNIT_DIRECTION,  /* normalize(light_to_fragment) + offset * disk */
+    _SL_SOFT_DISK_FIXED,      /* disk = radius */
+    _SL_SOFT_DISK_NO_FAR,     /* disk = radius * distance */
+    _SL_SOFT_DISK_OVER_FAR,   /* disk = radius / far_plane */
+    _SL_SOFT_OFFSETS_UNIT,    /* normalize(offset) * disk */
+    _SL_SOFT_NO_DISK,         /* light_to_fragment + offset */
+    _SL_SOFT_FIRST_16,        /* 16 of the 20 directions, over 16 */
+    _SL_SOFT_NOT_OVER_FAR,    /* current = distance - bias */
+    _SL_SOFT_NO_BIAS,         /* current = distance / far */
+    _SL_SOFT_BIAS_ADDED,      /* current = distance / far + bias */
+    _SL_SOFT_SLIP_COUNT
+} _sl_soft_slip;
+
+/* Whether direction d picks its face clearly: its largest component ahead of the next by a margin. */
+static bool _sl_face_clear(const double d[3]) {
+    double a[3] = {fabs(d[0]), fabs(d[1]), fabs(d[2])};
+    double top = fmax(a[0], fmax(a[1], a[2])), second = 0;
+    int axis = a[0] == top ? 0 : a[1] == top ? 1 : 2;
+    for (int j = 0; j < 3; j++)
+        if (j != axis) second = fmax(second, a[j]);
+    return top - second > 2e-3 * top;
+}
+
+/* The soft lookup with slip `slip`; *clear says whether every sample picked its face clearly. */
+static double _sl_soft(const double l[3], double far, double bias, double radius, int slip, bool *clear) {
+    double distance = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    double current = slip == _SL_SOFT_NOT_OVER_FAR ? distance - bias
+                   : slip == _SL_SOFT_NO_BIAS      ? distance / far
+                   : slip == _SL_SOFT_BIAS_ADDED   ? distance / far + bias
+                                                   : distance / far - bias;
+    double disk = slip == _SL_SOFT_DISK_FIXED    ? radius
+                : slip == _SL_SOFT_DISK_NO_FAR   ? radius * distance
+                : slip == _SL_SOFT_DISK_OVER_FAR ? radius / far
+                : slip == _SL_SOFT_NO_DISK       ? 1.0
+                                                 : radius * distance / far;
+    int count = slip == _SL_SOFT_FIRST_16 ? 16 : 20;
+    double lit = 0;
+    if (clear) *clear = true;
+    for (int i = 0; i < count; i++) {
+        const double *o = _sl_soft_offsets[i];
+        double scale = slip == _SL_SOFT_OFFSETS_UNIT ? 1 / sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]) : 1;
+        double d[3];
+        for (int j = 0; j < 3; j++) d[j] = (slip == _SL_SOFT_UNIT_DIRECTION ? l[j] / distance : l[j]) + o[j] * scale * disk;
+        if (clear && !_sl_face_clear(d)) *clear = false;
+        int axis = fabs(d[0]) >= fabs(d[1]) && fabs(d[0]) >= fabs(d[2]) ? 0 : fabs(d[1]) >= fabs(d[2]) ? 1 : 2;
+        double closest = d[axis] > 0 ? 0.1 : 1.0;
+        lit += current > closest ? 0 : 1;
+    }
+    return lit / count;
+}
+
+static void _sl_draw_point_shadow_soft(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about,
+                                       size_t n) {
+    (void)index;
+    double l[3], far = 0, bias = 0, radius = 0, distance = 0;
+    for (int tries = 0; tries < 2000; tries++) {
+        /* towards the edge between an occluded face (+axis) and a lit one (-other) */
+        int axis = _sl_integer(r, 0, 2), other = (axis + _sl_integer(r, 1, 2)) % 3, third = 3 - axis - other;
+        double dir[3];
+        dir[axis] = 1;
+        dir[other] = -_sl_uniform(r, 0.7, 1.3);
+        dir[third] = _sl_uniform(r, -0.5, 0.5);
+        far = _sl_uniform(r, 4, 40);
+        bias = _sl_uniform(r, 0.002, 0.02);
+        double current = _sl_uniform(r, 0.15, 0.85);
+        distance = (current + bias) * far;
+        double length = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        for (int j = 0; j < 3; j++) l[j] = dir[j] * distance / length;
+        /* the disk's angle at the far plane, radius / far, from 0.05 to 0.4 */
+        radius = far * _sl_uniform(r, 0.05, 0.4);
+        bool clear, all_clear = true;
+        double want = _sl_soft(l, far, bias, radius, 0, &clear);
+        all_clear = clear;
+        for (int s = 1; s < _SL_SOFT_SLIP_COUNT && all_clear; s++) {
+            _sl_soft(l, far, bias, radius, s, &clear);
+            all_clear = clear;
+        }
+        /* a fraction, with lit and shadowed samples both several */
+        if (all_clear && want >= 0.15 && want <= 0.85) break;
+    }
+    _sl_set1(f, row, "cube_map", SL_PROBE_MAP_CUBE_POSITIVE);
+    _sl_set(f, row, "light_to_fragment", l);
+    _sl_set1(f, row, "far_plane", far);
+    _sl_set1(f, row, "bias", bias);
+    _sl_set1(f, row, "radius", radius);
+    snprintf(about, n, "generic: far_plane %.3g, the point %.3g from the light near an edge of an occluded face and a "
+                       "lit one, radius %.3g (the disk %.3g wide there), bias %.3g: a fraction of the 20 samples lit",
+             far, distance, radius, radius * distance / far, bias);
+}
+
+static void _sl_expect_point_shadow_soft(const sl_probe_function *f, const float *row, int slip, double *out) {
+    if ((sl_probe_map)(int)_sl_get(f, row, "cube_map", 0) != SL_PROBE_MAP_CUBE_POSITIVE) {
+        out[0] = NAN;
+        return;
+    }
+    double l[3];
+    for (int j = 0; j < 3; j++) l[j] = _sl_get(f, row, "light_to_fragment", j);
+    out[0] = _sl_soft(l, _sl_get(f, row, "far_plane", 0), _sl_get(f, row, "bias", 0), _sl_get(f, row, "radius", 0), slip,
+                      NULL);
+}
+
+static const char *const _sl_soft_slips[][2] = {
+    {"", ""},
+    {"the offsets added to the unit direction, normalize(light_to_fragment) + offset * disk: the disk's angle "
+     "grows with the distance (length(light_to_fragment) times too wide)",
+     "light_to_fragment + offset * disk, with disk = radius * length(light_to_fragment) / far_plane: the same "
+     "angle at any distance"},
+    {"a disk of radius alone, not grown with the distance", "disk = radius * length(light_to_fragment) / far_plane"},
+    {"the disk radius * distance, not divided by far_plane", "disk = radius * length(light_to_fragment) / far_plane"},
+    {"the disk radius / far_plane, not grown with the distance",
+     "disk = radius * length(light_to_fragment) / far_plane"},
+    {"each offset made unit length (normalize(POINT_SHADOW_OFFSETS[i]) * disk): the given offsets are longer than "
+     "one (sqrt 2, sqrt 3), so the disk shrinks",
+     "POINT_SHADOW_OFFSETS[i] * disk, the offsets as given"},
+    {"the offsets added unscaled, light_to_fragment + POINT_SHADOW_OFFSETS[i]: no disk",
+     "light_to_fragment + POINT_SHADOW_OFFSETS[i] * disk, disk = radius * length(light_to_fragment) / far_plane"},
+    {"16 of the 20 directions, averaged over 16", "all 20 directions, the sum over 20.0"},
+    {"the distance not divided by far_plane", "current = length(light_to_fragment) / far_plane - bias"},
+    {"comparisons without the bias", "current = length(light_to_fragment) / far_plane - bias"},
+    {"the bias added to the distance", "current = length(light_to_fragment) / far_plane - bias"},
+    {NULL, NULL},
+};
+
 static const _sl_generic _sl_generics[] = {
     {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map, NULL, NULL, 0},
     {"depth.vert", _sl_draw_depth_vert, _sl_expect_depth_vert, _sl_depth_vert_slips, NULL, 0},
@@ -1257,6 +1480,8 @@ static const _sl_generic _sl_generics[] = {
     {"point_shadow", _sl_draw_point_shadow, _sl_expect_point_shadow, _sl_point_shadow_slips,
      "current = length(light_to_fragment) / far_plane - bias; closest = if(major_positive(light_to_fragment), 0.1, 1); "
      "if(current > closest, 0, 1)", 0},
+    {"pcf_hardware", _sl_draw_pcf_hardware, _sl_expect_pcf_hardware, _sl_hw_slips, NULL, 0xfeull},
+    {"point_shadow_soft", _sl_draw_point_shadow_soft, _sl_expect_point_shadow_soft, _sl_soft_slips, NULL, 0x7feull},
 };
 
 static const _sl_generic *_sl_find(const char *function) {
