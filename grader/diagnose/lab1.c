@@ -333,6 +333,16 @@ static int _sl_verdict_create_shadow_map(const sl_verdict_rows *v, char *text, s
             sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
             return r;
         }
+        /* a border of integers: glTexParameteriv reads each as a fraction of the largest int, 1 as 1 / (2^31 - 1) */
+        if (border > 0 && border < 1e-6 && fabs(_sl_want(v, r, 4) - 1) < 1e-6) {
+            snprintf(text, n, "the border's depth is %g, not 1.0: the border colour was given as integers — "
+                              "glTexParameteriv reads each as a fraction of the largest int, so 1 becomes 1 / 2147483647 "
+                              "and a lookup past the edge finds an occluder at the near plane; give it as floats, "
+                              "glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, (float[]){1, 1, 1, 1})",
+                     border);
+            sl_verdict_predicts(v, 1u << SL_SYMPTOM_TOO_DARK);
+            return r;
+        }
         if (fabs(border - _sl_want(v, r, 4)) > 1e-6) {
             snprintf(text, n, "the border's depth is %g, not 1.0: a lookup past the map's edge must read the far plane, "
                               "lit — GL_TEXTURE_BORDER_COLOR (1, 1, 1, 1) (a depth texture reads its first component)",

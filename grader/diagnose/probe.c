@@ -280,6 +280,27 @@ static const struct {
                                                                "buffer names, GL_COLOR_ATTACHMENT0 for both"},
 };
 
+/* The scalar input whose value output o takes on every failing row, where the contract's value differs
+ * (a parameter passed where another belongs: the factor given for the units); -1 when none. With `want`,
+ * the input whose value the contract gives there instead. */
+static int _sl_output_is_input(const sl_probe_function *f, const sl_check *k, const double *values, int o,
+                               uint32_t failing) {
+    int outputs = f->output_count;
+    for (int p = 0, offset = 0; p < f->param_count; offset += sl_probe_type_size(f->params[p].type), p++) {
+        if (sl_probe_type_size(f->params[p].type) != 1 || SL_PROBE_IS_MAP(f->params[p].type)) continue;
+        int rows = 0;
+        bool all = true;
+        for (int row = 0; row < k->rows && all; row++) {
+            if (!((failing >> row) & 1u)) continue;
+            double in = k->inputs[row][offset], v = values[row * outputs + o];
+            all = fabs(v - in) <= 1e-6 * fmax(1, fabs(in));
+            rows++;
+        }
+        if (all && rows > 0) return p;
+    }
+    return -1;
+}
+
 /* One state alone wrong: the same single output differs on every failing row of a C function that sets
  * several (GL state, a sphere's radius), everything else it sets right. Said as that fact, with the GL
  * rule behind the output where it has one. */
@@ -306,6 +327,15 @@ static bool _sl_single_output(const sl_probe_function *f, const sl_check *k, con
         if (strcmp(_sl_state_rules[i].output, name) == 0) rule = _sl_state_rules[i].rule;
     /* "only its depth buffer on framebuffer[0]", not "only its a depth buffer ..." */
     const char *said = strncmp(name, "a ", 2) == 0 ? name + 2 : strncmp(name, "an ", 3) == 0 ? name + 3 : name;
+    /* the value of another input on every such row, where the contract's is this one's: passed in its place */
+    int taken = _sl_output_is_input(f, k, s, o, failing), meant = _sl_output_is_input(f, k, e, o, failing);
+    if (taken >= 0 && meant >= 0 && taken != meant) {
+        snprintf(out, n, "of everything it sets, only its %s is wrong, on every row that differs (%s where the contract "
+                 "gives %s): it is %s's value on each of them, where %s's belongs — %s passed in %s's place",
+                 said, got, want, f->params[taken].name, f->params[meant].name, f->params[taken].name,
+                 f->params[meant].name);
+        return true;
+    }
     snprintf(out, n, "of everything it sets, only its %s is wrong, on every row that differs (%s where the contract "
              "gives %s)%s%s", said, got, want, rule ? ": " : "", rule ? rule : "");
     return true;

@@ -256,6 +256,34 @@ static int _sl_pcss_width(const sl_verdict_rows *v, char *text, size_t n) {
     return first;
 }
 
+/* The frustum test turned round: every point inside the light's frustum that the contract shadows (even
+ * partly) comes out exactly 1.0, as the test's early return gives, while a point outside comes out other than
+ * lit (it was read). Both sides are needed: a filter that lights everything fails only the inside rows. */
+static int _sl_frustum_test_inverted(const sl_verdict_rows *v, char *text, size_t n) {
+    int inside = 0, lit_inside = 0, outside_read = 0, first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        _sl_filter_row fr = _sl_filter_row_of(v->f, v->k->inputs[r]);
+        if (fr.kind == _SL_ROW_OUTSIDE) {
+            if (_sl_failed(v, r) && _sl_got(v, r, 0) < 0.999) {
+                outside_read++;
+                if (first < 0) first = r;
+            }
+            continue;
+        }
+        if (_sl_want(v, r, 0) > 0.98) continue;
+        inside++;
+        lit_inside += _sl_got(v, r, 0) >= 0.999;
+    }
+    if (inside < 2 || lit_inside != inside || outside_read < 1) return -1;
+    snprintf(text, n, "the frustum test is the wrong way round: every point inside the light's frustum that is shadowed "
+                      "comes out exactly 1.0 without a lookup, while a point outside it is read from the map — return "
+                      "1.0 when the point is outside (w <= 0, or x, y or z outside [0, 1] after the divide: "
+                      "pcf_project / the test returns false), and look up otherwise");
+    sl_verdict_predicts(v, 1u << SL_SYMPTOM_NO_SHADOWS | 1u << SL_SYMPTOM_MISSING_SHADOW | 1u << SL_SYMPTOM_TOO_LIGHT |
+                               1u << SL_SYMPTOM_GROSS);
+    return first;
+}
+
 int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     const sl_probe_function *f = v->f;
     bool kernel = strcmp(f->name, "pcf_grid") == 0 || strcmp(f->name, "pcf_poisson") == 0;
@@ -280,6 +308,7 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
     if (pcss && (row = sl_pcss_slip_verdict(v, text, n)) >= 0) return row;
     if ((row = sl_poisson_slip_verdict(v, text, n)) >= 0) return row;
     /* the coordinate first: every other row depends on it */
+    if ((row = _sl_frustum_test_inverted(v, text, n)) >= 0) return row;
     if ((row = _sl_first_failing(v, _SL_ROW_OUTSIDE)) >= 0) {
         snprintf(text, n, "a point outside the light's frustum must be lit: return 1.0 when w <= 0, or when x, y or z "
                           "is outside [0, 1] after the divide");
@@ -371,8 +400,9 @@ int _sl_verdict_filter(const sl_verdict_rows *v, char *text, size_t n) {
              * rows show no blend, not that the code has no kernel */
             snprintf(text, n, "one comparison per point: results are 0 or 1 where the kernel should blend, exactly as "
                               "a single lookup gives them — on this 64-texel map every sample stays in the point's own "
-                              "texel (offsets radius texels wide, each 1.0 / textureSize(map, 0)?); compare at every "
-                              "sample and average the results");
+                              "texel: offsets of (almost) 0 — each is radius texels wide, a texel 1.0 / "
+                              "vec2(textureSize(map, 0)) (1 / textureSize(map, 0) divides integers: 0); compare at "
+                              "every sample and average the results");
         else
             snprintf(text, n, "depths averaged, then compared once: results are 0 or 1 where the kernel should blend, "
                               "and not where one comparison puts them — filtering depths instead of comparison results "

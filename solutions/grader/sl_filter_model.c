@@ -47,6 +47,7 @@ typedef enum {
     _SL_PCSS_NO_ROTATION,             /* the disk unrotated */
     _SL_PCSS_XY_NOT_DIVIDED,          /* the map read at shadow_coord.xy */
     _SL_PCSS_Z_NOT_DIVIDED,           /* shadow_coord.z as the receiver's depth */
+    _SL_PCSS_BLOCKER_IS_RECEIVER,     /* the receiver's depth summed for each blocker: d_blocker = d_receiver */
     _SL_PCSS_SLIP_COUNT
 } _sl_pcss_slip;
 
@@ -118,6 +119,11 @@ static const struct {
                                  "p = shadow_coord.xyz / shadow_coord.w (pcf_project), then read around p.xy"},
     [_SL_PCSS_Z_NOT_DIVIDED] = {"z not divided by w (shadow_coord.z as the receiver's depth)",
                                 "p.z = shadow_coord.z / shadow_coord.w: a spot light's coordinate is homogeneous"},
+    [_SL_PCSS_BLOCKER_IS_RECEIVER] = {"the blockers' distance equal to the receiver's (p.z summed for each blocker "
+                                      "found, where the blocker's stored depth d belongs): the width (d_receiver - "
+                                      "d_blocker) is 0, so every sample reads the point itself, a hard shadow",
+                                      "d_blocker = the average of pcf_linear_depth(d, near, far) over the blockers, d "
+                                      "the depth stored at each sample"},
     [_SL_PCSS_NO_ROTATION] = {"the disk unrotated (or turned by a rotation that is not the pixel's)",
                               "each offset turned by pcf_rotation(gl_FragCoord.xy)"},
 };
@@ -188,6 +194,7 @@ double sl_pcss_model(const sl_probe_function *f, const float *in, int row, int s
     if (blockers == 0) return 1.0;
     float blocker = sum / (float)(slip == _SL_PCSS_BLOCKER_OVER_ALL ? 16 : blockers);
     if (slip == _SL_PCSS_LINEARISE_AVERAGE) blocker = _sl_linear(blocker, near, far, slip, false);
+    if (slip == _SL_PCSS_BLOCKER_IS_RECEIVER) blocker = receiver;
     float width;
     switch (slip) {
     case _SL_PCSS_WIDTH_OVER_RECEIVER: width = (receiver - blocker) * light / receiver * near / receiver; break;

@@ -276,6 +276,7 @@ enum {
     _SL_EDIT_CONSTANT,  /* a part as 0 or 1 */
     _SL_EDIT_TRUNCATE,  /* a / b divided as integers */
     _SL_EDIT_INPUT,     /* one input read in place of another */
+    _SL_EDIT_COMPONENT, /* v[j] read as v[k]: another component of the same vector */
     _SL_EDITS
 };
 enum { _SL_VARIANTS = 8 };
@@ -287,7 +288,7 @@ int sl_formula_edit_rank(int edit) {
         [_SL_EDIT_TRUNCATE] = 0, [_SL_EDIT_REGROUP] = 1,  [_SL_EDIT_SWAP] = 2,     [_SL_EDIT_OPERATOR] = 3,
         [_SL_EDIT_FUNCTION] = 4, [_SL_EDIT_UNWRAP] = 5,   [_SL_EDIT_SQUARE] = 6,   [_SL_EDIT_LEFT] = 7,
         [_SL_EDIT_RIGHT] = 7,    [_SL_EDIT_INPUT] = 8,    [_SL_EDIT_ONE_MINUS] = 9, [_SL_EDIT_NEGATE] = 10,
-        [_SL_EDIT_NUMBER] = 11,  [_SL_EDIT_CONSTANT] = 12};
+        [_SL_EDIT_NUMBER] = 11,  [_SL_EDIT_CONSTANT] = 12, [_SL_EDIT_COMPONENT] = 8};
     return edit < 1 ? _SL_EDITS : rank[(edit - 1) / _SL_VARIANTS % _SL_EDITS];
 }
 
@@ -357,6 +358,16 @@ bool sl_formula_edited(const sl_formula *f, int edit, sl_formula *g) {
     int variant = (edit - 1) % _SL_VARIANTS;
     *g = *f;
     sl_formula_node *s = &g->nodes[site];
+    if (kind == _SL_EDIT_COMPONENT) {
+        /* a constant index, name[j], read as name[variant] (a component the input has: another reads NaN) */
+        if (s->kind != _SL_INPUT || s->a < 0 || g->nodes[s->a].kind != _SL_NUMBER || variant > 3) return false;
+        if (g->nodes[s->a].number == variant) return false;
+        int index = _sl_new(g, _SL_NUMBER, 0, -1, -1, -1);
+        if (index < 0) return false;
+        g->nodes[index].number = variant;
+        g->nodes[site].a = index;
+        return true;
+    }
     if (_sl_whole_vector(f, site) || _sl_index(f, site)) return false;
     bool binary = s->kind == _SL_BINARY, call = s->kind == _SL_CALL;
     switch (kind) {

@@ -252,6 +252,11 @@ static const char *const _sl_cube_depth_slips[][2] = {
     {"the distance times u_light_far", "the distance divided by u_light_far"},
     {"distance / u_light_far moved again from [-1, 1] to [0, 1] (* 0.5 + 0.5)", "distance / u_light_far: already in "
                                                                                 "[0, 1], stored as it is"},
+    {"the difference of the two positions' distances from the origin, length(world_position) - "
+     "length(u_light_position): not the distance between them",
+     "length(world_position - u_light_position): the length of the difference"},
+    {"the length of the sum, length(world_position + u_light_position)",
+     "length(world_position - u_light_position): from the light to the fragment"},
     {NULL, NULL},
 };
 
@@ -266,6 +271,14 @@ static void _sl_expect_cube_depth(const sl_probe_function *f, const float *row, 
                    : slip == 6 ? sqrt(length) * far : sqrt(length) / far;
     if (slip == 4) depth = _sl_get(f, row, "gl_FragCoord.z", 0);
     if (slip == 7) depth = depth * 0.5 + 0.5;
+    if (slip == 8 || slip == 9) {
+        double world = 0, light = 0, sum = 0;
+        for (int j = 0; j < 3; j++) {
+            double w = _sl_get(f, row, "world_position", j), l = _sl_get(f, row, "u_light_position", j);
+            world += w * w, light += l * l, sum += (w + l) * (w + l);
+        }
+        depth = (slip == 8 ? sqrt(world) - sqrt(light) : sqrt(sum)) / far;
+    }
     out[0] = fmin(fmax(depth, 0), 1); /* the depth buffer keeps [0, 1] */
 }
 
@@ -813,6 +826,27 @@ static void _sl_expect_bleeding(const sl_probe_function *f, const float *row, in
     out[0] = v;
 }
 
+/* lab 5 (bonus): EVSM's two warps, exp(c+ d) and -exp(-c- d), with c+ and c- apart (one read for the other
+ * shows) and each product c d between 0.5 and 4, so both warps' sizes are alike (a slip in either shows at
+ * the same tolerance) */
+static void _sl_draw_evsm(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
+    (void)index;
+    double depth = _sl_uniform(r, 0.1, 0.95);
+    double positive = _sl_uniform(r, 1, 4) / depth, negative = _sl_uniform(r, 0.5, 3) / depth;
+    if (fabs(positive - negative) < 1) negative = positive * 0.5;
+    double exponents[2] = {positive, negative};
+    _sl_set1(f, row, "depth", depth);
+    _sl_set(f, row, "exponents", exponents);
+    snprintf(about, n, "generic: depth %.3g, c+ %.3g, c- %.3g", depth, positive, negative);
+}
+
+static void _sl_expect_evsm(const sl_probe_function *f, const float *row, int slip, double *out) {
+    (void)slip;
+    double d = _sl_get(f, row, "depth", 0);
+    out[0] = exp(_sl_get(f, row, "exponents", 0) * d);
+    out[1] = -exp(-_sl_get(f, row, "exponents", 1) * d);
+}
+
 /* lab 5 (bonus): exponential shadow maps, exp(c * d) stored, the point in front of the occluder (where only
  * the clamp keeps the answer at 1) or behind it */
 static void _sl_draw_esm(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
@@ -913,6 +947,9 @@ enum {
     _SL_SLICE_CENTRE_OVER_FOUR,
     _SL_SLICE_NEAR_BY_FAR_W,
     _SL_SLICE_FAR_BY_NEAR_W,
+    _SL_SLICE_RADIUS_SEVEN_CORNERS,
+    _SL_SLICE_CENTRE_NEAR_CORNERS,
+    _SL_SLICE_CENTRE_SEVEN_OVER_EIGHT,
 };
 
 static const char *const _sl_slice_slips[][2] = {
@@ -938,13 +975,21 @@ static const char *const _sl_slice_slips[][2] = {
                                "each unprojected corner's xyz divided by its w"},
     [_SL_SLICE_WHOLE_FRUSTUM] = {"the sphere around the whole frustum, near to far: split_near and split_far unused",
                                  "the corners at split_near and split_far"},
-    [_SL_SLICE_RADIUS_FIRST_CORNER] = {"the radius as the distance to the first corner only",
+    [_SL_SLICE_RADIUS_FIRST_CORNER] = {"the radius as the distance to the corners at split_near alone (the first "
+                                       "corner, or a loop over 4 where 8 belong: the 4 near corners lie equally far "
+                                       "from the centre), so the slice's wider far end is left out",
                                        "the largest distance from the centre to any of the 8 corners"},
     [_SL_SLICE_CENTRE_OVER_FOUR] = {"the centre as the corners' sum divided by 4", "the mean of the 8 corners, sum / 8"},
     [_SL_SLICE_NEAR_BY_FAR_W] = {"the near corner divided by the far corner's w (wn.xyz / wf.w)",
                                  "each unprojected corner divided by its own w: wn.xyz / wn.w, wf.xyz / wf.w"},
     [_SL_SLICE_FAR_BY_NEAR_W] = {"the far corner divided by the near corner's w (wf.xyz / wn.w)",
                                  "each unprojected corner divided by its own w: wn.xyz / wn.w, wf.xyz / wf.w"},
+    [_SL_SLICE_RADIUS_SEVEN_CORNERS] = {"the radius over the first 7 corners (a loop one short)",
+                                        "the largest distance from the centre to any of the 8 corners"},
+    [_SL_SLICE_CENTRE_NEAR_CORNERS] = {"the centre as the mean of the 4 corners at split_near only",
+                                       "the mean of all 8 corners"},
+    [_SL_SLICE_CENTRE_SEVEN_OVER_EIGHT] = {"the centre as the first 7 corners' sum over 8 (a loop one short)",
+                                           "the mean of all 8 corners, their sum over 8"},
     {NULL, NULL},
 };
 
@@ -1012,8 +1057,18 @@ static void _sl_expect_slice(const sl_probe_function *f, const float *row, int s
         for (int j = 0; j < 3; j++) centre[j] += corners[i][j];
     }
     for (int j = 0; j < 3; j++) centre[j] /= slip == _SL_SLICE_CENTRE_OVER_FOUR ? 4 : 8;
+    if (slip == _SL_SLICE_CENTRE_NEAR_CORNERS || slip == _SL_SLICE_CENTRE_SEVEN_OVER_EIGHT) {
+        int count = slip == _SL_SLICE_CENTRE_NEAR_CORNERS ? 4 : 7;
+        for (int j = 0; j < 3; j++) {
+            centre[j] = 0;
+            for (int i = 0; i < count; i++) centre[j] += corners[i][j];
+            centre[j] /= slip == _SL_SLICE_CENTRE_NEAR_CORNERS ? 4 : 8;
+        }
+    }
     double radius = 0;
-    for (int i = 0; i < (slip == _SL_SLICE_RADIUS_FIRST_CORNER ? 1 : 8); i++) {
+    int from = 0;
+    int to = slip == _SL_SLICE_RADIUS_FIRST_CORNER ? 1 : slip == _SL_SLICE_RADIUS_SEVEN_CORNERS ? 7 : 8;
+    for (int i = from; i < to; i++) {
         double d = 0;
         for (int j = 0; j < 3; j++) d += (corners[i][j] - centre[j]) * (corners[i][j] - centre[j]);
         radius = fmax(radius, sqrt(d));
@@ -1329,6 +1384,7 @@ typedef enum {
     _SL_SOFT_NOT_OVER_FAR,    /* current = distance - bias */
     _SL_SOFT_NO_BIAS,         /* current = distance / far */
     _SL_SOFT_BIAS_ADDED,      /* current = distance / far + bias */
+    _SL_SOFT_DISK_INVERTED,   /* disk = radius * far_plane / distance */
     _SL_SOFT_SLIP_COUNT
 } _sl_soft_slip;
 
@@ -1353,6 +1409,7 @@ static double _sl_soft(const double l[3], double far, double bias, double radius
                 : slip == _SL_SOFT_DISK_NO_FAR   ? radius * distance
                 : slip == _SL_SOFT_DISK_OVER_FAR ? radius / far
                 : slip == _SL_SOFT_NO_DISK       ? 1.0
+                : slip == _SL_SOFT_DISK_INVERTED ? radius * far / distance
                                                  : radius * distance / far;
     int count = slip == _SL_SOFT_FIRST_16 ? 16 : 20;
     double lit = 0;
@@ -1439,6 +1496,8 @@ static const char *const _sl_soft_slips[][2] = {
     {"the distance not divided by far_plane", "current = length(light_to_fragment) / far_plane - bias"},
     {"comparisons without the bias", "current = length(light_to_fragment) / far_plane - bias"},
     {"the bias added to the distance", "current = length(light_to_fragment) / far_plane - bias"},
+    {"the disk radius * far_plane / distance (the ratio inverted): it shrinks with the distance",
+     "disk = radius * length(light_to_fragment) / far_plane: it grows with the distance, the same angle everywhere"},
     {NULL, NULL},
 };
 
@@ -1446,8 +1505,9 @@ static const _sl_generic _sl_generics[] = {
     {"lab1_create_shadow_map", _sl_draw_create_shadow_map, _sl_expect_create_shadow_map, NULL, NULL, 0},
     {"depth.vert", _sl_draw_depth_vert, _sl_expect_depth_vert, _sl_depth_vert_slips, NULL, 0},
     {"shadow_coord", _sl_draw_shadow_coord, _sl_expect_shadow_coord, _sl_shadow_coord_slips, NULL, 0},
-    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL, 0},
-    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL, 0},
+    /* x and y, or z, not divided: sharper than the written rows' "no divide by w" */
+    {"shadow_compare_manual", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL, 1ull << 2 | 1ull << 3},
+    {"shadow_compare_hardware", _sl_draw_compare, _sl_expect_compare, _sl_compare_slips, NULL, 1ull << 2 | 1ull << 3},
     {"slope_scaled_bias", _sl_draw_slope_bias, _sl_expect_slope_bias, _sl_slope_bias_slips,
      "tan_theta = sqrt(1 - n_dot_l * n_dot_l) / n_dot_l; min(constant_bias + slope * tan_theta, max_bias)", 0},
     {"normal_offset_position", _sl_draw_normal_offset, _sl_expect_normal_offset, _sl_normal_offset_slips,
@@ -1462,6 +1522,8 @@ static const _sl_generic _sl_generics[] = {
     {"reduce_light_bleeding", _sl_draw_bleeding, _sl_expect_bleeding, _sl_bleeding_slips,
      "clamp((p_max - amount) / (1 - amount), 0, 1)", 0},
     {"esm_visibility", _sl_draw_esm, _sl_expect_esm, _sl_esm_slips, "clamp(moment * exp(-c * t), 0, 1)", 0},
+    {"evsm_warp", _sl_draw_evsm, _sl_expect_evsm, NULL,
+     "if(i == 0, exp(exponents[0] * depth), -exp(-exponents[1] * depth))", 0},
     {"lab6_split_distances", _sl_draw_splits, _sl_expect_splits, _sl_splits_slips,
      "t = i / count; logarithmic = near * pow(far / near, t); linear = near + (far - near) * t; "
      "if(i > count, 0, if(i == 0, near, if(i == count, far, lambda * logarithmic + (1 - lambda) * linear)))", 0},
@@ -1470,7 +1532,9 @@ static const _sl_generic _sl_generics[] = {
     {"lab6_slice_sphere", _sl_draw_slice, _sl_expect_slice, _sl_slice_slips, NULL,
      1ull << _SL_SLICE_FROM_FAR | 1ull << _SL_SLICE_NEAR_PLUS_FAR | 1ull << _SL_SLICE_DISTANCE_ALONG_EDGE |
          1ull << _SL_SLICE_NDC_LERP | 1ull << _SL_SLICE_NEAR_AT_NDC_ZERO | 1ull << _SL_SLICE_RADIUS_FIRST_CORNER |
-         1ull << _SL_SLICE_NEAR_BY_FAR_W | 1ull << _SL_SLICE_FAR_BY_NEAR_W},
+         1ull << _SL_SLICE_NEAR_BY_FAR_W | 1ull << _SL_SLICE_FAR_BY_NEAR_W |
+         1ull << _SL_SLICE_RADIUS_SEVEN_CORNERS |
+         1ull << _SL_SLICE_CENTRE_NEAR_CORNERS | 1ull << _SL_SLICE_CENTRE_SEVEN_OVER_EIGHT},
     {"cascade_index", _sl_draw_cascade_index, _sl_expect_cascade_index, _sl_cascade_index_slips, NULL, 0},
     {"cascade_blend", _sl_draw_blend, _sl_expect_blend, _sl_blend_slips,
      "start = split_far - band * (split_far - split_near); "
@@ -1481,7 +1545,7 @@ static const _sl_generic _sl_generics[] = {
      "current = length(light_to_fragment) / far_plane - bias; closest = if(major_positive(light_to_fragment), 0.1, 1); "
      "if(current > closest, 0, 1)", 0},
     {"pcf_hardware", _sl_draw_pcf_hardware, _sl_expect_pcf_hardware, _sl_hw_slips, NULL, 0xfeull},
-    {"point_shadow_soft", _sl_draw_point_shadow_soft, _sl_expect_point_shadow_soft, _sl_soft_slips, NULL, 0x7feull},
+    {"point_shadow_soft", _sl_draw_point_shadow_soft, _sl_expect_point_shadow_soft, _sl_soft_slips, NULL, 0xffeull},
 };
 
 static const _sl_generic *_sl_find(const char *function) {
@@ -1818,13 +1882,19 @@ sl_probe_slip sl_probe_generic_slip(const sl_check *k, const double *student, co
      * gives the reference's answer (a written edge case the formula leaves out says nothing of a slip) */
     static double contract[SL_PROBE_MAX_ROWS * SL_PROBE_MAX_OUTPUTS];
     double scale[SL_PROBE_MAX_OUTPUTS] = {0};
+    /* a check that compares relative to the answer (exponentials: 1 and 2e17 on one check) sizes each output
+     * by its smallest answer, the rest of the tolerance being relative as well */
+    bool relative = k->relative > 0;
+    for (int o = 0; relative && o < f->output_count; o++) scale[o] = INFINITY;
     for (int row = 0; row < k->rows; row++) {
         g->expect(f, k->inputs[row], 0, contract + row * f->output_count);
         for (int o = 0; o < f->output_count; o++) {
             double size = fabs(contract[row * f->output_count + o]);
-            if (isfinite(size) && size > scale[o]) scale[o] = size;
+            if (isfinite(size) && (relative ? size > 0 && size < scale[o] : size > scale[o])) scale[o] = size;
         }
     }
+    for (int o = 0; relative && o < f->output_count; o++)
+        if (!isfinite(scale[o])) scale[o] = 0;
     for (int o = 0; o < f->output_count; o++)
         if (scale[o] < 1e-6) scale[o] = 1; /* an output the contract keeps at 0: its size is the unit's */
     bool modelled[SL_PROBE_MAX_ROWS];
