@@ -84,7 +84,17 @@ static bool _sl_describe_bias_matrix(const double *sm, const double *pv, char *t
     for (int row = 0; row < 4; row++)
         for (int col = 0; col < 3; col++)
             if (col != row && fabs(w[col * 4 + row]) > tolerance) return false; /* a coordinate from another */
-    if (fabs(w[3 * 4 + 3]) < tolerance) return false;
+    if (fabs(w[3 * 4 + 3]) < tolerance) {
+        /* W whole but for its corner: w' = 0, every coordinate at infinity */
+        bool rest = true;
+        for (int row = 0; row < 3 && rest; row++)
+            rest = fabs(w[row * 4 + row] - 0.5) <= tolerance && fabs(w[3 * 4 + row] - 0.5) <= tolerance;
+        if (!rest) return false;
+        snprintf(text, n, "the shadow matrix's bias matrix ends its last column in 0, not 1: w' = 0, so every shadow "
+                          "coordinate has w = 0 and every point counts as outside the light's frustum (lit) — W's last "
+                          "column is (0.5, 0.5, 0.5, 1): the translation, and the w that carries it");
+        return true;
+    }
     static const char axis[] = "xyzw";
     char rows[400] = "";
     size_t used = 0;
@@ -388,9 +398,39 @@ static int _sl_sun_aims_elsewhere(const sl_verdict_rows *v, char *text, size_t n
     return first;
 }
 
+/* A sun's eye that is the offset from the box's centre alone (-direction * distance, the centre never added):
+ * on every failing row the eye lies at the contract's eye minus the centre, a centre that is not the origin. */
+static int _sl_sun_eye_without_centre(const sl_verdict_rows *v, char *text, size_t n) {
+    int first = -1;
+    for (int r = 0; r < v->k->rows; r++) {
+        if (!_sl_failed(v, r)) continue;
+        const float *in = v->k->inputs[r];
+        const float *type = _sl_param(v->f, in, "light_type"), *lo = _sl_param(v->f, in, "bounds_min");
+        const float *hi = _sl_param(v->f, in, "bounds_max");
+        if (!type || !lo || !hi || (int)*type != 0) return -1;
+        double s[16], e[16], size = 0;
+        for (int o = 0; o < 16; o++) s[o] = _sl_got(v, r, o), e[o] = _sl_want(v, r, o);
+        sl_camera_reading cs = sl_camera_read(s), ce = sl_camera_read(e);
+        if (cs.kind != SL_CAMERA_VIEW || ce.kind != SL_CAMERA_VIEW) return -1;
+        for (int i = 0; i < 3; i++) {
+            double centre = (lo[i] + hi[i]) / 2;
+            size += centre * centre;
+            if (fabs(cs.eye[i] - (ce.eye[i] - centre)) > 1e-3 * fmax(1, fabs(ce.eye[i]))) return -1;
+        }
+        if (size < 1e-6) return -1;
+        if (first < 0) first = r;
+    }
+    if (first < 0) return -1;
+    snprintf(text, n, "its eye is the contract's eye minus the box's centre on every row that differs: the offset "
+                      "-direction * distance without the centre added — the sun's eye is centre - direction * "
+                      "distance, centre = (bounds_min + bounds_max) / 2 (right only for a box centred on the origin)");
+    return first;
+}
+
 static int _sl_verdict_light_view(const sl_verdict_rows *v, char *text, size_t n) {
     int sun = _sl_sun_aims_elsewhere(v, text, n);
     if (sun >= 0) return sun;
+    if ((sun = _sl_sun_eye_without_centre(v, text, n)) >= 0) return sun;
     static const char *const named[] = {
         "towards direction read as a point: the target is position + direction, a point along the light's "
         "direction",

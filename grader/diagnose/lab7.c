@@ -613,6 +613,21 @@ static bool _sl_face_view_broken(const float *in, const double *m, const double 
                               "takes a point to look at, so the target is light_position + axis", _sl_face(face), axis);
             return true;
         }
+        /* looking along light_position + axis: a point given where a direction belongs (glm_look's second
+         * argument is a direction, glm_lookat's a point) */
+        double along[3];
+        length = 0;
+        for (int i = 0; i < 3; i++) along[i] = _sl_axes[face][i] + light[i], length += along[i] * along[i];
+        length = sqrt(length);
+        if (length > 1e-3 && fabs(light[0]) + fabs(light[1]) + fabs(light[2]) > 1e-3 &&
+            _sl_is(looks, along[0] / length, along[1] / length, along[2] / length, 1e-3)) {
+            snprintf(text, n, "face %s: the camera looks along light_position + %s, not along %s itself: a point given "
+                              "where a direction belongs — glm_look(eye, dir, up) takes the direction %s, "
+                              "glm_lookat(eye, center, up) the point light_position + %s (right only for a light at "
+                              "the origin)",
+                     _sl_face(face), axis, axis, axis, axis);
+            return true;
+        }
         /* looking down another face's axis: the faces taken in another order than GL's */
         for (int other = 0; other < 6; other++)
             if (other != face && _sl_is(looks, _sl_axes[other][0], _sl_axes[other][1], _sl_axes[other][2], 1e-3)) {
@@ -891,12 +906,53 @@ static int _sl_face_as_level(const sl_check *k, const double *student, const dou
     return first;
 }
 
+/* The face's target counted from another enum than GL_TEXTURE_CUBE_MAP_POSITIVE_X: every row whose face would
+ * land on a face attaches the face `shift` places off, the same shift on each (GL_TEXTURE_CUBE_MAP + face is
+ * two below; faces whose target is no face's leave the attachment as it was, and GL reports an error). */
+static int _sl_face_target_shifted(const sl_check *k, const double *student, const double *expected, uint32_t failing,
+                                   char *text, size_t n) {
+    int outputs = sl_probe_at(k->function)->output_count, first = -1, shift = 0, shifted = 0;
+    /* the shift most failing rows show */
+    int counts[13] = {0};
+    for (int row = 0; row < k->rows; row++) {
+        int d = (int)student[row * outputs + 1] - (int)expected[row * outputs + 1];
+        if ((failing >> row) & 1u && d >= -6 && d <= 6 && d != 0) counts[d + 6]++;
+    }
+    for (int d = 0; d < 13; d++)
+        if (counts[d] > counts[shift + 6] || (shift == 0 && counts[d] > 0)) shift = d - 6;
+    if (shift == 0) return -1;
+    for (int row = 0; row < k->rows; row++) {
+        if (!((failing >> row) & 1u)) continue;
+        int face = (int)k->inputs[row][0];
+        const double *got = student + row * outputs, *want = expected + row * outputs;
+        if (face < 0 || face > 5 || want[1] != _SL_CUBE_POSITIVE_X + face) return -1;
+        if (first < 0) first = row;
+        if ((int)got[1] - (int)want[1] == shift) {
+            shifted++;
+            continue;
+        }
+        /* another answer only where the shifted target is no face's (left as it was) */
+        if (face + shift >= 0 && face + shift <= 5) return -1;
+    }
+    if (first < 0 || shifted < 2) return -1;
+    snprintf(text, n, "each face attaches the face %d place%s %s it (GL's number %d %s GL_TEXTURE_CUBE_MAP_POSITIVE_X "
+                      "+ face), and a face whose target is no face's keeps what was attached: the target counted from "
+                      "another enum%s — the faces' targets are GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, +X first",
+             abs(shift), abs(shift) == 1 ? "" : "s", shift > 0 ? "after" : "before", abs(shift),
+             shift > 0 ? "above" : "below",
+             shift == -2 ? " (GL_TEXTURE_CUBE_MAP + face: GL_TEXTURE_CUBE_MAP, 0x8513, is the cube map's own target, "
+                           "two below +X's 0x8515)"
+                         : "");
+    return first;
+}
+
 static int _sl_begin_cube_pass_verdict(const sl_check *k, const double *student, const double *expected,
                                        uint32_t failing, char *text, size_t n) {
     const sl_probe_function *f = sl_probe_at(k->function);
     int outputs = f->output_count, first = -1;
     int level = _sl_face_as_level(k, student, expected, failing, text, n);
     if (level >= 0) return level;
+    if ((level = _sl_face_target_shifted(k, student, expected, failing, text, n)) >= 0) return level;
     for (int row = 0; row < k->rows; row++) {
         if (!((failing >> row) & 1u)) continue;
         int face = (int)k->inputs[row][0];

@@ -48,6 +48,7 @@ typedef enum {
     _SL_PCSS_XY_NOT_DIVIDED,          /* the map read at shadow_coord.xy */
     _SL_PCSS_Z_NOT_DIVIDED,           /* shadow_coord.z as the receiver's depth */
     _SL_PCSS_BLOCKER_IS_RECEIVER,     /* the receiver's depth summed for each blocker: d_blocker = d_receiver */
+    _SL_PCSS_PROJECTED_BY_BLOCKER,    /* * near / d_blocker: projected from the blocker, not the receiver */
     _SL_PCSS_SLIP_COUNT
 } _sl_pcss_slip;
 
@@ -124,6 +125,10 @@ static const struct {
                                       "d_blocker) is 0, so every sample reads the point itself, a hard shadow",
                                       "d_blocker = the average of pcf_linear_depth(d, near, far) over the blockers, d "
                                       "the depth stored at each sample"},
+    [_SL_PCSS_PROJECTED_BY_BLOCKER] = {"the width projected onto the map with * near / d_blocker: from the "
+                                       "blocker's distance, not the receiver's",
+                                       "* near / d_receiver: the penumbra lies on the receiver, so the receiver's "
+                                       "distance projects it"},
     [_SL_PCSS_NO_ROTATION] = {"the disk unrotated (or turned by a rotation that is not the pixel's)",
                               "each offset turned by pcf_rotation(gl_FragCoord.xy)"},
 };
@@ -205,6 +210,7 @@ double sl_pcss_model(const sl_probe_function *f, const float *in, int row, int s
     case _SL_PCSS_WIDTH_PROJECTED_INVERSE: width = (receiver - blocker) * light / blocker * receiver / near; break;
     case _SL_PCSS_WIDTH_OVER_BLOCKER_NEAR: width = (receiver - blocker) * light / (blocker * near) / receiver; break;
     case _SL_PCSS_WIDTH_NEGATED: width = (blocker - receiver) * light / blocker * near / receiver; break;
+    case _SL_PCSS_PROJECTED_BY_BLOCKER: width = (receiver - blocker) * light / blocker * near / blocker; break;
     case _SL_PCSS_FILTER_SEARCH_WIDTH: width = search; break;
     case _SL_PCSS_FILTER_LIGHT_SIZE: width = light; break;
     default: width = (receiver - blocker) * light / blocker * near / receiver; break;
@@ -420,6 +426,32 @@ static double _sl_grid_with_spacing(const sl_probe_function *f, const float *in,
  * step, so the message names both. */
 int sl_grid_spacing_verdict(const sl_verdict_rows *v, char *text, size_t n) {
     if (strcmp(v->f->name, "pcf_grid") != 0) return -1;
+    /* samples `radius` texels apart, on every row (right at radius 1 alone): the offsets scaled by the radius too,
+     * as if it were a spread like the Poisson disk's radius_texels */
+    int by_radius = -1, wider = 0;
+    bool every = true;
+    for (int r = 0; r < v->k->rows && every; r++) {
+        const float *radius = _sl_param(v->f, v->k->inputs[r], "radius");
+        if (!radius) return -1;
+        /* a row the model does not give as the contract does (outside the frustum) says nothing */
+        double tolerance = _sl_row_tolerance(v, r) + 1e-4, contract = _sl_grid_with_spacing(v->f, v->k->inputs[r], 1);
+        if (isnan(contract) || !_sl_near(_sl_want(v, r, 0), contract, tolerance)) continue;
+        double model = _sl_grid_with_spacing(v->f, v->k->inputs[r], *radius);
+        every = !isnan(model) && _sl_near(_sl_got(v, r, 0), model, tolerance);
+        if (_sl_failed(v, r)) {
+            wider += *radius >= 2;
+            if (by_radius < 0) by_radius = r;
+        }
+    }
+    if (every && by_radius >= 0 && wider > 0) {
+        snprintf(text, n, "the grid's samples are radius texels apart, not one: on every row it answers as a grid whose "
+                          "offsets are multiplied by the radius as well as by the texel (right at radius 1 alone) — "
+                          "the loops run from -radius to radius, and each offset is (x, y) * texel, the radius only "
+                          "bounding the loops");
+        sl_verdict_predicts(v, 1u << SL_SYMPTOM_WIDE_PENUMBRA | 1u << SL_SYMPTOM_TOO_DARK | 1u << SL_SYMPTOM_TOO_LIGHT |
+                                   1u << SL_SYMPTOM_GROSS | SL_PREDICTS_EVERY_SETTING);
+        return by_radius;
+    }
     double lo = INFINITY, hi = -INFINITY;
     int first = -1;
     for (int step = 25; step <= 400; step++) {

@@ -294,16 +294,25 @@ int sl_formula_edit_rank(int edit) {
 
 static bool _sl_arithmetic(int op) { return op <= _SL_DIV; }
 
-/* The scalar inputs the formula reads, in order of first use (the candidates for an input read in place of
- * another). */
-static int _sl_inputs(const sl_formula *f, int count, char out[][32]) {
+/* The scalar inputs the formula reads, in order of first use, and the components it reads of a vector by
+ * a constant index (moments[1]): the candidates for an input read in place of another. index[j] is the
+ * component, or -1 for a scalar. */
+static int _sl_inputs(const sl_formula *f, int count, char out[][32], int *index) {
     int found = 0;
     for (int i = 0; i < f->node_count && found < count; i++) {
         const sl_formula_node *x = &f->nodes[i];
-        if (x->kind != _SL_INPUT || x->a >= 0 || strcmp(x->name, "i") == 0) continue;
+        if (x->kind != _SL_INPUT || strcmp(x->name, "i") == 0) continue;
+        int component = -1;
+        if (x->a >= 0) {
+            if (f->nodes[x->a].kind != _SL_NUMBER) continue;
+            component = (int)f->nodes[x->a].number;
+        }
         bool seen = false;
-        for (int j = 0; j < found; j++) seen |= strcmp(out[j], x->name) == 0;
-        if (!seen) snprintf(out[found++], 32, "%s", x->name);
+        for (int j = 0; j < found; j++) seen |= strcmp(out[j], x->name) == 0 && index[j] == component;
+        if (!seen) {
+            index[found] = component;
+            snprintf(out[found++], 32, "%s", x->name);
+        }
     }
     return found;
 }
@@ -477,14 +486,22 @@ bool sl_formula_edited(const sl_formula *f, int edit, sl_formula *g) {
         /* an input, or a definition's use (split_near where the formula reads start) */
         if (!(s->kind == _SL_INPUT || s->kind == _SL_DEFINED) || s->a >= 0 || strcmp(s->name, "i") == 0) return false;
         char names[_SL_VARIANTS + 1][32];
-        int count = _sl_inputs(f, _SL_VARIANTS + 1, names), choice = -1;
+        int index[_SL_VARIANTS + 1];
+        int count = _sl_inputs(f, _SL_VARIANTS + 1, names, index), choice = -1;
         for (int j = 0, seen = 0; j < count; j++) {
-            if (strcmp(names[j], s->name) == 0) continue;
+            if (strcmp(names[j], s->name) == 0 && index[j] < 0) continue;
             if (seen++ == variant) choice = j;
         }
         if (choice < 0) return false;
+        int component = -1;
+        if (index[choice] >= 0) {
+            component = _sl_new(g, _SL_NUMBER, 0, -1, -1, -1);
+            if (component < 0) return false;
+            g->nodes[component].number = index[choice];
+        }
+        s = &g->nodes[site];
         snprintf(s->name, sizeof s->name, "%s", names[choice]);
-        s->kind = _SL_INPUT, s->op = 0;
+        s->kind = _SL_INPUT, s->op = 0, s->a = component;
         return true;
     }
     default: return false;

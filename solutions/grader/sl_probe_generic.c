@@ -402,6 +402,7 @@ typedef enum _sl_grid_slip {
     _SL_GRID_UV_REMAPPED,   /* the map read at p.xy * 0.5 + 0.5: texture space taken for NDC */
     _SL_GRID_FRUSTUM_UNDIVIDED, /* the frustum test on shadow_coord.xyz, before the divide by w */
     _SL_GRID_ALL_REMAPPED,      /* p * 0.5 + 0.5, z as well: a tutorial's remap where the matrix holds no W */
+    _SL_GRID_TEXEL_INDEX,       /* texelFetch(map, ivec2(p.xy), 0): uv taken for a texel's index, texel (0, 0) */
 } _sl_grid_slip;
 
 /* The bias's slips, in _sl_grid_slip's order from _SL_GRID_BIAS_OVER_W. */
@@ -429,6 +430,9 @@ static const char *const _sl_compare_slips[][2] = {
      "the test on p = shadow_coord.xyz / shadow_coord.w: w <= 0, or p outside [0, 1]"},
     {"p moved to [0, 1] again, p * 0.5 + 0.5 (z as well), as a tutorial whose matrix holds no bias matrix does",
      "p as the divide gives it: lab 2's shadow matrix already holds W, which takes x, y and z to [0, 1]"},
+    {"the map read at texel (int(p.x), int(p.y)), texel (0, 0) for every point inside: texelFetch given the uv "
+     "coordinate as a texel's index",
+     "texture(shadow_map, p.xy) with p.xy in [0, 1], or texelFetch at ivec2(p.xy * textureSize(shadow_map, 0))"},
     {NULL, NULL},
 };
 
@@ -437,7 +441,7 @@ static const _sl_grid_slip _sl_compare_as_grid[] = {
     _SL_GRID_CONTRACT,    _SL_GRID_REVERSED,     _SL_GRID_XY_NOT_DIVIDED, _SL_GRID_Z_NOT_DIVIDED,
     _SL_GRID_NO_FRUSTUM_TEST, _SL_GRID_BIAS_OVER_W, _SL_GRID_BIAS_TIMES_W, _SL_GRID_BIAS_ON_XY,
     _SL_GRID_NO_BIAS,     _SL_GRID_BIAS_ADDED,   _SL_GRID_V_FLIPPED, _SL_GRID_UV_REMAPPED,
-    _SL_GRID_FRUSTUM_UNDIVIDED, _SL_GRID_ALL_REMAPPED};
+    _SL_GRID_FRUSTUM_UNDIVIDED, _SL_GRID_ALL_REMAPPED, _SL_GRID_TEXEL_INDEX};
 
 static const char *const _sl_grid_slips[][2] = {
     {"", ""},
@@ -465,6 +469,9 @@ static const char *const _sl_grid_slips[][2] = {
      "the test on p = shadow_coord.xyz / shadow_coord.w: w <= 0, or p outside [0, 1]"},
     {"p moved to [0, 1] again, p * 0.5 + 0.5 (z as well), as a tutorial whose matrix holds no bias matrix does",
      "p as the divide gives it: lab 2's shadow matrix already holds W, which takes x, y and z to [0, 1]"},
+    {"the map read at texel (int(p.x), int(p.y)), texel (0, 0) for every point inside: texelFetch given the uv "
+     "coordinate as a texel's index",
+     "texture(shadow_map, p.xy) with p.xy in [0, 1], or texelFetch at ivec2(p.xy * textureSize(shadow_map, 0))"},
     {NULL, NULL},
 };
 
@@ -482,6 +489,7 @@ static double _sl_grid(const sl_probe_function *f, const float *row, int radius,
     if (slip == _SL_GRID_V_FLIPPED) v = 1 - v;
     if (slip == _SL_GRID_UV_REMAPPED || slip == _SL_GRID_ALL_REMAPPED) u = u * 0.5 + 0.5, v = v * 0.5 + 0.5;
     if (slip == _SL_GRID_ALL_REMAPPED) z = z * 0.5 + 0.5;
+    if (slip == _SL_GRID_TEXEL_INDEX) u = (floor(u) + 0.5) / SL_PROBE_MAP_SIZE, v = (floor(v) + 0.5) / SL_PROBE_MAP_SIZE;
     if (slip == _SL_GRID_NO_BIAS) bias = 0;
     if (slip == _SL_GRID_BIAS_ADDED) bias = -bias;
     double px = _sl_get(f, row, "shadow_coord", 0) / w, py = _sl_get(f, row, "shadow_coord", 1) / w;
@@ -558,6 +566,8 @@ static const char *const _sl_midpoint_slips[][2] = {
      "0.5 * (first + second): the depth half way between them"},
     {"half the difference added to the second depth, second + 0.5 * (second - first): past the second surface",
      "first + 0.5 * (second - first) = 0.5 * (first + second)"},
+    {"a midpoint of 0, as 1 / 2 * (first + second) gives (1 / 2 divides integers: 0): every point lies behind it",
+     "0.5 * (first + second), the half a float"},
     {NULL, NULL},
 };
 
@@ -575,6 +585,7 @@ static void _sl_expect_midpoint(const sl_probe_function *f, const float *row, in
     double middle = slip == 1 ? first + second : slip == 2 ? first : slip == 3 ? second
                   : slip == 6 ? 0.5 * first + second : slip == 7 ? first + 0.5 * second
                   : slip == 8 ? 0.5 * (second - first) : slip == 9 ? second + 0.5 * (second - first)
+                  : slip == 10 ? 0
                               : 0.5 * (first + second);
     bool shadowed = p[2] > middle;
     out[0] = (slip == 5 ? shadowed : !shadowed) ? 1 : 0;
@@ -1122,10 +1133,11 @@ static void _sl_expect_cascade_index(const sl_probe_function *f, const float *ro
 
 /* lab 6 (bonus): the weight of the next cascade across the last `band` of the slice */
 static void _sl_draw_blend(const sl_probe_function *f, _sl_rng *r, int index, float *row, char *about, size_t n) {
-    (void)index;
     double split_near = _sl_uniform(r, 0.5, 20), split_far = split_near + _sl_uniform(r, 5, 60);
     double band = _sl_uniform(r, 0.1, 0.4), start = split_far - band * (split_far - split_near);
     double depth = _sl_uniform(r, 0, 1) < 0.75 ? _sl_uniform(r, start, split_far) : _sl_uniform(r, split_near, split_far);
+    /* one row in four within `band` metres of the split: a band taken in metres blends there, and only there */
+    if (index % 4 == 1) depth = split_far - _sl_uniform(r, 0.2, 0.8) * band;
     _sl_set1(f, row, "view_depth", depth);
     _sl_set1(f, row, "split_near", split_near);
     _sl_set1(f, row, "split_far", split_far);
@@ -1515,7 +1527,9 @@ static const _sl_generic _sl_generics[] = {
     {"midpoint_compare", _sl_draw_midpoint, _sl_expect_midpoint, _sl_midpoint_slips, NULL, 0},
     {"pcf_grid", _sl_draw_pcf_grid, _sl_expect_pcf_grid, _sl_grid_slips, NULL, 1ull << _SL_GRID_CENTRE_DRIFTS},
     {"compute_moments", _sl_draw_moments, _sl_expect_moments, _sl_moments_slips, "if(i == 0, depth, depth * depth)", 0},
-    {"blur_moments", _sl_draw_blur, _sl_expect_blur, _sl_blur_slips, NULL, 0},
+    /* a box, a tap short, taps two texels apart: sharper than "too wide" (a sigma of another size has a written
+     * verdict of its own, which says by how much) */
+    {"blur_moments", _sl_draw_blur, _sl_expect_blur, _sl_blur_slips, NULL, 1ull << 2 | 1ull << 4 | 1ull << 5},
     {"chebyshev_upper_bound", _sl_draw_chebyshev, _sl_expect_chebyshev, _sl_chebyshev_slips,
      "mu = moments[0]; variance = max(moments[1] - mu * mu, min_variance); d = t - mu; "
      "if(t <= mu, 1, variance / (variance + d * d))", 0},
