@@ -927,11 +927,14 @@ static int _sl_face_target_shifted(const sl_check *k, const double *student, con
         const double *got = student + row * outputs, *want = expected + row * outputs;
         if (face < 0 || face > 5 || want[1] != _SL_CUBE_POSITIVE_X + face) return -1;
         if (first < 0) first = row;
-        if ((int)got[1] - (int)want[1] == shift) {
+        /* the face attached before the call, (face + 3) % 6, is "left as it was", not a shift */
+        bool left = got[1] == (double)(_SL_CUBE_POSITIVE_X + (face + 3) % 6);
+        if ((int)got[1] - (int)want[1] == shift && !left) {
             shifted++;
             continue;
         }
-        /* another answer only where the shifted target is no face's (left as it was) */
+        if (!left) return -1;
+        /* left as it was only where the shifted target is no face's */
         if (face + shift >= 0 && face + shift <= 5) return -1;
     }
     if (first < 0 || shifted < 2) return -1;
@@ -952,17 +955,17 @@ static int _sl_begin_cube_pass_verdict(const sl_check *k, const double *student,
     int outputs = f->output_count, first = -1;
     int level = _sl_face_as_level(k, student, expected, failing, text, n);
     if (level >= 0) return level;
-    if ((level = _sl_face_target_shifted(k, student, expected, failing, text, n)) >= 0) return level;
-    for (int row = 0; row < k->rows; row++) {
+    bool before = true;
+    for (int row = 0; row < k->rows && before; row++) {
         if (!((failing >> row) & 1u)) continue;
         int face = (int)k->inputs[row][0];
         const double *got = student + row * outputs, *want = expected + row * outputs;
-        if (face < 0 || face > 5 || got[0] != 1 || got[1] != (double)(_SL_CUBE_POSITIVE_X + (face + 3) % 6) ||
-            got[1] == want[1])
-            return -1;
+        before = face >= 0 && face <= 5 && got[0] == 1 && got[1] == (double)(_SL_CUBE_POSITIVE_X + (face + 3) % 6) &&
+                 got[1] != want[1];
         if (first < 0) first = row;
     }
-    if (first < 0) return -1;
+    /* not the face attached before on every row: a target counted from another enum, or nothing said */
+    if (!before || first < 0) return _sl_face_target_shifted(k, student, expected, failing, text, n);
     snprintf(text, n, "the face attached after it is the one attached before it was called: its glFramebufferTexture2D "
                       "did not reach the map's framebuffer — it attaches to the framebuffer bound when it runs, so bind "
                       "map->framebuffer first, then attach GL_TEXTURE_CUBE_MAP_POSITIVE_X + face");
